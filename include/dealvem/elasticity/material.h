@@ -1,0 +1,97 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_elasticity_material_h
+#define dealvem_elasticity_material_h
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <string>
+
+namespace dealvem
+{
+  /**
+   * Isotropic linear elastic material for 2D problems, in plane strain or
+   * plane stress.
+   *
+   * With Young's modulus $E$ and Poisson's ratio $\nu$,
+   * $\mu = E/(2(1+\nu))$ and, in plane strain, $\lambda = E\nu/((1+\nu)(1-2\nu))$;
+   * in plane stress $\lambda$ is replaced by $\lambda^* = 2\lambda\mu/(\lambda+2\mu)$.
+   * The stress is $\sigma = \lambda\,\mathrm{tr}(\varepsilon) I + 2\mu\varepsilon$.
+   * In Voigt notation with engineering shear strain,
+   * $(\sigma_{xx},\sigma_{yy},\sigma_{xy}) = C(\varepsilon_{xx},\varepsilon_{yy},2\varepsilon_{xy})$ with
+   * @f[ C = \begin{pmatrix}\lambda+2\mu & \lambda & 0\\ \lambda & \lambda+2\mu & 0\\ 0&0&\mu\end{pmatrix}. @f]
+   */
+  class ElasticMaterial
+  {
+  public:
+    enum class Model
+    {
+      plane_strain,
+      plane_stress
+    };
+
+    /**
+     * Constructor. Throws (AssertThrow, also in Release builds) unless
+     * E > 0 and -1 < nu < 0.5.
+     */
+    ElasticMaterial(const double E = 1.0,
+                    const double nu = 0.3,
+                    const Model  model = Model::plane_strain);
+
+    double
+    youngs_modulus() const
+    {
+      return E;
+    }
+
+    double
+    poissons_ratio() const
+    {
+      return nu;
+    }
+
+    Model
+    model() const
+    {
+      return model_;
+    }
+
+    /// The effective first Lamé parameter (plane-stress corrected).
+    double
+    lambda() const;
+
+    /// Shear modulus.
+    double
+    mu() const;
+
+    /// $\sigma = C\varepsilon$.
+    dealii::SymmetricTensor<2, 2>
+    stress(const dealii::SymmetricTensor<2, 2> &strain) const;
+
+    /// The out-of-plane stress $\sigma_{zz}$ for a given in-plane strain
+    /// (zero in plane stress, $\nu(\sigma_{xx}+\sigma_{yy})$ in plane strain).
+    double
+    stress_zz(const dealii::SymmetricTensor<2, 2> &strain) const;
+
+    /// Von Mises stress of a 2D stress state with the given $\sigma_{zz}$.
+    static double
+    von_mises(const dealii::SymmetricTensor<2, 2> &stress, const double sigma_zz);
+
+    /// "plane strain" or "plane stress".
+    static std::string
+    model_name(const Model m);
+
+    /// Parse "plane strain" / "plane stress"; throws for anything else.
+    static Model
+    parse_model(const std::string &name);
+
+  private:
+    double E;
+    double nu;
+    Model  model_;
+  };
+} // namespace dealvem
+
+#endif

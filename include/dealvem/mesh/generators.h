@@ -1,0 +1,117 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_mesh_generators_h
+#define dealvem_mesh_generators_h
+
+#include <deal.II/base/point.h>
+
+#include <dealvem/mesh/polygonal_mesh.h>
+
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class Triangulation;
+}
+
+namespace dealvem
+{
+  /**
+   * Functions that fill a PolygonalMesh. Every generated mesh is finalized
+   * (conforming, edges built, validated).
+   *
+   * Boundary ids of the rectangle generators follow deal.II's
+   * GridGenerator::hyper_rectangle with colorize = true:
+   * 0 = left (x = x0), 1 = right (x = x1), 2 = bottom (y = y0), 3 = top (y = y1).
+   * Random generators take a seed and give the same mesh for the same seed.
+   */
+  namespace PolygonalMeshGenerators
+  {
+    /// nx by ny structured quadrilaterals on the rectangle [p0, p1].
+    template <int dim>
+    void
+    structured_quads(PolygonalMesh<dim>       &mesh,
+                     const dealii::Point<dim> &p0,
+                     const dealii::Point<dim> &p1,
+                     const unsigned int        nx,
+                     const unsigned int        ny);
+
+    /// nx by ny squares on [p0, p1], each cut into two triangles along
+    /// alternating diagonals.
+    template <int dim>
+    void
+    structured_triangles(PolygonalMesh<dim>       &mesh,
+                         const dealii::Point<dim> &p0,
+                         const dealii::Point<dim> &p1,
+                         const unsigned int        nx,
+                         const unsigned int        ny);
+
+    /**
+     * Structured quads whose interior vertices are moved randomly by up to
+     * @p amplitude times the cell size in each direction (0 <= amplitude <
+     * 0.5); boundary vertices slide along their side only.
+     */
+    template <int dim>
+    void
+    perturbed_quads(PolygonalMesh<dim>       &mesh,
+                    const dealii::Point<dim> &p0,
+                    const dealii::Point<dim> &p1,
+                    const unsigned int        nx,
+                    const unsigned int        ny,
+                    const double              amplitude,
+                    const unsigned int        seed);
+
+    /**
+     * Centroidal Voronoi mesh of the rectangle [p0, p1] with @p n_cells
+     * cells: random seeds (seeded), then @p n_lloyd_iterations Lloyd
+     * iterations, each moving the generators to the centroids of their
+     * cells. The Voronoi diagram comes from CGAL's Delaunay triangulation
+     * of the generators and their mirror images across the four sides, so
+     * that the cells are clipped exactly by the rectangle.
+     */
+    template <int dim>
+    void
+    voronoi(PolygonalMesh<dim>       &mesh,
+            const dealii::Point<dim> &p0,
+            const dealii::Point<dim> &p1,
+            const unsigned int        n_cells,
+            const unsigned int        n_lloyd_iterations,
+            const unsigned int        seed);
+
+    /**
+     * A family of meshes with non-convex cells: nx by ny structured cells
+     * whose horizontal interior edges get a midpoint pushed down by
+     * @p depth times the cell height (0 < depth < 0.5), so every cell has a
+     * reflex vertex at the middle of its top edge (except the top row) and
+     * a collinear midpoint on the domain's top and bottom sides.
+     */
+    template <int dim>
+    void
+    nonconvex(PolygonalMesh<dim>       &mesh,
+              const dealii::Point<dim> &p0,
+              const dealii::Point<dim> &p1,
+              const unsigned int        nx,
+              const unsigned int        ny,
+              const double              depth = 0.3);
+
+    /**
+     * Convert the active cells of a deal.II triangulation (from
+     * GridGenerator, GridIn, gmsh files, adaptively refined meshes) into
+     * polygons. Boundary ids and material ids are copied; hanging vertices
+     * of refined meshes become extra vertices of the coarse neighbours.
+     */
+    template <int dim>
+    void
+    from_triangulation(PolygonalMesh<dim>                         &mesh,
+                       const dealii::Triangulation<dim, dim>      &tria);
+
+    /// Read a mesh file with deal.II's GridIn (format from the extension:
+    /// .msh, .inp, .ucd, .vtk of deal.II's own kind, ...) and convert it.
+    template <int dim>
+    void
+    from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename);
+  } // namespace PolygonalMeshGenerators
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,56 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_mesh_mesh_io_h
+#define dealvem_mesh_mesh_io_h
+
+#include <dealvem/mesh/polygonal_mesh.h>
+
+#include <iosfwd>
+#include <string>
+
+namespace dealvem
+{
+  /**
+   * Reading and writing polygonal meshes.
+   *
+   * The file format is the legacy ASCII VTK format (version 2.0 or later),
+   * dataset UNSTRUCTURED_GRID, which ParaView reads:
+   * - POINTS with x y z (z ignored, must be 0 up to round-off);
+   * - CELLS with VTK_POLYGON (type 7) cells, the polygons, and VTK_LINE
+   *   (type 3) cells, boundary edges that carry a boundary id;
+   *   VTK_TRIANGLE (5) and VTK_QUAD (9) are also accepted as polygons;
+   * - CELL_DATA with an integer SCALARS field "material_id" (value for the
+   *   polygons, ignored on lines) and "boundary_id" (value for the lines,
+   *   ignored on polygons). Both fields are optional (default 0).
+   * Polygons given clockwise are rejected (not silently reversed): the
+   * message names the file, line and cell.
+   */
+  namespace MeshIO
+  {
+    /// Read a mesh from a legacy VTK file; errors name the file and line.
+    template <int dim>
+    void
+    read_vtk(PolygonalMesh<dim> &mesh, const std::string &filename);
+
+    /// Read from a stream; @p name is used in error messages.
+    template <int dim>
+    void
+    read_vtk(PolygonalMesh<dim> &mesh,
+             std::istream       &in,
+             const std::string  &name);
+
+    /// Write a mesh to a legacy VTK file (polygons, boundary edges as lines,
+    /// material and boundary ids).
+    template <int dim>
+    void
+    write_vtk(const PolygonalMesh<dim> &mesh, const std::string &filename);
+
+    template <int dim>
+    void
+    write_vtk(const PolygonalMesh<dim> &mesh, std::ostream &out);
+  } // namespace MeshIO
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,279 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_mesh_polygonal_mesh_h
+#define dealvem_mesh_polygonal_mesh_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * A conforming mesh of arbitrary polygons.
+   *
+   * The mesh stores
+   * - vertices (points in the plane),
+   * - cells, each a counter-clockwise loop of vertex indices with a
+   *   material id (which is also the id of the body the cell belongs to),
+   * - edges, the shared one-dimensional entities: every cell edge is stored
+   *   once, with the (one or two) cells that use it, and a boundary id for
+   *   edges used by a single cell.
+   *
+   * Cells are added with add_cell(); then finalize() (or the constructor of
+   * a generator) makes the mesh conforming, builds the edges and validates
+   * the mesh. A vertex lying inside the edge of a neighbouring cell of the
+   * same body (a "hanging node" in finite element language) is inserted into
+   * that neighbour's vertex loop: for virtual elements such a cell simply has
+   * one more (collinear) vertex, so the mesh stays conforming.
+   *
+   * Validation throws ExcInvalidMesh, naming the cell or vertex, for
+   * clockwise, self-intersecting or zero-area polygons, repeated vertices in
+   * a loop, non-finite coordinates, an edge shared by more than two cells,
+   * and overlapping cells of the same body.
+   *
+   * Cells of different bodies (different material ids) never share vertices
+   * or edges: bodies interact only through contact.
+   *
+   * Only dim == 2 is implemented; the template parameter follows deal.II's
+   * convention.
+   */
+  template <int dim>
+  class PolygonalMesh
+  {
+  public:
+    static_assert(dim == 2, "PolygonalMesh is implemented for dim == 2 only.");
+
+    /**
+     * An edge: two vertex indices, the cells on either side, and the
+     * boundary id (meaningful for boundary edges only).
+     */
+    struct Edge
+    {
+      /// The two end vertices; for a boundary edge in the counter-clockwise
+      /// order of its cell.
+      std::array<unsigned int, 2> vertices;
+      /// The cells using the edge; cells[1] is numbers::invalid_unsigned_int
+      /// for a boundary edge.
+      std::array<unsigned int, 2> cells;
+      /// Boundary id, 0 unless set; numbers::internal_face_boundary_id for
+      /// interior edges.
+      dealii::types::boundary_id boundary_id;
+
+      bool
+      at_boundary() const
+      {
+        return cells[1] == dealii::numbers::invalid_unsigned_int;
+      }
+    };
+
+    /**
+     * A polygonal cell.
+     */
+    struct Cell
+    {
+      /// Counter-clockwise loop of vertex indices (no repetition of the
+      /// first vertex at the end).
+      std::vector<unsigned int> vertices;
+      /// Indices of the edges, edges[i] joining vertices[i] and
+      /// vertices[(i+1) % n].
+      std::vector<unsigned int> edges;
+      /// Material id; cells of different material ids belong to different
+      /// bodies.
+      dealii::types::material_id material_id = 0;
+    };
+
+    PolygonalMesh() = default;
+
+    /// Remove everything.
+    void
+    clear();
+
+    /// Add a vertex and return its index.
+    unsigned int
+    add_vertex(const dealii::Point<dim> &p);
+
+    /**
+     * Add a cell with a counter-clockwise loop of (already added) vertex
+     * indices. The mesh is not usable until finalize() is called.
+     */
+    unsigned int
+    add_cell(const std::vector<unsigned int> &vertex_loop,
+             const dealii::types::material_id material_id = 0);
+
+    /**
+     * Set the boundary id of the boundary edge joining vertices @p v0 and
+     * @p v1 (in either order). Can be called before finalize(): the ids are
+     * remembered and applied when edges are built (also to the pieces of an
+     * edge split by a hanging vertex).
+     */
+    void
+    set_boundary_id(const unsigned int                v0,
+                    const unsigned int                v1,
+                    const dealii::types::boundary_id id);
+
+    /**
+     * Make the mesh conforming (insert hanging vertices into the loops of
+     * the neighbouring cells of the same body), remove vertices that no cell
+     * uses, build the edges and validate everything. Throws ExcInvalidMesh
+     * with a message naming the offending cell or vertex.
+     *
+     * @p relative_tolerance is relative to the length of the edge: a vertex
+     * closer than this to an edge is considered to lie on it.
+     */
+    void
+    finalize(const double relative_tolerance = 1e-10);
+
+    /// Run the validity checks again (finalize() calls this).
+    void
+    validate() const;
+
+    /// Number of vertices.
+    unsigned int
+    n_vertices() const
+    {
+      return vertices.size();
+    }
+
+    /// Number of cells.
+    unsigned int
+    n_cells() const
+    {
+      return cells.size();
+    }
+
+    /// Number of edges (valid after finalize()).
+    unsigned int
+    n_edges() const
+    {
+      return edges.size();
+    }
+
+    const dealii::Point<dim> &
+    vertex(const unsigned int i) const
+    {
+      return vertices[i];
+    }
+
+    const std::vector<dealii::Point<dim>> &
+    get_vertices() const
+    {
+      return vertices;
+    }
+
+    const Cell &
+    cell(const unsigned int c) const
+    {
+      return cells[c];
+    }
+
+    const std::vector<Cell> &
+    get_cells() const
+    {
+      return cells;
+    }
+
+    const Edge &
+    edge(const unsigned int e) const
+    {
+      return edges[e];
+    }
+
+    const std::vector<Edge> &
+    get_edges() const
+    {
+      return edges;
+    }
+
+    /// The coordinates of the vertices of cell @p c, counter-clockwise.
+    std::vector<dealii::Point<dim>>
+    cell_vertices(const unsigned int c) const;
+
+    /// Change the material id of a cell.
+    void
+    set_material_id(const unsigned int c, const dealii::types::material_id id)
+    {
+      cells[c].material_id = id;
+    }
+
+    /// Set the boundary id of edge @p e (must be a boundary edge).
+    void
+    set_edge_boundary_id(const unsigned int                e,
+                         const dealii::types::boundary_id id);
+
+    /// The set of boundary ids in use, sorted.
+    std::vector<dealii::types::boundary_id>
+    get_boundary_ids() const;
+
+    /// The set of material ids in use, sorted.
+    std::vector<dealii::types::material_id>
+    get_material_ids() const;
+
+    /// Move every vertex by @p shift.
+    void
+    shift(const dealii::Tensor<1, dim> &shift);
+
+    /**
+     * Append another mesh (a second body). The other mesh's vertex and cell
+     * indices are offset; its boundary ids are kept. Both meshes must be
+     * finalized; the result is finalized again.
+     */
+    void
+    append(const PolygonalMesh<dim> &other);
+
+    /**
+     * Split the edge @p e at the point @p p (which must lie on the edge,
+     * strictly between its ends): a new vertex is created and inserted into
+     * the vertex loops of the cells owning the edge; both pieces keep the
+     * boundary id. Returns the index of the new vertex. Used by node
+     * insertion on contact interfaces. Edges are rebuilt.
+     */
+    unsigned int
+    split_edge(const unsigned int e, const dealii::Point<dim> &p);
+
+    /// Smallest and largest cell diameter.
+    std::pair<double, double>
+    cell_diameter_range() const;
+
+    /// Total area of all cells.
+    double
+    total_area() const;
+
+    /// Source description (file name or generator), used in error messages.
+    std::string name = "mesh";
+
+  private:
+    void
+    build_edges();
+
+    void
+    insert_hanging_vertices(const double relative_tolerance);
+
+    void
+    remove_unused_vertices();
+
+    std::vector<dealii::Point<dim>> vertices;
+    std::vector<Cell>               cells;
+    std::vector<Edge>               edges;
+
+    /// Boundary ids requested with set_boundary_id() before edges existed:
+    /// (smaller vertex, larger vertex, id).
+    std::vector<std::tuple<unsigned int, unsigned int, dealii::types::boundary_id>>
+      pending_boundary_ids;
+  };
+
+  /**
+   * An invalid mesh: the message names the mesh, and the cell or vertex.
+   */
+  DeclException1(ExcInvalidMesh,
+                 std::string,
+                 << "Invalid polygonal mesh: " << arg1);
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,132 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_vem_polygon_geometry_h
+#define dealvem_vem_polygon_geometry_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/tensor.h>
+
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * Geometric data of one polygon $E$ given by its counter-clockwise
+   * vertices $v_0,\dots,v_{N-1}$: area $|E|$, centroid $\bar x$, diameter
+   * $h$ (largest distance between two vertices), edges $e_i = [v_i,
+   * v_{i+1}]$ with length $L_i$, unit tangent $t_i$ and outward unit normal
+   * $n_i = (t_{i,y}, -t_{i,x})$.
+   *
+   * Integrals of the scaled monomials
+   * $m_{ab} = \xi^a\eta^b$, $\xi = (x-\bar x)/h$, $\eta = (y-\bar y)/h$
+   * are computed exactly by the divergence theorem: $m_{ab}$ is
+   * homogeneous of degree $d = a+b$ in $x-\bar x$, so
+   * @f[ \int_E m_{ab}\,dx = \frac{1}{d+2}\sum_i ((v_i-\bar x)\cdot n_i) \int_{e_i} m_{ab}\,ds, @f]
+   * with Gauss quadrature on each edge. This holds for any simple polygon,
+   * convex or not.
+   *
+   * quadrature() returns a rule on a fan of (signed) triangles from the
+   * centroid; it integrates polynomials of the requested degree exactly on
+   * any simple polygon (weights of triangles lying outside a non-convex
+   * polygon are negative and cancel), and smooth functions defined around
+   * the polygon to the usual order.
+   */
+  template <int dim>
+  class PolygonGeometry
+  {
+  public:
+    explicit PolygonGeometry(const std::vector<dealii::Point<dim>> &vertices);
+
+    unsigned int
+    n_vertices() const
+    {
+      return vertices.size();
+    }
+
+    const dealii::Point<dim> &
+    vertex(const unsigned int i) const
+    {
+      return vertices[i];
+    }
+
+    double
+    area() const
+    {
+      return area_;
+    }
+
+    const dealii::Point<dim> &
+    centroid() const
+    {
+      return centroid_;
+    }
+
+    double
+    diameter() const
+    {
+      return diameter_;
+    }
+
+    double
+    edge_length(const unsigned int i) const
+    {
+      return lengths[i];
+    }
+
+    /// Unit tangent of edge i (from vertex i to vertex i+1).
+    const dealii::Tensor<1, dim> &
+    edge_tangent(const unsigned int i) const
+    {
+      return tangents[i];
+    }
+
+    /// Outward unit normal of edge i.
+    dealii::Tensor<1, dim>
+    edge_normal(const unsigned int i) const
+    {
+      dealii::Tensor<1, dim> n;
+      n[0] = tangents[i][1];
+      n[1] = -tangents[i][0];
+      return n;
+    }
+
+    dealii::Point<dim>
+    edge_midpoint(const unsigned int i) const
+    {
+      return 0.5 * (vertices[i] + vertices[(i + 1) % vertices.size()]);
+    }
+
+    /// Perimeter $|\partial E|$.
+    double
+    perimeter() const;
+
+    /// Scaled coordinates $((x-\bar x)/h, (y-\bar y)/h)$ of a point.
+    dealii::Point<dim>
+    scaled(const dealii::Point<dim> &p) const
+    {
+      return dealii::Point<dim>((p - centroid_) / diameter_);
+    }
+
+    /// $\int_E \xi^a\eta^b\,dx$, exact.
+    double
+    integrate_scaled_monomial(const unsigned int a, const unsigned int b) const;
+
+    /// A quadrature rule on the polygon exact for polynomials of degree
+    /// @p degree (signed triangle fan from the centroid).
+    dealii::Quadrature<dim>
+    quadrature(const unsigned int degree) const;
+
+  private:
+    std::vector<dealii::Point<dim>>     vertices;
+    std::vector<double>                 lengths;
+    std::vector<dealii::Tensor<1, dim>> tangents;
+    double                              area_;
+    dealii::Point<dim>                  centroid_;
+    double                              diameter_;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,157 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_vem_vem_dof_handler_h
+#define dealvem_vem_vem_dof_handler_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/smartpointer.h>
+#include <deal.II/base/types.h>
+
+#include <dealvem/mesh/polygonal_mesh.h>
+
+#include <set>
+#include <vector>
+
+namespace dealii
+{
+  class DynamicSparsityPattern;
+}
+
+namespace dealvem
+{
+  /**
+   * Enumerates the degrees of freedom of the order-k virtual element space
+   * for 2D vector problems (two displacement components) on a
+   * PolygonalMesh.
+   *
+   * The DoFs live on the mesh entities: two per vertex; for k = 2 also two
+   * per edge (midpoint values) and two per cell (cell moments). Entities
+   * shared by several cells carry one set of DoFs, which makes the space
+   * conforming. The global numbering is entity by entity: first all
+   * vertices (DoF 2v + c of vertex v, component c), then all edges, then
+   * all cells.
+   *
+   * get_dof_indices() returns the global indices of a cell in the local
+   * order of VirtualElement (interleaved components; vertices, then edge
+   * midpoints, then the cell moment), so local matrices from VirtualElement
+   * go straight into AffineConstraints::distribute_local_to_global.
+   *
+   * A node is an entity carrying two DoFs (one per component); nodes are
+   * numbered like the DoFs: node j owns DoFs 2j and 2j + 1.
+   */
+  template <int dim>
+  class VEMDoFHandler
+  {
+  public:
+    VEMDoFHandler() = default;
+
+    explicit VEMDoFHandler(const PolygonalMesh<dim> &mesh);
+
+    /// Attach a (finalized) mesh.
+    void
+    reinit(const PolygonalMesh<dim> &mesh);
+
+    /// Enumerate the DoFs for order @p degree (1 or 2).
+    void
+    distribute_dofs(const unsigned int degree);
+
+    const PolygonalMesh<dim> &
+    get_mesh() const
+    {
+      return *mesh;
+    }
+
+    unsigned int
+    get_degree() const
+    {
+      return degree;
+    }
+
+    dealii::types::global_dof_index
+    n_dofs() const
+    {
+      return n_dofs_;
+    }
+
+    /// Number of nodes (= n_dofs() / 2).
+    unsigned int
+    n_nodes() const
+    {
+      return n_dofs_ / 2;
+    }
+
+    /// Number of DoFs of cell @p c.
+    unsigned int
+    n_dofs_per_cell(const unsigned int c) const;
+
+    /// Global DoF indices of cell @p c in VirtualElement's local order.
+    void
+    get_dof_indices(const unsigned int                            c,
+                    std::vector<dealii::types::global_dof_index> &indices) const;
+
+    /// Global node indices of cell @p c in local node order.
+    void
+    get_node_indices(const unsigned int c, std::vector<unsigned int> &nodes) const;
+
+    /// Node of vertex @p v, of the midpoint of edge @p e (k = 2), of cell
+    /// moment of cell @p c (k = 2).
+    unsigned int
+    vertex_node(const unsigned int v) const
+    {
+      return v;
+    }
+
+    unsigned int
+    edge_node(const unsigned int e) const;
+
+    unsigned int
+    cell_node(const unsigned int c) const;
+
+    /// DoF of component @p comp at node @p node.
+    static dealii::types::global_dof_index
+    node_dof(const unsigned int node, const unsigned int comp)
+    {
+      return 2 * dealii::types::global_dof_index(node) + comp;
+    }
+
+    /// Location of a node: vertex, edge midpoint or cell centroid.
+    dealii::Point<dim>
+    node_location(const unsigned int node) const;
+
+    /// True for cell-moment nodes (not point values).
+    bool
+    is_moment_node(const unsigned int node) const;
+
+    /// Locations of all DoFs (the node location of each), like
+    /// DoFTools::map_dofs_to_support_points.
+    void
+    map_dofs_to_support_points(std::vector<dealii::Point<dim>> &points) const;
+
+    /// Nodes lying on boundary edges whose boundary id is in @p ids
+    /// (vertices and, for k = 2, midpoints), sorted.
+    std::vector<unsigned int>
+    boundary_nodes(const std::set<dealii::types::boundary_id> &ids) const;
+
+    /// Sparsity pattern: all DoFs of a cell couple with each other.
+    void
+    make_sparsity_pattern(dealii::DynamicSparsityPattern &dsp) const;
+
+    /// The three rigid-body modes (two translations and the rotation about
+    /// the origin) as DoF vectors, for example for AMG near-null spaces.
+    /// Cell-moment DoFs get the cell average of the mode.
+    std::vector<std::vector<double>>
+    rigid_body_modes() const;
+
+  private:
+    dealii::SmartPointer<const PolygonalMesh<dim>> mesh;
+    unsigned int                                   degree = 0;
+    dealii::types::global_dof_index                n_dofs_ = 0;
+    unsigned int                                   n_vertex_nodes = 0;
+    unsigned int                                   n_edge_nodes   = 0;
+    std::vector<dealii::Point<dim>>                cell_centroids;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,278 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_vem_virtual_element_h
+#define dealvem_vem_virtual_element_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/elasticity/material.h>
+#include <dealvem/vem/polygon_geometry.h>
+
+#include <memory>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * The conforming virtual element of order $k\in\{1,2\}$ for 2D linear
+   * elasticity on one polygon $E$ with $N$ vertices.
+   *
+   * <h3>Degrees of freedom</h3>
+   * Per displacement component $c\in\{x,y\}$: the values at the $N$
+   * vertices; for $k=2$ also the values at the $N$ edge midpoints and the
+   * cell moment $\frac{1}{|E|}\int_E u_c$. The local numbering interleaves
+   * the components: local DoF $2j+c$ is component $c$ of node $j$, where
+   * nodes $0..N-1$ are the vertices, $N..2N-1$ the edge midpoints (node
+   * $N+i$ on edge $i=[v_i,v_{i+1}]$) and $2N$ the cell moment. Hence
+   * $n_{dofs} = 2N$ for $k=1$ and $2(2N+1)$ for $k=2$.
+   *
+   * <h3>Polynomial basis</h3>
+   * With the scaled coordinates $\xi=(x-\bar x)/h$, $\eta=(y-\bar y)/h$ the
+   * basis $\{p_\alpha\}$ of $[P_k]^2$ has $n_p = 6$ ($k=1$) or $12$ ($k=2$)
+   * members, rigid-body modes first:
+   * $p_0=(1,0)$, $p_1=(0,1)$, $p_2=(-\eta,\xi)$, $p_3=(\xi,0)$, $p_4=(0,\eta)$,
+   * $p_5=(\eta,\xi)$, and for $k=2$ $p_{6,7,8} = (\xi^2,0),(\xi\eta,0),(\eta^2,0)$,
+   * $p_{9,10,11} = (0,\xi^2),(0,\xi\eta),(0,\eta^2)$.
+   *
+   * <h3>Matrices</h3>
+   * - $D\in\mathbb{R}^{n_{dofs}\times n_p}$, $D_{i\alpha} = \mathrm{dof}_i(p_\alpha)$.
+   * - $B\in\mathbb{R}^{n_p\times n_{dofs}}$: for the strain modes $\alpha\ge 3$,
+   *   $B_{\alpha i} = a_E(p_\alpha,\varphi_i) = \int_{\partial E}(\sigma(p_\alpha)n)\cdot\varphi_i
+   *   - \int_E \mathrm{div}\,\sigma(p_\alpha)\cdot\varphi_i$, where the edge
+   *   integrals use the Gauss-Lobatto rule on the edge's nodes (trapezoidal
+   *   for $k=1$, Simpson for $k=2$; exact because the integrand has degree
+   *   $2k-1$) and the volume term, present for $k=2$ only, is $|E|$ times the
+   *   constant $\mathrm{div}\,\sigma(p_\alpha)$ times the cell-moment DoF.
+   *   The rigid-mode rows fix the projection on the kernel of $a_E$: rows 0
+   *   and 1 are the cell moments ($k=2$) or the vertex means ($k=1$) of the
+   *   two components; row 2 is the mean rotation
+   *   $\frac{h}{2|E|}\int_{\partial E}\varphi_i\cdot t$ (the factor makes $G_{22}=1$).
+   * - $G = BD$; the projector in the polynomial basis is
+   *   $\Pi_* = G^{-1}B$ and in the DoF basis $\Pi = D\Pi_*$.
+   * - $\tilde G$: $G$ with the rigid-mode rows set to zero, so
+   *   $\tilde G_{\alpha\beta} = a_E(p_\alpha,p_\beta)$ (symmetrized).
+   * - Consistency $K_c = \Pi_*^T\tilde G\Pi_*$; stabilization
+   *   $K_s = \gamma\,\tau\,(I-\Pi)^T(I-\Pi)$ with $\tau = \mathrm{tr}(K_c)/n_{dofs}$;
+   *   stiffness $K_E = K_c + K_s$.
+   *
+   * The rows of $G$ and $B$ are scaled to unit size before $G$ is factored
+   * (row scaling does not change $\Pi_*$), so cells of any size and aspect
+   * ratio are handled to round-off.
+   *
+   * <h3>Loads</h3>
+   * The body force term uses the projection (the "enhanced" VEM space, in
+   * which the moments of $v$ up to degree $k$ equal those of $\Pi v$):
+   * $F_i = \int_E f\cdot\Pi_*\varphi_i = \sum_\alpha (\Pi_*)_{\alpha i}\int_E f\cdot p_\alpha$.
+   * It is exact for constant $f$ and keeps the $O(h^{k+1})$ L2 rate.
+   *
+   * See Beirão da Veiga, Brezzi, Marini, Russo, M3AS 24 (2014) ("The
+   * hitchhiker's guide to the virtual element method") and Beirão da Veiga,
+   * Brezzi, Marini, SINUM 51 (2013) for elasticity; the tutorial step-1
+   * defines the same matrices.
+   */
+  template <int dim>
+  class VirtualElement
+  {
+  public:
+    /// Order k = 1 or 2 (AssertThrow otherwise).
+    explicit VirtualElement(const unsigned int degree);
+
+    unsigned int
+    get_degree() const
+    {
+      return degree;
+    }
+
+    /// Number of vector polynomials $n_p$ (6 or 12).
+    unsigned int
+    n_polynomials() const
+    {
+      return degree == 1 ? 6 : 12;
+    }
+
+    /// Number of local DoFs of a polygon with @p n_vertices vertices.
+    unsigned int
+    n_dofs_per_cell(const unsigned int n_vertices) const
+    {
+      return degree == 1 ? 2 * n_vertices : 2 * (2 * n_vertices + 1);
+    }
+
+    /// Number of nodes (vertices, edge midpoints, cell moment) of a polygon.
+    unsigned int
+    n_nodes(const unsigned int n_vertices) const
+    {
+      return degree == 1 ? n_vertices : 2 * n_vertices + 1;
+    }
+
+    /**
+     * Compute everything for the polygon with the given counter-clockwise
+     * vertices, material and stabilization factor $\gamma$.
+     */
+    void
+    reinit(const std::vector<dealii::Point<dim>> &vertices,
+           const ElasticMaterial                 &material,
+           const double                           gamma = 1.0);
+
+    const PolygonGeometry<dim> &
+    get_geometry() const
+    {
+      return *geometry;
+    }
+
+    /// $D$ (n_dofs x n_p).
+    const dealii::FullMatrix<double> &
+    get_D() const
+    {
+      return D;
+    }
+
+    /// $B$ (n_p x n_dofs), rows unscaled.
+    const dealii::FullMatrix<double> &
+    get_B() const
+    {
+      return B;
+    }
+
+    /// $G = BD$ (n_p x n_p).
+    const dealii::FullMatrix<double> &
+    get_G() const
+    {
+      return G;
+    }
+
+    /// $\Pi_* = G^{-1}B$ (n_p x n_dofs): coefficients of the projection.
+    const dealii::FullMatrix<double> &
+    get_projector() const
+    {
+      return Pi_star;
+    }
+
+    /// $\Pi = D\Pi_*$ (n_dofs x n_dofs).
+    dealii::FullMatrix<double>
+    get_projector_dof_basis() const;
+
+    /// Consistency part $K_c$.
+    const dealii::FullMatrix<double> &
+    get_consistency_matrix() const
+    {
+      return K_c;
+    }
+
+    /// Stabilization part $K_s$.
+    const dealii::FullMatrix<double> &
+    get_stabilization_matrix() const
+    {
+      return K_s;
+    }
+
+    /// Element stiffness $K_E = K_c + K_s$ (symmetric).
+    const dealii::FullMatrix<double> &
+    get_stiffness_matrix() const
+    {
+      return K;
+    }
+
+    /// The stabilization scaling $\gamma\tau$ used.
+    double
+    get_stabilization_scaling() const
+    {
+      return stab_scaling;
+    }
+
+    /// Value of the basis polynomial $p_\alpha$ at a physical point.
+    dealii::Tensor<1, dim>
+    polynomial_value(const unsigned int alpha, const dealii::Point<dim> &p) const;
+
+    /// Gradient $\nabla p_\alpha$ (row = component) at a physical point.
+    dealii::Tensor<2, dim>
+    polynomial_gradient(const unsigned int alpha, const dealii::Point<dim> &p) const;
+
+    /// Value of the local DoFs of a vector function (2 components):
+    /// point values at vertices and midpoints, the cell moment by quadrature.
+    void
+    interpolate(const dealii::Function<dim> &f, dealii::Vector<double> &local_dofs) const;
+
+    /// Coefficients $\Pi_* u$ of the projection of local DoF values.
+    void
+    project(const dealii::Vector<double> &local_dofs,
+            dealii::Vector<double>       &coefficients) const;
+
+    /// The projection $\Pi u$ evaluated at a point, from its coefficients.
+    dealii::Tensor<1, dim>
+    projection_value(const dealii::Vector<double> &coefficients,
+                     const dealii::Point<dim>     &p) const;
+
+    /// Gradient of the projection at a point.
+    dealii::Tensor<2, dim>
+    projection_gradient(const dealii::Vector<double> &coefficients,
+                        const dealii::Point<dim>     &p) const;
+
+    /// Strain of the projection at a point.
+    dealii::SymmetricTensor<2, dim>
+    projection_strain(const dealii::Vector<double> &coefficients,
+                      const dealii::Point<dim>     &p) const;
+
+    /**
+     * Body-force load vector $F_i = \int_E f\cdot\Pi_*\varphi_i$, with a
+     * quadrature of degree k + @p extra_degree on the polygon.
+     */
+    void
+    body_force_vector(const dealii::Function<dim> &f,
+                      dealii::Vector<double>      &F,
+                      const unsigned int           extra_degree = 4) const;
+
+    /**
+     * Load vector of a traction $g$ (2 components) on local edge @p edge:
+     * $F_i = \int_{e}g\cdot\varphi_i\,ds$, where the trace of $\varphi_i$ on
+     * the edge is the 1D Lagrange polynomial of degree k on the edge's nodes.
+     * A 5-point Gauss rule is used (exact to degree 9), so the integral is
+     * exact for tractions that are polynomials of degree up to 9 - k on the
+     * edge and accurate to quadrature error otherwise.
+     * Only entries of the edge's nodes are added to @p F.
+     */
+    void
+    add_edge_traction(const unsigned int           edge,
+                      const dealii::Function<dim> &g,
+                      dealii::Vector<double>      &F) const;
+
+    /**
+     * Same, for a normal pressure $p$ (scalar function): $g = -p\,n$.
+     */
+    void
+    add_edge_pressure(const unsigned int           edge,
+                      const dealii::Function<dim> &pressure,
+                      dealii::Vector<double>      &F) const;
+
+    /// Local node indices (into the interleaved numbering, node j has DoFs
+    /// 2j, 2j+1) lying on local edge @p edge: 2 for k = 1, 3 for k = 2
+    /// (start vertex, midpoint, end vertex).
+    std::vector<unsigned int>
+    edge_nodes(const unsigned int edge) const;
+
+    /// Location of local node j (vertex, midpoint, or the centroid for the
+    /// cell moment).
+    dealii::Point<dim>
+    node_location(const unsigned int j) const;
+
+  private:
+    unsigned int                                degree;
+    unsigned int                                n_vertices;
+    unsigned int                                n_dofs;
+    std::unique_ptr<PolygonGeometry<dim>>       geometry;
+    dealii::FullMatrix<double>                  D, B, G, Pi_star, K_c, K_s, K;
+    double                                      stab_scaling = 0;
+
+    /// Polynomial coefficients: coef[alpha][component][monomial], monomials
+    /// 1, xi, eta, xi^2, xi eta, eta^2.
+    std::vector<std::array<std::array<double, 6>, 2>> coef;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,217 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <dealvem/vem/polygon_geometry.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+namespace dealvem
+{
+  template <int dim>
+  VEMDoFHandler<dim>::VEMDoFHandler(const PolygonalMesh<dim> &mesh)
+  {
+    reinit(mesh);
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::reinit(const PolygonalMesh<dim> &m)
+  {
+    mesh    = &m;
+    degree  = 0;
+    n_dofs_ = 0;
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::distribute_dofs(const unsigned int k)
+  {
+    Assert(mesh != nullptr, dealii::ExcMessage("No mesh attached."));
+    AssertThrow(k == 1 || k == 2,
+                dealii::ExcMessage("VEMDoFHandler: the order must be 1 or 2, got " +
+                                   std::to_string(k) + "."));
+    AssertThrow(mesh->n_edges() > 0 || mesh->n_cells() == 0,
+                dealii::ExcMessage("VEMDoFHandler: the mesh '" + mesh->name +
+                                   "' has no edges; call finalize() first."));
+    degree         = k;
+    n_vertex_nodes = mesh->n_vertices();
+    n_edge_nodes   = (k == 2 ? mesh->n_edges() : 0);
+    const unsigned int n_cell_nodes = (k == 2 ? mesh->n_cells() : 0);
+    n_dofs_ = 2 * dealii::types::global_dof_index(n_vertex_nodes + n_edge_nodes + n_cell_nodes);
+
+    cell_centroids.resize(mesh->n_cells());
+    for (unsigned int c = 0; c < mesh->n_cells(); ++c)
+      cell_centroids[c] = PolygonGeometry<dim>(mesh->cell_vertices(c)).centroid();
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  VEMDoFHandler<dim>::n_dofs_per_cell(const unsigned int c) const
+  {
+    const unsigned int n = mesh->cell(c).vertices.size();
+    return degree == 1 ? 2 * n : 2 * (2 * n + 1);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  VEMDoFHandler<dim>::edge_node(const unsigned int e) const
+  {
+    Assert(degree == 2, dealii::ExcMessage("Edge nodes exist for k = 2 only."));
+    return n_vertex_nodes + e;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  VEMDoFHandler<dim>::cell_node(const unsigned int c) const
+  {
+    Assert(degree == 2, dealii::ExcMessage("Cell nodes exist for k = 2 only."));
+    return n_vertex_nodes + n_edge_nodes + c;
+  }
+
+
+
+  template <int dim>
+  bool
+  VEMDoFHandler<dim>::is_moment_node(const unsigned int node) const
+  {
+    return node >= n_vertex_nodes + n_edge_nodes;
+  }
+
+
+
+  template <int dim>
+  dealii::Point<dim>
+  VEMDoFHandler<dim>::node_location(const unsigned int node) const
+  {
+    if (node < n_vertex_nodes)
+      return mesh->vertex(node);
+    if (node < n_vertex_nodes + n_edge_nodes)
+      {
+        const auto &e = mesh->edge(node - n_vertex_nodes);
+        return 0.5 * (mesh->vertex(e.vertices[0]) + mesh->vertex(e.vertices[1]));
+      }
+    return cell_centroids[node - n_vertex_nodes - n_edge_nodes];
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::get_node_indices(const unsigned int         c,
+                                       std::vector<unsigned int> &nodes) const
+  {
+    const auto        &cell = mesh->cell(c);
+    const unsigned int n    = cell.vertices.size();
+    nodes.resize(degree == 1 ? n : 2 * n + 1);
+    for (unsigned int i = 0; i < n; ++i)
+      nodes[i] = cell.vertices[i];
+    if (degree == 2)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          nodes[n + i] = n_vertex_nodes + cell.edges[i];
+        nodes[2 * n] = n_vertex_nodes + n_edge_nodes + c;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::get_dof_indices(
+    const unsigned int                            c,
+    std::vector<dealii::types::global_dof_index> &indices) const
+  {
+    std::vector<unsigned int> nodes;
+    get_node_indices(c, nodes);
+    indices.resize(2 * nodes.size());
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        indices[2 * j]     = node_dof(nodes[j], 0);
+        indices[2 * j + 1] = node_dof(nodes[j], 1);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::map_dofs_to_support_points(std::vector<dealii::Point<dim>> &points) const
+  {
+    points.resize(n_dofs_);
+    for (unsigned int node = 0; node < n_nodes(); ++node)
+      points[2 * node] = points[2 * node + 1] = node_location(node);
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  VEMDoFHandler<dim>::boundary_nodes(const std::set<dealii::types::boundary_id> &ids) const
+  {
+    std::vector<unsigned int> nodes;
+    for (unsigned int e = 0; e < mesh->n_edges(); ++e)
+      {
+        const auto &edge = mesh->edge(e);
+        if (!edge.at_boundary() || ids.count(edge.boundary_id) == 0)
+          continue;
+        nodes.push_back(edge.vertices[0]);
+        nodes.push_back(edge.vertices[1]);
+        if (degree == 2)
+          nodes.push_back(n_vertex_nodes + e);
+      }
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::make_sparsity_pattern(dealii::DynamicSparsityPattern &dsp) const
+  {
+    std::vector<dealii::types::global_dof_index> indices;
+    for (unsigned int c = 0; c < mesh->n_cells(); ++c)
+      {
+        get_dof_indices(c, indices);
+        std::vector<dealii::types::global_dof_index> sorted = indices;
+        std::sort(sorted.begin(), sorted.end());
+        for (const auto i : indices)
+          dsp.add_entries(i, sorted.begin(), sorted.end(), true);
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  VEMDoFHandler<dim>::rigid_body_modes() const
+  {
+    std::vector<std::vector<double>> modes(3, std::vector<double>(n_dofs_, 0.));
+    for (unsigned int node = 0; node < n_nodes(); ++node)
+      {
+        // For moment nodes the average of a linear field over the cell is its
+        // value at the centroid: node_location() returns the centroid.
+        const dealii::Point<dim> x = node_location(node);
+        modes[0][2 * node]         = 1.;
+        modes[1][2 * node + 1]     = 1.;
+        modes[2][2 * node]         = -x[1];
+        modes[2][2 * node + 1]     = x[0];
+      }
+    return modes;
+  }
+
+  template class VEMDoFHandler<2>;
+} // namespace dealvem

@@ -1,0 +1,530 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/quadrature_lib.h>
+
+#include <dealvem/vem/virtual_element.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+
+namespace dealvem
+{
+  namespace
+  {
+    // Exponents (a, b) of the scaled monomials xi^a eta^b.
+    constexpr unsigned int monomial_exponents[6][2] = {{0, 0}, {1, 0}, {0, 1},
+                                                       {2, 0}, {1, 1}, {0, 2}};
+
+    inline double
+    ipow(const double x, const unsigned int n)
+    {
+      double r = 1;
+      for (unsigned int i = 0; i < n; ++i)
+        r *= x;
+      return r;
+    }
+
+    // Value of monomial m at scaled point s.
+    inline double
+    monomial_value(const unsigned int m, const dealii::Point<2> &s)
+    {
+      return ipow(s[0], monomial_exponents[m][0]) * ipow(s[1], monomial_exponents[m][1]);
+    }
+
+    // Gradient with respect to the scaled coordinates.
+    inline dealii::Tensor<1, 2>
+    monomial_scaled_gradient(const unsigned int m, const dealii::Point<2> &s)
+    {
+      const unsigned int   a = monomial_exponents[m][0], b = monomial_exponents[m][1];
+      dealii::Tensor<1, 2> g;
+      if (a > 0)
+        g[0] = a * ipow(s[0], a - 1) * ipow(s[1], b);
+      if (b > 0)
+        g[1] = b * ipow(s[0], a) * ipow(s[1], b - 1);
+      return g;
+    }
+
+    // Hessian with respect to the scaled coordinates (constant for the
+    // monomials used here, degree <= 2).
+    inline dealii::Tensor<2, 2>
+    monomial_scaled_hessian(const unsigned int m)
+    {
+      const unsigned int   a = monomial_exponents[m][0], b = monomial_exponents[m][1];
+      dealii::Tensor<2, 2> H;
+      if (a == 2)
+        H[0][0] = 2;
+      if (b == 2)
+        H[1][1] = 2;
+      if (a == 1 && b == 1)
+        H[0][1] = H[1][0] = 1;
+      return H;
+    }
+
+    using EigenMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
+
+    EigenMatrix
+    to_eigen(const dealii::FullMatrix<double> &A)
+    {
+      EigenMatrix E(A.m(), A.n());
+      for (unsigned int i = 0; i < A.m(); ++i)
+        for (unsigned int j = 0; j < A.n(); ++j)
+          E(i, j) = A(i, j);
+      return E;
+    }
+
+    void
+    from_eigen(const EigenMatrix &E, dealii::FullMatrix<double> &A)
+    {
+      A.reinit(E.rows(), E.cols());
+      for (unsigned int i = 0; i < A.m(); ++i)
+        for (unsigned int j = 0; j < A.n(); ++j)
+          A(i, j) = E(i, j);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  VirtualElement<dim>::VirtualElement(const unsigned int degree)
+    : degree(degree)
+    , n_vertices(0)
+    , n_dofs(0)
+  {
+    AssertThrow(degree == 1 || degree == 2,
+                dealii::ExcMessage("VirtualElement: the order k must be 1 or 2, got " +
+                                   std::to_string(degree) + "."));
+    // The vector polynomial basis, rigid-body modes first.
+    const unsigned int n_p = n_polynomials();
+    coef.resize(n_p);
+    for (auto &c : coef)
+      for (auto &comp : c)
+        comp.fill(0.);
+    coef[0][0][0] = 1;  // (1, 0)
+    coef[1][1][0] = 1;  // (0, 1)
+    coef[2][0][2] = -1; // (-eta, xi)
+    coef[2][1][1] = 1;
+    coef[3][0][1] = 1; // (xi, 0)
+    coef[4][1][2] = 1; // (0, eta)
+    coef[5][0][2] = 1; // (eta, xi)
+    coef[5][1][1] = 1;
+    if (degree == 2)
+      for (unsigned int m = 0; m < 3; ++m)
+        {
+          coef[6 + m][0][3 + m] = 1; // (xi^2, 0), (xi eta, 0), (eta^2, 0)
+          coef[9 + m][1][3 + m] = 1; // (0, xi^2), (0, xi eta), (0, eta^2)
+        }
+  }
+
+
+
+  template <int dim>
+  dealii::Tensor<1, dim>
+  VirtualElement<dim>::polynomial_value(const unsigned int        alpha,
+                                        const dealii::Point<dim> &p) const
+  {
+    const dealii::Point<dim> s = geometry->scaled(p);
+    dealii::Tensor<1, dim>   v;
+    for (unsigned int c = 0; c < 2; ++c)
+      for (unsigned int m = 0; m < 6; ++m)
+        if (coef[alpha][c][m] != 0.)
+          v[c] += coef[alpha][c][m] * monomial_value(m, s);
+    return v;
+  }
+
+
+
+  template <int dim>
+  dealii::Tensor<2, dim>
+  VirtualElement<dim>::polynomial_gradient(const unsigned int        alpha,
+                                           const dealii::Point<dim> &p) const
+  {
+    const dealii::Point<dim> s = geometry->scaled(p);
+    dealii::Tensor<2, dim>   g;
+    for (unsigned int c = 0; c < 2; ++c)
+      for (unsigned int m = 0; m < 6; ++m)
+        if (coef[alpha][c][m] != 0.)
+          g[c] += coef[alpha][c][m] * monomial_scaled_gradient(m, s);
+    return g / geometry->diameter();
+  }
+
+
+
+  template <int dim>
+  std::vector<unsigned int>
+  VirtualElement<dim>::edge_nodes(const unsigned int edge) const
+  {
+    const unsigned int next = (edge + 1) % n_vertices;
+    if (degree == 1)
+      return {edge, next};
+    return {edge, n_vertices + edge, next};
+  }
+
+
+
+  template <int dim>
+  dealii::Point<dim>
+  VirtualElement<dim>::node_location(const unsigned int j) const
+  {
+    if (j < n_vertices)
+      return geometry->vertex(j);
+    if (j < 2 * n_vertices)
+      return geometry->edge_midpoint(j - n_vertices);
+    return geometry->centroid();
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::reinit(const std::vector<dealii::Point<dim>> &vertices,
+                              const ElasticMaterial                 &material,
+                              const double                           gamma)
+  {
+    AssertThrow(gamma > 0 && std::isfinite(gamma),
+                dealii::ExcMessage("The stabilization factor gamma must be positive, got " +
+                                   std::to_string(gamma) + "."));
+    n_vertices = vertices.size();
+    n_dofs     = n_dofs_per_cell(n_vertices);
+    geometry   = std::make_unique<PolygonGeometry<dim>>(vertices);
+    const PolygonGeometry<dim> &geo = *geometry;
+    const unsigned int          n_p = n_polynomials();
+    const double                h = geo.diameter(), area = geo.area();
+    const unsigned int          N = n_vertices;
+
+    // Integrals of the scaled monomials, for the cell moments.
+    std::array<double, 6> mono_int;
+    for (unsigned int m = 0; m < 6; ++m)
+      mono_int[m] = (degree == 2 || m < 3) ?
+                      geo.integrate_scaled_monomial(monomial_exponents[m][0],
+                                                    monomial_exponents[m][1]) :
+                      0.;
+
+    // ---- D: D(i, alpha) = dof_i(p_alpha)
+    D.reinit(n_dofs, n_p);
+    const unsigned int n_point_nodes = (degree == 1 ? N : 2 * N);
+    for (unsigned int j = 0; j < n_point_nodes; ++j)
+      {
+        const dealii::Point<dim> x = node_location(j);
+        for (unsigned int alpha = 0; alpha < n_p; ++alpha)
+          {
+            const dealii::Tensor<1, dim> v = polynomial_value(alpha, x);
+            D(2 * j, alpha)                = v[0];
+            D(2 * j + 1, alpha)            = v[1];
+          }
+      }
+    if (degree == 2)
+      for (unsigned int alpha = 0; alpha < n_p; ++alpha)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            double moment = 0;
+            for (unsigned int m = 0; m < 6; ++m)
+              moment += coef[alpha][c][m] * mono_int[m];
+            D(2 * (2 * N) + c, alpha) = moment / area;
+          }
+
+    // ---- B
+    B.reinit(n_p, n_dofs);
+    // rows 0, 1: translations
+    if (degree == 2)
+      {
+        B(0, 2 * (2 * N) + 0) = 1.;
+        B(1, 2 * (2 * N) + 1) = 1.;
+      }
+    else
+      for (unsigned int i = 0; i < N; ++i)
+        {
+          B(0, 2 * i + 0) = 1. / N;
+          B(1, 2 * i + 1) = 1. / N;
+        }
+    // Gauss-Lobatto weights on an edge's nodes (relative to its length).
+    const std::vector<double> lobatto =
+      (degree == 1) ? std::vector<double>{0.5, 0.5} :
+                      std::vector<double>{1. / 6., 2. / 3., 1. / 6.};
+    // row 2: mean rotation h/(2|E|) int_dE v.t
+    for (unsigned int e = 0; e < N; ++e)
+      {
+        const auto   nodes = edge_nodes(e);
+        const auto  &t     = geo.edge_tangent(e);
+        const double L     = geo.edge_length(e);
+        for (unsigned int q = 0; q < nodes.size(); ++q)
+          for (unsigned int c = 0; c < 2; ++c)
+            B(2, 2 * nodes[q] + c) += h / (2. * area) * lobatto[q] * L * t[c];
+      }
+    // rows >= 3: a(p_alpha, phi_i) by the divergence theorem
+    const double lambda = material.lambda(), mu = material.mu();
+    for (unsigned int alpha = 3; alpha < n_p; ++alpha)
+      {
+        for (unsigned int e = 0; e < N; ++e)
+          {
+            const auto                   nodes = edge_nodes(e);
+            const dealii::Tensor<1, dim> n     = geo.edge_normal(e);
+            const double                 L     = geo.edge_length(e);
+            for (unsigned int q = 0; q < nodes.size(); ++q)
+              {
+                const dealii::Point<dim> x = node_location(nodes[q]);
+                const dealii::SymmetricTensor<2, dim> eps =
+                  dealii::symmetrize(polynomial_gradient(alpha, x));
+                const dealii::SymmetricTensor<2, dim> sigma = material.stress(eps);
+                const dealii::Tensor<1, dim>          traction = sigma * n;
+                for (unsigned int c = 0; c < 2; ++c)
+                  B(alpha, 2 * nodes[q] + c) += lobatto[q] * L * traction[c];
+              }
+          }
+        if (degree == 2)
+          {
+            // div sigma(p) = (lambda + mu) grad(div p) + mu Laplace(p)
+            dealii::Tensor<1, dim> grad_div, laplace;
+            for (unsigned int c = 0; c < 2; ++c)
+              for (unsigned int m = 3; m < 6; ++m)
+                if (coef[alpha][c][m] != 0.)
+                  {
+                    const dealii::Tensor<2, dim> H =
+                      coef[alpha][c][m] * monomial_scaled_hessian(m) / (h * h);
+                    laplace[c] += H[0][0] + H[1][1];
+                    // div p = sum_c d_c p_c ; grad_j div p = sum_c H_c[c][j]
+                    for (unsigned int j = 0; j < 2; ++j)
+                      grad_div[j] += H[c][j];
+                  }
+            const dealii::Tensor<1, dim> div_sigma = (lambda + mu) * grad_div + mu * laplace;
+            for (unsigned int c = 0; c < 2; ++c)
+              B(alpha, 2 * (2 * N) + c) -= area * div_sigma[c];
+          }
+      }
+
+    // ---- G = B D
+    G.reinit(n_p, n_p);
+    B.mmult(G, D);
+
+    // ---- projector Pi_* = G^{-1} B. G is equilibrated by rows and columns
+    // before it is factored: its rows (energies versus means) and columns
+    // (monomials of different degree, tiny on elongated cells) have very
+    // different sizes. Row scaling r leaves the solution unchanged; column
+    // scaling c gives Pi_* = C (R G C)^{-1} R B.
+    const EigenMatrix Ge = to_eigen(G), Be = to_eigen(B), De = to_eigen(D);
+    Eigen::VectorXd   row_scale(n_p), col_scale(n_p);
+    for (unsigned int a = 0; a < n_p; ++a)
+      {
+        const double s = Ge.row(a).cwiseAbs().maxCoeff();
+        AssertThrow(s > 0 && std::isfinite(s),
+                    dealii::ExcMessage("VirtualElement: degenerate polygon (zero row in G)."));
+        row_scale(a) = 1. / s;
+      }
+    const EigenMatrix Gr = row_scale.asDiagonal() * Ge;
+    for (unsigned int b = 0; b < n_p; ++b)
+      col_scale(b) = 1. / Gr.col(b).cwiseAbs().maxCoeff();
+    const EigenMatrix                   Gs = Gr * col_scale.asDiagonal();
+    const Eigen::FullPivLU<EigenMatrix> lu(Gs);
+    const EigenMatrix Pi = col_scale.asDiagonal() * lu.solve(row_scale.asDiagonal() * Be);
+    from_eigen(Pi, Pi_star);
+
+    // ---- consistency K_c = Pi_*^T Gtilde Pi_*, Gtilde = a(p_alpha, p_beta)
+    // on the strain modes (symmetrized), zero on the rigid modes
+    EigenMatrix Gt = EigenMatrix::Zero(n_p, n_p);
+    for (unsigned int a = 3; a < n_p; ++a)
+      for (unsigned int b = 3; b < n_p; ++b)
+        Gt(a, b) = 0.5 * (Ge(a, b) + Ge(b, a));
+    EigenMatrix Kc = Pi.transpose() * Gt * Pi;
+    Kc             = 0.5 * (Kc + Kc.transpose()).eval();
+
+    // ---- stabilization K_s = gamma tau (I - Pi)^T (I - Pi)
+    const EigenMatrix I_minus_Pi = EigenMatrix::Identity(n_dofs, n_dofs) - De * Pi;
+    const double tau = Kc.trace() / n_dofs;
+    stab_scaling     = gamma * tau;
+    EigenMatrix Ks   = stab_scaling * (I_minus_Pi.transpose() * I_minus_Pi);
+    Ks               = 0.5 * (Ks + Ks.transpose()).eval();
+
+    from_eigen(Kc, K_c);
+    from_eigen(Ks, K_s);
+    from_eigen(Kc + Ks, K);
+  }
+
+
+
+  template <int dim>
+  dealii::FullMatrix<double>
+  VirtualElement<dim>::get_projector_dof_basis() const
+  {
+    dealii::FullMatrix<double> P(n_dofs, n_dofs);
+    D.mmult(P, Pi_star);
+    return P;
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::interpolate(const dealii::Function<dim> &f,
+                                   dealii::Vector<double>      &local) const
+  {
+    AssertDimension(f.n_components, 2);
+    local.reinit(n_dofs);
+    const unsigned int n_point_nodes = (degree == 1 ? n_vertices : 2 * n_vertices);
+    for (unsigned int j = 0; j < n_point_nodes; ++j)
+      {
+        const dealii::Point<dim> x = node_location(j);
+        local[2 * j]               = f.value(x, 0);
+        local[2 * j + 1]           = f.value(x, 1);
+      }
+    if (degree == 2)
+      {
+        const dealii::Quadrature<dim> q = geometry->quadrature(8);
+        double                        m0 = 0, m1 = 0;
+        for (unsigned int k = 0; k < q.size(); ++k)
+          {
+            m0 += q.weight(k) * f.value(q.point(k), 0);
+            m1 += q.weight(k) * f.value(q.point(k), 1);
+          }
+        local[4 * n_vertices]     = m0 / geometry->area();
+        local[4 * n_vertices + 1] = m1 / geometry->area();
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::project(const dealii::Vector<double> &local,
+                               dealii::Vector<double>       &coefficients) const
+  {
+    AssertDimension(local.size(), n_dofs);
+    coefficients.reinit(n_polynomials());
+    Pi_star.vmult(coefficients, local);
+  }
+
+
+
+  template <int dim>
+  dealii::Tensor<1, dim>
+  VirtualElement<dim>::projection_value(const dealii::Vector<double> &c,
+                                        const dealii::Point<dim>     &p) const
+  {
+    dealii::Tensor<1, dim> v;
+    for (unsigned int a = 0; a < n_polynomials(); ++a)
+      v += c[a] * polynomial_value(a, p);
+    return v;
+  }
+
+
+
+  template <int dim>
+  dealii::Tensor<2, dim>
+  VirtualElement<dim>::projection_gradient(const dealii::Vector<double> &c,
+                                           const dealii::Point<dim>     &p) const
+  {
+    dealii::Tensor<2, dim> g;
+    for (unsigned int a = 0; a < n_polynomials(); ++a)
+      g += c[a] * polynomial_gradient(a, p);
+    return g;
+  }
+
+
+
+  template <int dim>
+  dealii::SymmetricTensor<2, dim>
+  VirtualElement<dim>::projection_strain(const dealii::Vector<double> &c,
+                                         const dealii::Point<dim>     &p) const
+  {
+    return dealii::symmetrize(projection_gradient(c, p));
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::body_force_vector(const dealii::Function<dim> &f,
+                                         dealii::Vector<double>      &F,
+                                         const unsigned int           extra_degree) const
+  {
+    AssertDimension(f.n_components, 2);
+    const dealii::Quadrature<dim> q = geometry->quadrature(degree + extra_degree);
+    dealii::Vector<double>        moments(n_polynomials());
+    dealii::Vector<double>        fv(2);
+    for (unsigned int k = 0; k < q.size(); ++k)
+      {
+        f.vector_value(q.point(k), fv);
+        for (unsigned int a = 0; a < n_polynomials(); ++a)
+          {
+            const dealii::Tensor<1, dim> pa = polynomial_value(a, q.point(k));
+            moments[a] += q.weight(k) * (fv[0] * pa[0] + fv[1] * pa[1]);
+          }
+      }
+    F.reinit(n_dofs);
+    Pi_star.Tvmult(F, moments);
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::add_edge_traction(const unsigned int           edge,
+                                         const dealii::Function<dim> &g,
+                                         dealii::Vector<double>      &F) const
+  {
+    AssertDimension(g.n_components, 2);
+    AssertDimension(F.size(), n_dofs);
+    const auto               nodes = edge_nodes(edge);
+    const dealii::Point<dim> a     = geometry->vertex(edge);
+    const dealii::Point<dim> b     = geometry->vertex((edge + 1) % n_vertices);
+    const double             L     = geometry->edge_length(edge);
+    const dealii::QGauss<1>  q(5);
+    dealii::Vector<double>   gv(2);
+    for (unsigned int k = 0; k < q.size(); ++k)
+      {
+        const double             s = q.point(k)[0];
+        const dealii::Point<dim> x = a + s * (b - a);
+        g.vector_value(x, gv);
+        // 1D Lagrange basis on the nodes of the edge
+        std::vector<double> phi;
+        if (degree == 1)
+          phi = {1. - s, s};
+        else
+          phi = {(1. - s) * (1. - 2. * s), 4. * s * (1. - s), s * (2. * s - 1.)};
+        for (unsigned int j = 0; j < nodes.size(); ++j)
+          for (unsigned int c = 0; c < 2; ++c)
+            F[2 * nodes[j] + c] += q.weight(k) * L * phi[j] * gv[c];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::add_edge_pressure(const unsigned int           edge,
+                                         const dealii::Function<dim> &pressure,
+                                         dealii::Vector<double>      &F) const
+  {
+    // g = -p n: wrap the scalar pressure into a vector function.
+    class Traction : public dealii::Function<dim>
+    {
+    public:
+      Traction(const dealii::Function<dim> &p, const dealii::Tensor<1, dim> &n)
+        : dealii::Function<dim>(2)
+        , p(p)
+        , n(n)
+      {}
+      double
+      value(const dealii::Point<dim> &x, const unsigned int c) const override
+      {
+        return -p.value(x) * n[c];
+      }
+      void
+      vector_value(const dealii::Point<dim> &x, dealii::Vector<double> &v) const override
+      {
+        const double pv = p.value(x);
+        v[0]            = -pv * n[0];
+        v[1]            = -pv * n[1];
+      }
+
+    private:
+      const dealii::Function<dim> &p;
+      const dealii::Tensor<1, dim> n;
+    };
+    const Traction t(pressure, geometry->edge_normal(edge));
+    add_edge_traction(edge, t, F);
+  }
+
+  template class VirtualElement<2>;
+} // namespace dealvem

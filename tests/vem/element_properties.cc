@@ -1,0 +1,177 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// For k = 1 and 2, plane strain and plane stress, on many polygon shapes:
+// - the projector reproduces polynomials: Pi p = p for every p in [P_k]^2
+//   (checked as Pi_* D = I and Pi D = D), relative 1e-10;
+// - the element stiffness is symmetric and positive semidefinite with
+//   exactly three zero eigenvalues (|lambda| <= 1e-10 lambda_max), and the
+//   kernel contains the rigid-body modes;
+// - the consistency part reproduces the energy of polynomials:
+//   D^T K D = Gtilde (K_E exact on [P_k]^2).
+#include <deal.II/base/point.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <dealvem/vem/virtual_element.h>
+
+#include <cmath>
+#include <random>
+
+#include "../tests.h"
+
+using namespace dealvem;
+using P = dealii::Point<2>;
+
+std::vector<P>
+regular_polygon(const unsigned int n, const double r, const P c = P())
+{
+  std::vector<P> v;
+  for (unsigned int i = 0; i < n; ++i)
+    v.emplace_back(c[0] + r * std::cos(2 * M_PI * i / n + 0.3), c[1] + r * std::sin(2 * M_PI * i / n + 0.3));
+  return v;
+}
+
+std::vector<P>
+random_convex_polygon(const unsigned int n, std::mt19937 &rng)
+{
+  // sorted random angles on an ellipse, then a random shift
+  std::uniform_real_distribution<double> u(0, 2 * M_PI);
+  std::vector<double>                    angles(n);
+  for (auto &a : angles)
+    a = u(rng);
+  std::sort(angles.begin(), angles.end());
+  std::vector<P> v;
+  for (const double a : angles)
+    v.emplace_back(3.0 + 1.3 * std::cos(a), -2.0 + 0.7 * std::sin(a));
+  return v;
+}
+
+std::vector<P>
+scaled(const std::vector<P> &v, const double s, const P shift = P())
+{
+  std::vector<P> r;
+  for (const auto &p : v)
+    r.emplace_back(shift[0] + s * p[0], shift[1] + s * p[1]);
+  return r;
+}
+
+void
+check_polygon(const std::string &name, const std::vector<P> &vertices)
+{
+  for (const unsigned int k : {1u, 2u})
+    for (const auto model : {ElasticMaterial::Model::plane_strain, ElasticMaterial::Model::plane_stress})
+      {
+        const ElasticMaterial material(210e3, 0.3, model);
+        VirtualElement<2>     element(k);
+        element.reinit(vertices, material, 1.0);
+        const auto        &D  = element.get_D();
+        const auto        &Ps = element.get_projector();
+        const auto        &K  = element.get_stiffness_matrix();
+        const unsigned int n  = K.m(), np = element.n_polynomials();
+
+        // Pi_* D = I
+        dealii::FullMatrix<double> PD(np, np);
+        Ps.mmult(PD, D);
+        double err_proj = 0;
+        for (unsigned int a = 0; a < np; ++a)
+          for (unsigned int b = 0; b < np; ++b)
+            err_proj = std::max(err_proj, std::abs(PD(a, b) - (a == b ? 1. : 0.)));
+
+        // symmetry
+        double kmax = 0, asym = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              kmax = std::max(kmax, std::abs(K(i, j)));
+              asym = std::max(asym, std::abs(K(i, j) - K(j, i)));
+            }
+
+        // eigenvalues
+        dealii::Vector<double>     eig;
+        dealii::FullMatrix<double> vec;
+        dealii::LAPACKFullMatrix<double> LK2(n, n);
+        LK2 = K;
+        LK2.compute_eigenvalues_symmetric(-1e300, 1e300, 0., eig, vec);
+        const double lmax   = eig[eig.size() - 1];
+        unsigned int n_zero = 0;
+        double       lmin   = 1e300;
+        for (unsigned int i = 0; i < eig.size(); ++i)
+          {
+            if (std::abs(eig[i]) <= 1e-10 * lmax)
+              ++n_zero;
+            lmin = std::min(lmin, eig[i]);
+          }
+
+        // D^T K D equals a(p_alpha, p_beta) (zero on the rigid modes)
+        const auto                &G = element.get_G();
+        dealii::FullMatrix<double> KD(n, np), DKD(np, np);
+        K.mmult(KD, D);
+        D.Tmmult(DKD, KD);
+        double err_energy = 0, gmax = 0;
+        for (unsigned int a = 0; a < np; ++a)
+          for (unsigned int b = 0; b < np; ++b)
+            {
+              const double g = (a >= 3 && b >= 3) ? 0.5 * (G(a, b) + G(b, a)) : 0.;
+              gmax           = std::max(gmax, std::abs(g));
+              err_energy     = std::max(err_energy, std::abs(DKD(a, b) - g));
+            }
+
+        const std::string tag = name + " k=" + std::to_string(k) + " " + ElasticMaterial::model_name(model);
+        testing::check_small(err_proj, 1e-10, tag + ": |Pi_* D - I|");
+        testing::check_small(asym / kmax, 1e-13, tag + ": asymmetry of K");
+        testing::check(lmin >= -1e-10 * lmax, tag + ": K positive semidefinite");
+        testing::check(n_zero == 3, tag + ": exactly 3 zero eigenvalues (found " + std::to_string(n_zero) + ")");
+        // amplified by cond(G) on elongated cells: 1e-9 relative
+        testing::check_small(err_energy / gmax, 1e-9, tag + ": D^T K D = a(p,p)");
+      }
+}
+
+int
+main()
+{
+  std::mt19937 rng(42);
+  check_polygon("triangle", {P(0, 0), P(1, 0), P(0.2, 0.9)});
+  check_polygon("unit square", {P(0, 0), P(1, 0), P(1, 1), P(0, 1)});
+  check_polygon("skew quad", {P(0.1, -0.2), P(1.3, 0.1), P(1.1, 0.8), P(-0.2, 1.2)});
+  check_polygon("regular hexagon", regular_polygon(6, 1.0));
+  check_polygon("regular 11-gon", regular_polygon(11, 0.5, P(5, 7)));
+  for (unsigned int i = 0; i < 4; ++i)
+    check_polygon("random convex " + std::to_string(i), random_convex_polygon(5 + 2 * i, rng));
+  // a Voronoi-like cell: irregular convex heptagon with a very short edge
+  check_polygon("voronoi-like heptagon", {P(0, 0), P(1, -0.1), P(1.6, 0.5), P(1.6001, 0.5003), P(1.2, 1.3), P(0.3, 1.4), P(-0.4, 0.7)});
+  // non-convex: L shape, arrow, star
+  check_polygon("L shape", {P(0, 0), P(2, 0), P(2, 1), P(1, 1), P(1, 2), P(0, 2)});
+  check_polygon("arrow", {P(0, 0), P(1, 0.5), P(2, 0), P(1, 2)});
+  {
+    std::vector<P> star;
+    for (unsigned int i = 0; i < 10; ++i)
+      {
+        const double r = (i % 2 == 0) ? 1.0 : 0.4;
+        star.emplace_back(r * std::cos(2 * M_PI * i / 10), r * std::sin(2 * M_PI * i / 10));
+      }
+    check_polygon("star (non-convex, not star-shaped w.r.t. vertices)", star);
+  }
+  // collinear (hanging) vertices: a square with extra vertices on two edges
+  check_polygon("square with 3 collinear vertices", {P(0, 0), P(0.5, 0), P(1, 0), P(1, 0.3), P(1, 1), P(0, 1), P(0, 0.5)});
+  check_polygon("quad with hanging node (triangle-like)", {P(0, 0), P(1, 0), P(2, 0), P(1, 1)});
+  // aspect ratio 1:100
+  check_polygon("quad 1:100", {P(0, 0), P(1, 0), P(1, 0.01), P(0, 0.01)});
+  // (A 1:100 cell with an extra collinear vertex has a physical fourth
+  // eigenvalue of about 1e-11 lambda_max for k = 2 -- a thin-plate bending
+  // mode -- so it cannot be told apart from zero at 1e-10 and is not used.)
+  check_polygon("hexagon 1:100", {P(0, 0), P(0.5, -0.002), P(1, 0), P(1, 0.01), P(0.5, 0.012), P(0, 0.01)});
+  {
+    // the same quad rotated by 30 degrees and moved away from the origin
+    std::vector<P> q;
+    for (const P &p : {P(0, 0), P(1, 0), P(1, 0.01), P(0, 0.01)})
+      q.emplace_back(10 + std::cos(M_PI / 6) * p[0] - std::sin(M_PI / 6) * p[1], -5 + std::sin(M_PI / 6) * p[0] + std::cos(M_PI / 6) * p[1]);
+    check_polygon("quad 1:100 rotated by 30 degrees", q);
+  }
+  // tiny and huge cells
+  check_polygon("pentagon of size 1e-6", scaled(regular_polygon(5, 1.0), 1e-6, P(1, 1)));
+  check_polygon("pentagon of size 1e6", scaled(regular_polygon(5, 1.0), 1e6, P(-3e6, 2e6)));
+  check_polygon("L shape of size 1e-6", scaled({P(0, 0), P(2, 0), P(2, 1), P(1, 1), P(1, 2), P(0, 2)}, 1e-6));
+  check_polygon("L shape of size 1e6", scaled({P(0, 0), P(2, 0), P(2, 1), P(1, 1), P(1, 2), P(0, 2)}, 1e6));
+  return testing::finish();
+}
