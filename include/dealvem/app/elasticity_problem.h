@@ -1,0 +1,68 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_app_elasticity_problem_h
+#define dealvem_app_elasticity_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <dealvem/app/mesh_parameters.h>
+#include <dealvem/app/problem_setup.h>
+#include <dealvem/elasticity/material.h>
+
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * The parameter-file driven elasticity problem behind `dealvem
+   * input.prm` (one body): mesh, material, order k and $\gamma$, boundary
+   * conditions and loads by boundary id, body force, optional exact
+   * solution with a convergence study, solver, and output (VTU, JSON).
+   *
+   * Data flow of run(): mesh -> DoFs -> constraints -> assembly -> solve
+   * -> stresses and errors -> output, once per refinement cycle.
+   */
+  class ElasticityProblem
+  {
+  public:
+    /// Declare every parameter (with its help string).
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// Read the parameters; @p prm_directory is where relative file names
+    /// are looked up.
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &prm_directory = "");
+
+    /// Solve (all refinement cycles), write the output, return 0.
+    void
+    run();
+
+    /// Errors of the last cycle (NaN without exact solution): L2, H1, energy.
+    std::vector<double> last_errors;
+
+    /// Number of DoFs of the last cycle.
+    unsigned int last_n_dofs = 0;
+
+  private:
+    MeshParameters         mesh_parameters;
+    double                 youngs_modulus = 1000, poissons_ratio = 0.3;
+    ElasticMaterial::Model model = ElasticMaterial::Model::plane_strain;
+    unsigned int           degree = 2;
+    double                 gamma  = 1.0;
+    BoundaryConditionParameters bc;
+    std::string                 exact_displacement;
+    std::string  solver_type = "UMFPACK";
+    double       solver_tolerance = 1e-12;
+    unsigned int solver_max_iterations = 10000;
+    unsigned int n_cycles = 1;
+    std::string  output_folder = "output", base_name = "solution";
+    bool         write_vtu = true, write_json = true;
+    std::string  prm_directory;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,63 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_app_mesh_parameters_h
+#define dealvem_app_mesh_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <dealvem/mesh/polygonal_mesh.h>
+
+#include <string>
+
+namespace dealvem
+{
+  /**
+   * The mesh source of one body, as a parameter-file section:
+   * a generator (structured quads or triangles, perturbed quads,
+   * centroidal Voronoi, the non-convex family) on a rectangle, a polygon
+   * mesh file (legacy VTK, see MeshIO), or any file deal.II's GridIn reads
+   * (gmsh .msh with physical groups as boundary ids, UCD, ...).
+   */
+  struct MeshParameters
+  {
+    std::string      type = "voronoi";
+    dealii::Point<2> lower_left{0., 0.};
+    dealii::Point<2> upper_right{1., 1.};
+    unsigned int     nx = 8, ny = 8;
+    unsigned int     n_cells = 64;
+    unsigned int     lloyd_iterations = 20;
+    double           perturbation = 0.2;
+    double           nonconvex_depth = 0.3;
+    unsigned int     seed = 1;
+    std::string      file_name;
+    unsigned int     material_id = 0;
+
+    /// Declare the entries in the current subsection of @p prm.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// Read them back; @p section is used in error messages.
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &section);
+
+    /**
+     * Build the mesh. @p refinement > 0 refines generated meshes
+     * (subdivisions times 2^refinement, Voronoi cells times 4^refinement);
+     * files cannot be refined (AssertThrow). Relative file names are taken
+     * relative to @p base_directory. All cells get material_id.
+     */
+    void
+    create_mesh(PolygonalMesh<2>  &mesh,
+                const unsigned int refinement,
+                const std::string &base_directory = "") const;
+
+    /// A one-line description, e.g. "voronoi, 64 cells, 20 Lloyd iterations".
+    std::string
+    description() const;
+  };
+} // namespace dealvem
+
+#endif

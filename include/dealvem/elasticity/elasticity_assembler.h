@@ -1,0 +1,101 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_elasticity_elasticity_assembler_h
+#define dealvem_elasticity_elasticity_assembler_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/elasticity/material.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <map>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * Assembles the global stiffness matrix and load vector of 2D linear
+   * elasticity with the virtual element of VEMDoFHandler::get_degree().
+   *
+   * Takes: a VEMDoFHandler with distributed DoFs, one ElasticMaterial per
+   * material id, the stabilization factor $\gamma$, loads (body force,
+   * tractions and pressures on boundary ids) and an AffineConstraints object
+   * holding the Dirichlet data. Gives: the condensed matrix and right-hand
+   * side, assembled cell by cell with
+   * AffineConstraints::distribute_local_to_global (as in deal.II's step-8).
+   *
+   * The loads are those of VirtualElement: body force through the
+   * projection, tractions and pressures by a 5-point Gauss rule on each
+   * loaded boundary edge.
+   */
+  template <int dim>
+  class ElasticityAssembler
+  {
+  public:
+    ElasticityAssembler(const VEMDoFHandler<dim>                                   &dof_handler,
+                        const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                        const double                                                gamma = 1.0);
+
+    /// Body force (2 components). The function must outlive the assembler.
+    void
+    set_body_force(const dealii::Function<dim> &f);
+
+    /// Traction (2 components) on the boundary edges with id @p id.
+    void
+    add_traction(const dealii::types::boundary_id id, const dealii::Function<dim> &g);
+
+    /// Normal pressure (scalar, positive = pushing into the body) on the
+    /// boundary edges with id @p id.
+    void
+    add_pressure(const dealii::types::boundary_id id, const dealii::Function<dim> &p);
+
+    /// The material of cell @p c (throws naming the cell if its material id
+    /// has no material).
+    const ElasticMaterial &
+    get_material(const unsigned int c) const;
+
+    const std::map<dealii::types::material_id, ElasticMaterial> &
+    get_materials() const
+    {
+      return materials;
+    }
+
+    double
+    get_gamma() const
+    {
+      return gamma;
+    }
+
+    /// Assemble the matrix and the right-hand side. @p matrix must have a
+    /// sparsity pattern from VEMDoFHandler::make_sparsity_pattern (with the
+    /// constraints' entries added, as for deal.II).
+    void
+    assemble(const dealii::AffineConstraints<double> &constraints,
+             dealii::SparseMatrix<double>            &matrix,
+             dealii::Vector<double>                  &rhs) const;
+
+    /// Assemble only the (unconstrained) load vector: body force and
+    /// boundary loads.
+    void
+    assemble_load_vector(dealii::Vector<double> &rhs) const;
+
+  private:
+    void
+    local_load(const unsigned int c, const void *element, dealii::Vector<double> &F) const;
+
+    const VEMDoFHandler<dim>                               &dof_handler;
+    std::map<dealii::types::material_id, ElasticMaterial>   materials;
+    double                                                  gamma;
+    const dealii::Function<dim>                            *body_force = nullptr;
+    std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> tractions;
+    std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> pressures;
+  };
+} // namespace dealvem
+
+#endif

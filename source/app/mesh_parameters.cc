@@ -1,0 +1,148 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <dealvem/app/input_parsing.h>
+#include <dealvem/app/mesh_parameters.h>
+#include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/mesh_io.h>
+
+#include <sstream>
+
+namespace dealvem
+{
+  void
+  MeshParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using dealii::Patterns::Anything;
+    using dealii::Patterns::Double;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+    prm.declare_entry("Type", "voronoi",
+                      Selection("structured quads|structured triangles|perturbed quads|voronoi|"
+                                "nonconvex|vtk file|gridin file"),
+                      "Mesh source. Generators work on the rectangle given by the corners; "
+                      "'vtk file' reads a polygon mesh in legacy VTK format; 'gridin file' "
+                      "reads any format of deal.II's GridIn (gmsh .msh: physical lines become "
+                      "boundary ids, physical surfaces material ids).");
+    prm.declare_entry("Lower left corner", "0, 0", Anything(),
+                      "Lower left corner x, y of the rectangle of the generators.");
+    prm.declare_entry("Upper right corner", "1, 1", Anything(),
+                      "Upper right corner x, y of the rectangle of the generators.");
+    prm.declare_entry("Subdivisions", "8, 8", Anything(),
+                      "Number of cells nx, ny of the structured, perturbed and non-convex generators.");
+    prm.declare_entry("Number of cells", "64", Integer(1),
+                      "Number of Voronoi cells.");
+    prm.declare_entry("Lloyd iterations", "20", Integer(0),
+                      "Number of Lloyd iterations of the centroidal Voronoi generator.");
+    prm.declare_entry("Perturbation", "0.2", Double(0, 0.49),
+                      "Random vertex perturbation of 'perturbed quads', relative to the cell size.");
+    prm.declare_entry("Non-convex depth", "0.3", Double(0.01, 0.49),
+                      "Depth of the reflex vertex of the 'nonconvex' cells, relative to the cell height.");
+    prm.declare_entry("Seed", "1", Integer(0),
+                      "Seed of the random generators (same seed, same mesh).");
+    prm.declare_entry("File name", "", Anything(),
+                      "Mesh file for 'vtk file' and 'gridin file' (relative to the parameter file).");
+    prm.declare_entry("Material id", "0", Integer(0, 254),
+                      "Material (body) id given to every cell of a generated mesh.");
+  }
+
+
+
+  namespace
+  {
+    dealii::Point<2>
+    parse_point(const std::string &s, const std::string &name)
+    {
+      const auto parts = InputParsing::split(s, ',');
+      AssertThrow(parts.size() == 2,
+                  dealii::ExcMessage("Parameter '" + name + "': expected 'x, y', got '" + s + "'."));
+      return dealii::Point<2>(InputParsing::parse_double(parts[0], name),
+                              InputParsing::parse_double(parts[1], name));
+    }
+  } // namespace
+
+
+
+  void
+  MeshParameters::parse_parameters(dealii::ParameterHandler &prm, const std::string &section)
+  {
+    type        = prm.get("Type");
+    lower_left  = parse_point(prm.get("Lower left corner"), section + "/Lower left corner");
+    upper_right = parse_point(prm.get("Upper right corner"), section + "/Upper right corner");
+    AssertThrow(upper_right[0] > lower_left[0] && upper_right[1] > lower_left[1],
+                dealii::ExcMessage("Parameters '" + section +
+                                   "/Lower left corner' and 'Upper right corner': the upper right "
+                                   "corner must lie above and right of the lower left corner."));
+    const auto sub = InputParsing::split(prm.get("Subdivisions"), ',');
+    AssertThrow(sub.size() == 2,
+                dealii::ExcMessage("Parameter '" + section + "/Subdivisions': expected 'nx, ny'."));
+    nx = InputParsing::parse_unsigned(sub[0], section + "/Subdivisions");
+    ny = InputParsing::parse_unsigned(sub[1], section + "/Subdivisions");
+    AssertThrow(nx >= 1 && ny >= 1,
+                dealii::ExcMessage("Parameter '" + section + "/Subdivisions' must be at least 1, 1."));
+    n_cells          = prm.get_integer("Number of cells");
+    lloyd_iterations = prm.get_integer("Lloyd iterations");
+    perturbation     = prm.get_double("Perturbation");
+    nonconvex_depth  = prm.get_double("Non-convex depth");
+    seed             = prm.get_integer("Seed");
+    file_name        = prm.get("File name");
+    material_id      = prm.get_integer("Material id");
+    AssertThrow(type.find("file") == std::string::npos || !file_name.empty(),
+                dealii::ExcMessage("Parameter '" + section + "/File name' is empty but 'Type' is '" +
+                                   type + "'."));
+  }
+
+
+
+  void
+  MeshParameters::create_mesh(PolygonalMesh<2>  &mesh,
+                              const unsigned int refinement,
+                              const std::string &base_directory) const
+  {
+    const unsigned int f = 1u << refinement;
+    namespace G          = PolygonalMeshGenerators;
+    if (type == "structured quads")
+      G::structured_quads(mesh, lower_left, upper_right, nx * f, ny * f);
+    else if (type == "structured triangles")
+      G::structured_triangles(mesh, lower_left, upper_right, nx * f, ny * f);
+    else if (type == "perturbed quads")
+      G::perturbed_quads(mesh, lower_left, upper_right, nx * f, ny * f, perturbation, seed);
+    else if (type == "voronoi")
+      G::voronoi(mesh, lower_left, upper_right, n_cells * f * f, lloyd_iterations, seed);
+    else if (type == "nonconvex")
+      G::nonconvex(mesh, lower_left, upper_right, nx * f, ny * f, nonconvex_depth);
+    else
+      {
+        AssertThrow(refinement == 0,
+                    dealii::ExcMessage("A mesh read from file '" + file_name +
+                                       "' cannot be refined in a convergence study."));
+        std::string path = file_name;
+        if (!path.empty() && path[0] != '/' && !base_directory.empty())
+          path = base_directory + "/" + path;
+        if (type == "vtk file")
+          MeshIO::read_vtk(mesh, path);
+        else
+          G::from_gridin_file(mesh, path);
+        return; // keep the file's material ids
+      }
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      mesh.set_material_id(c, material_id);
+  }
+
+
+
+  std::string
+  MeshParameters::description() const
+  {
+    std::ostringstream s;
+    s << type;
+    if (type == "voronoi")
+      s << ", " << n_cells << " cells, " << lloyd_iterations << " Lloyd iterations, seed " << seed;
+    else if (type.find("file") != std::string::npos)
+      s << " '" << file_name << "'";
+    else
+      s << ", " << nx << " x " << ny;
+    return s.str();
+  }
+} // namespace dealvem
