@@ -4,6 +4,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
 
 #include <dealvem/app/input_parsing.h>
 
@@ -119,7 +120,7 @@ namespace dealvem
     {
       AssertThrow(!expressions.empty(),
                   dealii::ExcMessage("Parameter '" + parameter + "': no expression given."));
-      set_formula_of_difference_quotient(FourthOrder);
+      set_formula(FourthOrder);
       try
         {
           parser.initialize("x,y", expressions, constants);

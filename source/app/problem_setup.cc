@@ -83,7 +83,8 @@ namespace dealvem
         AssertThrow(fields[1] == "x" || fields[1] == "y" || fields[1] == "xy",
                     dealii::ExcMessage("Parameter '" + name + "': components must be x, y or xy, got '" +
                                        fields[1] + "'."));
-        d.mask           = {fields[1].find('x') != std::string::npos, fields[1].find('y') != std::string::npos};
+        d.mask           = {{fields[1].find('x') != std::string::npos,
+                             fields[1].find('y') != std::string::npos}};
         const auto exprs = InputParsing::split(fields[2], ',');
         AssertThrow(exprs.size() == (d.mask[0] && d.mask[1] ? 2u : 1u),
                     dealii::ExcMessage("Parameter '" + name + "': expected one expression per component."));

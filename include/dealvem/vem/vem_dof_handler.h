@@ -6,7 +6,6 @@
 #define dealvem_vem_vem_dof_handler_h
 
 #include <deal.II/base/point.h>
-#include <deal.II/base/smartpointer.h>
 #include <deal.II/base/types.h>
 
 #include <dealvem/mesh/polygonal_mesh.h>
@@ -145,7 +144,7 @@ namespace dealvem
     rigid_body_modes() const;
 
   private:
-    dealii::SmartPointer<const PolygonalMesh<dim>> mesh;
+    const PolygonalMesh<dim>                      *mesh = nullptr;
     unsigned int                                   degree = 0;
     dealii::types::global_dof_index                n_dofs_ = 0;
     unsigned int                                   n_vertex_nodes = 0;
