@@ -3,12 +3,15 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 // The parameter-file program:
-//   dealvem input.prm            solve the problem described in input.prm
+//   dealvem input.prm            solve the problem described in input.prm:
+//                                one body (elasticity, optional convergence
+//                                study) or several bodies in contact
 //   dealvem --print-parameters   print every parameter with its default
 //                                value and documentation
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <dealvem/app/contact_problem.h>
 #include <dealvem/app/elasticity_problem.h>
 
 #include <filesystem>
@@ -22,6 +25,7 @@ main(int argc, char **argv)
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       dealii::ParameterHandler                 prm;
       dealvem::ElasticityProblem::declare_parameters(prm);
+      dealvem::ContactProblem::declare_parameters(prm);
 
       const std::string arg = (argc > 1 ? argv[1] : "");
       if (argc != 2 || arg == "-h" || arg == "--help")
@@ -41,9 +45,19 @@ main(int argc, char **argv)
           return 1;
         }
       prm.parse_input(arg);
-      dealvem::ElasticityProblem problem;
-      problem.parse_parameters(prm, std::filesystem::path(arg).parent_path().string());
-      problem.run();
+      const std::string directory = std::filesystem::path(arg).parent_path().string();
+      if (dealvem::ContactProblem::n_bodies(prm) > 1)
+        {
+          dealvem::ContactProblem problem;
+          problem.parse_parameters(prm, directory);
+          problem.run();
+        }
+      else
+        {
+          dealvem::ElasticityProblem problem;
+          problem.parse_parameters(prm, directory);
+          problem.run();
+        }
     }
   catch (std::exception &exc)
     {

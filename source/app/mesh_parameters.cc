@@ -7,6 +7,7 @@
 #include <dealvem/mesh/generators.h>
 #include <dealvem/mesh/mesh_io.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace dealvem
@@ -45,6 +46,14 @@ namespace dealvem
                       "Mesh file for 'vtk file' and 'gridin file' (relative to the parameter file).");
     prm.declare_entry("Material id", "0", Integer(0, 254),
                       "Material (body) id given to every cell of a generated mesh.");
+    prm.declare_entry("Boundary id offset", "0", Integer(0, 200),
+                      "Added to every boundary id of the mesh (generators use 0 left, 1 right, "
+                      "2 bottom, 3 top), so that the bodies of a contact problem have distinct ids.");
+    prm.declare_entry("Shift", "0, 0", Anything(), "Translation x, y applied to the mesh.");
+    prm.declare_entry("Transformation", "", Anything(),
+                      "Map of the vertices 'x_new, y_new' as muparser expressions in x, y (with "
+                      "pi), applied before the shift; edges stay straight and the mapped mesh is "
+                      "validated. Example for a sloped top: 'x, y*(1 + 0.2*x)'. Empty: none.");
   }
 
 
@@ -88,6 +97,16 @@ namespace dealvem
     seed             = prm.get_integer("Seed");
     file_name        = prm.get("File name");
     material_id      = prm.get_integer("Material id");
+    boundary_id_offset = prm.get_integer("Boundary id offset");
+    shift            = parse_point(prm.get("Shift"), section + "/Shift");
+    transformation   = prm.get("Transformation");
+    if (!InputParsing::trim(transformation).empty())
+      {
+        const auto e = InputParsing::split(transformation, ',');
+        AssertThrow(e.size() == 2, dealii::ExcMessage("Parameter '" + section +
+                                                      "/Transformation': expected 'x_new, y_new'."));
+        InputParsing::ParsedFunction f(e, {{"pi", M_PI}}, section + "/Transformation");
+      }
     AssertThrow(type.find("file") == std::string::npos || !file_name.empty(),
                 dealii::ExcMessage("Parameter '" + section + "/File name' is empty but 'Type' is '" +
                                    type + "'."));
@@ -124,10 +143,39 @@ namespace dealvem
           MeshIO::read_vtk(mesh, path);
         else
           G::from_gridin_file(mesh, path);
-        return; // keep the file's material ids
       }
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      mesh.set_material_id(c, material_id);
+    if (type.find("file") == std::string::npos)
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        mesh.set_material_id(c, material_id);
+    if (boundary_id_offset > 0)
+      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+        if (mesh.edge(e).at_boundary())
+          {
+            const unsigned int id = mesh.edge(e).boundary_id + boundary_id_offset;
+            AssertThrow(id < dealii::numbers::internal_face_boundary_id,
+                        dealii::ExcMessage("Boundary id offset: id " + std::to_string(id) +
+                                           " is out of range (0..254)."));
+            mesh.set_edge_boundary_id(e, dealii::types::boundary_id(id));
+          }
+    if (!InputParsing::trim(transformation).empty())
+      {
+        const InputParsing::ParsedFunction f(InputParsing::split(transformation, ','),
+                                             {{"pi", M_PI}}, "Transformation");
+        PolygonalMesh<2> mapped;
+        mapped.name = mesh.name + " (transformed)";
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          mapped.add_vertex(dealii::Point<2>(f.value(mesh.vertex(v), 0), f.value(mesh.vertex(v), 1)));
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          mapped.add_cell(mesh.cell(c).vertices, mesh.cell(c).material_id);
+        for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+          if (mesh.edge(e).at_boundary())
+            mapped.set_boundary_id(mesh.edge(e).vertices[0], mesh.edge(e).vertices[1],
+                                   mesh.edge(e).boundary_id);
+        mapped.finalize();
+        mesh = mapped;
+      }
+    if (shift.norm() > 0)
+      mesh.shift(shift);
   }
 
 

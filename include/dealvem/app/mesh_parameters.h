@@ -34,6 +34,10 @@ namespace dealvem
     unsigned int     seed = 1;
     std::string      file_name;
     unsigned int     material_id = 0;
+    unsigned int     boundary_id_offset = 0;
+    dealii::Point<2> shift{0., 0.};
+    /// Vertex map "x', y'" in x, y (muparser); empty for none.
+    std::string      transformation;
 
     /// Declare the entries in the current subsection of @p prm.
     static void
@@ -47,7 +51,11 @@ namespace dealvem
      * Build the mesh. @p refinement > 0 refines generated meshes
      * (subdivisions times 2^refinement, Voronoi cells times 4^refinement);
      * files cannot be refined (AssertThrow). Relative file names are taken
-     * relative to @p base_directory. All cells get material_id.
+     * relative to @p base_directory. All cells of generated meshes get
+     * material_id; every boundary id is increased by boundary_id_offset
+     * (so that several bodies can use the generators' ids 0..3 without
+     * clashing), the vertices are mapped by the transformation (edges stay
+     * straight; the result is validated) and the mesh is moved by shift.
      */
     void
     create_mesh(PolygonalMesh<2>  &mesh,

@@ -1,0 +1,125 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_app_contact_problem_h
+#define dealvem_app_contact_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/app/mesh_parameters.h>
+#include <dealvem/app/problem_setup.h>
+#include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/node_insertion.h>
+#include <dealvem/elasticity/material.h>
+#include <dealvem/mesh/polygonal_mesh.h>
+
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * The multi-body contact problem behind `dealvem input.prm` when the
+   * parameter file has more than one body.
+   *
+   * Body 0 is described by the top-level sections "Mesh" and "Material"
+   * (as for one body), bodies 1, 2, 3 by the sections "Body 1", ... each
+   * with its own "Mesh" and "Material" subsections. Every body gets its
+   * index as material id; the "Boundary id offset" of a body's mesh keeps
+   * the boundary ids of the bodies apart. The section "Contact" lists the
+   * contact pairs "master id : slave id; ..." and the contact options.
+   *
+   * Data flow of run(): meshes of the bodies -> one mesh -> node insertion
+   * on each contact pair -> DoFs -> constraints -> assembly of K and f ->
+   * contact blocks -> active-set loop of saddle-point solves -> stresses,
+   * contact pressures -> VTU, CSV, JSON, SVG pictures.
+   */
+  class ContactProblem
+  {
+  public:
+    static constexpr unsigned int max_bodies = 4;
+
+    /// Declare the sections of the extra bodies and of contact (the
+    /// common sections come from ElasticityProblem::declare_parameters()).
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// Number of bodies in a parsed parameter handler.
+    static unsigned int
+    n_bodies(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const std::string &prm_directory = "");
+
+    void
+    run();
+
+    /// Results of one contact node pair.
+    struct PairResult
+    {
+      unsigned int     interface;
+      dealii::Point<2> location;
+      bool             midpoint;
+      bool             active;
+      double           weight;
+      double           gap;
+      double           pressure;            ///< -lambda / weight (compression > 0)
+      double           tangential_traction; ///< tangential force / weight
+      double           slip;
+    };
+
+    /// Everything a test or a user program wants to look at after run().
+    struct Results
+    {
+      PolygonalMesh<2>             mesh;
+      std::vector<PairResult>      pairs;
+      std::vector<NodeInsertion::Report> insertion_reports;
+      unsigned int                 n_dofs = 0, n_multipliers = 0;
+      unsigned int                 active_set_iterations = 0;
+      std::vector<unsigned int>    active_set_history;
+      unsigned int                 linear_iterations = 0;
+      dealii::Tensor<1, 2>         total_contact_force; ///< on the slave bodies
+      std::vector<dealii::Tensor<1, 2>> applied_load_per_body;
+      double                       penalty = 0;
+      /// Cell-average stresses (xx, yy, xy) per cell.
+      std::vector<std::array<double, 3>> cell_stress;
+      dealii::Vector<double>       solution;
+      std::string                  solver;
+    };
+
+    const Results &
+    get_results() const
+    {
+      return results;
+    }
+
+  private:
+    struct Body
+    {
+      MeshParameters mesh;
+      double         E = 1000, nu = 0.3;
+    };
+    std::vector<Body>          bodies;
+    ElasticMaterial::Model     model = ElasticMaterial::Model::plane_strain;
+    unsigned int               degree = 2;
+    double                     gamma  = 1.0;
+    BoundaryConditionParameters bc;
+    std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> contact_pairs;
+    ContactSettings            contact_settings;
+    NodeInsertion::Settings    insertion_settings;
+    std::string                solver_type = "UMFPACK";
+    double                     solver_tolerance = 1e-12;
+    unsigned int               solver_max_iterations = 2000;
+    std::string                output_folder = "output", base_name = "contact";
+    bool                       write_vtu = true, write_json = true, write_pictures = true,
+                               write_csv = true;
+    std::string                prm_directory;
+    Results                    results;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,165 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_contact_contact_assembler_h
+#define dealvem_contact_contact_assembler_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/contact/node_insertion.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * Options of node-to-node contact.
+   */
+  struct ContactSettings
+  {
+    /// Normal contact: tied (bilateral, $g = 0$ at every pair) or
+    /// unilateral ($g\ge 0$, $\lambda\le 0$, $g\lambda = 0$ by an active set).
+    enum class Normal
+    {
+      tied,
+      unilateral
+    };
+    /// Tangential behaviour: frictionless, stick by a penalty, or stick by
+    /// Lagrange multipliers (exactly tied).
+    enum class Tangential
+    {
+      frictionless,
+      penalty,
+      multipliers
+    };
+    Normal     normal     = Normal::unilateral;
+    Tangential tangential = Tangential::penalty;
+    /**
+     * Tangential penalty $\varepsilon_t$ (stiffness per unit interface
+     * length and per unit slip, units of $E/h$). Zero selects the default
+     * rule $\varepsilon_t = 10^3\,E_{min}/h$, with $E_{min}$ the smallest
+     * Young's modulus of the two bodies and $h$ the smallest interface
+     * sub-edge length: a thousand times the stiffness of one layer of
+     * elements, so the slip is about $10^{-3}$ of the elastic shear
+     * deformation of the adjacent cells, while the condition number grows
+     * by only that factor.
+     */
+    double penalty = 0;
+    /// Factor of the default penalty rule.
+    double penalty_factor = 1e3;
+    /// Active set: maximum number of iterations.
+    unsigned int max_active_set_iterations = 50;
+
+    static Normal
+    parse_normal(const std::string &s);
+    static Tangential
+    parse_tangential(const std::string &s);
+  };
+
+
+
+  /**
+   * Builds the contact blocks of the saddle-point system
+   * @f[ \begin{pmatrix} K + K_t & C^T \\ C & 0 \end{pmatrix}
+   *     \begin{pmatrix} u \\ \lambda \end{pmatrix} =
+   *     \begin{pmatrix} f \\ -g_0 \end{pmatrix} @f]
+   * from node pairs: one multiplier (row of $C$) per normal constraint,
+   * $C_i u = (u_B - u_A)\cdot n_i$, and, with tangential multipliers, one
+   * per tangential constraint $(u_B - u_A)\cdot t_i$. The tangential penalty
+   * adds $K_t = \sum_i \varepsilon_t w_i\, c_i c_i^T$ with
+   * $c_i u = (u_B - u_A)\cdot t_i$ and $w_i$ the tributary weight.
+   *
+   * The system has n_dofs() + n_multipliers() unknowns: multiplier j is
+   * unknown n_dofs() + j. Multipliers of inactive normal pairs get the
+   * equation $\lambda_j = 0$ (unit diagonal), so the sparsity pattern does
+   * not change during the active-set iteration.
+   *
+   * A multiplier is a nodal force: $\lambda_i < 0$ is compression, and the
+   * contact pressure at the node is $p_i = -\lambda_i / w_i$.
+   */
+  template <int dim>
+  class ContactAssembler
+  {
+  public:
+    ContactAssembler(const VEMDoFHandler<dim>            &dof_handler,
+                     const std::vector<ContactNodePair> &pairs,
+                     const ContactSettings              &settings,
+                     const double                        penalty);
+
+    /// Number of multipliers (rows of C).
+    unsigned int
+    n_multipliers() const
+    {
+      return n_normal + n_tangential;
+    }
+
+    /// Multiplier of the normal constraint of pair i is n_dofs + i; with
+    /// tangential multipliers, that of the tangential constraint of pair i
+    /// is n_dofs + n_pairs + i.
+    unsigned int
+    n_pairs() const
+    {
+      return pairs.size();
+    }
+
+    /// The four displacement DoFs (u_A x, u_A y, u_B x, u_B y) of pair i.
+    std::array<dealii::types::global_dof_index, 4>
+    pair_dofs(const unsigned int i) const;
+
+    /// Add the couplings of the contact blocks to a pattern of size
+    /// n_dofs + n_multipliers.
+    void
+    add_sparsity(dealii::DynamicSparsityPattern &dsp) const;
+
+    /**
+     * Add the contact blocks to the system: @p active[i] says whether the
+     * normal constraint of pair i is enforced. The displacement constraints
+     * (Dirichlet data) are applied through @p constraints.
+     */
+    void
+    assemble(const dealii::AffineConstraints<double> &constraints,
+             const std::vector<bool>                 &active,
+             dealii::SparseMatrix<double>            &matrix,
+             dealii::Vector<double>                  &rhs) const;
+
+    /// Gap $g_i = (u_B - u_A)\cdot n_i + g_{0,i}$ of each pair.
+    std::vector<double>
+    gaps(const dealii::Vector<double> &solution) const;
+
+    /// Tangential slip $(u_B - u_A)\cdot t_i$ of each pair.
+    std::vector<double>
+    slips(const dealii::Vector<double> &solution) const;
+
+    /// Tangential nodal force of each pair (penalty force or tangential
+    /// multiplier), positive along $t_i$ on the slave side.
+    std::vector<double>
+    tangential_forces(const dealii::Vector<double> &solution) const;
+
+    double
+    get_penalty() const
+    {
+      return penalty;
+    }
+
+    const std::vector<ContactNodePair> &
+    get_pairs() const
+    {
+      return pairs;
+    }
+
+  private:
+    const VEMDoFHandler<dim>     &dof_handler;
+    std::vector<ContactNodePair>  pairs;
+    ContactSettings               settings;
+    double                        penalty;
+    unsigned int                  n_normal, n_tangential;
+  };
+} // namespace dealvem
+
+#endif

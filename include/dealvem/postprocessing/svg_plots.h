@@ -1,0 +1,57 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_postprocessing_svg_plots_h
+#define dealvem_postprocessing_svg_plots_h
+
+#include <deal.II/base/tensor.h>
+
+#include <dealvem/mesh/polygonal_mesh.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * Pictures without ParaView: self-contained SVG files that any browser
+   * (and GitHub's README view) shows.
+   */
+  namespace SVGPlots
+  {
+    /**
+     * The polygons of @p mesh on their deformed positions
+     * $x + s\,u(x)$ (@p displacement per vertex, @p scale s), filled by the
+     * per-cell @p cell_values with a blue-white-red colour map and a colour
+     * bar labelled @p value_name; vertices with @p marked[v] get a dot.
+     */
+    void
+    write_mesh(const std::string                       &filename,
+               const PolygonalMesh<2>                  &mesh,
+               const std::vector<dealii::Tensor<1, 2>> &displacement,
+               const double                             scale,
+               const std::vector<double>               &cell_values,
+               const std::string                       &value_name,
+               const std::vector<bool>                 &marked,
+               const std::string                       &title);
+
+    /// One curve of a line plot.
+    struct Series
+    {
+      std::string                             name;
+      std::vector<std::pair<double, double>> points;
+    };
+
+    /// A line plot with markers, axes with ticks, and a legend.
+    void
+    write_line_plot(const std::string         &filename,
+                    const std::vector<Series> &series,
+                    const std::string         &x_label,
+                    const std::string         &y_label,
+                    const std::string         &title);
+  } // namespace SVGPlots
+} // namespace dealvem
+
+#endif

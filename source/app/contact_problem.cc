@@ -1,0 +1,564 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <dealvem/app/contact_problem.h>
+#include <dealvem/app/input_parsing.h>
+#include <dealvem/contact/active_set_solver.h>
+#include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/postprocessing/stress_recovery.h>
+#include <dealvem/postprocessing/svg_plots.h>
+#include <dealvem/postprocessing/vtu_output.h>
+#include <dealvem/solvers/saddle_point_solver.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <Eigen/Dense>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace dealvem
+{
+  void
+  ContactProblem::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii::Patterns;
+    prm.declare_entry("Number of bodies", "1", Integer(1, max_bodies),
+                      "Number of elastic bodies. Body 0 is given by the sections 'Mesh' and "
+                      "'Material', bodies 1, 2, 3 by the sections 'Body 1', 'Body 2', 'Body 3'. "
+                      "Each body's cells get the body index as material id.");
+    for (unsigned int b = 1; b < max_bodies; ++b)
+      {
+        prm.enter_subsection("Body " + std::to_string(b));
+        prm.enter_subsection("Mesh");
+        MeshParameters::declare_parameters(prm);
+        prm.leave_subsection();
+        prm.enter_subsection("Material");
+        prm.declare_entry("Young's modulus", "1000", Double(0), "Young's modulus E (> 0).");
+        prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
+                          "Poisson's ratio nu, -1 < nu < 0.5.");
+        prm.leave_subsection();
+        prm.leave_subsection();
+      }
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Pairs", "", Anything(),
+                      "Contact interfaces 'master id : slave id; ...': boundary parts of two "
+                      "different bodies. The master side gives the normal.");
+    prm.declare_entry("Normal", "unilateral", Selection("tied|unilateral"),
+                      "tied: g = 0 at every pair (bilateral); unilateral: g >= 0, pressure >= 0, "
+                      "complementarity, by a primal-dual active set.");
+    prm.declare_entry("Tangential", "penalty", Selection("frictionless|penalty|multipliers"),
+                      "frictionless; stick by a penalty (see 'Penalty'); stick by Lagrange "
+                      "multipliers (exactly tied).");
+    prm.declare_entry("Penalty", "0", Double(0),
+                      "Tangential stick penalty (stiffness per length and slip, units of E/h). "
+                      "0 selects the default rule 'Penalty factor' * E_min / h_min, with E_min the "
+                      "smallest Young's modulus and h_min the shortest interface sub-edge.");
+    prm.declare_entry("Penalty factor", "1000", Double(0), "Factor of the default penalty rule.");
+    prm.declare_entry("Snap tolerance", "1e-6", Double(1e-14, 0.49),
+                      "Node insertion: a projection closer than this times the edge length to "
+                      "an existing vertex snaps to it.");
+    prm.declare_entry("Search distance", "0.5", Double(0),
+                      "Node insertion: largest normal distance of a projection, relative to the "
+                      "length of the edge it lands on.");
+    prm.declare_entry("Maximum active set iterations", "50", Integer(1),
+                      "Iteration limit of the active set.");
+    prm.leave_subsection();
+    prm.enter_subsection("Output");
+    prm.declare_entry("Write pictures", "true", Bool(),
+                      "Contact problems: write SVG pictures of the deformed bodies (coloured by "
+                      "sigma_yy, inserted nodes marked) and of the contact pressure.");
+    prm.declare_entry("Write CSV", "true", Bool(),
+                      "Contact problems: write the interface results as CSV.");
+    prm.leave_subsection();
+  }
+
+
+
+  unsigned int
+  ContactProblem::n_bodies(dealii::ParameterHandler &prm)
+  {
+    return prm.get_integer("Number of bodies");
+  }
+
+
+
+  void
+  ContactProblem::parse_parameters(dealii::ParameterHandler &prm, const std::string &dir)
+  {
+    prm_directory    = dir;
+    const unsigned n = n_bodies(prm);
+    bodies.resize(n);
+    prm.enter_subsection("Mesh");
+    bodies[0].mesh.parse_parameters(prm, "Mesh");
+    prm.leave_subsection();
+    prm.enter_subsection("Material");
+    bodies[0].E  = prm.get_double("Young's modulus");
+    bodies[0].nu = prm.get_double("Poisson's ratio");
+    model        = ElasticMaterial::parse_model(prm.get("Model"));
+    prm.leave_subsection();
+    for (unsigned int b = 1; b < n; ++b)
+      {
+        const std::string name = "Body " + std::to_string(b);
+        prm.enter_subsection(name);
+        prm.enter_subsection("Mesh");
+        bodies[b].mesh.parse_parameters(prm, name + "/Mesh");
+        prm.leave_subsection();
+        prm.enter_subsection("Material");
+        bodies[b].E  = prm.get_double("Young's modulus");
+        bodies[b].nu = prm.get_double("Poisson's ratio");
+        prm.leave_subsection();
+        prm.leave_subsection();
+      }
+    for (unsigned int b = 0; b < n; ++b)
+      {
+        bodies[b].mesh.material_id = b;
+        (void)ElasticMaterial(bodies[b].E, bodies[b].nu, model);
+      }
+
+    prm.enter_subsection("Discretization");
+    degree = prm.get_integer("Order");
+    gamma  = prm.get_double("Stabilization factor");
+    prm.leave_subsection();
+    bc.parse_parameters(prm);
+
+    prm.enter_subsection("Contact");
+    contact_pairs.clear();
+    for (const auto &entry : InputParsing::split(prm.get("Pairs"), ';'))
+      {
+        const std::string name   = "Contact/Pairs entry '" + entry + "'";
+        const auto        fields = InputParsing::split(entry, ':', true);
+        AssertThrow(fields.size() == 2,
+                    dealii::ExcMessage("Parameter '" + name + "': expected 'master id : slave id'."));
+        const unsigned int a = InputParsing::parse_unsigned(fields[0], name);
+        const unsigned int s = InputParsing::parse_unsigned(fields[1], name);
+        AssertThrow(a < 255 && s < 255 && a != s,
+                    dealii::ExcMessage("Parameter '" + name + "': two different boundary ids below 255 expected."));
+        contact_pairs.emplace_back(a, s);
+      }
+    contact_settings.normal     = ContactSettings::parse_normal(prm.get("Normal"));
+    contact_settings.tangential = ContactSettings::parse_tangential(prm.get("Tangential"));
+    contact_settings.penalty    = prm.get_double("Penalty");
+    contact_settings.penalty_factor           = prm.get_double("Penalty factor");
+    contact_settings.max_active_set_iterations = prm.get_integer("Maximum active set iterations");
+    insertion_settings.snap_tolerance  = prm.get_double("Snap tolerance");
+    insertion_settings.search_distance = prm.get_double("Search distance");
+    prm.leave_subsection();
+    AssertThrow(n == 1 || !contact_pairs.empty(),
+                dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
+                                   std::to_string(n) + " bodies: name at least one contact pair."));
+
+    prm.enter_subsection("Solver");
+    solver_type = prm.get("Type");
+    if (solver_type == "CG-AMG")
+      solver_type = "GMRES-AMG";
+    solver_tolerance      = prm.get_double("Relative tolerance");
+    solver_max_iterations = prm.get_integer("Maximum iterations");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_folder  = prm.get("Folder");
+    base_name      = prm.get("Base name");
+    write_vtu      = prm.get_bool("Write VTU");
+    write_json     = prm.get_bool("Write JSON");
+    write_pictures = prm.get_bool("Write pictures");
+    write_csv      = prm.get_bool("Write CSV");
+    prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    // Check that the Dirichlet constraints and the contact constraints
+    // together hold every body against rigid motion: the restrictions of
+    // the 3 * n_bodies rigid-body modes must have full rank.
+    void
+    check_support(const VEMDoFHandler<2>                  &dof_handler,
+                  const dealii::AffineConstraints<double> &constraints,
+                  const ContactAssembler<2>               &contact,
+                  const bool                               tangential_stick,
+                  const unsigned int                       n_bodies)
+    {
+      const auto &mesh = dof_handler.get_mesh();
+      std::vector<unsigned int> node_body(dof_handler.n_nodes(), 0);
+      std::vector<unsigned int> nodes;
+      std::vector<dealii::Point<2>> centre(n_bodies);
+      std::vector<double>           size(n_bodies, 1e-300), count(n_bodies, 0);
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          dof_handler.get_node_indices(c, nodes);
+          for (const auto n : nodes)
+            node_body[n] = mesh.cell(c).material_id;
+        }
+      for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+        {
+          centre[node_body[v]] += mesh.vertex(v);
+          count[node_body[v]] += 1;
+        }
+      for (unsigned int b = 0; b < n_bodies; ++b)
+        centre[b] /= std::max(count[b], 1.);
+      for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+        size[node_body[v]] = std::max(size[node_body[v]], mesh.vertex(v).distance(centre[node_body[v]]));
+      const unsigned int N = 3 * n_bodies;
+      // value of mode m (of the dof's body) at a dof
+      auto mode_row = [&](const dealii::types::global_dof_index dof, const double factor, Eigen::VectorXd &row) {
+        const unsigned int node = dof / 2, comp = dof % 2, b = node_body[node];
+        const auto         x = dof_handler.node_location(node) - centre[b];
+        row(3 * b + comp) += factor;
+        row(3 * b + 2) += factor * (comp == 0 ? -x[1] : x[0]) / size[b];
+      };
+      Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(N, N);
+      for (const auto &line : constraints.get_lines())
+        {
+          if (line.index >= dof_handler.n_dofs())
+            continue;
+          Eigen::VectorXd row = Eigen::VectorXd::Zero(N);
+          mode_row(line.index, 1., row);
+          for (const auto &e : line.entries)
+            mode_row(e.first, -e.second, row);
+          gram += row * row.transpose();
+        }
+      for (unsigned int i = 0; i < contact.n_pairs(); ++i)
+        {
+          const auto  d = contact.pair_dofs(i);
+          const auto &p = contact.get_pairs()[i];
+          for (unsigned int dir = 0; dir < (tangential_stick ? 2u : 1u); ++dir)
+            {
+              const auto     &v   = (dir == 0 ? p.normal : p.tangent);
+              Eigen::VectorXd row = Eigen::VectorXd::Zero(N);
+              mode_row(d[0], -v[0], row);
+              mode_row(d[1], -v[1], row);
+              mode_row(d[2], v[0], row);
+              mode_row(d[3], v[1], row);
+              gram += row * row.transpose();
+            }
+        }
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
+      const double vmax = std::max(eig.eigenvalues().maxCoeff(), 1e-300);
+      std::ostringstream msg;
+      bool               ok = true;
+      for (unsigned int k = 0; k < N; ++k)
+        if (eig.eigenvalues()(k) <= 1e-10 * vmax)
+          {
+            ok = false;
+            msg << " [";
+            const char *names[3] = {"x-translation", "y-translation", "rotation"};
+            bool        first    = true;
+            for (unsigned int j = 0; j < N; ++j)
+              if (std::abs(eig.eigenvectors()(j, k)) > 1e-3)
+                {
+                  msg << (first ? "" : " + ") << names[j % 3] << " of body " << j / 3;
+                  first = false;
+                }
+            msg << "]";
+          }
+      AssertThrow(ok, dealii::ExcMessage(
+                        "Unsupported body / rigid-body mode: the constraints and contact pairs "
+                        "leave these rigid-body motions free:" + msg.str() +
+                        ". Add Dirichlet, roller or point constraints (with frictionless contact, "
+                        "each body must be held against sliding along the interface)."));
+    }
+  } // namespace
+
+
+
+  void
+  ContactProblem::run()
+  {
+    std::filesystem::create_directories(output_folder);
+    dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    results = Results();
+    PolygonalMesh<2> &mesh = results.mesh;
+    std::map<dealii::types::material_id, ElasticMaterial> materials;
+    {
+      dealii::TimerOutput::Scope t(timer, "mesh");
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        {
+          PolygonalMesh<2> body_mesh;
+          bodies[b].mesh.create_mesh(body_mesh, 0, prm_directory);
+          for (unsigned int c = 0; c < body_mesh.n_cells(); ++c)
+            body_mesh.set_material_id(c, b);
+          if (b == 0)
+            mesh = body_mesh;
+          else
+            mesh.append(body_mesh);
+          materials.emplace(b, ElasticMaterial(bodies[b].E, bodies[b].nu, model));
+        }
+      mesh.name = "bodies";
+    }
+    std::vector<dealii::Point<2>> original_vertices = mesh.get_vertices();
+    {
+      dealii::TimerOutput::Scope t(timer, "node insertion");
+      for (const auto &cp : contact_pairs)
+        results.insertion_reports.push_back(
+          NodeInsertion::insert(mesh, cp.first, cp.second, insertion_settings));
+    }
+    VEMDoFHandler<2> dof_handler(mesh);
+    dof_handler.distribute_dofs(degree);
+    std::vector<ContactNodePair> pairs;
+    for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+      {
+        const auto p = NodeInsertion::make_pairs(mesh, contact_pairs[i].first,
+                                                 contact_pairs[i].second, degree,
+                                                 insertion_settings, i);
+        pairs.insert(pairs.end(), p.begin(), p.end());
+      }
+
+    // penalty rule and active-set constant: E_min / h_min on the interface
+    double E_min = 1e300, h_min = 1e300;
+    for (const auto &m : materials)
+      E_min = std::min(E_min, m.second.youngs_modulus());
+    for (const auto &p : pairs)
+      if (!p.is_midpoint)
+        h_min = std::min(h_min, p.weight * (degree == 1 ? 1. : 3.));
+    if (pairs.empty())
+      h_min = 1;
+    const double penalty = contact_settings.penalty > 0 ? contact_settings.penalty :
+                                                          contact_settings.penalty_factor * E_min / h_min;
+    results.penalty = penalty;
+    ContactAssembler<2> contact(dof_handler, pairs, contact_settings, penalty);
+
+    dealii::AffineConstraints<double> constraints;
+    bc.apply_constraints(dof_handler, constraints);
+    constraints.close();
+    check_support(dof_handler, constraints, contact,
+                  contact_settings.tangential != ContactSettings::Tangential::frictionless,
+                  bodies.size());
+
+    const unsigned int n = dof_handler.n_dofs(), m = contact.n_multipliers();
+    dealii::SparsityPattern      sparsity;
+    dealii::SparseMatrix<double> system_matrix, work_matrix;
+    dealii::Vector<double>       system_rhs;
+    ElasticityAssembler<2>       assembler(dof_handler, materials, gamma);
+    bc.add_loads(assembler);
+    {
+      dealii::TimerOutput::Scope     t(timer, "assembly");
+      dealii::DynamicSparsityPattern dsp(n + m);
+      dof_handler.make_sparsity_pattern(dsp);
+      contact.add_sparsity(dsp);
+      constraints.condense(dsp);
+      sparsity.copy_from(dsp);
+      system_matrix.reinit(sparsity);
+      work_matrix.reinit(sparsity);
+      dealii::Vector<double> rhs_n;
+      // the elasticity part, assembled directly into the big system
+      system_rhs.reinit(n + m);
+      VirtualElement<2>                            element(degree);
+      std::vector<dealii::types::global_dof_index> indices;
+      dealii::Vector<double>                       F;
+      dealii::Vector<double>                       loads;
+      assembler.assemble_load_vector(loads);
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          element.reinit(mesh.cell_vertices(c), assembler.get_material(c), gamma);
+          dof_handler.get_dof_indices(c, indices);
+          F.reinit(indices.size());
+          // the load vector is assembled separately; distribute it with
+          // the first cell that touches each DoF
+          constraints.distribute_local_to_global(element.get_stiffness_matrix(), F, indices,
+                                                 system_matrix, system_rhs);
+        }
+      // loads: a "cell" of all DoFs with an empty matrix distributes the
+      // load vector with the constraints
+      {
+        std::vector<dealii::types::global_dof_index> all(n);
+        for (unsigned int i = 0; i < n; ++i)
+          all[i] = i;
+        dealii::Vector<double> tmp(n + m);
+        constraints.distribute_local_to_global(loads, all, tmp);
+        system_rhs += tmp;
+      }
+      // applied load per body
+      std::vector<unsigned int> node_body(dof_handler.n_nodes(), 0), nodes;
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          dof_handler.get_node_indices(c, nodes);
+          for (const auto nd : nodes)
+            node_body[nd] = mesh.cell(c).material_id;
+        }
+      results.applied_load_per_body.assign(bodies.size(), dealii::Tensor<1, 2>());
+      for (unsigned int i = 0; i < n; ++i)
+        results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
+    }
+
+    SaddlePointSolver::Settings settings;
+    settings.type               = SaddlePointSolver::parse_type(solver_type);
+    settings.relative_tolerance = solver_tolerance;
+    settings.max_iterations     = solver_max_iterations;
+    SaddlePointSolver solver(settings);
+    if (settings.type == SaddlePointSolver::Type::gmres_amg)
+      solver.set_near_null_space(dof_handler.rigid_body_modes());
+    ActiveSetSolver<2>     active_set(contact, constraints, solver, contact_settings, E_min / h_min);
+    dealii::Vector<double> x;
+    typename ActiveSetSolver<2>::Result as;
+    {
+      dealii::TimerOutput::Scope t(timer, "solve");
+      as = active_set.solve(system_matrix, system_rhs, work_matrix, x);
+    }
+    results.solution.reinit(n);
+    for (unsigned int i = 0; i < n; ++i)
+      results.solution[i] = x[i];
+    results.n_dofs                = n;
+    results.n_multipliers         = m;
+    results.active_set_iterations = as.n_iterations;
+    results.active_set_history    = as.n_active_history;
+    results.linear_iterations     = as.linear_iterations;
+    results.solver                = solver.description();
+
+    // interface results
+    const auto gaps  = contact.gaps(x);
+    const auto slips = contact.slips(x);
+    const auto ft    = contact.tangential_forces(x);
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto &p = pairs[i];
+        PairResult  r;
+        r.interface           = p.interface;
+        r.location            = p.slave_location;
+        r.midpoint            = p.is_midpoint;
+        r.active              = as.active[i];
+        r.weight              = p.weight;
+        r.gap                 = gaps[i];
+        r.pressure            = -x[n + i] / p.weight;
+        r.slip                = slips[i];
+        r.tangential_traction = (as.active[i] ? ft[i] / p.weight : 0.);
+        results.pairs.push_back(r);
+        results.total_contact_force += (-x[n + i]) * p.normal + r.tangential_traction * p.weight * p.tangent;
+      }
+
+    StressRecovery<2> stresses(dof_handler, materials, gamma, results.solution);
+    results.cell_stress.resize(mesh.n_cells());
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const auto s          = stresses.cell_stress(c);
+        results.cell_stress[c] = {{s[0][0], s[1][1], s[0][1]}};
+      }
+
+    // ---- output
+    unsigned int n_inserted = 0;
+    for (const auto &r : results.insertion_reports)
+      n_inserted += r.n_inserted_master + r.n_inserted_slave;
+    std::cout << "Contact problem: " << bodies.size() << " bodies, " << mesh.n_cells() << " cells, "
+              << n << " DoFs, " << m << " multipliers" << std::endl
+              << "  node insertion: " << n_inserted << " nodes inserted, " << pairs.size()
+              << " node pairs" << std::endl
+              << "  active set: " << as.n_iterations << " iteration(s), active pairs per iteration:";
+    for (const auto a : as.n_active_history)
+      std::cout << " " << a;
+    std::cout << std::endl << "  solver: " << solver.description();
+    if (as.linear_iterations > as.n_iterations)
+      std::cout << ", " << as.linear_iterations << " linear iterations in all";
+    std::cout << std::endl;
+    double pmin = 1e300, pmax = -1e300;
+    for (const auto &r : results.pairs)
+      if (r.active)
+        {
+          pmin = std::min(pmin, r.pressure);
+          pmax = std::max(pmax, r.pressure);
+        }
+    if (pmax >= pmin)
+      std::cout << "  contact pressure on active pairs: min " << pmin << ", max " << pmax << std::endl;
+    std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
+              << ", " << results.total_contact_force[1] << ")" << std::endl;
+
+    const std::string prefix = output_folder + "/" + base_name;
+    if (write_csv)
+      {
+        std::ofstream csv(prefix + "-interface.csv");
+        csv << "interface,x,y,midpoint,active,weight,gap,pressure,tangential_traction,slip\n";
+        csv << std::setprecision(15);
+        for (const auto &r : results.pairs)
+          csv << r.interface << "," << r.location[0] << "," << r.location[1] << "," << r.midpoint
+              << "," << r.active << "," << r.weight << "," << r.gap << "," << r.pressure << ","
+              << r.tangential_traction << "," << r.slip << "\n";
+        std::cout << "  interface results: " << prefix << "-interface.csv" << std::endl;
+      }
+    if (write_vtu)
+      {
+        write_vtu_file(prefix + ".vtu", dof_handler, results.solution, stresses);
+        std::cout << "  ParaView file (all bodies, field body_id): " << prefix << ".vtu" << std::endl;
+      }
+    if (write_pictures)
+      {
+        std::vector<bool> inserted(mesh.n_vertices(), false);
+        for (unsigned int v = original_vertices.size(); v < mesh.n_vertices(); ++v)
+          inserted[v] = true;
+        std::vector<dealii::Tensor<1, 2>> displacement(mesh.n_vertices());
+        double umax = 0, size = 0;
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          {
+            displacement[v][0] = results.solution[2 * v];
+            displacement[v][1] = results.solution[2 * v + 1];
+            umax               = std::max(umax, displacement[v].norm());
+            size = std::max(size, mesh.vertex(v).distance(mesh.vertex(0)));
+          }
+        const double scale = (umax > 0 ? 0.05 * size / umax : 1.);
+        std::vector<double> syy(mesh.n_cells());
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          syy[c] = results.cell_stress[c][1];
+        std::ostringstream title;
+        title << "sigma_yy on the deformed bodies (displacement x " << std::setprecision(3) << scale
+              << "), inserted nodes marked";
+        SVGPlots::write_mesh(prefix + "-stress.svg", mesh, displacement, scale, syy, "sigma_yy",
+                             inserted, title.str());
+        std::vector<SVGPlots::Series> series;
+        for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+          {
+            SVGPlots::Series s;
+            s.name = "interface " + std::to_string(i) + " (" + std::to_string(contact_pairs[i].first) +
+                     ":" + std::to_string(contact_pairs[i].second) + ")";
+            for (const auto &r : results.pairs)
+              if (r.interface == i)
+                s.points.emplace_back(r.location[0], r.pressure);
+            std::sort(s.points.begin(), s.points.end());
+            series.push_back(s);
+          }
+        SVGPlots::write_line_plot(prefix + "-pressure.svg", series, "x", "contact pressure",
+                                  "Contact pressure along the interface");
+        std::cout << "  pictures: " << prefix << "-stress.svg, " << prefix << "-pressure.svg" << std::endl;
+      }
+    if (write_json)
+      {
+        JsonSummary json;
+        json.set("program", "dealvem");
+        json.set("problem", "contact");
+        json.set("bodies", double(bodies.size()));
+        json.set("cells", double(mesh.n_cells()));
+        json.set("dofs", double(n));
+        json.set("multipliers", double(m));
+        json.set("order", double(degree));
+        json.set("solver", solver.description());
+        json.set("contact.node_pairs", double(pairs.size()));
+        json.set("contact.inserted_nodes", double(n_inserted));
+        json.set("contact.active_set_iterations", double(as.n_iterations));
+        json.set("contact.linear_iterations", double(as.linear_iterations));
+        json.set("contact.penalty", penalty);
+        unsigned int n_active = 0;
+        for (const auto &r : results.pairs)
+          n_active += r.active;
+        json.set("contact.active_pairs", double(n_active));
+        if (pmax >= pmin)
+          {
+            json.set("contact.pressure_min", pmin);
+            json.set("contact.pressure_max", pmax);
+          }
+        json.set("contact.total_force_x", results.total_contact_force[0]);
+        json.set("contact.total_force_y", results.total_contact_force[1]);
+        for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
+          json.set("timings." + s.first, s.second);
+        json.write(prefix + ".json");
+        std::cout << "  summary: " << prefix << ".json" << std::endl;
+      }
+  }
+} // namespace dealvem

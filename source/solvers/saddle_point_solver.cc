@@ -1,0 +1,278 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <dealvem/solvers/saddle_point_solver.h>
+
+#include <Teuchos_ParameterList.hpp>
+#include <ml_MultiLevelPreconditioner.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace dealvem
+{
+  SaddlePointSolver::Type
+  SaddlePointSolver::parse_type(const std::string &name)
+  {
+    std::string n = name;
+    std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::toupper(c); });
+    if (n == "UMFPACK")
+      return Type::umfpack;
+    if (n == "KLU")
+      return Type::klu;
+    if (n == "GMRES-AMG")
+      return Type::gmres_amg;
+    AssertThrow(false, dealii::ExcMessage("Unknown saddle-point solver '" + name +
+                                          "': expected UMFPACK, KLU or GMRES-AMG."));
+    return Type::umfpack;
+  }
+
+
+
+  std::string
+  SaddlePointSolver::type_name(const Type t)
+  {
+    switch (t)
+      {
+        case Type::umfpack:
+          return "UMFPACK";
+        case Type::klu:
+          return "KLU";
+        default:
+          return "GMRES-AMG";
+      }
+  }
+
+
+
+  SaddlePointSolver::SaddlePointSolver(const Settings &settings)
+    : settings(settings)
+  {}
+
+
+
+  void
+  SaddlePointSolver::set_near_null_space(const std::vector<std::vector<double>> &m)
+  {
+    modes = m;
+  }
+
+
+
+  std::string
+  SaddlePointSolver::description() const
+  {
+    if (settings.type == Type::gmres_amg)
+      return "GMRES + block preconditioner (ML AMG on K + rho B^T B, exact approximate Schur complement)";
+    return type_name(settings.type) + " (direct, whole saddle-point matrix)";
+  }
+
+
+
+  namespace
+  {
+    // Block lower-triangular preconditioner of the saddle-point matrix.
+    class BlockPreconditioner
+    {
+    public:
+      BlockPreconditioner(const dealii::SparseMatrix<double>     &A,
+                          const unsigned int                      n,
+                          const std::vector<std::vector<double>> &modes)
+        : n(n)
+        , m(A.m() - n)
+      {
+        // split A into K (n x n), B (m x n) and D (m x m)
+        dealii::DynamicSparsityPattern dsp_k(n, n), dsp_b(m, n), dsp_s(m, m);
+        for (unsigned int i = 0; i < A.m(); ++i)
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            {
+              const unsigned int j = it->column();
+              if (i < n && j < n)
+                dsp_k.add(i, j);
+              else if (i >= n && j < n)
+                dsp_b.add(i - n, j);
+            }
+        // K_rho = K + rho B^T B: add the pattern of B^T B
+        std::vector<std::vector<unsigned int>> b_rows(m);
+        for (unsigned int i = n; i < A.m(); ++i)
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            if (it->column() < n && it->value() != 0.)
+              b_rows[i - n].push_back(it->column());
+        for (const auto &r : b_rows)
+          for (const auto a : r)
+            for (const auto b : r)
+              dsp_k.add(a, b);
+        sp_k.copy_from(dsp_k);
+        sp_b.copy_from(dsp_b);
+        K.reinit(sp_k);
+        Bm.reinit(sp_b);
+        double       diag_sum = 0;
+        unsigned int n_diag   = 0;
+        for (unsigned int i = 0; i < A.m(); ++i)
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            {
+              const unsigned int j = it->column();
+              if (i < n && j < n)
+                {
+                  K.set(i, j, it->value());
+                  if (i == j)
+                    {
+                      diag_sum += std::abs(it->value());
+                      ++n_diag;
+                    }
+                }
+              else if (i >= n && j < n)
+                Bm.set(i - n, j, it->value());
+            }
+        const double rho = (n_diag > 0 ? diag_sum / n_diag : 1.);
+        for (unsigned int r = 0; r < m; ++r)
+          for (auto it1 = Bm.begin(r); it1 != Bm.end(r); ++it1)
+            for (auto it2 = Bm.begin(r); it2 != Bm.end(r); ++it2)
+              K.add(it1->column(), it2->column(), rho * it1->value() * it2->value());
+
+        // S = D - B diag(K_rho)^{-1} B^T
+        for (unsigned int r = 0; r < m; ++r)
+          dsp_s.add(r, r);
+        // column lists of B for S's pattern
+        std::vector<std::vector<std::pair<unsigned int, double>>> cols(n);
+        for (unsigned int r = 0; r < m; ++r)
+          for (auto it = Bm.begin(r); it != Bm.end(r); ++it)
+            if (it->value() != 0.)
+              cols[it->column()].emplace_back(r, it->value());
+        for (const auto &c : cols)
+          for (const auto &a : c)
+            for (const auto &b : c)
+              dsp_s.add(a.first, b.first);
+        sp_s.copy_from(dsp_s);
+        S.reinit(sp_s);
+        for (unsigned int i = n; i < A.m(); ++i)
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            if (it->column() >= n)
+              S.add(i - n, it->column() - n, it->value());
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const double d = K.diag_element(j);
+            for (const auto &a : cols[j])
+              for (const auto &b : cols[j])
+                S.add(a.first, b.first, -a.second * b.second / d);
+          }
+        S_inverse.initialize(S);
+
+        // AMG on K_rho with the rigid-body modes
+        K_trilinos.reinit(K);
+        Teuchos::ParameterList list;
+        ML_Epetra::SetDefaults("SA", list);
+        list.set("ML output", 0);
+        list.set("smoother: type", "Chebyshev");
+        list.set("smoother: sweeps", 2);
+        list.set("aggregation: threshold", 1e-4);
+        list.set("coarse: type", "Amesos-KLU");
+        list.set("coarse: max size", 2000);
+        if (modes.size() == 3)
+          {
+            null_space.resize(3 * n);
+            for (unsigned int k = 0; k < 3; ++k)
+              for (unsigned int i = 0; i < n; ++i)
+                null_space[k * n + i] = modes[k][i];
+            list.set("null space: type", "pre-computed");
+            list.set("null space: dimension", 3);
+            list.set("null space: vectors", null_space.data());
+          }
+        else
+          list.set("PDE equations", 2);
+        amg.initialize(K_trilinos.trilinos_matrix(), list);
+      }
+
+      void
+      vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const
+      {
+        dealii::Vector<double> ru(n), zu(n), rl(m), zl(m), bz(m);
+        for (unsigned int i = 0; i < n; ++i)
+          ru[i] = src[i];
+        for (unsigned int i = 0; i < m; ++i)
+          rl[i] = src[n + i];
+        amg.vmult(zu, ru);
+        Bm.vmult(bz, zu);
+        rl -= bz;
+        S_inverse.vmult(zl, rl);
+        for (unsigned int i = 0; i < n; ++i)
+          dst[i] = zu[i];
+        for (unsigned int i = 0; i < m; ++i)
+          dst[n + i] = zl[i];
+      }
+
+    private:
+      const unsigned int                       n, m;
+      dealii::SparsityPattern                  sp_k, sp_b, sp_s;
+      dealii::SparseMatrix<double>             K, Bm, S;
+      dealii::SparseDirectUMFPACK              S_inverse;
+      dealii::TrilinosWrappers::SparseMatrix   K_trilinos;
+      dealii::TrilinosWrappers::PreconditionAMG amg;
+      std::vector<double>                      null_space;
+    };
+  } // namespace
+
+
+
+  void
+  SaddlePointSolver::solve(const dealii::SparseMatrix<double> &A,
+                           const unsigned int                  n_displacements,
+                           dealii::Vector<double>             &x,
+                           const dealii::Vector<double>       &b)
+  {
+    AssertDimension(A.m(), b.size());
+    x.reinit(b.size());
+    if (settings.type == Type::umfpack)
+      {
+        dealii::SparseDirectUMFPACK direct;
+        direct.initialize(A);
+        direct.vmult(x, b);
+        iterations = 1;
+      }
+    else if (settings.type == Type::klu)
+      {
+        dealii::TrilinosWrappers::SparseMatrix At;
+        At.reinit(A);
+        dealii::SolverControl                        control(1, 0);
+        dealii::TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
+        dealii::TrilinosWrappers::SolverDirect       direct(control, data);
+        direct.solve(At, x, b);
+        iterations = 1;
+      }
+    else
+      {
+        BlockPreconditioner preconditioner(A, n_displacements, modes);
+        dealii::SolverControl control(settings.max_iterations,
+                                      settings.relative_tolerance * b.l2_norm());
+        dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(200, true);
+        dealii::SolverGMRES<dealii::Vector<double>> gmres(control, data);
+        try
+          {
+            gmres.solve(A, x, b, preconditioner);
+          }
+        catch (const dealii::SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        dealii::ExcMessage("GMRES-AMG did not converge: residual " +
+                                           std::to_string(e.last_residual) + " after " +
+                                           std::to_string(e.last_step) + " iterations (target " +
+                                           std::to_string(control.tolerance()) + ")."));
+          }
+        iterations = control.last_step();
+      }
+    for (unsigned int i = 0; i < x.size(); ++i)
+      AssertThrow(std::isfinite(x[i]),
+                  dealii::ExcMessage("The saddle-point solver produced a non-finite value: the "
+                                     "system is singular (is every body supported?)."));
+  }
+} // namespace dealvem

@@ -1,0 +1,47 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// Contact tests run ContactProblem from parameter strings.
+#ifndef dealvem_tests_contact_common_h
+#define dealvem_tests_contact_common_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <dealvem/app/contact_problem.h>
+#include <dealvem/app/elasticity_problem.h>
+
+#include <string>
+
+namespace testing
+{
+  /// Parse @p prm_text (after the declarations of the program) and run.
+  inline dealvem::ContactProblem::Results
+  run_contact(const std::string &prm_text)
+  {
+    dealii::ParameterHandler prm;
+    dealvem::ElasticityProblem::declare_parameters(prm);
+    dealvem::ContactProblem::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text);
+    dealvem::ContactProblem problem;
+    problem.parse_parameters(prm);
+    problem.run();
+    return problem.get_results();
+  }
+
+  /// A mesh section for a block [x0,x1] x [y0,y1].
+  inline std::string
+  block_mesh(const std::string &type, const double x0, const double y0, const double x1,
+             const double y1, const unsigned int nx, const unsigned int ny,
+             const unsigned int offset, const unsigned int seed = 1)
+  {
+    std::ostringstream s;
+    s << "subsection Mesh\n  set Type = " << type << "\n  set Lower left corner = " << x0 << ", "
+      << y0 << "\n  set Upper right corner = " << x1 << ", " << y1 << "\n  set Subdivisions = " << nx
+      << ", " << ny << "\n  set Number of cells = " << nx * ny << "\n  set Seed = " << seed
+      << "\n  set Boundary id offset = " << offset << "\nend\n";
+    return s.str();
+  }
+} // namespace testing
+
+#endif
