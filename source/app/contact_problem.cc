@@ -18,6 +18,7 @@
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/virtual_element.h>
 
 #include <Eigen/Dense>
 

@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <dealvem/solvers/linear_solver.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
 #include <Teuchos_ParameterList.hpp>
@@ -171,25 +172,7 @@ namespace dealvem
         // AMG on K_rho with the rigid-body modes
         K_trilinos.reinit(K);
         Teuchos::ParameterList list;
-        ML_Epetra::SetDefaults("SA", list);
-        list.set("ML output", 0);
-        list.set("smoother: type", "Chebyshev");
-        list.set("smoother: sweeps", 2);
-        list.set("aggregation: threshold", 1e-4);
-        list.set("coarse: type", "Amesos-KLU");
-        list.set("coarse: max size", 2000);
-        if (modes.size() == 3)
-          {
-            null_space.resize(3 * n);
-            for (unsigned int k = 0; k < 3; ++k)
-              for (unsigned int i = 0; i < n; ++i)
-                null_space[k * n + i] = modes[k][i];
-            list.set("null space: type", "pre-computed");
-            list.set("null space: dimension", 3);
-            list.set("null space: vectors", null_space.data());
-          }
-        else
-          list.set("PDE equations", 2);
+        internal::set_ml_parameters(&list, modes, n, null_space);
         amg.initialize(K_trilinos.trilinos_matrix(), list);
       }
 

@@ -98,8 +98,20 @@ namespace dealvem
   dealii::Quadrature<dim>
   PolygonGeometry<dim>::quadrature(const unsigned int degree) const
   {
-    // Gauss rule on the reference triangle, exact for the given degree.
-    const dealii::QGaussSimplex<dim> ref((degree + 2) / 2);
+    // Collapsed (Duffy) Gauss rule on the reference triangle
+    // (x, y) = (u (1 - v), v), weight (1 - v): exact for polynomials of the
+    // given degree (degree + 1 in v with n Gauss points, 2n - 1 >= degree + 1).
+    const dealii::QGauss<1>         g((degree + 3) / 2);
+    std::vector<dealii::Point<dim>> ref_points;
+    std::vector<double>             ref_weights;
+    for (unsigned int i = 0; i < g.size(); ++i)
+      for (unsigned int j = 0; j < g.size(); ++j)
+        {
+          const double u = g.point(i)[0], v = g.point(j)[0];
+          ref_points.emplace_back(u * (1 - v), v);
+          ref_weights.push_back(g.weight(i) * g.weight(j) * (1 - v));
+        }
+    const dealii::Quadrature<dim> ref(ref_points, ref_weights);
     const unsigned int               n = vertices.size();
     std::vector<dealii::Point<dim>>  points;
     std::vector<double>              weights;
@@ -117,8 +129,8 @@ namespace dealvem
           {
             const dealii::Point<dim> &r = ref.point(k);
             points.emplace_back(p0 + r[0] * e1 + r[1] * e2);
-            // reference triangle has area 1/2 and QGaussSimplex weights sum
-            // to 1/2; det is twice the signed area
+            // the reference weights sum to 1/2 (the reference area); det is
+            // twice the signed area
             weights.push_back(ref.weight(k) * det);
           }
       }

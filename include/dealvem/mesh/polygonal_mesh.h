@@ -7,9 +7,12 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
 #include <array>
+#include <map>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -262,10 +265,11 @@ namespace dealvem
     std::vector<Cell>               cells;
     std::vector<Edge>               edges;
 
-    /// Boundary ids requested with set_boundary_id() before edges existed:
-    /// (smaller vertex, larger vertex, id).
-    std::vector<std::tuple<unsigned int, unsigned int, dealii::types::boundary_id>>
-      pending_boundary_ids;
+    /// Boundary ids by vertex pair (smaller, larger): set with
+    /// set_boundary_id() or set_edge_boundary_id(), handed on to the pieces
+    /// of split edges, and applied whenever the edges are built.
+    std::map<std::pair<unsigned int, unsigned int>, dealii::types::boundary_id>
+      boundary_ids_by_pair;
   };
 
   /**

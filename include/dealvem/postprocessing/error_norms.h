@@ -1,0 +1,48 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_postprocessing_error_norms_h
+#define dealvem_postprocessing_error_norms_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/elasticity/material.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <map>
+
+namespace dealvem
+{
+  /**
+   * Errors of a virtual element solution against an exact displacement
+   * $u$, measured with the projection (the virtual functions themselves are
+   * not known inside the cells):
+   * - l2 $= (\sum_E \|u - \Pi u_h\|^2_{0,E})^{1/2}$,
+   * - h1_seminorm $= (\sum_E |u - \Pi u_h|^2_{1,E})^{1/2}$,
+   * - energy $= (\sum_E \int_E \varepsilon(u-\Pi u_h):C\varepsilon(u-\Pi u_h))^{1/2}$,
+   * and the same norms of $u$ (for relative errors).
+   */
+  struct ErrorNorms
+  {
+    double l2 = 0, h1_seminorm = 0, energy = 0;
+    double l2_exact = 0, h1_exact = 0, energy_exact = 0;
+  };
+
+  /**
+   * Compute the errors by a quadrature of degree 2k + 6 on every polygon.
+   * @p exact has two components; its gradient() must be implemented (for
+   * example dealii::AutoDerivativeFunction, or analytically).
+   */
+  template <int dim>
+  ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
+                 const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                 const double                                                 gamma,
+                 const dealii::Vector<double>                                &solution,
+                 const dealii::Function<dim>                                 &exact);
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,61 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_postprocessing_json_summary_h
+#define dealvem_postprocessing_json_summary_h
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * A small JSON writer for run summaries. Keys are paths with dots,
+   * "cycles.0.dofs", which become nested objects; insertion order is kept;
+   * numbers are written with 17 significant digits (non-finite numbers as
+   * null), strings escaped.
+   */
+  class JsonSummary
+  {
+  public:
+    void
+    set(const std::string &path, const double value);
+
+    void
+    set(const std::string &path, const std::string &value);
+
+    void
+    set(const std::string &path, const char *value)
+    {
+      set(path, std::string(value));
+    }
+
+    /// The JSON text.
+    std::string
+    to_string() const;
+
+    /// Write to a file (throws naming the file on failure).
+    void
+    write(const std::string &filename) const;
+
+  private:
+    struct Node
+    {
+      std::vector<std::pair<std::string, std::unique_ptr<Node>>> children;
+      bool                                                       is_leaf = false;
+      std::string                                                value; // JSON text
+    };
+    Node root;
+
+    Node &
+    find(const std::string &path);
+
+    static void
+    print(const Node &n, std::string &out, const unsigned int indent);
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,74 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_postprocessing_stress_recovery_h
+#define dealvem_postprocessing_stress_recovery_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/elasticity/material.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <map>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * Strain and stress from the projection: in each cell the strain of
+   * $\Pi_* u_h$ averaged over the cell (exact for the polynomial part, which
+   * is all a virtual element knows inside a cell), the stress
+   * $\sigma = C\varepsilon$, the out-of-plane stress and the von Mises
+   * stress; for plots, nodal values at the mesh vertices: the average over
+   * the cells around a vertex of each cell's projected stress evaluated at
+   * the vertex.
+   */
+  template <int dim>
+  class StressRecovery
+  {
+  public:
+    StressRecovery(const VEMDoFHandler<dim>                                    &dof_handler,
+                   const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                   const double                                                 gamma,
+                   const dealii::Vector<double>                                &solution);
+
+    const dealii::SymmetricTensor<2, dim> &
+    cell_strain(const unsigned int c) const
+    {
+      return strain[c];
+    }
+
+    const dealii::SymmetricTensor<2, dim> &
+    cell_stress(const unsigned int c) const
+    {
+      return stress[c];
+    }
+
+    double
+    cell_von_mises(const unsigned int c) const
+    {
+      return von_mises[c];
+    }
+
+    const dealii::SymmetricTensor<2, dim> &
+    vertex_stress(const unsigned int v) const
+    {
+      return nodal_stress[v];
+    }
+
+    double
+    vertex_von_mises(const unsigned int v) const
+    {
+      return nodal_von_mises[v];
+    }
+
+  private:
+    std::vector<dealii::SymmetricTensor<2, dim>> strain, stress, nodal_stress;
+    std::vector<double>                          von_mises, nodal_von_mises;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,402 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+
+#include <dealvem/mesh/generators.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+
+namespace dealvem
+{
+  namespace PolygonalMeshGenerators
+  {
+    namespace
+    {
+      using P = dealii::Point<2>;
+
+      void
+      check_rectangle(const P &p0, const P &p1, const unsigned int nx, const unsigned int ny,
+                      const std::string &what)
+      {
+        AssertThrow(p1[0] > p0[0] && p1[1] > p0[1],
+                    dealii::ExcMessage(what + ": the upper right corner must lie above and right of the "
+                                              "lower left corner."));
+        AssertThrow(nx >= 1 && ny >= 1,
+                    dealii::ExcMessage(what + ": the numbers of subdivisions must be at least 1."));
+      }
+
+      // boundary id of the rectangle side a point lies on (-1: interior)
+      int
+      side_of(const P &a, const P &b, const P &p0, const P &p1)
+      {
+        const double t = 1e-10 * std::max(p1[0] - p0[0], p1[1] - p0[1]);
+        if (std::abs(a[0] - p0[0]) < t && std::abs(b[0] - p0[0]) < t)
+          return 0;
+        if (std::abs(a[0] - p1[0]) < t && std::abs(b[0] - p1[0]) < t)
+          return 1;
+        if (std::abs(a[1] - p0[1]) < t && std::abs(b[1] - p0[1]) < t)
+          return 2;
+        if (std::abs(a[1] - p1[1]) < t && std::abs(b[1] - p1[1]) < t)
+          return 3;
+        return -1;
+      }
+
+      // Give boundary ids 0..3 to the boundary edges on the sides of the
+      // rectangle and finalize.
+      void
+      finish_rectangle(PolygonalMesh<2> &mesh, const P &p0, const P &p1)
+      {
+        mesh.finalize();
+        for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+          if (mesh.edge(e).at_boundary())
+            {
+              const int s = side_of(mesh.vertex(mesh.edge(e).vertices[0]),
+                                    mesh.vertex(mesh.edge(e).vertices[1]), p0, p1);
+              mesh.set_edge_boundary_id(e, s < 0 ? 0 : s);
+            }
+      }
+
+      void
+      grid_vertices(PolygonalMesh<2> &mesh, const P &p0, const P &p1, const unsigned int nx,
+                    const unsigned int ny)
+      {
+        for (unsigned int j = 0; j <= ny; ++j)
+          for (unsigned int i = 0; i <= nx; ++i)
+            mesh.add_vertex(P(p0[0] + (p1[0] - p0[0]) * i / nx, p0[1] + (p1[1] - p0[1]) * j / ny));
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    structured_quads(PolygonalMesh<dim> &mesh, const dealii::Point<dim> &p0,
+                     const dealii::Point<dim> &p1, const unsigned int nx, const unsigned int ny)
+    {
+      check_rectangle(p0, p1, nx, ny, "structured_quads");
+      mesh.clear();
+      mesh.name = "structured quads " + std::to_string(nx) + "x" + std::to_string(ny);
+      grid_vertices(mesh, p0, p1, nx, ny);
+      for (unsigned int j = 0; j < ny; ++j)
+        for (unsigned int i = 0; i < nx; ++i)
+          {
+            const unsigned int v = j * (nx + 1) + i;
+            mesh.add_cell({v, v + 1, v + nx + 2, v + nx + 1});
+          }
+      finish_rectangle(mesh, p0, p1);
+    }
+
+
+
+    template <int dim>
+    void
+    structured_triangles(PolygonalMesh<dim> &mesh, const dealii::Point<dim> &p0,
+                         const dealii::Point<dim> &p1, const unsigned int nx, const unsigned int ny)
+    {
+      check_rectangle(p0, p1, nx, ny, "structured_triangles");
+      mesh.clear();
+      mesh.name = "structured triangles " + std::to_string(nx) + "x" + std::to_string(ny);
+      grid_vertices(mesh, p0, p1, nx, ny);
+      for (unsigned int j = 0; j < ny; ++j)
+        for (unsigned int i = 0; i < nx; ++i)
+          {
+            const unsigned int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 2, d = a + nx + 1;
+            if ((i + j) % 2 == 0)
+              {
+                mesh.add_cell({a, b, c});
+                mesh.add_cell({a, c, d});
+              }
+            else
+              {
+                mesh.add_cell({a, b, d});
+                mesh.add_cell({b, c, d});
+              }
+          }
+      finish_rectangle(mesh, p0, p1);
+    }
+
+
+
+    template <int dim>
+    void
+    perturbed_quads(PolygonalMesh<dim> &mesh, const dealii::Point<dim> &p0,
+                    const dealii::Point<dim> &p1, const unsigned int nx, const unsigned int ny,
+                    const double amplitude, const unsigned int seed)
+    {
+      check_rectangle(p0, p1, nx, ny, "perturbed_quads");
+      AssertThrow(amplitude >= 0 && amplitude < 0.5,
+                  dealii::ExcMessage("perturbed_quads: the perturbation amplitude must lie in [0, 0.5), got " +
+                                     std::to_string(amplitude) + "."));
+      PolygonalMesh<dim> q;
+      structured_quads(q, p0, p1, nx, ny);
+      std::mt19937                           rng(seed);
+      std::uniform_real_distribution<double> u(-amplitude, amplitude);
+      const double                           hx = (p1[0] - p0[0]) / nx, hy = (p1[1] - p0[1]) / ny;
+      mesh.clear();
+      mesh.name = "perturbed quads " + std::to_string(nx) + "x" + std::to_string(ny);
+      for (unsigned int j = 0; j <= ny; ++j)
+        for (unsigned int i = 0; i <= nx; ++i)
+          {
+            P            p  = q.vertex(j * (nx + 1) + i);
+            const double dx = u(rng) * hx, dy = u(rng) * hy;
+            if (i > 0 && i < nx)
+              p[0] += dx;
+            if (j > 0 && j < ny)
+              p[1] += dy;
+            mesh.add_vertex(p);
+          }
+      for (unsigned int c = 0; c < q.n_cells(); ++c)
+        mesh.add_cell(q.cell(c).vertices);
+      finish_rectangle(mesh, p0, p1);
+    }
+
+
+
+    template <int dim>
+    void
+    nonconvex(PolygonalMesh<dim> &mesh, const dealii::Point<dim> &p0, const dealii::Point<dim> &p1,
+              const unsigned int nx, const unsigned int ny, const double depth)
+    {
+      check_rectangle(p0, p1, nx, ny, "nonconvex");
+      AssertThrow(depth > 0 && depth < 0.5,
+                  dealii::ExcMessage("nonconvex: the depth must lie in (0, 0.5), got " + std::to_string(depth) + "."));
+      mesh.clear();
+      mesh.name = "nonconvex " + std::to_string(nx) + "x" + std::to_string(ny);
+      grid_vertices(mesh, p0, p1, nx, ny);
+      const double hy = (p1[1] - p0[1]) / ny;
+      // midpoints of the horizontal edges of row j: index mid0 + j*nx + i
+      const unsigned int mid0 = mesh.n_vertices();
+      for (unsigned int j = 0; j <= ny; ++j)
+        for (unsigned int i = 0; i < nx; ++i)
+          {
+            const P a = mesh.vertex(j * (nx + 1) + i), b = mesh.vertex(j * (nx + 1) + i + 1);
+            P       m = 0.5 * (a + b);
+            if (j > 0 && j < ny)
+              m[1] -= depth * hy;
+            mesh.add_vertex(m);
+          }
+      for (unsigned int j = 0; j < ny; ++j)
+        for (unsigned int i = 0; i < nx; ++i)
+          {
+            const unsigned int v = j * (nx + 1) + i;
+            mesh.add_cell({v, mid0 + j * nx + i, v + 1, v + nx + 2, mid0 + (j + 1) * nx + i, v + nx + 1});
+          }
+      finish_rectangle(mesh, p0, p1);
+    }
+
+
+
+    template <int dim>
+    void
+    voronoi(PolygonalMesh<dim> &mesh, const dealii::Point<dim> &p0, const dealii::Point<dim> &p1,
+            const unsigned int n_cells, const unsigned int n_lloyd_iterations, const unsigned int seed)
+    {
+      check_rectangle(p0, p1, 1, 1, "voronoi");
+      AssertThrow(n_cells >= 1, dealii::ExcMessage("voronoi: at least one cell is needed."));
+      using K     = CGAL::Exact_predicates_inexact_constructions_kernel;
+      using Vb    = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+      using Tds   = CGAL::Triangulation_data_structure_2<Vb>;
+      using DT    = CGAL::Delaunay_triangulation_2<K, Tds>;
+      using CP    = K::Point_2;
+      const double W = p1[0] - p0[0], H = p1[1] - p0[1], size = std::max(W, H);
+
+      std::mt19937                           rng(seed);
+      std::uniform_real_distribution<double> ux(p0[0], p1[0]), uy(p0[1], p1[1]);
+      std::vector<P>                         sites(n_cells);
+      for (auto &s : sites)
+        {
+          const double x = ux(rng), y = uy(rng);
+          s              = P(x, y);
+        }
+
+      std::vector<std::vector<P>> polygons;
+      for (unsigned int iteration = 0; iteration <= n_lloyd_iterations; ++iteration)
+        {
+          // the sites and their mirror images across the four sides
+          std::vector<std::pair<CP, int>> points;
+          for (unsigned int i = 0; i < n_cells; ++i)
+            {
+              const P &s = sites[i];
+              points.emplace_back(CP(s[0], s[1]), int(i));
+              points.emplace_back(CP(2 * p0[0] - s[0], s[1]), -1);
+              points.emplace_back(CP(2 * p1[0] - s[0], s[1]), -1);
+              points.emplace_back(CP(s[0], 2 * p0[1] - s[1]), -1);
+              points.emplace_back(CP(s[0], 2 * p1[1] - s[1]), -1);
+            }
+          DT dt;
+          dt.insert(points.begin(), points.end());
+          polygons.assign(n_cells, {});
+          std::vector<bool> found(n_cells, false);
+          for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+            {
+              const int i = v->info();
+              if (i < 0)
+                continue;
+              AssertThrow(!found[i], dealii::ExcMessage("voronoi: two generators coincide (seed " +
+                                                         std::to_string(seed) + ")."));
+              found[i]  = true;
+              auto f    = dt.incident_faces(v), done = f;
+              do
+                {
+                  AssertThrow(!dt.is_infinite(f),
+                              dealii::ExcMessage("voronoi: unbounded cell; internal error."));
+                  const CP c = dt.circumcenter(f);
+                  // clip round-off: keep the vertices in the rectangle
+                  polygons[i].emplace_back(std::min(p1[0], std::max(p0[0], c.x())),
+                                           std::min(p1[1], std::max(p0[1], c.y())));
+                }
+              while (++f != done);
+            }
+          for (unsigned int i = 0; i < n_cells; ++i)
+            AssertThrow(found[i], dealii::ExcMessage("voronoi: two generators coincide (seed " +
+                                                      std::to_string(seed) + ")."));
+          if (iteration == n_lloyd_iterations)
+            break;
+          // Lloyd: move the sites to the centroids
+          for (unsigned int i = 0; i < n_cells; ++i)
+            {
+              const auto        &poly = polygons[i];
+              double             a = 0, cx = 0, cy = 0;
+              const unsigned int n = poly.size();
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  const P     &p = poly[k], &q = poly[(k + 1) % n];
+                  const double cr = p[0] * q[1] - q[0] * p[1];
+                  a += cr;
+                  cx += (p[0] + q[0]) * cr;
+                  cy += (p[1] + q[1]) * cr;
+                }
+              if (std::abs(a) > 0)
+                sites[i] = P(cx / (3 * a), cy / (3 * a));
+            }
+        }
+
+      // merge coincident Voronoi vertices (mirror images make cocircular
+      // quadruples) and snap vertices onto the sides
+      mesh.clear();
+      mesh.name = "voronoi " + std::to_string(n_cells) + " cells, seed " + std::to_string(seed);
+      const double tol = 1e-9 * size;
+      std::map<std::pair<long long, long long>, std::vector<unsigned int>> buckets;
+      auto find_or_add = [&](P p) {
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            if (std::abs(p[d] - p0[d]) < tol)
+              p[d] = p0[d];
+            if (std::abs(p[d] - p1[d]) < tol)
+              p[d] = p1[d];
+          }
+        const long long bx = std::llround(p[0] / (10 * tol)), by = std::llround(p[1] / (10 * tol));
+        for (long long dx = -1; dx <= 1; ++dx)
+          for (long long dy = -1; dy <= 1; ++dy)
+            {
+              const auto it = buckets.find({bx + dx, by + dy});
+              if (it != buckets.end())
+                for (const auto v : it->second)
+                  if (mesh.vertex(v).distance(p) < tol)
+                    return v;
+            }
+        const unsigned int v = mesh.add_vertex(p);
+        buckets[{bx, by}].push_back(v);
+        return v;
+      };
+      for (const auto &poly : polygons)
+        {
+          std::vector<unsigned int> loop;
+          for (const auto &p : poly)
+            {
+              const unsigned int v = find_or_add(p);
+              if (loop.empty() || loop.back() != v)
+                loop.push_back(v);
+            }
+          while (loop.size() > 1 && loop.front() == loop.back())
+            loop.pop_back();
+          mesh.add_cell(loop);
+        }
+      finish_rectangle(mesh, p0, p1);
+      AssertThrow(std::abs(mesh.total_area() - W * H) <= 1e-10 * W * H,
+                  dealii::ExcMessage("voronoi: the cells do not cover the rectangle; internal error."));
+    }
+
+
+
+    template <int dim>
+    void
+    from_triangulation(PolygonalMesh<dim> &mesh, const dealii::Triangulation<dim, dim> &tria)
+    {
+      mesh.clear();
+      mesh.name = "deal.II triangulation";
+      for (const auto &v : tria.get_vertices())
+        mesh.add_vertex(v);
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          std::vector<unsigned int> loop;
+          if (cell->n_vertices() == 4)
+            loop = {cell->vertex_index(0), cell->vertex_index(1), cell->vertex_index(3),
+                    cell->vertex_index(2)};
+          else
+            for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+              loop.push_back(cell->vertex_index(v));
+          double a = 0;
+          for (unsigned int i = 0; i < loop.size(); ++i)
+            {
+              const P &p = mesh.vertex(loop[i]), &q = mesh.vertex(loop[(i + 1) % loop.size()]);
+              a += p[0] * q[1] - q[0] * p[1];
+            }
+          if (a < 0)
+            std::reverse(loop.begin(), loop.end());
+          mesh.add_cell(loop, cell->material_id());
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              mesh.set_boundary_id(cell->face(f)->vertex_index(0), cell->face(f)->vertex_index(1),
+                                   cell->face(f)->boundary_id());
+        }
+      mesh.finalize();
+    }
+
+
+
+    template <int dim>
+    void
+    from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename)
+    {
+      AssertThrow(std::filesystem::exists(filename),
+                  dealii::ExcMessage("Mesh file '" + filename + "' does not exist."));
+      dealii::Triangulation<dim> tria;
+      dealii::GridIn<dim>        grid_in(tria);
+      std::ifstream              in(filename);
+      const std::string          ext = std::filesystem::path(filename).extension().string();
+      try
+        {
+          grid_in.read(in, dealii::GridIn<dim>::parse_format(ext.empty() ? "msh" : ext.substr(1)));
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false, dealii::ExcMessage("Cannot read the mesh file '" + filename + "': " + e.what()));
+        }
+      from_triangulation(mesh, tria);
+      mesh.name = filename;
+    }
+
+    template void structured_quads(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int);
+    template void structured_triangles(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int);
+    template void perturbed_quads(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int,
+                                  const double, const unsigned int);
+    template void nonconvex(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int,
+                            const double);
+    template void voronoi(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int,
+                         const unsigned int);
+    template void from_triangulation(PolygonalMesh<2> &, const dealii::Triangulation<2, 2> &);
+    template void from_gridin_file(PolygonalMesh<2> &, const std::string &);
+  } // namespace PolygonalMeshGenerators
+} // namespace dealvem

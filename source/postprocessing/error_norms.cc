@@ -1,0 +1,76 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <dealvem/postprocessing/error_norms.h>
+#include <dealvem/vem/virtual_element.h>
+
+#include <cmath>
+
+namespace dealvem
+{
+  template <int dim>
+  ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
+                 const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                 const double                                                 gamma,
+                 const dealii::Vector<double>                                &solution,
+                 const dealii::Function<dim>                                 &exact)
+  {
+    AssertThrow(exact.n_components == 2, dealii::ExcMessage("The exact displacement needs 2 components."));
+    const auto        &mesh = dof_handler.get_mesh();
+    const unsigned int k    = dof_handler.get_degree();
+    VirtualElement<dim>                          element(k);
+    std::vector<dealii::types::global_dof_index> indices;
+    dealii::Vector<double>                       local, coef, u(2);
+    std::vector<dealii::Tensor<1, dim>>          grad(2);
+    double l2 = 0, h1 = 0, en = 0, l2e = 0, h1e = 0, ene = 0;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const auto &material = materials.at(mesh.cell(c).material_id);
+        element.reinit(mesh.cell_vertices(c), material, gamma);
+        dof_handler.get_dof_indices(c, indices);
+        local.reinit(indices.size());
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          local[i] = solution[indices[i]];
+        element.project(local, coef);
+        const dealii::Quadrature<dim> q = element.get_geometry().quadrature(2 * k + 6);
+        for (unsigned int i = 0; i < q.size(); ++i)
+          {
+            const auto &x = q.point(i);
+            exact.vector_value(x, u);
+            exact.vector_gradient(x, grad);
+            const dealii::Tensor<1, dim> uh = element.projection_value(coef, x);
+            const dealii::Tensor<2, dim> gh = element.projection_gradient(coef, x);
+            dealii::Tensor<2, dim>       g;
+            for (unsigned int a = 0; a < 2; ++a)
+              g[a] = grad[a];
+            dealii::Tensor<1, dim> e;
+            e[0]                                   = u[0] - uh[0];
+            e[1]                                   = u[1] - uh[1];
+            const dealii::Tensor<2, dim>      ge   = g - gh;
+            const dealii::SymmetricTensor<2, dim> eps  = dealii::symmetrize(ge);
+            const dealii::SymmetricTensor<2, dim> epsx = dealii::symmetrize(g);
+            const double                      w    = q.weight(i);
+            l2 += w * (e * e);
+            h1 += w * dealii::scalar_product(ge, ge);
+            en += w * (material.stress(eps) * eps);
+            l2e += w * (u[0] * u[0] + u[1] * u[1]);
+            h1e += w * dealii::scalar_product(g, g);
+            ene += w * (material.stress(epsx) * epsx);
+          }
+      }
+    ErrorNorms r;
+    r.l2           = std::sqrt(std::max(l2, 0.));
+    r.h1_seminorm  = std::sqrt(std::max(h1, 0.));
+    r.energy       = std::sqrt(std::max(en, 0.));
+    r.l2_exact     = std::sqrt(std::max(l2e, 0.));
+    r.h1_exact     = std::sqrt(std::max(h1e, 0.));
+    r.energy_exact = std::sqrt(std::max(ene, 0.));
+    return r;
+  }
+
+  template ErrorNorms
+  compute_errors(const VEMDoFHandler<2> &, const std::map<dealii::types::material_id, ElasticMaterial> &,
+                 const double, const dealii::Vector<double> &, const dealii::Function<2> &);
+} // namespace dealvem

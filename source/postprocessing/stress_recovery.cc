@@ -1,0 +1,67 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <dealvem/postprocessing/stress_recovery.h>
+#include <dealvem/vem/virtual_element.h>
+
+namespace dealvem
+{
+  template <int dim>
+  StressRecovery<dim>::StressRecovery(
+    const VEMDoFHandler<dim>                                    &dof_handler,
+    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+    const double                                                 gamma,
+    const dealii::Vector<double>                                &solution)
+  {
+    const auto        &mesh = dof_handler.get_mesh();
+    const unsigned int k    = dof_handler.get_degree();
+    strain.resize(mesh.n_cells());
+    stress.resize(mesh.n_cells());
+    von_mises.resize(mesh.n_cells());
+    nodal_stress.assign(mesh.n_vertices(), dealii::SymmetricTensor<2, dim>());
+    nodal_von_mises.assign(mesh.n_vertices(), 0.);
+    std::vector<double>                          nodal_zz(mesh.n_vertices(), 0.);
+    std::vector<unsigned int>                    count(mesh.n_vertices(), 0);
+    VirtualElement<dim>                          element(k);
+    std::vector<dealii::types::global_dof_index> indices;
+    dealii::Vector<double>                       local, coef;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const auto it = materials.find(mesh.cell(c).material_id);
+        AssertThrow(it != materials.end(),
+                    dealii::ExcMessage("StressRecovery: no material for material id " +
+                                       std::to_string(mesh.cell(c).material_id) + " of cell " +
+                                       std::to_string(c) + "."));
+        const ElasticMaterial &material = it->second;
+        element.reinit(mesh.cell_vertices(c), material, gamma);
+        dof_handler.get_dof_indices(c, indices);
+        local.reinit(indices.size());
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          local[i] = solution[indices[i]];
+        element.project(local, coef);
+        // the strain of Pi u is linear for k = 2: its mean is the value at
+        // the centroid
+        const auto &geo = element.get_geometry();
+        strain[c]       = element.projection_strain(coef, geo.centroid());
+        stress[c]       = material.stress(strain[c]);
+        von_mises[c]    = ElasticMaterial::von_mises(stress[c], material.stress_zz(strain[c]));
+        const auto &loop = mesh.cell(c).vertices;
+        for (unsigned int i = 0; i < loop.size(); ++i)
+          {
+            const auto eps = element.projection_strain(coef, geo.vertex(i));
+            nodal_stress[loop[i]] += material.stress(eps);
+            nodal_zz[loop[i]] += material.stress_zz(eps);
+            ++count[loop[i]];
+          }
+      }
+    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+      if (count[v] > 0)
+        {
+          nodal_stress[v] /= count[v];
+          nodal_von_mises[v] = ElasticMaterial::von_mises(nodal_stress[v], nodal_zz[v] / count[v]);
+        }
+  }
+
+  template class StressRecovery<2>;
+} // namespace dealvem
