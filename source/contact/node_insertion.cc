@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -34,7 +35,15 @@ namespace dealvem
                    const dealii::types::boundary_id slave_id)
     {
       return "contact interface (master id " + std::to_string(master_id) + ", slave id " +
-             std::to_string(slave_id) + ")";
+             std::to_string(slave_id) + "):\n";
+    }
+
+    std::string
+    number_string(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
     }
 
     std::string
@@ -106,28 +115,28 @@ namespace dealvem
     {
       AssertThrow(settings.snap_tolerance > 0 && settings.snap_tolerance < 0.5,
                   dealii::ExcMessage(interface_name(master_id, slave_id) +
-                                     ": the snap tolerance must lie in (0, 0.5), but it is " +
-                                     std::to_string(settings.snap_tolerance) + "."));
+                                     "the snap tolerance must lie in (0, 0.5), but it is " +
+                                     number_string(settings.snap_tolerance) + "."));
       AssertThrow(settings.search_distance > 0,
                   dealii::ExcMessage(interface_name(master_id, slave_id) +
-                                     ": the search distance must be positive, but it is " +
-                                     std::to_string(settings.search_distance) + "."));
+                                     "the search distance must be positive, but it is " +
+                                     number_string(settings.search_distance) + "."));
       for (const auto &s : {std::make_pair(master_id, &master), std::make_pair(slave_id, &slave)})
         AssertThrow(!s.second->edges.empty(),
                     dealii::ExcMessage("contact interface: boundary id " + std::to_string(s.first) +
                                        " has no boundary edges in mesh '" + mesh.name + "'."));
       AssertThrow(master.materials.size() == 1,
-                  dealii::ExcMessage(interface_name(master_id, slave_id) + ": the boundary edges with id " +
+                  dealii::ExcMessage(interface_name(master_id, slave_id) + "the boundary edges with id " +
                                      std::to_string(master_id) + " belong to more than one body (material ids " +
                                      materials_string(master.materials) +
                                      "); each side of a contact interface must lie on one body."));
       AssertThrow(slave.materials.size() == 1,
-                  dealii::ExcMessage(interface_name(master_id, slave_id) + ": the boundary edges with id " +
+                  dealii::ExcMessage(interface_name(master_id, slave_id) + "the boundary edges with id " +
                                      std::to_string(slave_id) + " belong to more than one body (material ids " +
                                      materials_string(slave.materials) +
                                      "); each side of a contact interface must lie on one body."));
       AssertThrow(*master.materials.begin() != *slave.materials.begin(),
-                  dealii::ExcMessage(interface_name(master_id, slave_id) + ": both boundary ids " +
+                  dealii::ExcMessage(interface_name(master_id, slave_id) + "both boundary ids " +
                                      std::to_string(master_id) + " and " + std::to_string(slave_id) +
                                      " belong to the same body (material id " +
                                      std::to_string(*master.materials.begin()) +
@@ -151,10 +160,14 @@ namespace dealvem
      * unclamped parameter must lie in [-snap, 1 + snap] unless the
      * closest point is a vertex joining two edges of the side (a corner of
      * a polygonal side, where both parameters lie outside [0, 1]).
+     *
+     * @p reference_lengths (one per edge of the side), if given, replace the
+     * edge lengths in the distance criterion.
      */
     Projection
     project(const Mesh &mesh, const Side &side, const dealii::Point<2> &p,
-            const NodeInsertion::Settings &settings)
+            const NodeInsertion::Settings &settings,
+            const std::vector<double>     *reference_lengths = nullptr)
     {
       Projection best;
       double     best_distance = std::numeric_limits<double>::max();
@@ -183,7 +196,8 @@ namespace dealvem
         }
       if (best.edge == invalid)
         return best;
-      if (best_distance > settings.search_distance * best.length)
+      const double reference = (reference_lengths ? (*reference_lengths)[best.edge] : best.length);
+      if (best_distance > settings.search_distance * reference)
         return best;
       const double snap = settings.snap_tolerance;
       if (best_unclamped < -snap || best_unclamped > 1 + snap)
@@ -197,6 +211,55 @@ namespace dealvem
       best.found = true;
       return best;
     }
+
+    /**
+     * For each edge of @p side the length of the straight run of side edges
+     * it belongs to (consecutive collinear edges joined at a vertex of the
+     * side). Inserting vertices splits an edge into collinear pieces, so the
+     * run containing a piece is at least as long as the edge that was split:
+     * make_pairs() measures the search distance against it and so accepts
+     * every projection that insert() accepted.
+     */
+    std::vector<double>
+    run_lengths(const Mesh &mesh, const Side &side)
+    {
+      const unsigned int        n = side.edges.size();
+      std::vector<unsigned int> parent(n);
+      for (unsigned int i = 0; i < n; ++i)
+        parent[i] = i;
+      const std::function<unsigned int(unsigned int)> root = [&](unsigned int i) {
+        while (parent[i] != i)
+          i = parent[i] = parent[parent[i]];
+        return i;
+      };
+      std::map<unsigned int, unsigned int> incoming, outgoing;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          incoming[side.edges[i][1]] = i;
+          outgoing[side.edges[i][0]] = i;
+        }
+      const auto unit_tangent = [&](const unsigned int i) {
+        dealii::Tensor<1, 2> t = mesh.vertex(side.edges[i][1]) - mesh.vertex(side.edges[i][0]);
+        return t / t.norm();
+      };
+      for (const auto &in : incoming)
+        {
+          const auto out = outgoing.find(in.first);
+          if (out == outgoing.end() || side.degree.at(in.first) != 2)
+            continue;
+          const dealii::Tensor<1, 2> t1 = unit_tangent(in.second), t2 = unit_tangent(out->second);
+          if (t1 * t2 > 0 && std::abs(t1[0] * t2[1] - t1[1] * t2[0]) <= 1e-10)
+            parent[root(in.second)] = root(out->second);
+        }
+      std::vector<double> sum(n, 0.), lengths(n);
+      for (unsigned int i = 0; i < n; ++i)
+        sum[root(i)] += mesh.vertex(side.edges[i][0]).distance(mesh.vertex(side.edges[i][1]));
+      for (unsigned int i = 0; i < n; ++i)
+        lengths[i] = sum[root(i)];
+      return lengths;
+    }
+
+
 
     /**
      * One pass: project the vertices of @p from onto the edges of @p onto,
@@ -352,9 +415,9 @@ namespace dealvem
 
     AssertThrow(n1 + n2 > 0,
                 dealii::ExcMessage(interface_name(master_id, slave_id) +
-                                   ": the boundary parts do not face or overlap each other within the "
+                                   "the boundary parts do not face or overlap each other within the "
                                    "search distance (" +
-                                   std::to_string(settings.search_distance) +
+                                   number_string(settings.search_distance) +
                                    " times the edge length) in mesh '" + mesh.name + "'."));
 
     report.n_master_edges = collect_side(mesh, master_id).edges.size();
@@ -374,12 +437,16 @@ namespace dealvem
   {
     AssertThrow(degree == 1 || degree == 2,
                 dealii::ExcMessage(interface_name(master_id, slave_id) +
-                                   ": contact node pairs are implemented for order k = 1 and 2, not k = " +
+                                   "contact node pairs are implemented for order k = 1 and 2, not k = " +
                                    std::to_string(degree) + "."));
     const Side master = collect_side(mesh, master_id);
     const Side slave  = collect_side(mesh, slave_id);
     check_interface(mesh, master_id, slave_id, master, slave, settings);
     const double snap = settings.snap_tolerance;
+    // the search distance is measured against the straight runs of edges,
+    // i.e. against the edges before insertion (see run_lengths())
+    const std::vector<double> master_runs = run_lengths(mesh, master);
+    const std::vector<double> slave_runs  = run_lengths(mesh, slave);
 
     // candidate partners: (slave vertex, master vertex, distance)
     std::map<unsigned int, std::pair<unsigned int, double>> partner; // slave -> (master, distance)
@@ -392,7 +459,7 @@ namespace dealvem
     // the slave vertex projects onto (the snap tolerance of) a master vertex
     for (const unsigned int s : slave.vertices)
       {
-        const Projection pr = project(mesh, master, mesh.vertex(s), settings);
+        const Projection pr = project(mesh, master, mesh.vertex(s), settings, &master_runs);
         if (!pr.found)
           continue;
         if (pr.s <= snap)
@@ -404,7 +471,7 @@ namespace dealvem
     // where the projection of the slave vertex is not the master vertex)
     for (const unsigned int m : master.vertices)
       {
-        const Projection pr = project(mesh, slave, mesh.vertex(m), settings);
+        const Projection pr = project(mesh, slave, mesh.vertex(m), settings, &slave_runs);
         if (!pr.found)
           continue;
         unsigned int s = invalid;

@@ -51,7 +51,7 @@ run_variant(const Variant &v)
       << "subsection Boundary conditions and loads\n  set Dirichlet = 2 : y : 0\n"
       << "  set Point constraints = 0, 0 : x : 0" << (v.two_materials ? "; 0, 2 : x : 0" : "") << "\n"
       << "  set Pressure = 13 : " << p << "\nend\n"
-      << "subsection Solver\n  set Type = " << v.solver << "\nend\n"
+      << "subsection Solver\n  set Type = " << v.solver << "\n  set Relative tolerance = 1e-14\nend\n"
       << "subsection Output\n  set Write VTU = false\n  set Write JSON = false\n  set Write pictures = "
          "false\n  set Write CSV = false\nend\n";
   const auto r = testing::run_contact(prm.str());
