@@ -470,6 +470,18 @@ namespace dealvem
         }
     if (pmax >= pmin)
       std::cout << "  contact pressure on active pairs: min " << pmin << ", max " << pmax << std::endl;
+    {
+      std::array<double, 3> lo{{1e300, 1e300, 1e300}}, hi{{-1e300, -1e300, -1e300}};
+      for (const auto &st : results.cell_stress)
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            lo[i] = std::min(lo[i], st[i]);
+            hi[i] = std::max(hi[i], st[i]);
+          }
+      std::cout << "  cell stresses: sigma_xx in [" << lo[0] << ", " << hi[0] << "], sigma_yy in ["
+                << lo[1] << ", " << hi[1] << "], sigma_xy in [" << lo[2] << ", " << hi[2] << "]"
+                << std::endl;
+    }
     std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
               << ", " << results.total_contact_force[1] << ")" << std::endl;
 

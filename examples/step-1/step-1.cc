@@ -1,0 +1,317 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+//
+// step-1: linear elasticity with second-order virtual elements on
+// centroidal Voronoi meshes -- a cantilever against Timoshenko's solution.
+//
+// Build (from a dealvem build directory):   make step-1
+// Run:                                      ./examples/step-1 [k]
+// What it does: solves a plane-stress cantilever [0,L]x[-D/2,D/2] loaded by
+// a parabolic shear traction at its free end, on four Voronoi meshes, and
+// prints the convergence table of the errors against the exact solution
+// (Timoshenko & Goodier, Theory of Elasticity, sec. 21). Writes
+// step-1-<cycle>.vtu for ParaView and step-1-von-mises.svg.
+//
+// The matrices D, B, G, the projector and the stabilization that the
+// VirtualElement class builds are defined in doc/intro.dox.
+
+// @sect3{Include files}
+#include <deal.II/base/convergence_table.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/elasticity/boundary_conditions.h>
+#include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/material.h>
+#include <dealvem/mesh/generators.h>
+#include <dealvem/postprocessing/error_norms.h>
+#include <dealvem/postprocessing/stress_recovery.h>
+#include <dealvem/postprocessing/svg_plots.h>
+#include <dealvem/postprocessing/vtu_output.h>
+#include <dealvem/solvers/linear_solver.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <fstream>
+#include <iostream>
+
+namespace Step1
+{
+  using namespace dealvem;
+
+  // @sect3{The exact solution}
+  //
+  // Timoshenko's cantilever: with $I = D^3/12$ (unit thickness),
+  // $u_x = -\frac{Py}{6EI}\left[(6L-3x)x + (2+\nu)(y^2 - D^2/4)\right]$,
+  // $u_y = \frac{P}{6EI}\left[3\nu y^2(L-x) + (4+5\nu)\frac{D^2x}{4} + (3L-x)x^2\right]$,
+  // so $\sigma_{xx} = -P(L-x)y/I$, $\sigma_{yy} = 0$,
+  // $\sigma_{xy} = \frac{P}{2I}(D^2/4 - y^2)$. The gradient is written out
+  // because the error norms need it.
+  struct BeamData
+  {
+    double L = 10, D = 2, P = 1, E = 1000, nu = 0.3;
+    double
+    I() const
+    {
+      return D * D * D / 12.;
+    }
+  };
+
+  class ExactDisplacement : public dealii::Function<2>
+  {
+  public:
+    explicit ExactDisplacement(const BeamData &b)
+      : dealii::Function<2>(2)
+      , b(b)
+    {}
+
+    double
+    value(const dealii::Point<2> &p, const unsigned int c) const override
+    {
+      const double x = p[0], y = p[1], L = b.L, D = b.D, k = b.P / (6 * b.E * b.I());
+      if (c == 0)
+        return -k * y * ((6 * L - 3 * x) * x + (2 + b.nu) * (y * y - D * D / 4));
+      return k * (3 * b.nu * y * y * (L - x) + (4 + 5 * b.nu) * D * D * x / 4 + (3 * L - x) * x * x);
+    }
+
+    dealii::Tensor<1, 2>
+    gradient(const dealii::Point<2> &p, const unsigned int c) const override
+    {
+      const double x = p[0], y = p[1], L = b.L, D = b.D, k = b.P / (6 * b.E * b.I());
+      dealii::Tensor<1, 2> g;
+      if (c == 0)
+        {
+          g[0] = -k * y * (6 * L - 6 * x);
+          g[1] = -k * ((6 * L - 3 * x) * x + (2 + b.nu) * (3 * y * y - D * D / 4));
+        }
+      else
+        {
+          g[0] = k * (-3 * b.nu * y * y + (4 + 5 * b.nu) * D * D / 4 + 6 * L * x - 3 * x * x);
+          g[1] = k * 6 * b.nu * y * (L - x);
+        }
+      return g;
+    }
+
+  private:
+    BeamData b;
+  };
+
+  // The end traction $t = \sigma n$ with $n = (1,0)$ at $x = L$.
+  class EndTraction : public dealii::Function<2>
+  {
+  public:
+    explicit EndTraction(const BeamData &b)
+      : dealii::Function<2>(2)
+      , b(b)
+    {}
+    double
+    value(const dealii::Point<2> &p, const unsigned int c) const override
+    {
+      return c == 0 ? 0. : b.P / (2 * b.I()) * (b.D * b.D / 4 - p[1] * p[1]);
+    }
+
+  private:
+    BeamData b;
+  };
+
+  // @sect3{The CantileverProblem class}
+  //
+  // The usual structure of a deal.II tutorial: setup_system(),
+  // assemble_system(), solve(), compute_errors(), output_results(), run().
+  class CantileverProblem
+  {
+  public:
+    explicit CantileverProblem(const unsigned int degree);
+    void
+    run();
+
+  private:
+    void
+    make_mesh(const unsigned int cycle);
+    void
+    setup_system();
+    void
+    assemble_system();
+    void
+    solve();
+    void
+    compute_errors(const unsigned int cycle);
+    void
+    output_results(const unsigned int cycle) const;
+
+    const unsigned int                                        degree;
+    BeamData                                                  beam;
+    std::map<dealii::types::material_id, ElasticMaterial>     materials;
+    const ExactDisplacement                                   exact;
+    const EndTraction                                         traction;
+    PolygonalMesh<2>                                          mesh;
+    VEMDoFHandler<2>                                          dof_handler;
+    dealii::AffineConstraints<double>                         constraints;
+    dealii::SparsityPattern                                   sparsity_pattern;
+    dealii::SparseMatrix<double>                              system_matrix;
+    dealii::Vector<double>                                    solution, system_rhs;
+    dealii::ConvergenceTable                                  table;
+  };
+
+  CantileverProblem::CantileverProblem(const unsigned int degree)
+    : degree(degree)
+    , materials({{0, ElasticMaterial(beam.E, beam.nu, ElasticMaterial::Model::plane_stress)}})
+    , exact(beam)
+    , traction(beam)
+  {}
+
+  // @sect4{CantileverProblem::make_mesh}
+  //
+  // A centroidal Voronoi mesh of the beam: 40 cells on the coarsest mesh,
+  // four times as many on each further cycle; 20 Lloyd iterations. The
+  // generator gives boundary ids 0 (left, clamped), 1 (right, loaded),
+  // 2 and 3 (bottom and top, free).
+  void
+  CantileverProblem::make_mesh(const unsigned int cycle)
+  {
+    PolygonalMeshGenerators::voronoi(mesh, dealii::Point<2>(0, -beam.D / 2),
+                                     dealii::Point<2>(beam.L, beam.D / 2), 40u << (2 * cycle), 20, 1);
+  }
+
+  // @sect4{CantileverProblem::setup_system}
+  //
+  // Vertex, edge-midpoint and cell-moment DoFs; the exact displacement is
+  // prescribed on the left end (a "clamp" that matches Timoshenko's
+  // solution), then the sparsity pattern is condensed as in step-8.
+  void
+  CantileverProblem::setup_system()
+  {
+    dof_handler.reinit(mesh);
+    dof_handler.distribute_dofs(degree);
+    constraints.clear();
+    BoundaryConditions::interpolate_boundary_values(dof_handler, {0}, exact, {{true, true}}, constraints);
+    constraints.close();
+    dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    dof_handler.make_sparsity_pattern(dsp);
+    constraints.condense(dsp);
+    sparsity_pattern.copy_from(dsp);
+    system_matrix.reinit(sparsity_pattern);
+    solution.reinit(dof_handler.n_dofs());
+  }
+
+  // @sect4{CantileverProblem::assemble_system}
+  //
+  // The ElasticityAssembler loops over the polygons, builds the local
+  // stiffness $K_E = \Pi_*^T\tilde G\Pi_* + \gamma\tau(I-\Pi)^T(I-\Pi)$ with
+  // VirtualElement, the traction load on the edges with boundary id 1, and
+  // hands both to AffineConstraints::distribute_local_to_global.
+  void
+  CantileverProblem::assemble_system()
+  {
+    ElasticityAssembler<2> assembler(dof_handler, materials, 1.0);
+    assembler.add_traction(1, traction);
+    assembler.assemble(constraints, system_matrix, system_rhs);
+  }
+
+  // @sect4{CantileverProblem::solve}
+  //
+  // CG with an algebraic multigrid preconditioner whose near-null space is
+  // the three rigid-body modes.
+  void
+  CantileverProblem::solve()
+  {
+    LinearSolver::Settings settings;
+    settings.type = LinearSolver::Type::cg_amg;
+    LinearSolver solver(settings);
+    solver.set_near_null_space(dof_handler.rigid_body_modes());
+    solver.solve(system_matrix, solution, system_rhs);
+    constraints.distribute(solution);
+    std::cout << "   " << solver.last_iterations() << " CG iterations" << std::endl;
+  }
+
+  // @sect4{CantileverProblem::compute_errors}
+  //
+  // The virtual functions are not known inside a polygon, so the errors
+  // are measured with the projection $\Pi u_h$.
+  void
+  CantileverProblem::compute_errors(const unsigned int cycle)
+  {
+    const ErrorNorms e = dealvem::compute_errors(dof_handler, materials, 1.0, solution, exact);
+    table.add_value("cycle", cycle);
+    table.add_value("cells", mesh.n_cells());
+    table.add_value("dofs", dof_handler.n_dofs());
+    table.add_value("L2", e.l2 / e.l2_exact);
+    table.add_value("H1", e.h1_seminorm / e.h1_exact);
+    table.add_value("energy", e.energy / e.energy_exact);
+  }
+
+  // @sect4{CantileverProblem::output_results}
+  void
+  CantileverProblem::output_results(const unsigned int cycle) const
+  {
+    const StressRecovery<2> stresses(dof_handler, materials, 1.0, solution);
+    write_vtu_file("step-1-" + std::to_string(cycle) + ".vtu", dof_handler, solution, stresses);
+    if (cycle == 1)
+      {
+        std::vector<dealii::Tensor<1, 2>> u(mesh.n_vertices());
+        std::vector<double>               vm(mesh.n_cells());
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          u[v] = dealii::Tensor<1, 2>({solution[2 * v], solution[2 * v + 1]});
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          vm[c] = stresses.cell_von_mises(c);
+        SVGPlots::write_mesh("step-1-von-mises.svg", mesh, u, 1.0, vm, "von Mises",
+                             std::vector<bool>(), "Cantilever on a Voronoi mesh: von Mises stress, true-scale displacement");
+      }
+  }
+
+  // @sect4{CantileverProblem::run}
+  void
+  CantileverProblem::run()
+  {
+    for (unsigned int cycle = 0; cycle < 4; ++cycle)
+      {
+        make_mesh(cycle);
+        setup_system();
+        std::cout << "Cycle " << cycle << ": " << mesh.n_cells() << " Voronoi cells, "
+                  << dof_handler.n_dofs() << " DoFs" << std::endl;
+        assemble_system();
+        solve();
+        compute_errors(cycle);
+        output_results(cycle);
+      }
+    for (const std::string c : {"L2", "H1", "energy"})
+      {
+        table.set_scientific(c, true);
+        table.set_precision(c, 3);
+        table.evaluate_convergence_rates(c, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
+      }
+    std::cout << std::endl << "Relative errors and rates (k = " << degree << "):" << std::endl;
+    table.write_text(std::cout, dealii::TableHandler::org_mode_table);
+  }
+} // namespace Step1
+
+// @sect3{The main function}
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      const unsigned int degree = (argc > 1 ? std::stoi(argv[1]) : 2);
+      Step1::CantileverProblem problem(degree);
+      problem.run();
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << std::endl
+                << "----------------------------------------------------" << std::endl
+                << "Exception on processing: " << std::endl
+                << exc.what() << std::endl
+                << "Aborting!" << std::endl
+                << "----------------------------------------------------" << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,290 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+//
+// step-2: the contact patch test on non-matching meshes -- node insertion
+// and node-to-node Lagrange multipliers.
+//
+// Build (from a dealvem build directory):   make step-2
+// Run:                                      ./examples/step-2 [k]
+// What it does: two stacked blocks with non-matching meshes (3x3 quads below,
+// 7x7 quads or Voronoi cells above) are pressed together by a uniform
+// pressure p = 10 MPa (E = 7000 MPa, nu = 0.3, plane strain). Node insertion
+// makes the interface matching, one multiplier per node pair enforces the
+// normal contact (unilateral, by an active set), a penalty the tangential
+// stick. The program prints the largest deviation of the stresses from the
+// exact uniform state and of the contact pressures from p, and exits with
+// an error if they are not at round-off. The same problem is described by
+// the parameter file patch-test.prm for the `dealvem` program.
+
+// @sect3{Include files}
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/contact/active_set_solver.h>
+#include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/node_insertion.h>
+#include <dealvem/elasticity/boundary_conditions.h>
+#include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/mesh/generators.h>
+#include <dealvem/postprocessing/stress_recovery.h>
+#include <dealvem/postprocessing/vtu_output.h>
+#include <dealvem/solvers/saddle_point_solver.h>
+#include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/virtual_element.h>
+
+#include <iomanip>
+#include <iostream>
+
+namespace Step2
+{
+  using namespace dealvem;
+
+  // @sect3{The ContactPatchTest class}
+  class ContactPatchTest
+  {
+  public:
+    ContactPatchTest(const unsigned int degree, const bool voronoi_upper);
+    void
+    run();
+
+  private:
+    void
+    make_meshes();
+    void
+    insert_nodes();
+    void
+    setup_system();
+    void
+    assemble_system();
+    void
+    solve();
+    void
+    check_results() const;
+
+    const unsigned int degree;
+    const bool         voronoi_upper;
+    const double       p = 10.;
+
+    std::map<dealii::types::material_id, ElasticMaterial> materials;
+    PolygonalMesh<2>                                      mesh;
+    VEMDoFHandler<2>                                      dof_handler;
+    std::vector<ContactNodePair>                          pairs;
+    std::unique_ptr<ContactAssembler<2>>                  contact;
+    ContactSettings                                       settings;
+    dealii::AffineConstraints<double>                     constraints;
+    dealii::SparsityPattern                               sparsity_pattern;
+    dealii::SparseMatrix<double>                          system_matrix, work_matrix;
+    dealii::Vector<double>                                system_rhs, solution;
+    unsigned int                                          n_dofs = 0;
+  };
+
+  ContactPatchTest::ContactPatchTest(const unsigned int degree, const bool voronoi_upper)
+    : degree(degree)
+    , voronoi_upper(voronoi_upper)
+    , materials({{0, ElasticMaterial(7000, 0.3)}, {1, ElasticMaterial(7000, 0.3)}})
+  {}
+
+  // @sect4{ContactPatchTest::make_meshes}
+  //
+  // Each body is meshed on its own; the upper body gets material id 1 and
+  // boundary ids 10..13 (left, right, bottom, top), then both meshes are
+  // put into one PolygonalMesh. Cells of different material ids never share
+  // vertices: the bodies only interact through contact.
+  void
+  ContactPatchTest::make_meshes()
+  {
+    PolygonalMeshGenerators::structured_quads(mesh, dealii::Point<2>(0, 0), dealii::Point<2>(1, 1), 3, 3);
+    PolygonalMesh<2> upper;
+    if (voronoi_upper)
+      PolygonalMeshGenerators::voronoi(upper, dealii::Point<2>(0, 1), dealii::Point<2>(1, 2), 12, 30, 3);
+    else
+      PolygonalMeshGenerators::structured_quads(upper, dealii::Point<2>(0, 1), dealii::Point<2>(1, 2), 7, 7);
+    for (unsigned int c = 0; c < upper.n_cells(); ++c)
+      upper.set_material_id(c, 1);
+    for (unsigned int e = 0; e < upper.n_edges(); ++e)
+      if (upper.edge(e).at_boundary())
+        upper.set_edge_boundary_id(e, upper.edge(e).boundary_id + 10);
+    mesh.append(upper);
+  }
+
+  // @sect4{ContactPatchTest::insert_nodes}
+  //
+  // The interface is the top of the lower block (id 3, master: it gives
+  // the normal) and the bottom of the upper block (id 12, slave). Node
+  // insertion projects the vertices of each side onto the other side's
+  // edges and splits the edges there, so that both sides carry the same
+  // vertices -- and for k = 2 the same sub-edge midpoints. The polygons that
+  // own split edges simply gain a vertex. Then every slave node has one
+  // master partner: a node pair with normal n, tangent t, initial gap g_0
+  // and the tributary weight w (L/2 per end for k = 1; Simpson's L/6, 2L/3,
+  // L/6 for k = 2).
+  void
+  ContactPatchTest::insert_nodes()
+  {
+    const NodeInsertion::Settings s;
+    const auto                    report = NodeInsertion::insert(mesh, 3, 12, s);
+    std::cout << "   node insertion: " << report.n_inserted_master << " nodes inserted on the master side, "
+              << report.n_inserted_slave << " on the slave side" << std::endl;
+    dof_handler.reinit(mesh);
+    dof_handler.distribute_dofs(degree);
+    pairs = NodeInsertion::make_pairs(mesh, 3, 12, degree, s);
+    std::cout << "   " << pairs.size() << " node pairs, " << dof_handler.n_dofs() << " DoFs" << std::endl;
+  }
+
+  // @sect4{ContactPatchTest::setup_system}
+  //
+  // The unknowns are the displacements followed by one multiplier per
+  // normal constraint: $[K\ C^T; C\ 0][u;\lambda] = [f; -g_0]$. The bottom
+  // is held vertically and the corner (0,0) horizontally; the upper block is
+  // held tangentially by the stick penalty and vertically by contact.
+  void
+  ContactPatchTest::setup_system()
+  {
+    settings.normal     = ContactSettings::Normal::unilateral;
+    settings.tangential = ContactSettings::Tangential::penalty;
+    // default rule: 1000 E / h with h the shortest interface sub-edge
+    double h = 1e300;
+    for (const auto &pr : pairs)
+      if (!pr.is_midpoint)
+        h = std::min(h, pr.weight * (degree == 1 ? 1. : 3.));
+    contact = std::make_unique<ContactAssembler<2>>(dof_handler, pairs, settings, 1e3 * 7000 / h);
+
+    constraints.clear();
+    dealii::Functions::ZeroFunction<2> zero(2);
+    BoundaryConditions::interpolate_boundary_values(dof_handler, {2}, zero, {{false, true}}, constraints);
+    BoundaryConditions::add_point_constraint(dof_handler, dealii::Point<2>(0, 0), 0, 0., constraints);
+    constraints.close();
+
+    n_dofs                 = dof_handler.n_dofs();
+    const unsigned int n_m = contact->n_multipliers();
+    dealii::DynamicSparsityPattern dsp(n_dofs + n_m);
+    dof_handler.make_sparsity_pattern(dsp);
+    contact->add_sparsity(dsp);
+    constraints.condense(dsp);
+    sparsity_pattern.copy_from(dsp);
+    system_matrix.reinit(sparsity_pattern);
+    work_matrix.reinit(sparsity_pattern);
+    system_rhs.reinit(n_dofs + n_m);
+  }
+
+  // @sect4{ContactPatchTest::assemble_system}
+  //
+  // The elastic part, cell by cell, into the upper left block of the big
+  // matrix; the pressure on the top of the upper block (id 13) is the load.
+  // The contact blocks are added by the active-set solver in each of its
+  // iterations.
+  void
+  ContactPatchTest::assemble_system()
+  {
+    ElasticityAssembler<2>              assembler(dof_handler, materials);
+    dealii::Functions::ConstantFunction<2> pressure(p);
+    assembler.add_pressure(13, pressure);
+    dealii::Vector<double> loads;
+    assembler.assemble_load_vector(loads);
+
+    VirtualElement<2>                            element(degree);
+    std::vector<dealii::types::global_dof_index> indices;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        element.reinit(mesh.cell_vertices(c), assembler.get_material(c));
+        dof_handler.get_dof_indices(c, indices);
+        dealii::Vector<double> F(indices.size());
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          F[i] = loads[indices[i]];
+        // each DoF's load is handed over once, with the first cell that has it
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          loads[indices[i]] = 0;
+        constraints.distribute_local_to_global(element.get_stiffness_matrix(), F, indices, system_matrix,
+                                               system_rhs);
+      }
+  }
+
+  // @sect4{ContactPatchTest::solve}
+  //
+  // The primal-dual active set starts from the pairs with closed gaps (here
+  // all), solves the saddle-point system with UMFPACK, and updates the set
+  // until it does not change.
+  void
+  ContactPatchTest::solve()
+  {
+    SaddlePointSolver       solver(SaddlePointSolver::Settings{});
+    ActiveSetSolver<2>      active_set(*contact, constraints, solver, settings, 7000.);
+    const auto              result = active_set.solve(system_matrix, system_rhs, work_matrix, solution);
+    std::cout << "   active set: " << result.n_iterations << " iteration(s)" << std::endl;
+  }
+
+  // @sect4{ContactPatchTest::check_results}
+  //
+  // The patch test: $\sigma_{yy} = -p$, $\sigma_{xx} = \sigma_{xy} = 0$ in
+  // every cell and the contact pressure $-\lambda_i / w_i = p$ at every node.
+  void
+  ContactPatchTest::check_results() const
+  {
+    dealii::Vector<double> u(n_dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      u[i] = solution[i];
+    const StressRecovery<2> stresses(dof_handler, materials, 1.0, u);
+    double                  stress_error = 0, pressure_error = 0;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const auto &s = stresses.cell_stress(c);
+        stress_error  = std::max({stress_error, std::abs(s[0][0]), std::abs(s[1][1] + p), std::abs(s[0][1])});
+      }
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      pressure_error = std::max(pressure_error, std::abs(-solution[n_dofs + i] / pairs[i].weight - p));
+    std::cout << std::scientific << std::setprecision(2) << "   max |sigma - sigma_exact| / p = " << stress_error / p
+              << ", max |pressure - p| / p = " << pressure_error / p << std::defaultfloat << std::endl;
+    write_vtu_file("step-2-k" + std::to_string(degree) + (voronoi_upper ? "-voronoi" : "-quads") + ".vtu",
+                   dof_handler, u, stresses);
+    AssertThrow(stress_error <= 1e-10 * p && pressure_error <= 1e-10 * p,
+                dealii::ExcMessage("The contact patch test is not passed to round-off."));
+  }
+
+  void
+  ContactPatchTest::run()
+  {
+    std::cout << "k = " << degree << ", upper block: " << (voronoi_upper ? "Voronoi cells" : "7x7 quads")
+              << std::endl;
+    make_meshes();
+    insert_nodes();
+    setup_system();
+    assemble_system();
+    solve();
+    check_results();
+  }
+} // namespace Step2
+
+// @sect3{The main function}
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      const std::vector<unsigned int> degrees =
+        (argc > 1 ? std::vector<unsigned int>{unsigned(std::stoi(argv[1]))} : std::vector<unsigned int>{1, 2});
+      for (const unsigned int k : degrees)
+        for (const bool voronoi : {false, true})
+          {
+            Step2::ContactPatchTest test(k, voronoi);
+            test.run();
+          }
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << std::endl
+                << "----------------------------------------------------" << std::endl
+                << "Exception on processing: " << std::endl
+                << exc.what() << std::endl
+                << "Aborting!" << std::endl
+                << "----------------------------------------------------" << std::endl;
+      return 1;
+    }
+  return 0;
+}
