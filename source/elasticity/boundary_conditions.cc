@@ -93,26 +93,63 @@ namespace dealvem
       AssertThrow(!first,
                   dealii::ExcMessage("Roller condition: no boundary edge of mesh '" + mesh.name +
                                      "' has boundary id " + std::to_string(int(id)) + "."));
+      // At each node impose n.u = 0 on the component with the larger normal
+      // component, u_c = -(n_o/n_c) u_o. Where a component is constrained
+      // already (a corner with another roller or with Dirichlet data), the
+      // two conditions are combined into a value for the free component, so
+      // that no cycle of constraints (u_x -> u_y -> u_x) can arise.
       const auto nodes = dof_handler.boundary_nodes({id});
       for (const unsigned int node : nodes)
         {
-          const auto dx = VEMDoFHandler<dim>::node_dof(node, 0);
-          const auto dy = VEMDoFHandler<dim>::node_dof(node, 1);
-          if (std::abs(normal[0]) >= std::abs(normal[1]))
+          const unsigned int c = (std::abs(normal[0]) >= std::abs(normal[1]) ? 0 : 1), o = 1 - c;
+          const auto         dc = VEMDoFHandler<dim>::node_dof(node, c);
+          const auto         do_ = VEMDoFHandler<dim>::node_dof(node, o);
+          const double       nc = normal[c], no = normal[o];
+          // a line u_d = a u_other + b of a constrained DoF d of this node
+          // (entries on other DoFs are not expected here)
+          auto line_of = [&](const dealii::types::global_dof_index d,
+                             const dealii::types::global_dof_index other, double &a, double &b) {
+            a = 0;
+            b = constraints.get_inhomogeneity(d);
+            if (const auto *entries = constraints.get_constraint_entries(d))
+              for (const auto &e : *entries)
+                {
+                  AssertThrow(e.first == other,
+                              dealii::ExcMessage("Roller condition on boundary id " + std::to_string(int(id)) +
+                                                 ": a node carries a constraint coupling it to other nodes."));
+                  a += e.second;
+                }
+          };
+          const bool c_constrained = constraints.is_constrained(dc);
+          const bool o_constrained = constraints.is_constrained(do_);
+          if (c_constrained && o_constrained)
+            continue;
+          double a, b;
+          if (!c_constrained && !o_constrained)
             {
-              if (constraints.is_constrained(dx))
-                continue;
-              constraints.add_line(dx);
-              if (std::abs(normal[1]) > 1e-14)
-                constraints.add_entry(dx, dy, -normal[1] / normal[0]);
+              constraints.add_line(dc);
+              if (std::abs(no) > 1e-14)
+                constraints.add_entry(dc, do_, -no / nc);
+            }
+          else if (c_constrained)
+            {
+              // u_c = a u_o + b  and  nc u_c + no u_o = 0
+              line_of(dc, do_, a, b);
+              const double denominator = nc * a + no;
+              if (std::abs(denominator) <= 1e-12)
+                continue; // the existing constraint already implies n.u = 0 up to b
+              constraints.add_line(do_);
+              constraints.set_inhomogeneity(do_, -nc * b / denominator);
             }
           else
             {
-              if (constraints.is_constrained(dy))
+              // u_o = a u_c + b  and  nc u_c + no u_o = 0
+              line_of(do_, dc, a, b);
+              const double denominator = nc + no * a;
+              if (std::abs(denominator) <= 1e-12)
                 continue;
-              constraints.add_line(dy);
-              if (std::abs(normal[0]) > 1e-14)
-                constraints.add_entry(dy, dx, -normal[0] / normal[1]);
+              constraints.add_line(dc);
+              constraints.set_inhomogeneity(dc, -no * b / denominator);
             }
         }
     }
