@@ -67,5 +67,21 @@ main(int argc, char **argv)
                              tag + ": |contact force + load| / |load|");
         testing::check(r.active_set_iterations >= 2, tag + ": the active set changed at least once");
       }
+  // an iteration limit too small for the active set to settle gives a clear
+  // error (the same path reports a cycling active set)
+  {
+    std::ostringstream prm;
+    prm << "set Number of bodies = 2\n"
+        << testing::block_mesh("structured quads", 0, 0, 1, 1, 4, 4, 0)
+        << "subsection Material\n  set Young's modulus = 7000\nend\n"
+        << "subsection Body 1\n" << testing::block_mesh("structured quads", 0, 1, 1, 2, 7, 7, 10)
+        << "subsection Material\n  set Young's modulus = 7000\nend\nend\n"
+        << "subsection Contact\n  set Pairs = 3 : 12\n  set Maximum active set iterations = 1\nend\n"
+        << "subsection Boundary conditions and loads\n  set Dirichlet = 2 : xy : 0, 0\n"
+        << "  set Pressure = 13 : 10 * (x < 0.3)\nend\n"
+        << "subsection Output\n  set Folder = output-limit\n  set Write VTU = false\nend\n";
+    testing::check_throws([&] { testing::run_contact(prm.str()); }, "did not settle",
+                          "active set iteration limit reached");
+  }
   return testing::finish();
 }
