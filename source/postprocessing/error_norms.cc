@@ -21,7 +21,6 @@ namespace dealvem
     const auto        &mesh = dof_handler.get_mesh();
     const unsigned int k    = dof_handler.get_degree();
     VirtualElement<dim>                          element(k);
-    std::vector<dealii::types::global_dof_index> indices;
     dealii::Vector<double>                       local, coef, u(2);
     std::vector<dealii::Tensor<1, dim>>          grad(2);
     double l2 = 0, h1 = 0, en = 0, l2e = 0, h1e = 0, ene = 0;
@@ -29,10 +28,7 @@ namespace dealvem
       {
         const auto &material = materials.at(mesh.cell(c).material_id);
         element.reinit(mesh.cell_vertices(c), material, gamma);
-        dof_handler.get_dof_indices(c, indices);
-        local.reinit(indices.size());
-        for (unsigned int i = 0; i < indices.size(); ++i)
-          local[i] = solution[indices[i]];
+        dof_handler.get_dof_values(c, solution, local);
         element.project(local, coef);
         const dealii::Quadrature<dim> q = element.get_geometry().quadrature(2 * k + 6);
         for (unsigned int i = 0; i < q.size(); ++i)

@@ -24,7 +24,6 @@ namespace dealvem
     std::vector<double>                          nodal_zz(mesh.n_vertices(), 0.);
     std::vector<unsigned int>                    count(mesh.n_vertices(), 0);
     VirtualElement<dim>                          element(k);
-    std::vector<dealii::types::global_dof_index> indices;
     dealii::Vector<double>                       local, coef;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
@@ -35,10 +34,7 @@ namespace dealvem
                                        std::to_string(c) + "."));
         const ElasticMaterial &material = it->second;
         element.reinit(mesh.cell_vertices(c), material, gamma);
-        dof_handler.get_dof_indices(c, indices);
-        local.reinit(indices.size());
-        for (unsigned int i = 0; i < indices.size(); ++i)
-          local[i] = solution[indices[i]];
+        dof_handler.get_dof_values(c, solution, local);
         element.project(local, coef);
         // the strain of Pi u is linear for k = 2: its mean is the value at
         // the centroid

@@ -48,6 +48,38 @@ namespace dealvem
       else
         list.set("PDE equations", 2);
     }
+
+
+    void
+    solve_direct(const dealii::SparseMatrix<double> &A,
+                 dealii::Vector<double>             &x,
+                 const dealii::Vector<double>       &b,
+                 const bool                          use_klu)
+    {
+      if (!use_klu)
+        {
+          dealii::SparseDirectUMFPACK direct;
+          direct.initialize(A);
+          direct.vmult(x, b);
+          return;
+        }
+      dealii::TrilinosWrappers::SparseMatrix At;
+      At.reinit(A);
+      dealii::SolverControl                                  control(1, 0);
+      dealii::TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
+      dealii::TrilinosWrappers::SolverDirect                 direct(control, data);
+      direct.solve(At, x, b);
+    }
+
+
+
+    std::string
+    upper_case(const std::string &name)
+    {
+      std::string n = name;
+      std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::toupper(c); });
+      return n;
+    }
   } // namespace internal
 
 
@@ -55,8 +87,7 @@ namespace dealvem
   LinearSolver::Type
   LinearSolver::parse_type(const std::string &name)
   {
-    std::string n = name;
-    std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::toupper(c); });
+    const std::string n = internal::upper_case(name);
     if (n == "UMFPACK")
       return Type::umfpack;
     if (n == "KLU")
@@ -114,21 +145,9 @@ namespace dealvem
                       const dealii::Vector<double>       &b)
   {
     x.reinit(b.size());
-    if (settings.type == Type::umfpack)
+    if (settings.type != Type::cg_amg)
       {
-        dealii::SparseDirectUMFPACK direct;
-        direct.initialize(A);
-        direct.vmult(x, b);
-        iterations = 1;
-      }
-    else if (settings.type == Type::klu)
-      {
-        dealii::TrilinosWrappers::SparseMatrix At;
-        At.reinit(A);
-        dealii::SolverControl                                  control(1, 0);
-        dealii::TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
-        dealii::TrilinosWrappers::SolverDirect                 direct(control, data);
-        direct.solve(At, x, b);
+        internal::solve_direct(A, x, b, settings.type == Type::klu);
         iterations = 1;
       }
     else

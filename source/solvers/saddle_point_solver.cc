@@ -25,8 +25,7 @@ namespace dealvem
   SaddlePointSolver::Type
   SaddlePointSolver::parse_type(const std::string &name)
   {
-    std::string n = name;
-    std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::toupper(c); });
+    const std::string n = internal::upper_case(name);
     if (n == "UMFPACK")
       return Type::umfpack;
     if (n == "KLU")
@@ -215,21 +214,9 @@ namespace dealvem
   {
     AssertDimension(A.m(), b.size());
     x.reinit(b.size());
-    if (settings.type == Type::umfpack)
+    if (settings.type != Type::gmres_amg)
       {
-        dealii::SparseDirectUMFPACK direct;
-        direct.initialize(A);
-        direct.vmult(x, b);
-        iterations = 1;
-      }
-    else if (settings.type == Type::klu)
-      {
-        dealii::TrilinosWrappers::SparseMatrix At;
-        At.reinit(A);
-        dealii::SolverControl                        control(1, 0);
-        dealii::TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
-        dealii::TrilinosWrappers::SolverDirect       direct(control, data);
-        direct.solve(At, x, b);
+        internal::solve_direct(A, x, b, settings.type == Type::klu);
         iterations = 1;
       }
     else

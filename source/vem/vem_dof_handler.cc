@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
 
 #include <dealvem/vem/polygon_geometry.h>
 #include <dealvem/vem/vem_dof_handler.h>
@@ -141,6 +142,21 @@ namespace dealvem
         indices[2 * j]     = node_dof(nodes[j], 0);
         indices[2 * j + 1] = node_dof(nodes[j], 1);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::get_dof_values(const unsigned int            c,
+                                     const dealii::Vector<double> &global,
+                                     dealii::Vector<double>       &local) const
+  {
+    std::vector<dealii::types::global_dof_index> indices;
+    get_dof_indices(c, indices);
+    local.reinit(indices.size());
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      local[i] = global[indices[i]];
   }
 
 

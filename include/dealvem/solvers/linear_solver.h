@@ -88,6 +88,18 @@ namespace dealvem
                       const std::vector<std::vector<double>> &modes,
                       const unsigned int                      n,
                       std::vector<double>                    &storage);
+
+    /// Factor @p A and solve A x = b directly: UMFPACK, or Trilinos Amesos
+    /// KLU if @p use_klu.
+    void
+    solve_direct(const dealii::SparseMatrix<double> &A,
+                 dealii::Vector<double>             &x,
+                 const dealii::Vector<double>       &b,
+                 const bool                          use_klu);
+
+    /// Upper-case copy of a solver name, for case-insensitive parsing.
+    std::string
+    upper_case(const std::string &name);
   } // namespace internal
 } // namespace dealvem
 

@@ -16,6 +16,8 @@
 namespace dealii
 {
   class DynamicSparsityPattern;
+  template <typename Number>
+  class Vector;
 }
 
 namespace dealvem
@@ -89,6 +91,12 @@ namespace dealvem
     void
     get_dof_indices(const unsigned int                            c,
                     std::vector<dealii::types::global_dof_index> &indices) const;
+
+    /// The values of a global vector at the DoFs of cell @p c, in
+    /// VirtualElement's local order (deal.II's cell->get_dof_values()).
+    void
+    get_dof_values(const unsigned int c, const dealii::Vector<double> &global,
+                   dealii::Vector<double> &local) const;
 
     /// Global node indices of cell @p c in local node order.
     void
