@@ -10,6 +10,26 @@
 
 namespace dealvem
 {
+  namespace internal
+  {
+    // Gauss rules on [0,1] with 1..12 points, built once: constructing a
+    // QGauss computes its points as roots of Legendre polynomials, which
+    // would dominate the cost of a polygon's geometry.
+    const dealii::Quadrature<1> &
+    gauss_rule(const unsigned int n_points)
+    {
+      static const std::vector<dealii::Quadrature<1>> rules = [] {
+        std::vector<dealii::Quadrature<1>> r;
+        for (unsigned int n = 1; n <= 12; ++n)
+          r.emplace_back(dealii::QGauss<1>(n));
+        return r;
+      }();
+      AssertThrow(n_points >= 1 && n_points <= 12,
+                  dealii::ExcMessage("Gauss rules with 1 to 12 points are available."));
+      return rules[n_points - 1];
+    }
+  } // namespace internal
+
   template <int dim>
   PolygonGeometry<dim>::PolygonGeometry(const std::vector<dealii::Point<dim>> &vertices)
     : vertices(vertices)
@@ -67,7 +87,7 @@ namespace dealvem
   {
     const unsigned int d = a + b;
     // Gauss rule exact for degree d on each edge.
-    const dealii::QGauss<1> q(d / 2 + 1);
+    const dealii::Quadrature<1> &q = internal::gauss_rule(d / 2 + 1);
     const unsigned int      n = vertices.size();
     double                  result = 0;
     for (unsigned int i = 0; i < n; ++i)
@@ -101,7 +121,7 @@ namespace dealvem
     // Collapsed (Duffy) Gauss rule on the reference triangle
     // (x, y) = (u (1 - v), v), weight (1 - v): exact for polynomials of the
     // given degree (degree + 1 in v with n Gauss points, 2n - 1 >= degree + 1).
-    const dealii::QGauss<1>         g((degree + 3) / 2);
+    const dealii::Quadrature<1>    &g = internal::gauss_rule((degree + 3) / 2);
     std::vector<dealii::Point<dim>> ref_points;
     std::vector<double>             ref_weights;
     for (unsigned int i = 0; i < g.size(); ++i)

@@ -207,13 +207,18 @@ namespace dealvem
     const unsigned int n_point_nodes = (degree == 1 ? N : 2 * N);
     for (unsigned int j = 0; j < n_point_nodes; ++j)
       {
-        const dealii::Point<dim> x = node_location(j);
+        const dealii::Point<dim> s = geo.scaled(node_location(j));
+        double                   m[6];
+        for (unsigned int i = 0; i < 6; ++i)
+          m[i] = monomial_value(i, s);
         for (unsigned int alpha = 0; alpha < n_p; ++alpha)
-          {
-            const dealii::Tensor<1, dim> v = polynomial_value(alpha, x);
-            D(2 * j, alpha)                = v[0];
-            D(2 * j + 1, alpha)            = v[1];
-          }
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              double v = 0;
+              for (unsigned int i = 0; i < 6; ++i)
+                v += coef[alpha][c][i] * m[i];
+              D(2 * j + c, alpha) = v;
+            }
       }
     if (degree == 2)
       for (unsigned int alpha = 0; alpha < n_p; ++alpha)
@@ -442,15 +447,23 @@ namespace dealvem
     const dealii::Quadrature<dim> q = geometry->quadrature(degree + extra_degree);
     dealii::Vector<double>        moments(n_polynomials());
     dealii::Vector<double>        fv(2);
+    // integrals of f_c times each monomial, then combined per polynomial
+    double fm[2][6] = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0}};
     for (unsigned int k = 0; k < q.size(); ++k)
       {
         f.vector_value(q.point(k), fv);
-        for (unsigned int a = 0; a < n_polynomials(); ++a)
+        const dealii::Point<dim> s = geometry->scaled(q.point(k));
+        for (unsigned int i = 0; i < 6; ++i)
           {
-            const dealii::Tensor<1, dim> pa = polynomial_value(a, q.point(k));
-            moments[a] += q.weight(k) * (fv[0] * pa[0] + fv[1] * pa[1]);
+            const double m = q.weight(k) * monomial_value(i, s);
+            fm[0][i] += fv[0] * m;
+            fm[1][i] += fv[1] * m;
           }
       }
+    for (unsigned int a = 0; a < n_polynomials(); ++a)
+      for (unsigned int c = 0; c < 2; ++c)
+        for (unsigned int i = 0; i < 6; ++i)
+          moments[a] += coef[a][c][i] * fm[c][i];
     F.reinit(n_dofs);
     Pi_star.Tvmult(F, moments);
   }
@@ -469,7 +482,7 @@ namespace dealvem
     const dealii::Point<dim> a     = geometry->vertex(edge);
     const dealii::Point<dim> b     = geometry->vertex((edge + 1) % n_vertices);
     const double             L     = geometry->edge_length(edge);
-    const dealii::QGauss<1>  q(5);
+    const dealii::Quadrature<1> &q = internal::gauss_rule(5);
     dealii::Vector<double>   gv(2);
     for (unsigned int k = 0; k < q.size(); ++k)
       {

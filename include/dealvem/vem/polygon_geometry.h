@@ -13,6 +13,13 @@
 
 namespace dealvem
 {
+  namespace internal
+  {
+    /// The Gauss rule with @p n_points points on [0,1] (1 to 12), built once.
+    const dealii::Quadrature<1> &
+    gauss_rule(const unsigned int n_points);
+  } // namespace internal
+
   /**
    * Geometric data of one polygon $E$ given by its counter-clockwise
    * vertices $v_0,\dots,v_{N-1}$: area $|E|$, centroid $\bar x$, diameter

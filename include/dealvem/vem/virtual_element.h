@@ -226,7 +226,7 @@ namespace dealvem
     void
     body_force_vector(const dealii::Function<dim> &f,
                       dealii::Vector<double>      &F,
-                      const unsigned int           extra_degree = 4) const;
+                      const unsigned int           extra_degree = 3) const;
 
     /**
      * Load vector of a traction $g$ (2 components) on local edge @p edge:
