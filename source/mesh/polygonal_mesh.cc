@@ -281,7 +281,8 @@ namespace dealvem
             P lo_e(std::min(pa[0], pb[0]) - tol * L, std::min(pa[1], pb[1]) - tol * L);
             P hi_e(std::max(pa[0], pb[0]) + tol * L, std::max(pa[1], pb[1]) + tol * L);
             grid.query_box(lo_e, hi_e, [&](const unsigned int v) {
-              if (v == a || v == b)
+              if (v == a || v == b ||
+                  std::find(cell.vertices.begin(), cell.vertices.end(), v) != cell.vertices.end())
                 return;
               if (std::find(vmat[v].begin(), vmat[v].end(), cell.material_id) == vmat[v].end())
                 return;
@@ -454,8 +455,19 @@ namespace dealvem
                         ExcInvalidMesh(cname + " has a repeated vertex (" + std::to_string(loop[i]) +
                                        " and " + std::to_string(loop[j]) + " at " +
                                        point_string(vertices[loop[j]]) + ")."));
-        AssertThrow(std::abs(area) > 1e-14 * h * h,
-                    ExcInvalidMesh(cname + " has zero area (its vertices are collinear)."));
+        {
+          // all vertices on one line: zero area (reported before the
+          // self-intersection that such a loop also has)
+          unsigned int far = 0;
+          for (unsigned int i = 1; i < n; ++i)
+            if (vertices[loop[i]].distance(vertices[loop[0]]) > vertices[loop[far]].distance(vertices[loop[0]]))
+              far = i;
+          bool collinear = true;
+          for (unsigned int i = 0; i < n; ++i)
+            collinear = collinear && std::abs(cross(vertices[loop[0]], vertices[loop[far]], vertices[loop[i]])) <=
+                                       1e-12 * h * h;
+          AssertThrow(!collinear, ExcInvalidMesh(cname + " has zero area (its vertices are collinear)."));
+        }
         // self-intersection: non-adjacent edges crossing or touching, or
         // adjacent edges folding back onto each other
         for (unsigned int i = 0; i < n; ++i)
@@ -483,6 +495,8 @@ namespace dealvem
                                                  " and " + std::to_string(j) + " of its loop intersect)."));
               }
           }
+        AssertThrow(std::abs(area) > 1e-14 * h * h,
+                    ExcInvalidMesh(cname + " has zero area (its vertices are collinear)."));
         AssertThrow(area > 0,
                     ExcInvalidMesh(cname + " is clockwise (signed area " + std::to_string(area) +
                                    "); cells must be counter-clockwise vertex loops."));
