@@ -1,0 +1,32 @@
+#!/usr/bin/env python3
+# Read a .vtu file with VTK's own reader (as ParaView does) and print what
+# it contains: "points N", "cells N", "polygon cells N", and one line per data
+# array with its range. Exits non-zero if the file cannot be read or an
+# expected array is missing.
+import sys
+import vtk
+
+reader = vtk.vtkXMLUnstructuredGridReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+grid = reader.GetOutput()
+if grid is None or grid.GetNumberOfPoints() == 0:
+    print("cannot read", sys.argv[1])
+    sys.exit(1)
+print("points", grid.GetNumberOfPoints())
+print("cells", grid.GetNumberOfCells())
+polygons = sum(1 for i in range(grid.GetNumberOfCells()) if grid.GetCellType(i) == vtk.VTK_POLYGON)
+print("polygon cells", polygons)
+missing = []
+for data, names in ((grid.GetPointData(), ["displacement", "stress", "von_mises"]),
+                    (grid.GetCellData(), ["stress", "von_mises", "body_id", "cell_id"])):
+    for name in names:
+        array = data.GetArray(name)
+        if array is None:
+            missing.append(name)
+            continue
+        lo, hi = array.GetRange(-1 if array.GetNumberOfComponents() > 1 else 0)
+        print("array", name, array.GetNumberOfComponents(), lo, hi)
+if missing:
+    print("missing arrays:", missing)
+    sys.exit(1)

@@ -1,0 +1,96 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// Output: a linear displacement field interpolated on a Voronoi mesh has
+// the constant stress C eps in every cell (StressRecovery, 1e-12 relative);
+// its VTU file is read back by VTK (Debian's /usr/bin/python3 with
+// python3-vtk9; the reader ParaView uses)
+// with the right numbers of points, polygon cells and arrays; the JSON
+// summary nests keys and escapes strings as expected.
+#include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/postprocessing/stress_recovery.h>
+#include <dealvem/postprocessing/vtu_output.h>
+#include <dealvem/vem/virtual_element.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "../elasticity_common.h"
+#include "../tests.h"
+
+using namespace dealvem;
+
+class Linear : public dealii::Function<2>
+{
+public:
+  Linear()
+    : dealii::Function<2>(2)
+  {}
+  double
+  value(const dealii::Point<2> &p, const unsigned int c) const override
+  {
+    return c == 0 ? 1e-3 * p[0] + 2e-3 * p[1] : -5e-4 * p[0] + 3e-3 * p[1];
+  }
+};
+
+int
+main()
+{
+  PolygonalMesh<2> mesh;
+  PolygonalMeshGenerators::voronoi(mesh, dealii::Point<2>(0, 0), dealii::Point<2>(2, 1), 30, 10, 2);
+  const ElasticMaterial                                       material(2000, 0.25);
+  const std::map<dealii::types::material_id, ElasticMaterial> materials = {{0, material}};
+  const Linear                                                u;
+  // exact stress of the linear field
+  dealii::SymmetricTensor<2, 2> eps;
+  eps[0][0] = 1e-3;
+  eps[1][1] = 3e-3;
+  eps[0][1] = 0.5 * (2e-3 - 5e-4);
+  const auto sigma = material.stress(eps);
+  for (const unsigned int k : {1u, 2u})
+    {
+      VEMDoFHandler<2> dof_handler(mesh);
+      dof_handler.distribute_dofs(k);
+      dealii::Vector<double>                       x(dof_handler.n_dofs()), local;
+      VirtualElement<2>                            element(k);
+      std::vector<dealii::types::global_dof_index> indices;
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          element.reinit(mesh.cell_vertices(c), material);
+          element.interpolate(u, local);
+          dof_handler.get_dof_indices(c, indices);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            x[indices[i]] = local[i];
+        }
+      const StressRecovery<2> s(dof_handler, materials, 1.0, x);
+      double                  err = 0;
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        err = std::max(err, (s.cell_stress(c) - sigma).norm() / sigma.norm());
+      testing::check_small(err, 1e-12, "k=" + std::to_string(k) + ": cell stresses of a linear field");
+
+      const std::string file = "linear-k" + std::to_string(k) + ".vtu";
+      write_vtu_file(file, dof_handler, x, s);
+      const std::string cmd = "/usr/bin/python3 " + testing::source_dir() + "/tests/postprocessing/read_vtu.py " + file +
+                              " > " + file + ".txt 2>&1";
+      const int rc = std::system(cmd.c_str());
+      testing::check(rc == 0, file + ": read back by VTK's XML reader");
+      std::ifstream in(file + ".txt");
+      std::string   line, text;
+      while (std::getline(in, line))
+        text += line + "\n";
+      std::cout << text;
+      testing::check(text.find("points " + std::to_string(mesh.n_vertices()) + "\n") != std::string::npos &&
+                       text.find("polygon cells " + std::to_string(mesh.n_cells()) + "\n") != std::string::npos,
+                     file + ": numbers of points and polygon cells");
+    }
+
+  JsonSummary json;
+  json.set("a.b", 1.5);
+  json.set("a.c", "say \"hi\"");
+  json.set("d", 2.0);
+  const std::string expected = "{\n  \"a\": {\n    \"b\": 1.5,\n    \"c\": \"say \\\"hi\\\"\"\n  },\n  \"d\": 2\n}\n";
+  testing::check(json.to_string() == expected, "JSON summary text:\n" + json.to_string());
+  return testing::finish();
+}
