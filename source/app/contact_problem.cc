@@ -446,6 +446,9 @@ namespace dealvem
         results.cell_stress[c] = {{s[0][0], s[1][1], s[0][1]}};
       }
 
+    for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
+      results.timings[s.first] = s.second;
+
     // ---- output
     unsigned int n_inserted = 0;
     for (const auto &r : results.insertion_reports)

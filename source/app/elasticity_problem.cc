@@ -269,6 +269,9 @@ namespace dealvem
             last_errors = {errors.l2, errors.h1_seminorm, errors.energy};
           }
         last_n_dofs = dof_handler.n_dofs();
+        last_timings.clear();
+        for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
+          last_timings[s.first] = s.second;
       }
 
     if (exact)

@@ -17,6 +17,7 @@
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,8 @@ namespace dealvem
       std::vector<std::array<double, 3>> cell_stress;
       dealii::Vector<double>       solution;
       std::string                  solver;
+      /// Wall times of the stages (mesh, node insertion, assembly, solve).
+      std::map<std::string, double> timings;
     };
 
     const Results &

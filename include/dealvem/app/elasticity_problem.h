@@ -11,6 +11,7 @@
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/elasticity/material.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,10 @@ namespace dealvem
 
     /// Number of DoFs of the last cycle.
     unsigned int last_n_dofs = 0;
+
+    /// Wall times of the stages of the last cycle (mesh, setup, assembly,
+    /// solve, ...).
+    std::map<std::string, double> last_timings;
 
   private:
     MeshParameters         mesh_parameters;

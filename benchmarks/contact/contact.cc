@@ -1,0 +1,101 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// The contact patch test scaled up: two stacked blocks [0,1]x[0,1] and
+// [0,1]x[1,2] with non-matching structured quads (n and n + n/3 + 1
+// subdivisions), k = 2, pressure on top, unilateral normal contact and stick
+// by penalty -- against the same geometry meshed as ONE body [0,1]x[0,2]
+// (matching mesh, n' x 2n' quads with n' chosen for about the same number
+// of DoFs) with the same load and supports and the same solver.
+//
+//   benchmark_contact --n N --solver UMFPACK|KLU|GMRES-AMG
+//
+// prints "RESULT contact n dofs multipliers t_mesh t_insertion t_assembly
+// t_solve" and "RESULT onebody n dofs - t_mesh 0 t_assembly t_solve"
+// (wall seconds). benchmarks/run_benchmarks.sh runs the sizes and writes
+// doc/benchmarks.md.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <dealvem/app/contact_problem.h>
+#include <dealvem/app/elasticity_problem.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      unsigned int                             n      = 30;
+      std::string                              solver = "UMFPACK";
+      for (int i = 1; i + 1 < argc; i += 2)
+        {
+          const std::string a = argv[i];
+          if (a == "--n")
+            n = std::stoul(argv[i + 1]);
+          else if (a == "--solver")
+            solver = argv[i + 1];
+        }
+      const std::string common =
+        "subsection Material\n  set Young's modulus = 7000\n  set Poisson's ratio = 0.3\nend\n"
+        "subsection Discretization\n  set Order = 2\nend\n"
+        "subsection Solver\n  set Type = " + solver + "\n  set Relative tolerance = 1e-10\nend\n"
+        "subsection Output\n  set Folder = benchmark-output\n  set Write VTU = false\n  set Write JSON = false\n"
+        "  set Write pictures = false\n  set Write CSV = false\nend\n";
+      const unsigned int m = n + n / 3 + 1;
+      {
+        std::ostringstream prm;
+        prm << "set Number of bodies = 2\n"
+            << "subsection Mesh\n  set Type = structured quads\n  set Subdivisions = " << n << ", " << n << "\nend\n"
+            << "subsection Body 1\n  subsection Mesh\n    set Type = structured quads\n"
+            << "    set Lower left corner = 0, 1\n    set Upper right corner = 1, 2\n    set Subdivisions = " << m
+            << ", " << m << "\n    set Boundary id offset = 10\n  end\n"
+            << "  subsection Material\n    set Young's modulus = 7000\n  end\nend\n"
+            << "subsection Contact\n  set Pairs = 3 : 12\nend\n"
+            << "subsection Boundary conditions and loads\n  set Dirichlet = 2 : y : 0\n"
+            << "  set Point constraints = 0, 0 : x : 0\n  set Pressure = 13 : 10\nend\n"
+            << common;
+        dealii::ParameterHandler ph;
+        dealvem::ElasticityProblem::declare_parameters(ph);
+        dealvem::ContactProblem::declare_parameters(ph);
+        ph.parse_input_from_string(prm.str());
+        dealvem::ContactProblem problem;
+        problem.parse_parameters(ph);
+        problem.run();
+        const auto &r = problem.get_results();
+        auto        t = r.timings;
+        std::cout << "RESULT contact " << n << " " << r.n_dofs << " " << r.n_multipliers << " " << t["mesh"] << " "
+                  << t["node insertion"] << " " << t["assembly"] << " " << t["solve"] << std::endl;
+      }
+      {
+        const unsigned int n1 = std::max(1u, unsigned(std::lround(std::sqrt((n * n + m * m) / 2.))));
+        std::ostringstream prm;
+        prm << "subsection Mesh\n  set Type = structured quads\n  set Upper right corner = 1, 2\n"
+            << "  set Subdivisions = " << n1 << ", " << 2 * n1 << "\nend\n"
+            << "subsection Boundary conditions and loads\n  set Dirichlet = 2 : y : 0\n"
+            << "  set Point constraints = 0, 0 : x : 0\n  set Pressure = 3 : 10\nend\n"
+            << common;
+        dealii::ParameterHandler ph;
+        dealvem::ElasticityProblem::declare_parameters(ph);
+        dealvem::ContactProblem::declare_parameters(ph);
+        ph.parse_input_from_string(prm.str());
+        dealvem::ElasticityProblem problem;
+        problem.parse_parameters(ph);
+        problem.run();
+        auto t = problem.last_timings;
+        std::cout << "RESULT onebody " << n << " " << problem.last_n_dofs << " 0 " << t["mesh"] << " 0 "
+                  << t["setup"] + t["assembly"] << " " << t["solve"] << std::endl;
+      }
+    }
+  catch (std::exception &e)
+    {
+      std::cerr << "benchmark_contact: " << e.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}
