@@ -6,7 +6,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${BUILD_DIR:-$ROOT/build}"
-bash "$ROOT/scripts/build.sh" benchmark_elasticity benchmark_contact > /dev/null
+bash "$ROOT/scripts/build.sh" --target benchmark_elasticity benchmark_contact > /dev/null
 MAX_DOFS="${MAX_DOFS:-1000000}"
 CONTACT_SIZES="${CONTACT_SIZES:-30 100 210}"
 OUT="$ROOT/doc/benchmarks.md"

@@ -325,6 +325,7 @@ namespace dealvem
           const double       L = mesh.vertex(a).distance(mesh.vertex(b));
           unsigned int       previous   = a;
           double             previous_s = 0;
+          unsigned int       current    = invalid; // the mesh edge (previous, b)
           for (const auto &ins : list)
             {
               if (ins.s - previous_s <= snap || ins.s >= 1 - snap)
@@ -337,13 +338,14 @@ namespace dealvem
                   continue;
                 }
               // the sub-edge (previous, b) contains the point
-              unsigned int e = invalid;
-              for (unsigned int i = 0; i < mesh.n_edges(); ++i)
-                if (key(mesh.edge(i).vertices[0], mesh.edge(i).vertices[1]) == key(previous, b))
-                  {
-                    e = i;
-                    break;
-                  }
+              unsigned int e = current;
+              if (e == invalid)
+                for (unsigned int i = 0; i < mesh.n_edges(); ++i)
+                  if (key(mesh.edge(i).vertices[0], mesh.edge(i).vertices[1]) == key(previous, b))
+                    {
+                      e = i;
+                      break;
+                    }
               AssertThrow(e != invalid,
                           dealii::ExcInternalError("node insertion: the sub-edge from vertex " +
                                                    std::to_string(previous) + " to vertex " +
@@ -352,6 +354,11 @@ namespace dealvem
                           dealii::ExcInternalError("node insertion would create a zero-length edge at " +
                                                    point_string(ins.point) + "."));
               const unsigned int v = mesh.split_edge(e, ins.point);
+              // split_edge keeps e for the piece at the edge's first vertex
+              // and appends the other piece: find the one ending at b
+              current = (key(mesh.edge(e).vertices[0], mesh.edge(e).vertices[1]) == key(v, b)) ?
+                          e :
+                          mesh.n_edges() - 1;
               ++n_inserted;
               matched_back[v] = ins.source;
               previous        = v;

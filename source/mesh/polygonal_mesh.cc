@@ -662,26 +662,40 @@ namespace dealvem
                 dealii::ExcMessage("split_edge: the point " + point_string(p) +
                                    " does not lie strictly inside edge " + std::to_string(e) + " of mesh '" +
                                    name + "'."));
-    const unsigned int v = add_vertex(p);
+    // Insert the vertex into the owning cells and update the edges in
+    // place (no rebuild, so inserting many nodes stays linear): edge e
+    // becomes the piece (first vertex, v), the piece (v, second vertex) is
+    // appended as the last edge.
+    const unsigned int v     = add_vertex(p);
+    const unsigned int e_new = edges.size();
+    Edge               piece = edge;
+    piece.vertices           = {{v, b}};
+    edges[e].vertices        = {{a, v}};
+    edges.push_back(piece);
     for (const unsigned int c : edge.cells)
       {
         if (c == dealii::numbers::invalid_unsigned_int)
           continue;
-        auto              &loop = cells[c].vertices;
-        const unsigned int n    = loop.size();
+        auto              &cell = cells[c];
+        const unsigned int n    = cell.vertices.size();
         for (unsigned int i = 0; i < n; ++i)
-          if (key(loop[i], loop[(i + 1) % n]) == key(a, b))
+          if (key(cell.vertices[i], cell.vertices[(i + 1) % n]) == key(a, b))
             {
-              loop.insert(loop.begin() + i + 1, v);
+              const bool forward = (cell.vertices[i] == a);
+              cell.vertices.insert(cell.vertices.begin() + i + 1, v);
+              // the cell now runs x_i -> v -> x_{i+1}
+              cell.edges[i] = forward ? e : e_new;
+              cell.edges.insert(cell.edges.begin() + i + 1, forward ? e_new : e);
               break;
             }
       }
+    // keep the orientation convention of boundary edges: (a, v) and (v, b)
+    // follow the owning cell's counter-clockwise order as (a, b) did
     if (edge.at_boundary())
       {
         boundary_ids_by_pair[key(a, v)] = edge.boundary_id;
         boundary_ids_by_pair[key(v, b)] = edge.boundary_id;
       }
-    build_edges();
     return v;
   }
 

@@ -13,6 +13,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <dealvem/mesh/generators.h>
 #include <dealvem/vem/virtual_element.h>
 
 #include <cmath>
@@ -140,6 +141,15 @@ main()
     check_polygon("random convex " + std::to_string(i), random_convex_polygon(5 + 2 * i, rng));
   // a Voronoi-like cell: irregular convex heptagon with a very short edge
   check_polygon("voronoi-like heptagon", {P(0, 0), P(1, -0.1), P(1.6, 0.5), P(1.6001, 0.5003), P(1.2, 1.3), P(0.3, 1.4), P(-0.4, 0.7)});
+  // cells of a centroidal Voronoi mesh (the generator's own output)
+  {
+    dealvem::PolygonalMesh<2> mesh;
+    dealvem::PolygonalMeshGenerators::voronoi(mesh, P(0, 0), P(1, 1), 30, 10, 5);
+    for (unsigned int c = 0; c < mesh.n_cells(); c += 10)
+      check_polygon("Voronoi cell " + std::to_string(c) + " (" + std::to_string(mesh.cell(c).vertices.size()) +
+                      " vertices)",
+                    mesh.cell_vertices(c));
+  }
   // non-convex: L shape, arrow, star
   check_polygon("L shape", {P(0, 0), P(2, 0), P(2, 1), P(1, 1), P(1, 2), P(0, 2)});
   check_polygon("arrow", {P(0, 0), P(1, 0.5), P(2, 0), P(1, 2)});

@@ -235,7 +235,10 @@ namespace dealvem
      * strictly between its ends): a new vertex is created and inserted into
      * the vertex loops of the cells owning the edge; both pieces keep the
      * boundary id. Returns the index of the new vertex. Used by node
-     * insertion on contact interfaces. Edges are rebuilt.
+     * insertion on contact interfaces. The edges are updated in place:
+     * edge @p e becomes the piece from its first vertex to the new one, and
+     * the piece from the new vertex to the second vertex is appended as
+     * edge n_edges() - 1; no other edge index changes.
      */
     unsigned int
     split_edge(const unsigned int e, const dealii::Point<dim> &p);
