@@ -116,10 +116,12 @@ namespace dealvem
     rhs.reinit(dof_handler.n_dofs());
     VirtualElement<dim>                          element(dof_handler.get_degree());
     std::vector<dealii::types::global_dof_index> indices;
+    std::vector<dealii::Point<dim>>              vertices;
     dealii::Vector<double>                       F;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
-        element.reinit(mesh.cell_vertices(c), get_material(c), gamma);
+        mesh.cell_vertices(c, vertices);
+        element.reinit(vertices, get_material(c), gamma);
         local_load(c, &element, F);
         dof_handler.get_dof_indices(c, indices);
         constraints.distribute_local_to_global(
@@ -137,10 +139,12 @@ namespace dealvem
     rhs.reinit(dof_handler.n_dofs());
     VirtualElement<dim>                          element(dof_handler.get_degree());
     std::vector<dealii::types::global_dof_index> indices;
+    std::vector<dealii::Point<dim>>              vertices;
     dealii::Vector<double>                       F;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
-        element.reinit(mesh.cell_vertices(c), get_material(c), gamma);
+        mesh.cell_vertices(c, vertices);
+        element.reinit(vertices, get_material(c), gamma);
         local_load(c, &element, F);
         dof_handler.get_dof_indices(c, indices);
         for (unsigned int i = 0; i < indices.size(); ++i)

@@ -190,10 +190,20 @@ namespace dealvem
   PolygonalMesh<dim>::cell_vertices(const unsigned int c) const
   {
     std::vector<dealii::Point<dim>> p;
-    p.reserve(cells[c].vertices.size());
-    for (const auto v : cells[c].vertices)
-      p.push_back(vertices[v]);
+    cell_vertices(c, p);
     return p;
+  }
+
+
+
+  template <int dim>
+  void
+  PolygonalMesh<dim>::cell_vertices(const unsigned int               c,
+                                    std::vector<dealii::Point<dim>> &points) const
+  {
+    points.resize(cells[c].vertices.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      points[i] = vertices[cells[c].vertices[i]];
   }
 
 

@@ -32,10 +32,19 @@ namespace dealvem
 
   template <int dim>
   PolygonGeometry<dim>::PolygonGeometry(const std::vector<dealii::Point<dim>> &vertices)
-    : vertices(vertices)
   {
-    const unsigned int n = vertices.size();
+    reinit(vertices);
+  }
+
+
+
+  template <int dim>
+  void
+  PolygonGeometry<dim>::reinit(const std::vector<dealii::Point<dim>> &new_vertices)
+  {
+    const unsigned int n = new_vertices.size();
     Assert(n >= 3, dealii::ExcMessage("A polygon needs at least three vertices."));
+    vertices.assign(new_vertices.begin(), new_vertices.end());
     lengths.resize(n);
     tangents.resize(n);
 
@@ -60,10 +69,11 @@ namespace dealvem
     centroid_[0] = o[0] + cx / (6. * area_);
     centroid_[1] = o[1] + cy / (6. * area_);
 
-    diameter_ = 0;
+    double d2 = 0;
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = i + 1; j < n; ++j)
-        diameter_ = std::max(diameter_, vertices[i].distance(vertices[j]));
+        d2 = std::max(d2, vertices[i].distance_square(vertices[j]));
+    diameter_ = std::sqrt(d2);
   }
 
 
@@ -115,28 +125,102 @@ namespace dealvem
 
 
   template <int dim>
+  void
+  PolygonGeometry<dim>::integrate_scaled_monomials(std::array<double, 6> &integrals) const
+  {
+    // The formula of integrate_scaled_monomial() for all six monomials at
+    // once, with the 2-point Gauss rule (exact up to degree 3 on an edge).
+    integrals.fill(0.);
+    const dealii::Quadrature<1> &q = internal::gauss_rule(2);
+    const unsigned int           n = vertices.size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const dealii::Point<dim>     p0  = scaled(vertices[i]);
+        const dealii::Point<dim>     p1  = scaled(vertices[(i + 1) % n]);
+        const dealii::Tensor<1, dim> nrm = edge_normal(i);
+        const double xn = diameter_ * (p0[0] * nrm[0] + p0[1] * nrm[1]) * lengths[i];
+        double       e[6] = {0, 0, 0, 0, 0, 0};
+        for (unsigned int k = 0; k < q.size(); ++k)
+          {
+            const double s  = q.point(k)[0], w = q.weight(k);
+            const double xi = p0[0] + s * (p1[0] - p0[0]);
+            const double et = p0[1] + s * (p1[1] - p0[1]);
+            e[0] += w;
+            e[1] += w * xi;
+            e[2] += w * et;
+            e[3] += w * xi * xi;
+            e[4] += w * xi * et;
+            e[5] += w * et * et;
+          }
+        for (unsigned int m = 0; m < 6; ++m)
+          integrals[m] += xn * e[m];
+      }
+    // divide by d + 2
+    integrals[0] /= 2.;
+    integrals[1] /= 3.;
+    integrals[2] /= 3.;
+    for (unsigned int m = 3; m < 6; ++m)
+      integrals[m] /= 4.;
+  }
+
+
+
+  template <int dim>
   dealii::Quadrature<dim>
   PolygonGeometry<dim>::quadrature(const unsigned int degree) const
   {
-    // Collapsed (Duffy) Gauss rule on the reference triangle
-    // (x, y) = (u (1 - v), v), weight (1 - v): exact for polynomials of the
-    // given degree (degree + 1 in v with n Gauss points, 2n - 1 >= degree + 1).
-    const dealii::Quadrature<1>    &g = internal::gauss_rule((degree + 3) / 2);
-    std::vector<dealii::Point<dim>> ref_points;
-    std::vector<double>             ref_weights;
-    for (unsigned int i = 0; i < g.size(); ++i)
-      for (unsigned int j = 0; j < g.size(); ++j)
-        {
-          const double u = g.point(i)[0], v = g.point(j)[0];
-          ref_points.emplace_back(u * (1 - v), v);
-          ref_weights.push_back(g.weight(i) * g.weight(j) * (1 - v));
-        }
-    const dealii::Quadrature<dim> ref(ref_points, ref_weights);
-    const unsigned int               n = vertices.size();
-    std::vector<dealii::Point<dim>>  points;
-    std::vector<double>              weights;
-    points.reserve(n * ref.size());
-    weights.reserve(n * ref.size());
+    std::vector<dealii::Point<dim>> points;
+    std::vector<double>             weights;
+    quadrature(degree, points, weights);
+    return dealii::Quadrature<dim>(points, weights);
+  }
+
+
+
+  namespace
+  {
+    // Collapsed (Duffy) Gauss rule with n x n points on the reference
+    // triangle: (x, y) = (u (1 - v), v), weight (1 - v). Exact for
+    // polynomials of degree 2n - 2. Built once per n.
+    const std::vector<std::array<double, 3>> &
+    duffy_rule(const unsigned int n_points)
+    {
+      static const std::vector<std::vector<std::array<double, 3>>> rules = [] {
+        std::vector<std::vector<std::array<double, 3>>> r(13);
+        for (unsigned int n = 1; n <= 12; ++n)
+          {
+            const dealii::Quadrature<1> &g = internal::gauss_rule(n);
+            for (unsigned int i = 0; i < g.size(); ++i)
+              for (unsigned int j = 0; j < g.size(); ++j)
+                {
+                  const double u = g.point(i)[0], v = g.point(j)[0];
+                  r[n].push_back({{u * (1 - v), v, g.weight(i) * g.weight(j) * (1 - v)}});
+                }
+          }
+        return r;
+      }();
+      AssertThrow(n_points >= 1 && n_points <= 12,
+                  dealii::ExcMessage("Polygon quadrature: degree " +
+                                     std::to_string(2 * n_points - 2) +
+                                     " is above the largest available (22)."));
+      return rules[n_points];
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  PolygonGeometry<dim>::quadrature(const unsigned int               degree,
+                                   std::vector<dealii::Point<dim>> &points,
+                                   std::vector<double>             &weights) const
+  {
+    // Exact for the given degree: degree + 1 in v with n Gauss points needs
+    // 2n - 1 >= degree + 1.
+    const auto        &ref = duffy_rule((degree + 3) / 2);
+    const unsigned int n   = vertices.size();
+    points.clear();
+    weights.clear();
     for (unsigned int i = 0; i < n; ++i)
       {
         const dealii::Point<dim>    &p0 = centroid_;
@@ -145,16 +229,14 @@ namespace dealvem
         const double                 det = e1[0] * e2[1] - e1[1] * e2[0];
         if (det == 0.)
           continue;
-        for (unsigned int k = 0; k < ref.size(); ++k)
+        for (const auto &r : ref)
           {
-            const dealii::Point<dim> &r = ref.point(k);
             points.emplace_back(p0 + r[0] * e1 + r[1] * e2);
             // the reference weights sum to 1/2 (the reference area); det is
             // twice the signed area
-            weights.push_back(ref.weight(k) * det);
+            weights.push_back(r[2] * det);
           }
       }
-    return dealii::Quadrature<dim>(points, weights);
   }
 
   template class PolygonGeometry<2>;

@@ -134,13 +134,23 @@ namespace dealvem
     const unsigned int                            c,
     std::vector<dealii::types::global_dof_index> &indices) const
   {
-    std::vector<unsigned int> nodes;
-    get_node_indices(c, nodes);
-    indices.resize(2 * nodes.size());
-    for (unsigned int j = 0; j < nodes.size(); ++j)
+    // Same node order as get_node_indices(), without a temporary vector:
+    // this runs once per cell in every assembly loop.
+    const auto        &cell    = mesh->cell(c);
+    const unsigned int n       = cell.vertices.size();
+    const unsigned int n_nodes = (degree == 1 ? n : 2 * n + 1);
+    indices.resize(2 * n_nodes);
+    const auto set = [&](const unsigned int j, const unsigned int node) {
+      indices[2 * j]     = node_dof(node, 0);
+      indices[2 * j + 1] = node_dof(node, 1);
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      set(i, cell.vertices[i]);
+    if (degree == 2)
       {
-        indices[2 * j]     = node_dof(nodes[j], 0);
-        indices[2 * j + 1] = node_dof(nodes[j], 1);
+        for (unsigned int i = 0; i < n; ++i)
+          set(n + i, n_vertex_nodes + cell.edges[i]);
+        set(2 * n, n_vertex_nodes + n_edge_nodes + c);
       }
   }
 

@@ -63,27 +63,45 @@ namespace dealvem
       return H;
     }
 
-    using EigenMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
+    // Row-major views of dealii::FullMatrix storage and of scratch buffers:
+    // the Eigen products below write straight into the element's matrices.
+    using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    using RowMap    = Eigen::Map<RowMatrix>;
 
-    EigenMatrix
-    to_eigen(const dealii::FullMatrix<double> &A)
+    RowMap
+    view(dealii::FullMatrix<double> &A)
     {
-      EigenMatrix E(A.m(), A.n());
-      for (unsigned int i = 0; i < A.m(); ++i)
-        for (unsigned int j = 0; j < A.n(); ++j)
-          E(i, j) = A(i, j);
-      return E;
+      return RowMap(&A(0, 0), A.m(), A.n());
     }
 
-    void
-    from_eigen(const EigenMatrix &E, dealii::FullMatrix<double> &A)
+    RowMap
+    view(std::vector<double> &buffer, const unsigned int rows, const unsigned int cols)
     {
-      A.reinit(E.rows(), E.cols());
-      for (unsigned int i = 0; i < A.m(); ++i)
-        for (unsigned int j = 0; j < A.n(); ++j)
-          A(i, j) = E(i, j);
+      if (buffer.size() < std::size_t(rows) * cols)
+        buffer.resize(std::size_t(rows) * cols);
+      return RowMap(buffer.data(), rows, cols);
     }
   } // namespace
+
+
+
+  template <int dim>
+  struct VirtualElement<dim>::Workspace
+  {
+    Eigen::MatrixXd                   Gs; // equilibrated G
+    Eigen::MatrixXd                   Gt; // symmetric strain block of G
+    Eigen::VectorXd                   row_scale, col_scale;
+    Eigen::FullPivLU<Eigen::MatrixXd> lu;
+    std::vector<double>               rhs, t, q; // R B, Gt Pi_*, I - D Pi_*
+    std::vector<dealii::Point<dim>>   q_points;
+    std::vector<double>               q_weights;
+    dealii::Vector<double>            f_value, moments;
+  };
+
+
+
+  template <int dim>
+  VirtualElement<dim>::~VirtualElement() = default;
 
 
 
@@ -92,6 +110,8 @@ namespace dealvem
     : degree(degree)
     , n_vertices(0)
     , n_dofs(0)
+    , geometry(std::make_unique<PolygonGeometry<dim>>())
+    , workspace(std::make_unique<Workspace>())
   {
     AssertThrow(degree == 1 || degree == 2,
                 dealii::ExcMessage("VirtualElement: the order k must be 1 or 2, got " +
@@ -186,9 +206,12 @@ namespace dealvem
     AssertThrow(gamma > 0 && std::isfinite(gamma),
                 dealii::ExcMessage("The stabilization factor gamma must be positive, got " +
                                    std::to_string(gamma) + "."));
-    n_vertices = vertices.size();
-    n_dofs     = n_dofs_per_cell(n_vertices);
-    geometry   = std::make_unique<PolygonGeometry<dim>>(vertices);
+    // Everything below writes into storage kept from the previous cell:
+    // this function runs once per cell in every assembly loop.
+    Workspace &ws = *workspace;
+    n_vertices    = vertices.size();
+    n_dofs        = n_dofs_per_cell(n_vertices);
+    geometry->reinit(vertices);
     const PolygonGeometry<dim> &geo = *geometry;
     const unsigned int          n_p = n_polynomials();
     const double                h = geo.diameter(), area = geo.area();
@@ -196,11 +219,9 @@ namespace dealvem
 
     // Integrals of the scaled monomials, for the cell moments.
     std::array<double, 6> mono_int;
-    for (unsigned int m = 0; m < 6; ++m)
-      mono_int[m] = (degree == 2 || m < 3) ?
-                      geo.integrate_scaled_monomial(monomial_exponents[m][0],
-                                                    monomial_exponents[m][1]) :
-                      0.;
+    mono_int.fill(0.);
+    if (degree == 2)
+      geo.integrate_scaled_monomials(mono_int);
 
     // ---- D: D(i, alpha) = dof_i(p_alpha)
     D.reinit(n_dofs, n_p);
@@ -245,105 +266,140 @@ namespace dealvem
           B(1, 2 * i + 1) = 1. / N;
         }
     // Gauss-Lobatto weights on an edge's nodes (relative to its length).
-    const std::vector<double> lobatto =
-      (degree == 1) ? std::vector<double>{0.5, 0.5} :
-                      std::vector<double>{1. / 6., 2. / 3., 1. / 6.};
-    // row 2: mean rotation h/(2|E|) int_dE v.t
+    static constexpr double lobatto_1[2] = {0.5, 0.5};
+    static constexpr double lobatto_2[3] = {1. / 6., 2. / 3., 1. / 6.};
+    const double           *lobatto      = (degree == 1 ? lobatto_1 : lobatto_2);
+    const unsigned int      n_edge_nodes = degree + 1;
+    const double            lambda = material.lambda(), mu = material.mu();
     for (unsigned int e = 0; e < N; ++e)
       {
-        const auto   nodes = edge_nodes(e);
-        const auto  &t     = geo.edge_tangent(e);
-        const double L     = geo.edge_length(e);
-        for (unsigned int q = 0; q < nodes.size(); ++q)
-          for (unsigned int c = 0; c < 2; ++c)
-            B(2, 2 * nodes[q] + c) += h / (2. * area) * lobatto[q] * L * t[c];
-      }
-    // rows >= 3: a(p_alpha, phi_i) by the divergence theorem
-    const double lambda = material.lambda(), mu = material.mu();
-    for (unsigned int alpha = 3; alpha < n_p; ++alpha)
-      {
-        for (unsigned int e = 0; e < N; ++e)
+        const unsigned int nodes[3] = {e,
+                                       degree == 1 ? (e + 1) % N : N + e,
+                                       (e + 1) % N};
+        const auto                  &t = geo.edge_tangent(e);
+        const dealii::Tensor<1, dim> n = geo.edge_normal(e);
+        const double                 L = geo.edge_length(e);
+        for (unsigned int q = 0; q < n_edge_nodes; ++q)
           {
-            const auto                   nodes = edge_nodes(e);
-            const dealii::Tensor<1, dim> n     = geo.edge_normal(e);
-            const double                 L     = geo.edge_length(e);
-            for (unsigned int q = 0; q < nodes.size(); ++q)
+            const unsigned int node = nodes[q];
+            const double       w    = lobatto[q] * L;
+            // row 2: mean rotation h/(2|E|) int_dE v.t
+            for (unsigned int c = 0; c < 2; ++c)
+              B(2, 2 * node + c) += h / (2. * area) * w * t[c];
+            // rows >= 3: a(p_alpha, phi_i) = int_dE sigma(p_alpha) n . phi_i
+            // (+ the cell term below), by Gauss-Lobatto on the edge nodes
+            const dealii::Point<dim> s = geo.scaled(node_location(node));
+            double                   grad_m[6][2];
+            for (unsigned int m = 0; m < 6; ++m)
               {
-                const dealii::Point<dim> x = node_location(nodes[q]);
-                const dealii::SymmetricTensor<2, dim> eps =
-                  dealii::symmetrize(polynomial_gradient(alpha, x));
-                const dealii::SymmetricTensor<2, dim> sigma = material.stress(eps);
-                const dealii::Tensor<1, dim>          traction = sigma * n;
+                const dealii::Tensor<1, 2> g = monomial_scaled_gradient(m, s);
+                grad_m[m][0]                 = g[0] / h;
+                grad_m[m][1]                 = g[1] / h;
+              }
+            for (unsigned int alpha = 3; alpha < n_p; ++alpha)
+              {
+                double grad[2][2] = {{0, 0}, {0, 0}};
                 for (unsigned int c = 0; c < 2; ++c)
-                  B(alpha, 2 * nodes[q] + c) += lobatto[q] * L * traction[c];
+                  for (unsigned int m = 1; m < 6; ++m)
+                    if (coef[alpha][c][m] != 0.)
+                      {
+                        grad[c][0] += coef[alpha][c][m] * grad_m[m][0];
+                        grad[c][1] += coef[alpha][c][m] * grad_m[m][1];
+                      }
+                const double tr  = grad[0][0] + grad[1][1];
+                const double sxx = lambda * tr + 2. * mu * grad[0][0];
+                const double syy = lambda * tr + 2. * mu * grad[1][1];
+                const double sxy = mu * (grad[0][1] + grad[1][0]);
+                B(alpha, 2 * node) += w * (sxx * n[0] + sxy * n[1]);
+                B(alpha, 2 * node + 1) += w * (sxy * n[0] + syy * n[1]);
               }
           }
-        if (degree == 2)
-          {
-            // div sigma(p) = (lambda + mu) grad(div p) + mu Laplace(p)
-            dealii::Tensor<1, dim> grad_div, laplace;
-            for (unsigned int c = 0; c < 2; ++c)
-              for (unsigned int m = 3; m < 6; ++m)
-                if (coef[alpha][c][m] != 0.)
-                  {
-                    const dealii::Tensor<2, dim> H =
-                      coef[alpha][c][m] * monomial_scaled_hessian(m) / (h * h);
-                    laplace[c] += H[0][0] + H[1][1];
-                    // div p = sum_c d_c p_c ; grad_j div p = sum_c H_c[c][j]
-                    for (unsigned int j = 0; j < 2; ++j)
-                      grad_div[j] += H[c][j];
-                  }
-            const dealii::Tensor<1, dim> div_sigma = (lambda + mu) * grad_div + mu * laplace;
-            for (unsigned int c = 0; c < 2; ++c)
-              B(alpha, 2 * (2 * N) + c) -= area * div_sigma[c];
-          }
       }
+    if (degree == 2)
+      for (unsigned int alpha = 3; alpha < n_p; ++alpha)
+        {
+          // div sigma(p) = (lambda + mu) grad(div p) + mu Laplace(p), constant
+          dealii::Tensor<1, dim> grad_div, laplace;
+          for (unsigned int c = 0; c < 2; ++c)
+            for (unsigned int m = 3; m < 6; ++m)
+              if (coef[alpha][c][m] != 0.)
+                {
+                  const dealii::Tensor<2, dim> H =
+                    coef[alpha][c][m] * monomial_scaled_hessian(m) / (h * h);
+                  laplace[c] += H[0][0] + H[1][1];
+                  // div p = sum_c d_c p_c ; grad_j div p = sum_c H_c[c][j]
+                  for (unsigned int j = 0; j < 2; ++j)
+                    grad_div[j] += H[c][j];
+                }
+          const dealii::Tensor<1, dim> div_sigma = (lambda + mu) * grad_div + mu * laplace;
+          for (unsigned int c = 0; c < 2; ++c)
+            B(alpha, 2 * (2 * N) + c) -= area * div_sigma[c];
+        }
 
     // ---- G = B D
     G.reinit(n_p, n_p);
-    B.mmult(G, D);
+    RowMap Dm = view(D), Bm = view(B), Gm = view(G);
+    Gm.noalias()    = Bm * Dm;
 
     // ---- projector Pi_* = G^{-1} B. G is equilibrated by rows and columns
     // before it is factored: its rows (energies versus means) and columns
     // (monomials of different degree, tiny on elongated cells) have very
     // different sizes. Row scaling r leaves the solution unchanged; column
     // scaling c gives Pi_* = C (R G C)^{-1} R B.
-    const EigenMatrix Ge = to_eigen(G), Be = to_eigen(B), De = to_eigen(D);
-    Eigen::VectorXd   row_scale(n_p), col_scale(n_p);
+    ws.row_scale.resize(n_p);
+    ws.col_scale.resize(n_p);
     for (unsigned int a = 0; a < n_p; ++a)
       {
-        const double s = Ge.row(a).cwiseAbs().maxCoeff();
+        const double s = Gm.row(a).cwiseAbs().maxCoeff();
         AssertThrow(s > 0 && std::isfinite(s),
                     dealii::ExcMessage("VirtualElement: degenerate polygon (zero row in G)."));
-        row_scale(a) = 1. / s;
+        ws.row_scale(a) = 1. / s;
       }
-    const EigenMatrix Gr = row_scale.asDiagonal() * Ge;
+    ws.Gs = ws.row_scale.asDiagonal() * Gm;
     for (unsigned int b = 0; b < n_p; ++b)
-      col_scale(b) = 1. / Gr.col(b).cwiseAbs().maxCoeff();
-    const EigenMatrix                   Gs = Gr * col_scale.asDiagonal();
-    const Eigen::FullPivLU<EigenMatrix> lu(Gs);
-    const EigenMatrix Pi = col_scale.asDiagonal() * lu.solve(row_scale.asDiagonal() * Be);
-    from_eigen(Pi, Pi_star);
+      ws.col_scale(b) = 1. / ws.Gs.col(b).cwiseAbs().maxCoeff();
+    ws.Gs.array().rowwise() *= ws.col_scale.transpose().array();
+    ws.lu.compute(ws.Gs);
+    RowMap RB = view(ws.rhs, n_p, n_dofs);
+    RB        = ws.row_scale.asDiagonal() * Bm;
+    Pi_star.reinit(n_p, n_dofs);
+    RowMap Pm = view(Pi_star);
+    Pm        = ws.lu.solve(RB);
+    Pm.array().colwise() *= ws.col_scale.array();
 
-    // ---- consistency K_c = Pi_*^T Gtilde Pi_*, Gtilde = a(p_alpha, p_beta)
-    // on the strain modes (symmetrized), zero on the rigid modes
-    EigenMatrix Gt = EigenMatrix::Zero(n_p, n_p);
-    for (unsigned int a = 3; a < n_p; ++a)
-      for (unsigned int b = 3; b < n_p; ++b)
-        Gt(a, b) = 0.5 * (Ge(a, b) + Ge(b, a));
-    EigenMatrix Kc = Pi.transpose() * Gt * Pi;
-    Kc             = 0.5 * (Kc + Kc.transpose()).eval();
+    // ---- consistency K_c = Pi_*^T Gtilde Pi_*, Gtilde = a(p_alpha, p_beta):
+    // the (symmetrized) strain block of G, zero on the rigid modes. (A
+    // product into the lower triangle only would halve the flops, but Eigen's
+    // triangular product loses two to three digits here on elongated cells.)
+    const unsigned int n_s = n_p - 3;
+    ws.Gt = 0.5 * (Gm.bottomRightCorner(n_s, n_s) + Gm.bottomRightCorner(n_s, n_s).transpose());
+    RowMap T       = view(ws.t, n_s, n_dofs);
+    T.noalias()    = ws.Gt * Pm.bottomRows(n_s);
+    K_c.reinit(n_dofs, n_dofs);
+    RowMap Kcm = view(K_c);
+    Kcm.noalias() = Pm.bottomRows(n_s).transpose() * T;
 
-    // ---- stabilization K_s = gamma tau (I - Pi)^T (I - Pi)
-    const EigenMatrix I_minus_Pi = EigenMatrix::Identity(n_dofs, n_dofs) - De * Pi;
-    const double tau = Kc.trace() / n_dofs;
-    stab_scaling     = gamma * tau;
-    EigenMatrix Ks   = stab_scaling * (I_minus_Pi.transpose() * I_minus_Pi);
-    Ks               = 0.5 * (Ks + Ks.transpose()).eval();
+    // ---- stabilization K_s = gamma tau (I - D Pi_*)^T (I - D Pi_*), tau the
+    // mean diagonal entry of K_c; again only the lower triangle.
+    stab_scaling = gamma * Kcm.diagonal().sum() / n_dofs;
+    RowMap Q     = view(ws.q, n_dofs, n_dofs);
+    Q.noalias()  = -Dm * Pm;
+    Q.diagonal().array() += 1.;
+    K_s.reinit(n_dofs, n_dofs);
+    RowMap Ksm = view(K_s);
+    Ksm.selfadjointView<Eigen::Lower>().rankUpdate(Q.transpose(), stab_scaling);
 
-    from_eigen(Kc, K_c);
-    from_eigen(Ks, K_s);
-    from_eigen(Kc + Ks, K);
+    // ---- symmetrize K_c, mirror the lower triangle of K_s, K = K_c + K_s
+    K.reinit(n_dofs, n_dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      for (unsigned int j = 0; j <= i; ++j)
+        {
+          const double kc = 0.5 * (K_c(i, j) + K_c(j, i)), ks = K_s(i, j);
+          K_c(i, j)       = kc;
+          K_c(j, i) = kc;
+          K_s(j, i) = ks;
+          K(i, j) = K(j, i) = kc + ks;
+        }
   }
 
 
@@ -444,18 +500,21 @@ namespace dealvem
                                          const unsigned int           extra_degree) const
   {
     AssertDimension(f.n_components, 2);
-    const dealii::Quadrature<dim> q = geometry->quadrature(degree + extra_degree);
-    dealii::Vector<double>        moments(n_polynomials());
-    dealii::Vector<double>        fv(2);
+    Workspace &ws = *workspace;
+    geometry->quadrature(degree + extra_degree, ws.q_points, ws.q_weights);
+    dealii::Vector<double> &moments = ws.moments;
+    dealii::Vector<double> &fv      = ws.f_value;
+    moments.reinit(n_polynomials());
+    fv.reinit(2);
     // integrals of f_c times each monomial, then combined per polynomial
     double fm[2][6] = {{0, 0, 0, 0, 0, 0}, {0, 0, 0, 0, 0, 0}};
-    for (unsigned int k = 0; k < q.size(); ++k)
+    for (unsigned int k = 0; k < ws.q_points.size(); ++k)
       {
-        f.vector_value(q.point(k), fv);
-        const dealii::Point<dim> s = geometry->scaled(q.point(k));
+        f.vector_value(ws.q_points[k], fv);
+        const dealii::Point<dim> s = geometry->scaled(ws.q_points[k]);
         for (unsigned int i = 0; i < 6; ++i)
           {
-            const double m = q.weight(k) * monomial_value(i, s);
+            const double m = ws.q_weights[k] * monomial_value(i, s);
             fm[0][i] += fv[0] * m;
             fm[1][i] += fv[1] * m;
           }

@@ -198,6 +198,11 @@ namespace dealvem
     std::vector<dealii::Point<dim>>
     cell_vertices(const unsigned int c) const;
 
+    /// Same, written into @p points (whose storage is reused: no allocation
+    /// in assembly loops once it is large enough).
+    void
+    cell_vertices(const unsigned int c, std::vector<dealii::Point<dim>> &points) const;
+
     /// Change the material id of a cell.
     void
     set_material_id(const unsigned int c, const dealii::types::material_id id)

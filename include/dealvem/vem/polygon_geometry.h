@@ -9,6 +9,7 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <vector>
 
 namespace dealvem
@@ -46,6 +47,15 @@ namespace dealvem
   {
   public:
     explicit PolygonGeometry(const std::vector<dealii::Point<dim>> &vertices);
+
+    /// An empty geometry, to be set by reinit().
+    PolygonGeometry() = default;
+
+    /// Recompute everything for new vertices. The storage is reused, so a
+    /// geometry object that is reinitialized cell after cell does not
+    /// allocate once its vectors are large enough.
+    void
+    reinit(const std::vector<dealii::Point<dim>> &vertices);
 
     unsigned int
     n_vertices() const
@@ -121,18 +131,29 @@ namespace dealvem
     double
     integrate_scaled_monomial(const unsigned int a, const unsigned int b) const;
 
+    /// The integrals of all scaled monomials of degree <= 2, in the order
+    /// $1, \xi, \eta, \xi^2, \xi\eta, \eta^2$ (one pass over the edges).
+    void
+    integrate_scaled_monomials(std::array<double, 6> &integrals) const;
+
     /// A quadrature rule on the polygon exact for polynomials of degree
     /// @p degree (signed triangle fan from the centroid).
     dealii::Quadrature<dim>
     quadrature(const unsigned int degree) const;
 
+    /// The same rule written into @p points and @p weights (storage reused).
+    void
+    quadrature(const unsigned int               degree,
+               std::vector<dealii::Point<dim>> &points,
+               std::vector<double>             &weights) const;
+
   private:
     std::vector<dealii::Point<dim>>     vertices;
     std::vector<double>                 lengths;
     std::vector<dealii::Tensor<1, dim>> tangents;
-    double                              area_;
+    double                              area_     = 0;
     dealii::Point<dim>                  centroid_;
-    double                              diameter_;
+    double                              diameter_ = 0;
   };
 } // namespace dealvem
 

@@ -84,6 +84,8 @@ namespace dealvem
     /// Order k = 1 or 2 (AssertThrow otherwise).
     explicit VirtualElement(const unsigned int degree);
 
+    ~VirtualElement();
+
     unsigned int
     get_degree() const
     {
@@ -272,6 +274,12 @@ namespace dealvem
     /// Polynomial coefficients: coef[alpha][component][monomial], monomials
     /// 1, xi, eta, xi^2, xi eta, eta^2.
     std::vector<std::array<std::array<double, 6>, 2>> coef;
+
+    /// Scratch storage of reinit() and body_force_vector() (defined in the
+    /// .cc file, so that this header does not include Eigen): reused from
+    /// cell to cell, so that assembly loops do not allocate.
+    struct Workspace;
+    std::unique_ptr<Workspace> workspace;
   };
 } // namespace dealvem
 
