@@ -6,7 +6,10 @@
 // deal.II's own FE_Q(2)^2 (assembled the step-8 way) on similar numbers of
 // DoFs, on the unit square: left side clamped, body force (0, -1).
 //
-//   benchmark_elasticity --case voronoi|quads|feq --dofs N
+//   benchmark_elasticity --case voronoi|quads|quads-full|feq --dofs N
+//
+// "quads" reuses the element matrices of translated cells (the default, as
+// deal.II's FEValues does for FE_Q); "quads-full" computes every element.
 //
 // prints one line "RESULT case cells dofs t_mesh t_dofs t_assembly t_solve
 // iterations peak_MB" (wall seconds; peak memory of the process from
@@ -63,7 +66,7 @@ namespace
   };
 
   Times
-  run_vem(const bool voronoi, const unsigned int target_dofs)
+  run_vem(const bool voronoi, const bool cell_similarity, const unsigned int target_dofs)
   {
     Times                     t;
     Timer                     timer;
@@ -100,6 +103,7 @@ namespace
     timer.restart();
     const std::map<types::material_id, dealvem::ElasticMaterial> materials = {{0, dealvem::ElasticMaterial(E, nu)}};
     dealvem::ElasticityAssembler<2>                              assembler(dof_handler, materials);
+    assembler.set_cell_similarity(cell_similarity);
     Functions::ConstantFunction<2>                               f(std::vector<double>{0., -1.});
     assembler.set_body_force(f);
     assembler.assemble(constraints, A, b);
@@ -230,9 +234,10 @@ main(int argc, char **argv)
           else
             AssertThrow(false, ExcMessage("unknown option " + a));
         }
-      AssertThrow(which == "voronoi" || which == "quads" || which == "feq",
-                  ExcMessage("--case must be voronoi, quads or feq"));
-      const Times t = (which == "feq" ? run_feq(dofs) : run_vem(which == "voronoi", dofs));
+      AssertThrow(which == "voronoi" || which == "quads" || which == "quads-full" || which == "feq",
+                  ExcMessage("--case must be voronoi, quads, quads-full or feq"));
+      const Times t =
+        (which == "feq" ? run_feq(dofs) : run_vem(which == "voronoi", which != "quads-full", dofs));
       std::cout << "RESULT " << which << " " << t.cells << " " << t.dofs << " " << t.mesh << " " << t.setup << " "
                 << t.assembly << " " << t.solve << " " << t.iterations << " " << peak_memory_mb() << std::endl;
     }

@@ -115,6 +115,7 @@ namespace dealvem
     matrix           = 0;
     rhs.reinit(dof_handler.n_dofs());
     VirtualElement<dim>                          element(dof_handler.get_degree());
+    element.set_cell_similarity(cell_similarity);
     std::vector<dealii::types::global_dof_index> indices;
     std::vector<dealii::Point<dim>>              vertices;
     dealii::Vector<double>                       F;
@@ -138,6 +139,7 @@ namespace dealvem
     const auto &mesh = dof_handler.get_mesh();
     rhs.reinit(dof_handler.n_dofs());
     VirtualElement<dim>                          element(dof_handler.get_degree());
+    element.set_cell_similarity(cell_similarity);
     std::vector<dealii::types::global_dof_index> indices;
     std::vector<dealii::Point<dim>>              vertices;
     dealii::Vector<double>                       F;

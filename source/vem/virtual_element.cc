@@ -91,11 +91,16 @@ namespace dealvem
     Eigen::MatrixXd                   Gs; // equilibrated G
     Eigen::MatrixXd                   Gt; // symmetric strain block of G
     Eigen::VectorXd                   row_scale, col_scale;
-    Eigen::FullPivLU<Eigen::MatrixXd> lu;
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
     std::vector<double>               rhs, t, q; // R B, Gt Pi_*, I - D Pi_*
     std::vector<dealii::Point<dim>>   q_points;
     std::vector<double>               q_weights;
     dealii::Vector<double>            f_value, moments;
+    // the polygon of the last full computation: vertices relative to the
+    // first one, material parameters and gamma
+    std::vector<dealii::Tensor<1, dim>> shape;
+    double                              lambda = 0, mu = 0, gamma = 0;
+    bool                                valid = false;
   };
 
 
@@ -216,6 +221,26 @@ namespace dealvem
     const unsigned int          n_p = n_polynomials();
     const double                h = geo.diameter(), area = geo.area();
     const unsigned int          N = n_vertices;
+    const double                lambda = material.lambda(), mu = material.mu();
+
+    // Cell similarity: a translate of the last polygon keeps all matrices.
+    reused = use_similarity && ws.valid && ws.shape.size() == N && ws.lambda == lambda &&
+             ws.mu == mu && ws.gamma == gamma;
+    if (reused)
+      {
+        const double tol2 = 1e-28 * h * h;
+        for (unsigned int i = 1; i < N && reused; ++i)
+          reused = ((vertices[i] - vertices[0]) - ws.shape[i]).norm_square() <= tol2;
+      }
+    if (reused)
+      return;
+    ws.valid = false; // until the computation below has completed
+    ws.shape.resize(N);
+    for (unsigned int i = 0; i < N; ++i)
+      ws.shape[i] = vertices[i] - vertices[0];
+    ws.lambda = lambda;
+    ws.mu     = mu;
+    ws.gamma  = gamma;
 
     // Integrals of the scaled monomials, for the cell moments.
     std::array<double, 6> mono_int;
@@ -270,7 +295,6 @@ namespace dealvem
     static constexpr double lobatto_2[3] = {1. / 6., 2. / 3., 1. / 6.};
     const double           *lobatto      = (degree == 1 ? lobatto_1 : lobatto_2);
     const unsigned int      n_edge_nodes = degree + 1;
-    const double            lambda = material.lambda(), mu = material.mu();
     for (unsigned int e = 0; e < N; ++e)
       {
         const unsigned int nodes[3] = {e,
@@ -400,6 +424,17 @@ namespace dealvem
           K_s(j, i) = ks;
           K(i, j) = K(j, i) = kc + ks;
         }
+    ws.valid = true;
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::set_cell_similarity(const bool enable)
+  {
+    use_similarity = enable;
+    workspace->valid = false;
   }
 
 

@@ -128,9 +128,77 @@ check_polygon(const std::string &name, const std::vector<P> &vertices)
       }
 }
 
+// Cell similarity: a translated polygon reuses the matrices, which then
+// equal a fresh computation to round-off; any other change recomputes them.
+double
+max_difference(const dealii::FullMatrix<double> &A, const dealii::FullMatrix<double> &B)
+{
+  if (A.m() != B.m() || A.n() != B.n())
+    return 1e300;
+  double d = 0, a = 0;
+  for (unsigned int i = 0; i < A.m(); ++i)
+    for (unsigned int j = 0; j < A.n(); ++j)
+      {
+        d = std::max(d, std::abs(A(i, j) - B(i, j)));
+        a = std::max(a, std::abs(B(i, j)));
+      }
+  return d / a;
+}
+
+void
+check_cell_similarity()
+{
+  const ElasticMaterial material(210e3, 0.3), other(100e3, 0.3);
+  const std::vector<P>  hexagon = regular_polygon(6, 0.7, P(0.2, 0.1));
+  for (const unsigned int k : {1u, 2u})
+    {
+      const std::string tag = "cell similarity k=" + std::to_string(k) + ": ";
+      VirtualElement<2> element(k), fresh(k);
+      fresh.set_cell_similarity(false);
+      element.reinit(hexagon, material);
+      testing::check(!element.last_reinit_reused(), tag + "first polygon computed");
+      const std::vector<P> moved = scaled(hexagon, 1.0, P(12.5, -3.25));
+      element.reinit(moved, material);
+      fresh.reinit(moved, material);
+      testing::check(element.last_reinit_reused(), tag + "translated polygon reuses the matrices");
+      testing::check(!fresh.last_reinit_reused(), tag + "disabled reuse computes");
+      testing::check_small(max_difference(element.get_stiffness_matrix(), fresh.get_stiffness_matrix()), 1e-13,
+                           tag + "reused K equals a fresh K");
+      testing::check_small(max_difference(element.get_projector(), fresh.get_projector()), 1e-13,
+                           tag + "reused Pi_* equals a fresh Pi_*");
+      testing::check_small(element.get_geometry().centroid().distance(fresh.get_geometry().centroid()), 1e-14,
+                           tag + "geometry moved with the polygon");
+      // anything else is recomputed: scaled, one vertex moved, other material,
+      // other gamma, other number of vertices
+      const std::vector<std::pair<std::string, std::vector<P>>> changed = {
+        {"scaled polygon", scaled(moved, 1.0 + 1e-9, P())},
+        {"one vertex moved", [&] {
+           auto v = moved;
+           v[3][0] += 1e-9;
+           return v;
+         }()},
+        {"other vertex count", regular_polygon(7, 0.7)}};
+      for (const auto &c : changed)
+        {
+          element.reinit(moved, material);
+          element.reinit(c.second, material);
+          fresh.reinit(c.second, material);
+          testing::check(!element.last_reinit_reused(), tag + c.first + " is recomputed");
+          testing::check_small(max_difference(element.get_stiffness_matrix(), fresh.get_stiffness_matrix()), 1e-14,
+                               tag + c.first + ": K equals a fresh K");
+        }
+      element.reinit(moved, material);
+      element.reinit(moved, other);
+      testing::check(!element.last_reinit_reused(), tag + "other material is recomputed");
+      element.reinit(moved, other, 2.0);
+      testing::check(!element.last_reinit_reused(), tag + "other gamma is recomputed");
+    }
+}
+
 int
 main()
 {
+  check_cell_similarity();
   std::mt19937 rng(42);
   check_polygon("triangle", {P(0, 0), P(1, 0), P(0.2, 0.9)});
   check_polygon("unit square", {P(0, 0), P(1, 0), P(1, 1), P(0, 1)});

@@ -72,6 +72,14 @@ namespace dealvem
       return gamma;
     }
 
+    /// Reuse the element matrices of translated cells (default: on); see
+    /// VirtualElement::reinit().
+    void
+    set_cell_similarity(const bool enable)
+    {
+      cell_similarity = enable;
+    }
+
     /// Assemble the matrix and the right-hand side. @p matrix must have a
     /// sparsity pattern from VEMDoFHandler::make_sparsity_pattern (with the
     /// constraints' entries added, as for deal.II).
@@ -92,6 +100,7 @@ namespace dealvem
     const VEMDoFHandler<dim>                               &dof_handler;
     std::map<dealii::types::material_id, ElasticMaterial>   materials;
     double                                                  gamma;
+    bool                                                    cell_similarity = true;
     const dealii::Function<dim>                            *body_force = nullptr;
     std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> tractions;
     std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> pressures;

@@ -116,11 +116,31 @@ namespace dealvem
     /**
      * Compute everything for the polygon with the given counter-clockwise
      * vertices, material and stabilization factor $\gamma$.
+     *
+     * All matrices depend only on the vertices relative to each other. When
+     * the polygon is a translate of the one of the previous call (vertex
+     * differences equal to $10^{-14}h$), with the same material and
+     * $\gamma$, only the geometry is moved and the matrices are kept, as
+     * deal.II's FEValues does for translated cells (CellSimilarity). On
+     * structured meshes this makes assembly much cheaper; see
+     * set_cell_similarity() to switch it off.
      */
     void
     reinit(const std::vector<dealii::Point<dim>> &vertices,
            const ElasticMaterial                 &material,
            const double                           gamma = 1.0);
+
+    /// Enable (default) or disable the reuse of the matrices for translated
+    /// polygons described at reinit().
+    void
+    set_cell_similarity(const bool enable);
+
+    /// Whether the last reinit() reused the matrices of the previous call.
+    bool
+    last_reinit_reused() const
+    {
+      return reused;
+    }
 
     const PolygonGeometry<dim> &
     get_geometry() const
@@ -270,6 +290,8 @@ namespace dealvem
     std::unique_ptr<PolygonGeometry<dim>>       geometry;
     dealii::FullMatrix<double>                  D, B, G, Pi_star, K_c, K_s, K;
     double                                      stab_scaling = 0;
+    bool                                        use_similarity = true;
+    bool                                        reused         = false;
 
     /// Polynomial coefficients: coef[alpha][component][monomial], monomials
     /// 1, xi, eta, xi^2, xi eta, eta^2.
