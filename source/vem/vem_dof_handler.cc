@@ -109,21 +109,31 @@ namespace dealvem
 
 
   template <int dim>
+  template <typename F>
+  void
+  VEMDoFHandler<dim>::for_each_node(const unsigned int c, const F &f) const
+  {
+    const auto        &cell = mesh->cell(c);
+    const unsigned int n    = cell.vertices.size();
+    for (unsigned int i = 0; i < n; ++i)
+      f(i, vertex_node(cell.vertices[i]));
+    if (degree == 2)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          f(n + i, edge_node(cell.edges[i]));
+        f(2 * n, cell_node(c));
+      }
+  }
+
+
+
+  template <int dim>
   void
   VEMDoFHandler<dim>::get_node_indices(const unsigned int         c,
                                        std::vector<unsigned int> &nodes) const
   {
-    const auto        &cell = mesh->cell(c);
-    const unsigned int n    = cell.vertices.size();
-    nodes.resize(degree == 1 ? n : 2 * n + 1);
-    for (unsigned int i = 0; i < n; ++i)
-      nodes[i] = cell.vertices[i];
-    if (degree == 2)
-      {
-        for (unsigned int i = 0; i < n; ++i)
-          nodes[n + i] = n_vertex_nodes + cell.edges[i];
-        nodes[2 * n] = n_vertex_nodes + n_edge_nodes + c;
-      }
+    nodes.resize(n_dofs_per_cell(c) / 2);
+    for_each_node(c, [&](const unsigned int j, const unsigned int node) { nodes[j] = node; });
   }
 
 
@@ -134,24 +144,11 @@ namespace dealvem
     const unsigned int                            c,
     std::vector<dealii::types::global_dof_index> &indices) const
   {
-    // Same node order as get_node_indices(), without a temporary vector:
-    // this runs once per cell in every assembly loop.
-    const auto        &cell    = mesh->cell(c);
-    const unsigned int n       = cell.vertices.size();
-    const unsigned int n_nodes = (degree == 1 ? n : 2 * n + 1);
-    indices.resize(2 * n_nodes);
-    const auto set = [&](const unsigned int j, const unsigned int node) {
+    indices.resize(n_dofs_per_cell(c));
+    for_each_node(c, [&](const unsigned int j, const unsigned int node) {
       indices[2 * j]     = node_dof(node, 0);
       indices[2 * j + 1] = node_dof(node, 1);
-    };
-    for (unsigned int i = 0; i < n; ++i)
-      set(i, cell.vertices[i]);
-    if (degree == 2)
-      {
-        for (unsigned int i = 0; i < n; ++i)
-          set(n + i, n_vertex_nodes + cell.edges[i]);
-        set(2 * n, n_vertex_nodes + n_edge_nodes + c);
-      }
+    });
   }
 
 
@@ -192,10 +189,10 @@ namespace dealvem
         const auto &edge = mesh->edge(e);
         if (!edge.at_boundary() || ids.count(edge.boundary_id) == 0)
           continue;
-        nodes.push_back(edge.vertices[0]);
-        nodes.push_back(edge.vertices[1]);
+        nodes.push_back(vertex_node(edge.vertices[0]));
+        nodes.push_back(vertex_node(edge.vertices[1]));
         if (degree == 2)
-          nodes.push_back(n_vertex_nodes + e);
+          nodes.push_back(edge_node(e));
       }
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());

@@ -152,6 +152,13 @@ namespace dealvem
     rigid_body_modes() const;
 
   private:
+    /// Call f(j, node) for the local nodes j of cell @p c in
+    /// VirtualElement's order (vertices, edge midpoints, cell moment): the
+    /// one definition of that order, used without temporary storage.
+    template <typename F>
+    void
+    for_each_node(const unsigned int c, const F &f) const;
+
     const PolygonalMesh<dim>                      *mesh = nullptr;
     unsigned int                                   degree = 0;
     dealii::types::global_dof_index                n_dofs_ = 0;
