@@ -85,8 +85,7 @@ namespace testing
       dof_handler, {0, 1, 2, 3}, g, {{true, true}}, constraints);
     constraints.close();
     dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    dof_handler.make_sparsity_pattern(dsp);
-    constraints.condense(dsp);
+    dof_handler.make_sparsity_pattern(dsp, constraints);
     dealii::SparsityPattern sp;
     sp.copy_from(dsp);
     dealii::SparseMatrix<double> A(sp);

@@ -92,8 +92,7 @@ namespace
     dealvem::BoundaryConditions::interpolate_boundary_values(dof_handler, {0}, zero, {{true, true}}, constraints);
     constraints.close();
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    dof_handler.make_sparsity_pattern(dsp);
-    constraints.condense(dsp);
+    dof_handler.make_sparsity_pattern(dsp, constraints);
     SparsityPattern sp;
     sp.copy_from(dsp);
     SparseMatrix<double> A(sp);

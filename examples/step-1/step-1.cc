@@ -184,7 +184,7 @@ namespace Step1
   //
   // Vertex, edge-midpoint and cell-moment DoFs; the exact displacement is
   // prescribed on the left end (a "clamp" that matches Timoshenko's
-  // solution), then the sparsity pattern is condensed as in step-8.
+  // solution), then the sparsity pattern gets the constraints' entries as in step-8.
   void
   CantileverProblem::setup_system()
   {
@@ -194,8 +194,7 @@ namespace Step1
     BoundaryConditions::interpolate_boundary_values(dof_handler, {0}, exact, {{true, true}}, constraints);
     constraints.close();
     dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    dof_handler.make_sparsity_pattern(dsp);
-    constraints.condense(dsp);
+    dof_handler.make_sparsity_pattern(dsp, constraints);
     sparsity_pattern.copy_from(dsp);
     system_matrix.reinit(sparsity_pattern);
     solution.reinit(dof_handler.n_dofs());

@@ -194,8 +194,7 @@ namespace dealvem
           constraints.close();
           BoundaryConditions::check_rigid_body_support(dof_handler, constraints);
           dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
-          dof_handler.make_sparsity_pattern(dsp);
-          constraints.condense(dsp);
+          dof_handler.make_sparsity_pattern(dsp, constraints);
           sparsity.copy_from(dsp);
           matrix.reinit(sparsity);
         }

@@ -2,6 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
@@ -213,6 +214,22 @@ namespace dealvem
         std::sort(sorted.begin(), sorted.end());
         for (const auto i : indices)
           dsp.add_entries(i, sorted.begin(), sorted.end(), true);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::make_sparsity_pattern(dealii::DynamicSparsityPattern          &dsp,
+                                            const dealii::AffineConstraints<double> &constraints,
+                                            const bool keep_constrained_dofs) const
+  {
+    std::vector<dealii::types::global_dof_index> indices;
+    for (unsigned int c = 0; c < mesh->n_cells(); ++c)
+      {
+        get_dof_indices(c, indices);
+        constraints.add_entries_local_to_global(indices, dsp, keep_constrained_dofs);
       }
   }
 

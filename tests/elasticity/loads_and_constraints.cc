@@ -56,8 +56,7 @@ solve_and_compare(const VEMDoFHandler<2>                  &dof_handler,
   constraints.close();
   BoundaryConditions::check_rigid_body_support(dof_handler, constraints);
   dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
-  dof_handler.make_sparsity_pattern(dsp);
-  constraints.condense(dsp);
+  dof_handler.make_sparsity_pattern(dsp, constraints);
   dealii::SparsityPattern sp;
   sp.copy_from(dsp);
   dealii::SparseMatrix<double> A(sp);

@@ -29,8 +29,7 @@ main(int argc, char **argv)
   BoundaryConditions::interpolate_boundary_values(dof_handler, {0}, zero, {{true, true}}, constraints);
   constraints.close();
   dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
-  dof_handler.make_sparsity_pattern(dsp);
-  constraints.condense(dsp);
+  dof_handler.make_sparsity_pattern(dsp, constraints);
   dealii::SparsityPattern sp;
   sp.copy_from(dsp);
   dealii::SparseMatrix<double> A(sp);

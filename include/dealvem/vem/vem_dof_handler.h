@@ -18,6 +18,8 @@ namespace dealii
   class DynamicSparsityPattern;
   template <typename Number>
   class Vector;
+  template <typename Number>
+  class AffineConstraints;
 }
 
 namespace dealvem
@@ -144,6 +146,14 @@ namespace dealvem
     /// Sparsity pattern: all DoFs of a cell couple with each other.
     void
     make_sparsity_pattern(dealii::DynamicSparsityPattern &dsp) const;
+
+    /// The same with the entries that @p constraints add, as
+    /// DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints,
+    /// keep_constrained_dofs) does for a deal.II DoFHandler.
+    void
+    make_sparsity_pattern(dealii::DynamicSparsityPattern          &dsp,
+                          const dealii::AffineConstraints<double> &constraints,
+                          const bool keep_constrained_dofs = true) const;
 
     /// The three rigid-body modes (two translations and the rotation about
     /// the origin) as DoF vectors, for example for AMG near-null spaces.
