@@ -59,19 +59,40 @@ namespace testing
           s.str());
   }
 
+  /// @p s with every run of white space (spaces, line breaks) replaced by
+  /// one space: deal.II breaks the text of an ExcMessage into lines.
+  inline std::string
+  collapse_white_space(const std::string &s)
+  {
+    std::string out;
+    bool        space = false;
+    for (const char c : s)
+      if (c == ' ' || c == '\n' || c == '\t' || c == '\r')
+        space = true;
+      else
+        {
+          if (space && !out.empty())
+            out += ' ';
+          space = false;
+          out += c;
+        }
+    return out;
+  }
+
   /// Run @p f and check that it throws an exception whose what() contains
-  /// @p fragment.
+  /// @p fragment (white space compared as collapse_white_space() does).
   template <typename F>
   void
-  check_throws(F &&f, const std::string &fragment, const std::string &what)
+  check_throws(F &&f, const std::string &fragment_text, const std::string &what)
   {
+    const std::string fragment = collapse_white_space(fragment_text);
     try
       {
         f();
       }
     catch (const std::exception &e)
       {
-        const std::string msg = e.what();
+        const std::string msg = collapse_white_space(e.what());
         const bool        ok  = msg.find(fragment) != std::string::npos;
         check(ok, what + (ok ? "" : " (message was: " + msg + ")"));
         if (ok)

@@ -117,23 +117,23 @@ namespace Step2
   //
   // The interface is the top of the lower block (id 3, master: it gives
   // the normal) and the bottom of the upper block (id 12, slave). Node
-  // insertion projects the vertices of each side onto the other side's
-  // edges and splits the edges there, so that both sides carry the same
-  // vertices -- and for k = 2 the same sub-edge midpoints. The polygons that
-  // own split edges simply gain a vertex. Then every slave node has one
-  // master partner: a node pair with normal n, tangent t, initial gap g_0
-  // and the tributary weight w (L/2 per end for k = 1; Simpson's L/6, 2L/3,
-  // L/6 for k = 2).
+  // insertion carries the vertices of each side over to the other side and
+  // splits the edges there (nodes closer than a tenth of the local edge
+  // length are merged instead), so that both sides carry the same vertices
+  // -- and for k = 2 the same sub-edge midpoints. The polygons that own
+  // split edges simply gain a vertex. insert() returns the node pairs it
+  // made: normal n, tangent t, initial gap g_0 and the tributary weight w
+  // (L/2 per end for k = 1; Simpson's L/6, 2L/3, L/6 for k = 2).
   void
   ContactPatchTest::insert_nodes()
   {
-    const NodeInsertion::Settings s;
-    const auto                    report = NodeInsertion::insert(mesh, 3, 12, s);
+    const auto interface = NodeInsertion::insert(mesh, 3, 12, degree, NodeInsertion::Settings());
+    const auto &report   = interface.report;
     std::cout << "   node insertion: " << report.n_inserted_master << " nodes inserted on the master side, "
-              << report.n_inserted_slave << " on the slave side" << std::endl;
+              << report.n_inserted_slave << " on the slave side, " << report.n_merged << " merged" << std::endl;
     dof_handler.reinit(mesh);
     dof_handler.distribute_dofs(degree);
-    pairs = NodeInsertion::make_pairs(mesh, 3, 12, degree, s);
+    pairs = interface.pairs;
     std::cout << "   " << pairs.size() << " node pairs, " << dof_handler.n_dofs() << " DoFs" << std::endl;
   }
 

@@ -11,6 +11,7 @@
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/contact/active_set_solver.h>
+#include <dealvem/contact/contact_pressure.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/postprocessing/stress_recovery.h>
@@ -66,12 +67,25 @@ namespace dealvem
                       "0 selects the default rule 'Penalty factor' * E_min / h_min, with E_min the "
                       "smallest Young's modulus and h_min the shortest interface sub-edge.");
     prm.declare_entry("Penalty factor", "1000", Double(0), "Factor of the default penalty rule.");
-    prm.declare_entry("Snap tolerance", "1e-6", Double(1e-14, 0.49),
-                      "Node insertion: a projection closer than this times the edge length to "
-                      "an existing vertex snaps to it.");
-    prm.declare_entry("Search distance", "0.5", Double(0),
-                      "Node insertion: largest normal distance of a projection, relative to the "
-                      "length of the edge it lands on.");
+    prm.declare_entry("Merge fraction", "0.1", Double(1e-6, 0.49),
+                      "Node insertion: a node whose closest point on the other side lies closer "
+                      "than this times the local edge length to a node of that side is paired with "
+                      "it (the two are merged) instead of splitting the edge: no sub-edge shorter "
+                      "than this fraction is created.");
+    prm.declare_entry("Search distance", "0.25", Double(0),
+                      "Node insertion: largest distance between a node and its partner, relative to "
+                      "the size of the interface (the diagonal of the bounding box of both contact "
+                      "parts). Nodes inside the overlap but farther apart are reported.");
+    prm.declare_entry("Coordinate precision", "1e-5", Double(0, 0.01),
+                      "Node insertion: relative precision of the mesh coordinates. Gaps smaller than "
+                      "this times |x| + |y| are round-off of the mesh files and are closed (1e-5: "
+                      "coordinates written with six significant digits).");
+    prm.declare_entry("Close discretisation gaps", "true", Bool(),
+                      "Node insertion: close the gaps between an inserted node and its partner that "
+                      "come from two polygons approximating the same curve (below 1.5 times the "
+                      "chord deviation of the edge, or below the coordinate precision), by moving "
+                      "the inserted node onto its partner. Larger gaps (bodies apart, or surfaces of "
+                      "different curvature as in Hertz contact) are kept. false keeps every gap.");
     prm.declare_entry("Maximum active set iterations", "50", Integer(1),
                       "Iteration limit of the active set.");
     prm.leave_subsection();
@@ -145,6 +159,13 @@ namespace dealvem
         const unsigned int s = InputParsing::parse_unsigned(fields[1], name);
         AssertThrow(a < 255 && s < 255 && a != s,
                     dealii::ExcMessage("Parameter '" + name + "': two different boundary ids below 255 expected."));
+        for (const auto &other : contact_pairs)
+          for (const unsigned int id : {other.first, other.second})
+            AssertThrow(id != a && id != s,
+                        dealii::ExcMessage("Parameter '" + name + "': boundary id " + std::to_string(id) +
+                                           " is already part of the contact pair " +
+                                           std::to_string(other.first) + " : " + std::to_string(other.second) +
+                                           "; a boundary part can belong to one contact pair only."));
         contact_pairs.emplace_back(a, s);
       }
     contact_settings.normal     = ContactSettings::parse_normal(prm.get("Normal"));
@@ -152,8 +173,10 @@ namespace dealvem
     contact_settings.penalty    = prm.get_double("Penalty");
     contact_settings.penalty_factor           = prm.get_double("Penalty factor");
     contact_settings.max_active_set_iterations = prm.get_integer("Maximum active set iterations");
-    insertion_settings.snap_tolerance  = prm.get_double("Snap tolerance");
-    insertion_settings.search_distance = prm.get_double("Search distance");
+    insertion_settings.merge_fraction            = prm.get_double("Merge fraction");
+    insertion_settings.search_distance           = prm.get_double("Search distance");
+    insertion_settings.coordinate_precision      = prm.get_double("Coordinate precision");
+    insertion_settings.close_discretisation_gaps = prm.get_bool("Close discretisation gaps");
     prm.leave_subsection();
     AssertThrow(n == 1 || !contact_pairs.empty(),
                 dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
@@ -299,38 +322,43 @@ namespace dealvem
       mesh.name = "bodies";
     }
     std::vector<dealii::Point<2>> original_vertices = mesh.get_vertices();
+    std::vector<NodeInsertion::Interface> &interfaces = results.interfaces;
     {
       dealii::TimerOutput::Scope t(timer, "node insertion");
-      for (const auto &cp : contact_pairs)
-        results.insertion_reports.push_back(
-          NodeInsertion::insert(mesh, cp.first, cp.second, insertion_settings));
+      for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+        interfaces.push_back(NodeInsertion::insert(mesh, contact_pairs[i].first, contact_pairs[i].second,
+                                                   degree, insertion_settings, i));
+      // a later interface may have moved a vertex shared with an earlier one
+      for (auto &itf : interfaces)
+        NodeInsertion::update_geometry(mesh, itf);
     }
     VEMDoFHandler<2> dof_handler(mesh);
     dof_handler.distribute_dofs(degree);
     std::vector<ContactNodePair> pairs;
-    for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+    for (const auto &itf : interfaces)
       {
-        const auto p = NodeInsertion::make_pairs(mesh, contact_pairs[i].first,
-                                                 contact_pairs[i].second, degree,
-                                                 insertion_settings, i);
-        pairs.insert(pairs.end(), p.begin(), p.end());
+        results.insertion_reports.push_back(itf.report);
+        pairs.insert(pairs.end(), itf.pairs.begin(), itf.pairs.end());
       }
 
-    // penalty rule and active-set constant: E_min / h_min on the interface
+    // penalty rule and active-set constant: E_min / h_min on the interface,
+    // h_min the shortest paired sub-edge
     double E_min = 1e300, h_min = 1e300;
     for (const auto &m : materials)
       E_min = std::min(E_min, m.second.youngs_modulus());
-    for (const auto &p : pairs)
-      if (!p.is_midpoint)
-        h_min = std::min(h_min, p.weight * (degree == 1 ? 1. : 3.));
-    if (pairs.empty())
-      h_min = 1;
+    for (const auto &itf : interfaces)
+      for (const auto &s : itf.segments)
+        h_min = std::min(h_min, s.length);
+    AssertThrow(!pairs.empty() && h_min < 1e300,
+                dealii::ExcMessage("Contact: node insertion found no paired interface edge on any contact "
+                                   "pair; check the 'Contact/Pairs' ids and the 'Search distance'."));
     const double penalty = contact_settings.penalty > 0 ? contact_settings.penalty :
                                                           contact_settings.penalty_factor * E_min / h_min;
     results.penalty = penalty;
     ContactAssembler<2> contact(dof_handler, pairs, contact_settings, penalty);
 
     dealii::AffineConstraints<double> constraints;
+    bc.check_boundary_ids(mesh);
     bc.apply_constraints(dof_handler, constraints);
     constraints.close();
     check_support(dof_handler, constraints, contact,
@@ -421,6 +449,24 @@ namespace dealvem
     const auto gaps  = contact.gaps(x);
     const auto slips = contact.slips(x);
     const auto ft    = contact.tangential_forces(x);
+    // consistent pressure per interface: M_Gamma p = -lambda
+    std::vector<double> recovered;
+    {
+      unsigned int offset = 0;
+      for (const auto &itf : interfaces)
+        {
+          std::vector<double> force(itf.pairs.size());
+          std::vector<bool>   closed(itf.pairs.size());
+          for (unsigned int j = 0; j < force.size(); ++j)
+            {
+              force[j]  = -x[n + offset + j];
+              closed[j] = as.active[offset + j];
+            }
+          const auto p = ContactPressure::recover(itf, force, closed);
+          recovered.insert(recovered.end(), p.begin(), p.end());
+          offset += itf.pairs.size();
+        }
+    }
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const auto &p = pairs[i];
@@ -431,7 +477,10 @@ namespace dealvem
         r.active              = as.active[i];
         r.weight              = p.weight;
         r.gap                 = gaps[i];
-        r.pressure            = -x[n + i] / p.weight;
+        r.multiplier          = x[n + i];
+        r.lumped_pressure     = -x[n + i] / p.weight;
+        r.pressure            = recovered[i];
+        r.at_open_end         = p.at_open_end;
         r.slip                = slips[i];
         r.tangential_traction = (as.active[i] ? ft[i] / p.weight : 0.);
         results.pairs.push_back(r);
@@ -456,7 +505,42 @@ namespace dealvem
     std::cout << "Contact problem: " << bodies.size() << " bodies, " << mesh.n_cells() << " cells, "
               << n << " DoFs, " << m << " multipliers" << std::endl
               << "  node insertion: " << n_inserted << " nodes inserted, " << pairs.size()
-              << " node pairs" << std::endl
+              << " node pairs" << std::endl;
+    for (unsigned int i = 0; i < interfaces.size(); ++i)
+      {
+        const auto &r = interfaces[i].report;
+        std::cout << "    interface " << i << " (" << contact_pairs[i].first << " : " << contact_pairs[i].second
+                  << "): " << r.n_inserted_master << " + " << r.n_inserted_slave << " inserted, " << r.n_merged
+                  << " merged, " << r.n_closed_gaps << " discretisation gaps closed";
+        if (r.n_closed_gaps > 0)
+          std::cout << " (largest " << r.max_closed_gap << ")";
+        std::cout << std::endl;
+        if (!r.unpaired.empty())
+          {
+            std::cout << "  warning: " << r.unpaired.size() << " node(s) of interface " << i
+                      << " inside the overlap of its parts have no partner:" << std::endl;
+            for (unsigned int k = 0; k < std::min<std::size_t>(r.unpaired.size(), 5); ++k)
+              {
+                const auto &u = r.unpaired[k];
+                std::cout << "    " << (u.on_master ? "master" : "slave") << " vertex " << u.vertex << " at ("
+                          << u.location[0] << ", " << u.location[1] << "): " << u.reason << std::endl;
+              }
+            if (r.unpaired.size() > 5)
+              std::cout << "    ... (" << r.unpaired.size() - 5 << " more)" << std::endl;
+          }
+      }
+    for (const auto &r : results.pairs)
+      if (r.active && r.at_open_end)
+        {
+          std::cout << "  warning: the contact pair at (" << r.location[0] << ", " << r.location[1]
+                    << ") of interface " << r.interface
+                    << " is active and ends the paired part of the interface where the bodies' boundaries "
+                       "go on: the contact zone may be cut off. Enlarge the contact parts (boundary ids) "
+                       "or the 'Search distance'."
+                    << std::endl;
+          ++results.n_open_end_warnings;
+        }
+    std::cout
               << "  active set: " << as.n_iterations << " iteration(s), active pairs per iteration:";
     for (const auto a : as.n_active_history)
       std::cout << " " << a;
@@ -492,11 +576,13 @@ namespace dealvem
     if (write_csv)
       {
         std::ofstream csv(prefix + "-interface.csv");
-        csv << "interface,x,y,midpoint,active,weight,gap,pressure,tangential_traction,slip\n";
+        csv << "interface,x,y,midpoint,active,weight,gap,pressure,lumped_pressure,multiplier,"
+               "tangential_traction,slip\n";
         csv << std::setprecision(15);
         for (const auto &r : results.pairs)
           csv << r.interface << "," << r.location[0] << "," << r.location[1] << "," << r.midpoint
               << "," << r.active << "," << r.weight << "," << r.gap << "," << r.pressure << ","
+              << r.lumped_pressure << "," << r.multiplier << ","
               << r.tangential_traction << "," << r.slip << "\n";
         std::cout << "  interface results: " << prefix << "-interface.csv" << std::endl;
       }

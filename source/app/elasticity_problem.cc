@@ -55,8 +55,9 @@ namespace dealvem
 
     prm.enter_subsection("Exact solution");
     prm.declare_entry("Displacement", "", Anything(),
-                      "Exact displacement 'ux, uy' (muparser expressions in x, y with the "
-                      "function constants). Empty: no error computation.");
+                      "Exact displacement 'ux, uy' (muparser expressions in x, y and t with "
+                      "the function constants; static problem: t = 1). Empty: no error "
+                      "computation.");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
@@ -180,6 +181,7 @@ namespace dealvem
                                            std::to_string(mesh.cell(c).material_id) +
                                            " but the parameter file defines a material for id " +
                                            std::to_string(mesh_parameters.material_id) + " only."));
+          bc.check_boundary_ids(mesh);
         }
 
         VEMDoFHandler<2>                   dof_handler(mesh);

@@ -9,6 +9,7 @@
 #include <dealvem/app/input_parsing.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace dealvem
@@ -114,29 +115,54 @@ namespace dealvem
     ParsedFunction::ParsedFunction(const std::vector<std::string>      &expressions,
                                    const std::map<std::string, double> &constants,
                                    const std::string                   &parameter)
-      : dealii::AutoDerivativeFunction<2>(1e-5, expressions.size())
+      : dealii::AutoDerivativeFunction<2>(1e-5, expressions.size(), 1.0)
       , expressions(expressions)
-      , parser(expressions.size())
+      , parameter(parameter)
+      , parser(expressions.size(), 1.0)
     {
       AssertThrow(!expressions.empty(),
                   dealii::ExcMessage("Parameter '" + parameter + "': no expression given."));
       set_formula(FourthOrder);
+      std::string joined;
+      for (const auto &x : expressions)
+        joined += (joined.empty() ? "" : ", ") + x;
+      std::string error;
       try
         {
-          parser.initialize("x,y", expressions, constants);
-          // evaluate once to catch undefined variables early
+          // t is the time variable of FunctionParser: get_time() of the parser
+          parser.initialize("x,y,t", expressions, constants, true);
+          // evaluate once (the value itself is not checked) so that unknown
+          // names are reported here rather than in the middle of assembly
           dealii::Vector<double> v(expressions.size());
           parser.vector_value(dealii::Point<2>(0.123, 0.456), v);
         }
       catch (const std::exception &e)
         {
-          std::string joined;
-          for (const auto &x : expressions)
-            joined += (joined.empty() ? "" : ", ") + x;
-          AssertThrow(false,
-                      dealii::ExcMessage("Parameter '" + parameter + "': cannot parse the expression(s) '" +
-                                         joined + "': " + e.what()));
+          error = e.what();
         }
+      catch (...)
+        {
+          error = "the expression parser failed";
+        }
+      AssertThrow(error.empty(),
+                  dealii::ExcMessage("Parameter '" + parameter + "': cannot parse the expression(s) '" +
+                                     joined + "': " + error));
+    }
+
+
+
+    void
+    ParsedFunction::report(const dealii::Point<2> &p,
+                           const unsigned int      component,
+                           const std::string      &what) const
+    {
+      std::ostringstream msg;
+      msg << "Parameter '" << parameter << "': the expression '"
+          << (component < expressions.size() ? expressions[component] : std::string("?")) << "' "
+          << what << " at the point (" << p[0] << ", " << p[1] << "), t = " << parser.get_time()
+          << ".";
+      AssertThrow(false, dealii::ExcMessage(msg.str()));
+      std::abort(); // not reached
     }
 
 
@@ -144,7 +170,28 @@ namespace dealvem
     double
     ParsedFunction::value(const dealii::Point<2> &p, const unsigned int component) const
     {
-      return parser.value(p, component);
+      double      v = 0;
+      std::string error;
+      try
+        {
+          v = parser.value(p, component);
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+      catch (...)
+        {
+          error = "unknown parser error";
+        }
+      if (!error.empty())
+        report(p, component, "cannot be evaluated (" + error + ")");
+      if (!std::isfinite(v))
+        {
+          report(p, component,
+                 std::string("evaluates to ") + (std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf")));
+        }
+      return v;
     }
 
 
@@ -152,7 +199,21 @@ namespace dealvem
     void
     ParsedFunction::vector_value(const dealii::Point<2> &p, dealii::Vector<double> &values) const
     {
-      parser.vector_value(p, values);
+      AssertThrow(values.size() == n_components,
+                  dealii::ExcMessage("Parameter '" + parameter + "': " + std::to_string(n_components) +
+                                     " expressions, but " + std::to_string(values.size()) +
+                                     " values requested."));
+      for (unsigned int c = 0; c < n_components; ++c)
+        values[c] = value(p, c);
+    }
+
+
+
+    void
+    ParsedFunction::set_time(const double new_time)
+    {
+      dealii::AutoDerivativeFunction<2>::set_time(new_time);
+      parser.set_time(new_time);
     }
   } // namespace InputParsing
 } // namespace dealvem

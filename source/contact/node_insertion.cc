@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -19,7 +18,9 @@ namespace dealvem
 {
   namespace
   {
-    using Mesh = PolygonalMesh<2>;
+    using Mesh       = PolygonalMesh<2>;
+    using Point      = dealii::Point<2>;
+    using Vector     = dealii::Tensor<1, 2>;
     using VertexPair = std::pair<unsigned int, unsigned int>;
 
     constexpr unsigned int invalid = dealii::numbers::invalid_unsigned_int;
@@ -30,12 +31,18 @@ namespace dealvem
       return a < b ? VertexPair(a, b) : VertexPair(b, a);
     }
 
+    double
+    cross(const Vector &a, const Vector &b)
+    {
+      return a[0] * b[1] - a[1] * b[0];
+    }
+
     std::string
     interface_name(const dealii::types::boundary_id master_id,
                    const dealii::types::boundary_id slave_id)
     {
       return "contact interface (master id " + std::to_string(master_id) + ", slave id " +
-             std::to_string(slave_id) + "):\n";
+             std::to_string(slave_id) + "): ";
     }
 
     std::string
@@ -47,51 +54,197 @@ namespace dealvem
     }
 
     std::string
-    point_string(const dealii::Point<2> &p)
+    point_string(const Point &p)
     {
       std::ostringstream s;
       s << "(" << p[0] << ", " << p[1] << ")";
       return s.str();
     }
 
-    /// One side of an interface: its boundary edges (as vertex pairs in the
-    /// counter-clockwise order of the owning cell) and their vertices.
+    /// Outward unit normal of a boundary edge a -> b (counter-clockwise
+    /// order of its cell: the body lies on the left).
+    Vector
+    edge_normal(const Point &a, const Point &b)
+    {
+      Vector t = b - a;
+      t /= t.norm();
+      Vector n;
+      n[0] = t[1];
+      n[1] = -t[0];
+      return n;
+    }
+
+    Vector
+    tangent_of(const Vector &n)
+    {
+      Vector t;
+      t[0] = -n[1];
+      t[1] = n[0];
+      return t;
+    }
+
+    /**
+     * One side of an interface: its boundary edges (vertex pairs in the
+     * counter-clockwise order of the owning cell), the chains they form,
+     * and per vertex the local edge length, outward normal and curvature.
+     */
     struct Side
     {
-      /// (a, b) in the CCW order of the cell, and the current edge index.
+      dealii::types::boundary_id               id = 0;
       std::vector<std::array<unsigned int, 2>> edges;
-      std::vector<unsigned int>                edge_indices;
-      /// Sorted vertex indices.
-      std::vector<unsigned int>                vertices;
-      /// Number of side edges at each vertex.
-      std::map<unsigned int, unsigned int>     degree;
-      /// Edge index by vertex pair.
-      std::map<VertexPair, unsigned int>       edge_by_pair;
-      /// Material ids of the cells owning the edges.
+      std::vector<unsigned int>                edge_indices; ///< mesh edge of edges[i]
       std::set<dealii::types::material_id>     materials;
+      std::map<VertexPair, unsigned int>       edge_by_pair; ///< -> index into edges
+      std::map<unsigned int, unsigned int>     outgoing, incoming; ///< vertex -> index into edges
+      /// Vertices in chain order; a closed chain does not repeat its first vertex.
+      std::vector<std::vector<unsigned int>>   chains;
+      std::vector<bool>                        closed;
+      std::map<unsigned int, double>           h;      ///< shortest side edge at the vertex
+      std::map<unsigned int, Vector>           normal; ///< averaged outward normal
+      std::map<unsigned int, double>           kappa;  ///< smooth signed curvature, 0 at kinks
+      std::map<unsigned int, double>           kappa_raw; ///< circle through the neighbours, 0 at corners
+      std::vector<double>                      edge_kappa;     ///< smooth, for placing new vertices
+      std::vector<double>                      edge_kappa_raw; ///< larger of the ends, for tolerances
+
+      bool
+      is_end(const unsigned int v) const
+      {
+        return outgoing.count(v) == 0 || incoming.count(v) == 0;
+      }
     };
+
+    /// Signed curvature (convex > 0) of the circle through a, b, c, or 0 if
+    /// the side turns by more than 30 degrees at b (a corner, not a curve).
+    double
+    menger_curvature(const Point &a, const Point &b, const Point &c)
+    {
+      const Vector d1 = b - a, d2 = c - b;
+      const double l1 = d1.norm(), l2 = d2.norm(), l3 = (c - a).norm();
+      if (l1 == 0 || l2 == 0 || l3 == 0)
+        return 0;
+      const double sine = cross(d1, d2) / (l1 * l2);
+      if ((d1 * d2) <= 0 || std::abs(sine) > 0.5)
+        return 0;
+      return 2 * cross(d1, d2) / (l1 * l2 * l3);
+    }
 
     Side
     collect_side(const Mesh &mesh, const dealii::types::boundary_id id)
     {
       Side side;
-      std::set<unsigned int> vertices;
+      side.id = id;
       for (unsigned int e = 0; e < mesh.n_edges(); ++e)
         {
           const auto &edge = mesh.edge(e);
           if (!edge.at_boundary() || edge.boundary_id != id)
             continue;
+          const unsigned int i = side.edges.size();
           side.edges.push_back(edge.vertices);
           side.edge_indices.push_back(e);
-          side.edge_by_pair[key(edge.vertices[0], edge.vertices[1])] = e;
+          side.edge_by_pair[key(edge.vertices[0], edge.vertices[1])] = i;
           side.materials.insert(mesh.cell(edge.cells[0]).material_id);
-          for (const unsigned int v : edge.vertices)
+          AssertThrow(side.outgoing.count(edge.vertices[0]) == 0 && side.incoming.count(edge.vertices[1]) == 0,
+                      dealii::ExcMessage("contact interface: the boundary part with id " + std::to_string(id) +
+                                         " of mesh '" + mesh.name + "' touches itself at vertex " +
+                                         std::to_string(edge.vertices[side.outgoing.count(edge.vertices[0]) ? 0 : 1]) +
+                                         " " + point_string(mesh.vertex(edge.vertices[side.outgoing.count(edge.vertices[0]) ? 0 : 1])) +
+                                         "; split it into parts that are simple curves."));
+          side.outgoing[edge.vertices[0]] = i;
+          side.incoming[edge.vertices[1]] = i;
+        }
+      // chains: open ones from the vertices without an incoming edge, then loops
+      std::vector<bool> visited(side.edges.size(), false);
+      const auto        walk = [&](const unsigned int start, const bool loop) {
+        std::vector<unsigned int> chain{start};
+        unsigned int              v = start;
+        while (true)
+          {
+            const auto it = side.outgoing.find(v);
+            if (it == side.outgoing.end() || visited[it->second])
+              break;
+            visited[it->second] = true;
+            v                   = side.edges[it->second][1];
+            if (loop && v == start)
+              break;
+            chain.push_back(v);
+          }
+        side.chains.push_back(chain);
+        side.closed.push_back(loop);
+      };
+      for (const auto &o : side.outgoing)
+        if (side.incoming.count(o.first) == 0)
+          walk(o.first, false);
+      for (unsigned int i = 0; i < side.edges.size(); ++i)
+        if (!visited[i])
+          walk(side.edges[i][0], true);
+
+      // per vertex: local edge length and normal
+      for (unsigned int i = 0; i < side.edges.size(); ++i)
+        {
+          const Point &a = mesh.vertex(side.edges[i][0]), &b = mesh.vertex(side.edges[i][1]);
+          const double L = a.distance(b);
+          const Vector n = edge_normal(a, b);
+          for (const unsigned int v : side.edges[i])
             {
-              vertices.insert(v);
-              ++side.degree[v];
+              const auto it = side.h.find(v);
+              side.h[v]     = (it == side.h.end() ? L : std::min(it->second, L));
+              side.normal[v] += n;
             }
         }
-      side.vertices.assign(vertices.begin(), vertices.end());
+      for (auto &n : side.normal)
+        n.second /= n.second.norm();
+
+      // curvature: the circle through a vertex and its neighbours, kept only
+      // where the neighbours agree (a smooth curve, not a single kink)
+      std::map<unsigned int, double> raw;
+      for (unsigned int c = 0; c < side.chains.size(); ++c)
+        {
+          const auto        &chain = side.chains[c];
+          const unsigned int n     = chain.size();
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const bool interior = side.closed[c] || (i > 0 && i + 1 < n);
+              raw[chain[i]]       = interior ? menger_curvature(mesh.vertex(chain[(i + n - 1) % n]),
+                                                                mesh.vertex(chain[i]),
+                                                                mesh.vertex(chain[(i + 1) % n])) :
+                                               std::numeric_limits<double>::quiet_NaN();
+            }
+          const auto agree = [](const double k1, const double k2) {
+            return std::isnan(k2) || (k1 * k2 > 0 && std::abs(k2) <= 3 * std::abs(k1) && std::abs(k1) <= 3 * std::abs(k2));
+          };
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const double k = raw[chain[i]];
+              double       smooth = 0;
+              if (!std::isnan(k) && k != 0)
+                {
+                  const bool has_prev = side.closed[c] || i > 0, has_next = side.closed[c] || i + 1 < n;
+                  const double kp = has_prev ? raw[chain[(i + n - 1) % n]] : std::numeric_limits<double>::quiet_NaN();
+                  const double kn = has_next ? raw[chain[(i + 1) % n]] : std::numeric_limits<double>::quiet_NaN();
+                  if (agree(k, kp) && agree(k, kn) && !(std::isnan(kp) && std::isnan(kn)))
+                    smooth = k;
+                }
+              side.kappa[chain[i]] = smooth;
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            side.kappa_raw[chain[i]] = std::isnan(raw[chain[i]]) ? 0. : raw[chain[i]];
+          // chain ends take the curvature of their neighbour
+          if (!side.closed[c] && n >= 3)
+            for (auto *k : {&side.kappa, &side.kappa_raw})
+              {
+                (*k)[chain[0]]     = (*k)[chain[1]];
+                (*k)[chain[n - 1]] = (*k)[chain[n - 2]];
+              }
+        }
+      side.edge_kappa.resize(side.edges.size());
+      side.edge_kappa_raw.resize(side.edges.size());
+      for (unsigned int i = 0; i < side.edges.size(); ++i)
+        {
+          const double ka = side.kappa[side.edges[i][0]], kb = side.kappa[side.edges[i][1]];
+          side.edge_kappa[i] = (ka * kb > 0 ? (std::abs(ka) < std::abs(kb) ? ka : kb) : 0.);
+          const double ra = side.kappa_raw[side.edges[i][0]], rb = side.kappa_raw[side.edges[i][1]];
+          side.edge_kappa_raw[i] = (std::abs(ra) > std::abs(rb) ? ra : rb);
+        }
       return side;
     }
 
@@ -104,7 +257,6 @@ namespace dealvem
       return s;
     }
 
-    /// Checks common to insert() and make_pairs().
     void
     check_interface(const Mesh                      &mesh,
                     const dealii::types::boundary_id master_id,
@@ -113,517 +265,574 @@ namespace dealvem
                     const Side                      &slave,
                     const NodeInsertion::Settings   &settings)
     {
-      AssertThrow(settings.snap_tolerance > 0 && settings.snap_tolerance < 0.5,
-                  dealii::ExcMessage(interface_name(master_id, slave_id) +
-                                     "the snap tolerance must lie in (0, 0.5), but it is " +
-                                     number_string(settings.snap_tolerance) + "."));
-      AssertThrow(settings.search_distance > 0,
-                  dealii::ExcMessage(interface_name(master_id, slave_id) +
-                                     "the search distance must be positive, but it is " +
+      const std::string name = interface_name(master_id, slave_id);
+      AssertThrow(settings.merge_fraction > 0 && settings.merge_fraction < 0.5,
+                  dealii::ExcMessage(name + "the merge fraction must lie in (0, 0.5), but it is " +
+                                     number_string(settings.merge_fraction) + "."));
+      AssertThrow(settings.search_distance > 0 && std::isfinite(settings.search_distance),
+                  dealii::ExcMessage(name + "the search distance must be positive and finite, but it is " +
                                      number_string(settings.search_distance) + "."));
+      AssertThrow(settings.coordinate_precision >= 0 && settings.coordinate_precision < 1e-2,
+                  dealii::ExcMessage(name + "the coordinate precision must lie in [0, 0.01), but it is " +
+                                     number_string(settings.coordinate_precision) + "."));
+      AssertThrow(settings.curvature_factor >= 0 && settings.curvature_factor <= 10,
+                  dealii::ExcMessage(name + "the curvature factor must lie in [0, 10], but it is " +
+                                     number_string(settings.curvature_factor) + "."));
       for (const auto &s : {std::make_pair(master_id, &master), std::make_pair(slave_id, &slave)})
         AssertThrow(!s.second->edges.empty(),
-                    dealii::ExcMessage("contact interface: boundary id " + std::to_string(s.first) +
+                    dealii::ExcMessage(name + "boundary id " + std::to_string(s.first) +
                                        " has no boundary edges in mesh '" + mesh.name + "'."));
-      AssertThrow(master.materials.size() == 1,
-                  dealii::ExcMessage(interface_name(master_id, slave_id) + "the boundary edges with id " +
-                                     std::to_string(master_id) + " belong to more than one body (material ids " +
-                                     materials_string(master.materials) +
-                                     "); each side of a contact interface must lie on one body."));
-      AssertThrow(slave.materials.size() == 1,
-                  dealii::ExcMessage(interface_name(master_id, slave_id) + "the boundary edges with id " +
-                                     std::to_string(slave_id) + " belong to more than one body (material ids " +
-                                     materials_string(slave.materials) +
-                                     "); each side of a contact interface must lie on one body."));
+      for (const auto &s : {std::make_pair(master_id, &master), std::make_pair(slave_id, &slave)})
+        AssertThrow(s.second->materials.size() == 1,
+                    dealii::ExcMessage(name + "the boundary edges with id " + std::to_string(s.first) +
+                                       " belong to more than one body (material ids " +
+                                       materials_string(s.second->materials) +
+                                       "); each side of a contact interface must lie on one body."));
       AssertThrow(*master.materials.begin() != *slave.materials.begin(),
-                  dealii::ExcMessage(interface_name(master_id, slave_id) + "both boundary ids " +
-                                     std::to_string(master_id) + " and " + std::to_string(slave_id) +
-                                     " belong to the same body (material id " +
+                  dealii::ExcMessage(name + "both boundary ids " + std::to_string(master_id) + " and " +
+                                     std::to_string(slave_id) + " belong to the same body (material id " +
                                      std::to_string(*master.materials.begin()) +
                                      "); a contact interface joins two different bodies."));
     }
 
-    /// The projection of a point onto the edges of one side.
+    /// The closest point of a vertex on the other side.
     struct Projection
     {
-      bool             found = false;
-      unsigned int     edge  = invalid; ///< index into Side::edges
-      double           s     = 0;       ///< clamped parameter from edges[edge][0]
-      double           length = 0;      ///< length of that edge
-      dealii::Point<2> point;           ///< closest point
+      unsigned int edge = invalid; ///< index into Side::edges
+      double       t    = 0;       ///< clamped parameter along the edge
+      double       length = 0;
+      double       distance = 0;
+      Point        point;
+      bool         inside = false; ///< not beyond an end of the side
+      bool         facing = false; ///< outward normals opposed
     };
 
-    /**
-     * Closest point of @p p on the edges of @p side (nearest edge). Accepted
-     * if the distance is at most search_distance times the length of that
-     * edge and the point does not lie beyond an end of the side: the
-     * unclamped parameter must lie in [-snap, 1 + snap] unless the
-     * closest point is a vertex joining two edges of the side (a corner of
-     * a polygonal side, where both parameters lie outside [0, 1]).
-     *
-     * @p reference_lengths (one per edge of the side), if given, replace the
-     * edge lengths in the distance criterion.
-     */
     Projection
-    project(const Mesh &mesh, const Side &side, const dealii::Point<2> &p,
-            const NodeInsertion::Settings &settings,
-            const std::vector<double>     *reference_lengths = nullptr)
+    project(const Mesh &mesh, const Side &side, const Point &p, const Vector &own_normal,
+            const double merge_fraction)
     {
       Projection best;
       double     best_distance = std::numeric_limits<double>::max();
-      double     best_unclamped = 0;
+      double     unclamped     = 0;
       for (unsigned int i = 0; i < side.edges.size(); ++i)
         {
-          const dealii::Point<2>     &a = mesh.vertex(side.edges[i][0]);
-          const dealii::Point<2>     &b = mesh.vertex(side.edges[i][1]);
-          const dealii::Tensor<1, 2>  d = b - a;
-          const double                L2 = d * d;
-          if (L2 == 0)
-            continue;
-          const double           s_unclamped = ((p - a) * d) / L2;
-          const double           s           = std::min(1., std::max(0., s_unclamped));
-          const dealii::Point<2> x           = a + s * d;
-          const double           distance    = p.distance(x);
-          if (distance < best_distance)
+          const Point &a = mesh.vertex(side.edges[i][0]), &b = mesh.vertex(side.edges[i][1]);
+          const Vector d  = b - a;
+          const double L2 = d * d;
+          const double s  = ((p - a) * d) / L2;
+          const double t  = std::min(1., std::max(0., s));
+          const Point  x  = a + t * d;
+          const double dist = p.distance(x);
+          if (dist < best_distance)
             {
-              best_distance  = distance;
-              best_unclamped = s_unclamped;
-              best.edge      = i;
-              best.s         = s;
-              best.length    = std::sqrt(L2);
-              best.point     = x;
+              best_distance = dist;
+              unclamped     = s;
+              best.edge     = i;
+              best.t        = t;
+              best.length   = std::sqrt(L2);
+              best.point    = x;
             }
         }
-      if (best.edge == invalid)
-        return best;
-      const double reference = (reference_lengths ? (*reference_lengths)[best.edge] : best.length);
-      if (best_distance > settings.search_distance * reference)
-        return best;
-      const double snap = settings.snap_tolerance;
-      if (best_unclamped < -snap || best_unclamped > 1 + snap)
-        {
-          // beyond an end of the edge: accept only at a corner inside the side
-          const unsigned int v = side.edges[best.edge][best_unclamped < 0 ? 0 : 1];
-          const auto         it = side.degree.find(v);
-          if (it == side.degree.end() || it->second < 2)
-            return best;
-        }
-      best.found = true;
+      best.distance = best_distance;
+      // beyond an end of the side: accepted only within the merge distance
+      // of the end vertex
+      const unsigned int end_vertex = side.edges[best.edge][unclamped < 0.5 ? 0 : 1];
+      const double       beyond     = (unclamped < 0 ? -unclamped : unclamped - 1) * best.length;
+      best.inside = (beyond <= 0) || !side.is_end(end_vertex) ||
+                    beyond <= merge_fraction * side.h.at(end_vertex);
+      const Vector other_normal =
+        (best.t == 0 || best.t == 1) ? side.normal.at(side.edges[best.edge][best.t == 0 ? 0 : 1]) :
+                                       edge_normal(mesh.vertex(side.edges[best.edge][0]),
+                                                   mesh.vertex(side.edges[best.edge][1]));
+      best.facing = (other_normal * own_normal) <= -0.5;
       return best;
     }
 
     /**
-     * For each edge of @p side the length of the straight run of side edges
-     * it belongs to (consecutive collinear edges joined at a vertex of the
-     * side). Inserting vertices splits an edge into collinear pieces, so the
-     * run containing a piece is at least as long as the edge that was split:
-     * make_pairs() measures the search distance against it and so accepts
-     * every projection that insert() accepted.
+     * The point of @p side hit by the line through @p p along @p direction
+     * (the master normal at a master vertex), nearest to @p p. Master
+     * vertices are carried over to the slave side this way, and slave
+     * vertices onto the master side by their closest point, which is the
+     * same map (along the master normals) read backwards: the two cannot
+     * cross.
      */
-    std::vector<double>
-    run_lengths(const Mesh &mesh, const Side &side)
+    Projection
+    cast(const Mesh &mesh, const Side &side, const Point &p, const Vector &direction,
+         const double merge_fraction)
     {
-      const unsigned int        n = side.edges.size();
-      std::vector<unsigned int> parent(n);
-      for (unsigned int i = 0; i < n; ++i)
-        parent[i] = i;
-      const std::function<unsigned int(unsigned int)> root = [&](unsigned int i) {
-        while (parent[i] != i)
-          i = parent[i] = parent[parent[i]];
-        return i;
-      };
-      std::map<unsigned int, unsigned int> incoming, outgoing;
-      for (unsigned int i = 0; i < n; ++i)
+      Projection   best;
+      double       best_distance = std::numeric_limits<double>::max();
+      double       unclamped     = 0;
+      for (unsigned int i = 0; i < side.edges.size(); ++i)
         {
-          incoming[side.edges[i][1]] = i;
-          outgoing[side.edges[i][0]] = i;
-        }
-      const auto unit_tangent = [&](const unsigned int i) {
-        dealii::Tensor<1, 2> t = mesh.vertex(side.edges[i][1]) - mesh.vertex(side.edges[i][0]);
-        return t / t.norm();
-      };
-      for (const auto &in : incoming)
-        {
-          const auto out = outgoing.find(in.first);
-          if (out == outgoing.end() || side.degree.at(in.first) != 2)
+          const Point &a = mesh.vertex(side.edges[i][0]), &b = mesh.vertex(side.edges[i][1]);
+          const Vector d     = b - a;
+          const double L     = d.norm();
+          const double denom = cross(d, direction);
+          if (std::abs(denom) <= 1e-12 * L)
+            continue; // the line runs along the edge
+          const double t   = cross(p - a, direction) / denom;
+          const double tau = cross(p - a, d) / denom;
+          // accept hits slightly beyond the ends of the edge (decided below)
+          const double slack = merge_fraction * side.h.at(side.edges[i][t < 0.5 ? 0 : 1]) / L;
+          if (t < -slack || t > 1 + slack)
             continue;
-          const dealii::Tensor<1, 2> t1 = unit_tangent(in.second), t2 = unit_tangent(out->second);
-          if (t1 * t2 > 0 && std::abs(t1[0] * t2[1] - t1[1] * t2[0]) <= 1e-10)
-            parent[root(in.second)] = root(out->second);
+          if (std::abs(tau) < best_distance)
+            {
+              best_distance = std::abs(tau);
+              unclamped     = t;
+              best.edge     = i;
+              best.t        = std::min(1., std::max(0., t));
+              best.length   = L;
+              best.point    = a + best.t * d;
+            }
         }
-      std::vector<double> sum(n, 0.), lengths(n);
-      for (unsigned int i = 0; i < n; ++i)
-        sum[root(i)] += mesh.vertex(side.edges[i][0]).distance(mesh.vertex(side.edges[i][1]));
-      for (unsigned int i = 0; i < n; ++i)
-        lengths[i] = sum[root(i)];
-      return lengths;
-    }
-
-
-
-    /**
-     * One pass: project the vertices of @p from onto the edges of @p onto,
-     * snap or split. Vertices in @p matched (vertex of @p from -> vertex of
-     * @p onto) already have a partner and count as snapped. New matches are
-     * added to @p matched_back (vertex of @p onto -> vertex of @p from).
-     * Returns the number of accepted projections.
-     */
-    unsigned int
-    insertion_pass(Mesh                                     &mesh,
-                   const dealii::types::boundary_id          from_id,
-                   const dealii::types::boundary_id          onto_id,
-                   const std::map<unsigned int, unsigned int> &matched,
-                   std::map<unsigned int, unsigned int>     &matched_back,
-                   const NodeInsertion::Settings            &settings,
-                   unsigned int                             &n_inserted,
-                   unsigned int                             &n_snapped)
-    {
-      const Side   from = collect_side(mesh, from_id);
-      const Side   onto = collect_side(mesh, onto_id);
-      const double snap = settings.snap_tolerance;
-
-      struct Insertion
-      {
-        double           s;
-        dealii::Point<2> point;
-        unsigned int     source;
-      };
-      std::map<unsigned int, std::vector<Insertion>> insertions; // by index into onto.edges
-      unsigned int                                   n_accepted = 0;
-
-      for (const unsigned int v : from.vertices)
+      if (best.edge == invalid)
+        return best; // inside = false
+      best.distance = p.distance(best.point);
+      const unsigned int end_vertex = side.edges[best.edge][unclamped < 0.5 ? 0 : 1];
+      best.inside = (unclamped >= 0 && unclamped <= 1) || !side.is_end(end_vertex);
+      if (!best.inside)
         {
-          const auto m = matched.find(v);
-          if (m != matched.end())
-            {
-              ++n_snapped;
-              ++n_accepted;
-              continue;
-            }
-          const Projection pr = project(mesh, onto, mesh.vertex(v), settings);
-          if (!pr.found)
-            continue;
-          ++n_accepted;
-          if (pr.s <= snap || pr.s >= 1 - snap)
-            {
-              ++n_snapped;
-              const unsigned int w = onto.edges[pr.edge][pr.s <= snap ? 0 : 1];
-              if (matched_back.count(w) == 0)
-                matched_back[w] = v;
-            }
-          else
-            insertions[pr.edge].push_back({pr.s, pr.point, v});
+          // beyond an end of the side but within the merge distance of it
+          const double beyond = (unclamped < 0 ? -unclamped : unclamped - 1) * best.length;
+          best.inside         = beyond <= merge_fraction * side.h.at(end_vertex);
         }
-
-      for (auto &entry : insertions)
-        {
-          auto &list = entry.second;
-          std::sort(list.begin(), list.end(),
-                    [](const Insertion &x, const Insertion &y) { return x.s < y.s; });
-          const unsigned int a = onto.edges[entry.first][0];
-          const unsigned int b = onto.edges[entry.first][1];
-          const double       L = mesh.vertex(a).distance(mesh.vertex(b));
-          unsigned int       previous   = a;
-          double             previous_s = 0;
-          unsigned int       current    = invalid; // the mesh edge (previous, b)
-          for (const auto &ins : list)
-            {
-              if (ins.s - previous_s <= snap || ins.s >= 1 - snap)
-                {
-                  // closer than the snap tolerance to the previous point:
-                  // it shares that vertex
-                  ++n_snapped;
-                  if (previous != a && matched_back.count(previous) == 0)
-                    matched_back[previous] = ins.source;
-                  continue;
-                }
-              // the sub-edge (previous, b) contains the point
-              unsigned int e = current;
-              if (e == invalid)
-                for (unsigned int i = 0; i < mesh.n_edges(); ++i)
-                  if (key(mesh.edge(i).vertices[0], mesh.edge(i).vertices[1]) == key(previous, b))
-                    {
-                      e = i;
-                      break;
-                    }
-              AssertThrow(e != invalid,
-                          dealii::ExcInternalError("node insertion: the sub-edge from vertex " +
-                                                   std::to_string(previous) + " to vertex " +
-                                                   std::to_string(b) + " was not found."));
-              AssertThrow((ins.s - previous_s) * L > 0 && (1 - ins.s) * L > 0,
-                          dealii::ExcInternalError("node insertion would create a zero-length edge at " +
-                                                   point_string(ins.point) + "."));
-              const unsigned int v = mesh.split_edge(e, ins.point);
-              // split_edge keeps e for the piece at the edge's first vertex
-              // and appends the other piece: find the one ending at b
-              current = (key(mesh.edge(e).vertices[0], mesh.edge(e).vertices[1]) == key(v, b)) ?
-                          e :
-                          mesh.n_edges() - 1;
-              ++n_inserted;
-              matched_back[v] = ins.source;
-              previous        = v;
-              previous_s      = ins.s;
-            }
-        }
-      return n_accepted;
+      const Vector other_normal =
+        (best.t == 0 || best.t == 1) ? side.normal.at(side.edges[best.edge][best.t == 0 ? 0 : 1]) :
+                                       edge_normal(mesh.vertex(side.edges[best.edge][0]),
+                                                   mesh.vertex(side.edges[best.edge][1]));
+      best.facing = (other_normal * direction) <= -0.5;
+      return best;
     }
 
-    /// Outward unit normal of a boundary edge (a, b) in its cell's CCW order.
-    dealii::Tensor<1, 2>
-    edge_normal(const Mesh &mesh, const std::array<unsigned int, 2> &edge)
+    /// What happens to one vertex of a side.
+    struct Candidate
     {
-      dealii::Tensor<1, 2> t = mesh.vertex(edge[1]) - mesh.vertex(edge[0]);
-      t /= t.norm();
-      dealii::Tensor<1, 2> n;
-      n[0] = t[1];
-      n[1] = -t[0];
-      return n;
-    }
-
-    dealii::Tensor<1, 2>
-    tangent_of(const dealii::Tensor<1, 2> &n)
-    {
-      dealii::Tensor<1, 2> t;
-      t[0] = -n[1];
-      t[1] = n[0];
-      return t;
-    }
+      Projection projection;
+      bool       accepted = false;
+    };
   } // namespace
 
 
 
-  NodeInsertion::Report
+  NodeInsertion::Interface
   NodeInsertion::insert(PolygonalMesh<2>                &mesh,
                         const dealii::types::boundary_id master_id,
                         const dealii::types::boundary_id slave_id,
-                        const Settings                  &settings)
+                        const unsigned int               degree,
+                        const Settings                  &settings,
+                        const unsigned int               index)
   {
+    const std::string name = interface_name(master_id, slave_id);
+    AssertThrow(degree == 1 || degree == 2,
+                dealii::ExcMessage(name + "contact node pairs are implemented for order k = 1 and 2, not k = " +
+                                   std::to_string(degree) + "."));
+    Interface result;
+    result.master_id = master_id;
+    result.slave_id  = slave_id;
+    result.degree    = degree;
+    result.index     = index;
+    Report &report   = result.report;
+
+    const Side master = collect_side(mesh, master_id);
+    const Side slave  = collect_side(mesh, slave_id);
+    check_interface(mesh, master_id, slave_id, master, slave, settings);
+
+    // size of the interface: diagonal of the bounding box of both sides
+    Point lo(1e300, 1e300), hi(-1e300, -1e300);
+    for (const Side *side : {&master, &slave})
+      for (const auto &e : side->edges)
+        for (const unsigned int v : e)
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d] = std::min(lo[d], mesh.vertex(v)[d]);
+              hi[d] = std::max(hi[d], mesh.vertex(v)[d]);
+            }
+    const double search = settings.search_distance * lo.distance(hi);
+    const double f      = settings.merge_fraction;
+
+    // 1. partners: project every vertex onto the other side
+    std::map<unsigned int, Candidate> on_master, on_slave; // slave vertices onto master, and back
+    const auto propose = [&](const Side &from, const Side &onto, std::map<unsigned int, Candidate> &out,
+                             const bool from_master) {
+      for (const auto &vn : from.normal)
+        {
+          const unsigned int v = vn.first;
+          Candidate          c;
+          c.projection = from_master ? cast(mesh, onto, mesh.vertex(v), vn.second, f) :
+                                       project(mesh, onto, mesh.vertex(v), vn.second, f);
+          if (!c.projection.inside)
+            continue; // outside the overlap of the two parts
+          if (c.projection.distance > search)
+            report.unpaired.push_back({from_master, v, mesh.vertex(v),
+                                       "its distance " + number_string(c.projection.distance) +
+                                         " to the other side exceeds the search distance " +
+                                         number_string(search) + " (Search distance " +
+                                         number_string(settings.search_distance) +
+                                         " times the interface size " + number_string(lo.distance(hi)) + ")"});
+          else if (!c.projection.facing)
+            {
+              // far from the other side, a part that turns away (the flank
+              // of a cylinder above a block) is simply outside the overlap;
+              // within two edge lengths it is worth a word
+              if (c.projection.distance <= 2 * from.h.at(v))
+                report.unpaired.push_back({from_master, v, mesh.vertex(v),
+                                           "the other side does not face it there (outward normals at less "
+                                           "than 120 degrees)"});
+              continue;
+            }
+          else
+            c.accepted = true;
+          out[v] = c;
+        }
+    };
+    propose(slave, master, on_master, false);
+    propose(master, slave, on_slave, true);
+
+    // 2. merges: a vertex whose closest point lies within f h of a vertex
+    // of the other side is paired with it; closest candidates first
+    struct Merge
     {
-      const Side master = collect_side(mesh, master_id);
-      const Side slave  = collect_side(mesh, slave_id);
-      check_interface(mesh, master_id, slave_id, master, slave, settings);
-    }
+      double       distance;
+      unsigned int m, s;
+    };
+    std::vector<Merge> merges;
+    const auto         offer = [&](const Side &onto, const Side &from, const unsigned int v,
+                           const Candidate &c, const bool v_is_slave) {
+      if (!c.accepted)
+        return;
+      const unsigned int w  = onto.edges[c.projection.edge][c.projection.t <= 0.5 ? 0 : 1];
+      const double       d  = c.projection.point.distance(mesh.vertex(w));
+      const double       hl = std::min(from.h.at(v), onto.h.at(w));
+      if (d <= f * hl)
+        merges.push_back({d, v_is_slave ? w : v, v_is_slave ? v : w});
+    };
+    for (const auto &c : on_master)
+      offer(master, slave, c.first, c.second, true);
+    for (const auto &c : on_slave)
+      offer(slave, master, c.first, c.second, false);
+    std::sort(merges.begin(), merges.end(), [](const Merge &a, const Merge &b) {
+      return a.distance < b.distance || (a.distance == b.distance && VertexPair(a.m, a.s) < VertexPair(b.m, b.s));
+    });
+    std::map<unsigned int, unsigned int> master_partner, slave_partner; // vertex -> partner vertex
+    for (const auto &m : merges)
+      if (master_partner.count(m.m) == 0 && slave_partner.count(m.s) == 0)
+        {
+          master_partner[m.m] = m.s;
+          slave_partner[m.s]  = m.m;
+          ++report.n_merged;
+        }
+    std::set<unsigned int> merged_master, merged_slave;
+    for (const auto &p : master_partner)
+      merged_master.insert(p.first);
+    for (const auto &p : slave_partner)
+      merged_slave.insert(p.first);
 
-    Report report;
-    // master vertex -> slave vertex it came from or snapped to (pass 1)
-    std::map<unsigned int, unsigned int> master_to_slave;
-    // slave vertex -> master vertex (pass 2); unused afterwards
-    std::map<unsigned int, unsigned int> slave_to_master;
-    const std::map<unsigned int, unsigned int> none;
+    // 3. splits: the other accepted vertices split the edge they project on
+    struct Inserted
+    {
+      unsigned int vertex;  ///< the new vertex
+      unsigned int partner; ///< its partner on the other side
+      double       deviation; ///< chord deviation bound at the new vertex
+      double       kappa;     ///< curvature of the side that received it
+      bool         on_master;
+    };
+    std::vector<Inserted> inserted;
+    const auto split_side = [&](const Side &onto, const Side &from, std::map<unsigned int, Candidate> &cands,
+                                std::map<unsigned int, unsigned int> &partner_onto,
+                                std::map<unsigned int, unsigned int> &partner_from, const bool onto_master) {
+      std::map<unsigned int, std::vector<std::pair<double, unsigned int>>> by_edge; // edge -> (t, vertex)
+      for (const auto &c : cands)
+        if (c.second.accepted && partner_from.count(c.first) == 0)
+          {
+            const auto &pr = c.second.projection;
+            if (pr.t <= 0 || pr.t >= 1)
+              {
+                const unsigned int w = onto.edges[pr.edge][pr.t <= 0 ? 0 : 1];
+                report.unpaired.push_back({!onto_master, c.first, mesh.vertex(c.first),
+                                           "its closest point on the other side is vertex " + std::to_string(w) +
+                                             " " + point_string(mesh.vertex(w)) +
+                                             ", which is already paired with a closer node"});
+                continue;
+              }
+            by_edge[pr.edge].emplace_back(pr.t, c.first);
+          }
+      for (auto &entry : by_edge)
+        {
+          auto &list = entry.second;
+          std::sort(list.begin(), list.end());
+          const unsigned int a = onto.edges[entry.first][0], b = onto.edges[entry.first][1];
+          const Point        xa = mesh.vertex(a), xb = mesh.vertex(b);
+          const double       L  = xa.distance(xb);
+          const double       kappa = onto.edge_kappa[entry.first];
+          const double       kappa_raw = onto.edge_kappa_raw[entry.first];
+          unsigned int       e        = onto.edge_indices[entry.first]; // the piece (previous, b)
+          double             previous = 0;
+          std::vector<std::pair<unsigned int, Point>> moves; // after all splits of this edge
+          for (unsigned int i = 0; i < list.size(); ++i)
+            {
+              const double       t    = list[i].first;
+              const unsigned int v    = list[i].second;
+              const double       hl   = std::min(from.h.at(v), L);
+              if ((t - previous) * L < 1e-3 * hl || (1 - t) * L < 1e-3 * hl)
+                {
+                  report.unpaired.push_back({!onto_master, v, mesh.vertex(v),
+                                             "it lies within 1e-3 of an edge length of another node on the "
+                                             "other side (a sub-edge that short would be created)"});
+                  continue;
+                }
+              const unsigned int nv = mesh.split_edge(e, xa + t * (xb - xa));
+              // split_edge keeps e for (previous, nv) and appends (nv, b)
+              e = mesh.n_edges() - 1;
+              // on a smooth curve, the new vertex goes onto the circle of the
+              // side's curvature instead of the chord
+              const double deviation = 0.5 * t * (1 - t) * L * L * kappa;
+              if (deviation != 0)
+                moves.emplace_back(nv, mesh.vertex(nv) + deviation * edge_normal(xa, xb));
+              partner_onto[nv] = v;
+              partner_from[v]  = nv;
+              inserted.push_back({nv, v, 0.5 * t * (1 - t) * L * L * std::abs(kappa_raw), kappa_raw,
+                                  onto_master});
+              previous = t;
+              ++(onto_master ? report.n_inserted_master : report.n_inserted_slave);
+            }
+          for (const auto &m : moves)
+            mesh.move_vertex(m.first, m.second);
+        }
+    };
+    split_side(master, slave, on_master, master_partner, slave_partner, true);
+    split_side(slave, master, on_slave, slave_partner, master_partner, false);
 
-    // pass 1: slave vertices onto master edges
-    const unsigned int n1 = insertion_pass(mesh, slave_id, master_id, none, master_to_slave, settings,
-                                           report.n_inserted_master, report.n_snapped);
-    // pass 2: master vertices onto slave edges; vertices that came from (or
-    // snapped to) a slave vertex in pass 1 already have their partner and
-    // count as snapped
-    const unsigned int n2 = insertion_pass(mesh, master_id, slave_id, master_to_slave, slave_to_master,
-                                           settings, report.n_inserted_slave, report.n_snapped);
+    // 4. close discretisation gaps
+    if (settings.close_discretisation_gaps)
+      {
+        const auto kappa_of = [&](const Side &side, const unsigned int v, const Inserted *ins) {
+          return ins ? ins->kappa : side.kappa_raw.at(v);
+        };
+        std::map<unsigned int, const Inserted *> by_vertex;
+        for (const auto &ins : inserted)
+          by_vertex[ins.vertex] = &ins;
+        const Side master_now = collect_side(mesh, master_id);
+        for (const auto &mp : master_partner)
+          {
+            const unsigned int m = mp.first, s = mp.second;
+            const auto         im = by_vertex.find(m), is = by_vertex.find(s);
+            const Inserted    *ins = (im != by_vertex.end() ? im->second : (is != by_vertex.end() ? is->second : nullptr));
+            const double       km = kappa_of(master, m, im != by_vertex.end() ? im->second : nullptr);
+            const double       ks = kappa_of(slave, s, is != by_vertex.end() ? is->second : nullptr);
+            const bool         same_curve = std::abs(km + ks) <= 0.5 * std::max(std::abs(km), std::abs(ks));
+            const Point        xm = mesh.vertex(m), xs = mesh.vertex(s);
+            const double       g0 = (xs - xm) * master_now.normal.at(m);
+            const double       tol =
+              (same_curve && ins ? settings.curvature_factor * ins->deviation : 0.) +
+              settings.coordinate_precision * (std::abs(xs[0]) + std::abs(xs[1])) +
+              1e-12 * std::min(master_now.h.at(m), slave.h.count(s) ? slave.h.at(s) : master_now.h.at(m));
+            if (std::abs(g0) > tol)
+              {
+                // a real gap: keep it, but put two merged vertices opposite
+                // each other along the master normal (the slave vertex onto
+                // the point of its side that the master normal hits, on
+                // the side's circle where it is curved)
+                if (!ins)
+                  {
+                    const auto align = [&](const Side &side, const Projection &pr, const unsigned int v) {
+                      const Point &a = mesh.vertex(side.edges[pr.edge][0]), &b = mesh.vertex(side.edges[pr.edge][1]);
+                      Point        x = pr.point;
+                      if (pr.t > 0 && pr.t < 1)
+                        x += 0.5 * pr.t * (1 - pr.t) * a.distance_square(b) * side.edge_kappa[pr.edge] *
+                             edge_normal(a, b);
+                      report.max_merge_shift = std::max(report.max_merge_shift, x.distance(mesh.vertex(v)));
+                      mesh.move_vertex(v, x);
+                    };
+                    const auto cm = on_slave.find(m), cs = on_master.find(s);
+                    if (!slave.is_end(s) && cm != on_slave.end() && cm->second.accepted)
+                      align(slave, cm->second.projection, s);
+                    else if (!master.is_end(m) && cs != on_master.end() && cs->second.accepted)
+                      align(master, cs->second.projection, m);
+                  }
+                continue;
+              }
+            // move the new vertex onto the old one; of two old vertices the
+            // slave one, unless only the slave vertex ends its side
+            bool move_master = (im != by_vertex.end());
+            if (!ins)
+              move_master = slave.is_end(s) && !master.is_end(m);
+            if (move_master)
+              mesh.move_vertex(m, xs);
+            else
+              mesh.move_vertex(s, xm);
+            if (!ins)
+              report.max_merge_shift = std::max(report.max_merge_shift, xm.distance(xs));
+            ++report.n_closed_gaps;
+            report.max_closed_gap = std::max(report.max_closed_gap, std::abs(g0));
+          }
+      }
+    try
+      {
+        mesh.validate();
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false, dealii::ExcMessage(name + "moving the interface vertices onto their partners "
+                                                     "made a cell invalid (the meshes of the two sides are too "
+                                                     "far apart for their cells, or too coarse for the curvature): " +
+                                              std::string(e.what())));
+      }
 
-    AssertThrow(n1 + n2 > 0,
-                dealii::ExcMessage(interface_name(master_id, slave_id) +
-                                   "the boundary parts do not face or overlap each other within the "
-                                   "search distance (" +
-                                   number_string(settings.search_distance) +
-                                   " times the edge length) in mesh '" + mesh.name + "'."));
+    AssertThrow(!master_partner.empty(),
+                dealii::ExcMessage(name + "the boundary parts do not face or overlap each other within the "
+                                          "search distance (" +
+                                   number_string(settings.search_distance) + " times the interface size " +
+                                   number_string(lo.distance(hi)) + ") in mesh '" + mesh.name + "'."));
 
-    report.n_master_edges = collect_side(mesh, master_id).edges.size();
-    report.n_slave_edges  = collect_side(mesh, slave_id).edges.size();
-    return report;
+    // 5. pairs in the order of the slave side, and the paired sub-edges
+    const Side master_after = collect_side(mesh, master_id);
+    const Side slave_after  = collect_side(mesh, slave_id);
+    report.n_master_edges   = master_after.edges.size();
+    report.n_slave_edges    = slave_after.edges.size();
+
+    // does the boundary of the body go on smoothly beyond the end vertex v
+    // of a side (the part was cut out of a smooth boundary)?
+    std::map<unsigned int, std::vector<unsigned int>> boundary_edges_at;
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      if (mesh.edge(e).at_boundary())
+        for (const unsigned int v : mesh.edge(e).vertices)
+          boundary_edges_at[v].push_back(e);
+    const auto continues_smoothly = [&](const Side &side, const unsigned int v) {
+      if (!side.is_end(v))
+        return true;
+      const auto         own = side.outgoing.count(v) ? side.outgoing.at(v) : side.incoming.at(v);
+      const unsigned int own_mesh_edge = side.edge_indices[own];
+      for (const unsigned int e : boundary_edges_at[v])
+        if (e != own_mesh_edge && mesh.edge(e).boundary_id != side.id)
+          {
+            const auto  &ev = mesh.edge(e).vertices;
+            const auto  &ov = side.edges[own];
+            const Vector d_own   = mesh.vertex(ov[1]) - mesh.vertex(ov[0]);
+            const Vector d_other = mesh.vertex(ev[1]) - mesh.vertex(ev[0]);
+            const double c = (d_own * d_other) / (d_own.norm() * d_other.norm());
+            if (c >= std::cos(30. * M_PI / 180.))
+              return true;
+          }
+      return false;
+    };
+
+    for (unsigned int c = 0; c < slave_after.chains.size(); ++c)
+      {
+        const auto        &chain = slave_after.chains[c];
+        const unsigned int n     = chain.size();
+        const unsigned int n_edges_in_chain = slave_after.closed[c] ? n : n - 1;
+        // vertex pair index of each chain vertex (created lazily)
+        std::vector<unsigned int> pair_of(n, invalid);
+        unsigned int              run_start = invalid, last = invalid;
+        const auto                close_run = [&]() {
+          if (run_start == invalid)
+            return;
+          if (run_start == last && slave_after.closed[c])
+            {
+              run_start = invalid; // a whole closed loop: no ends
+              return;
+            }
+          for (const unsigned int p : {run_start, last})
+            {
+              auto &pair = result.pairs[p];
+              if (continues_smoothly(slave_after, pair.slave_entity) &&
+                  continues_smoothly(master_after, pair.master_entity))
+                pair.at_open_end = true;
+            }
+          run_start = invalid;
+        };
+        const auto vertex_pair = [&](const unsigned int i) {
+          if (pair_of[i] == invalid)
+            {
+              ContactNodePair p;
+              p.master_entity = slave_partner.at(chain[i]);
+              p.slave_entity  = chain[i];
+              p.interface     = index;
+              pair_of[i]      = result.pairs.size();
+              result.pairs.push_back(p);
+            }
+          return pair_of[i];
+        };
+        for (unsigned int i = 0; i < n_edges_in_chain; ++i)
+          {
+            const unsigned int sa = chain[i], sb = chain[(i + 1) % n];
+            const auto         pa = slave_partner.find(sa), pb = slave_partner.find(sb);
+            const bool         paired = pa != slave_partner.end() && pb != slave_partner.end() &&
+                                master_after.edge_by_pair.count(key(pa->second, pb->second));
+            if (!paired)
+              {
+                close_run();
+                continue;
+              }
+            ContactSegment seg;
+            seg.first = vertex_pair(i);
+            if (run_start == invalid)
+              run_start = seg.first;
+            if (degree == 2)
+              {
+                ContactNodePair p;
+                p.master_entity =
+                  master_after.edge_indices[master_after.edge_by_pair.at(key(pa->second, pb->second))];
+                p.slave_entity = slave_after.edge_indices[slave_after.edge_by_pair.at(key(sa, sb))];
+                p.is_midpoint  = true;
+                p.interface    = index;
+                seg.midpoint   = result.pairs.size();
+                result.pairs.push_back(p);
+              }
+            seg.second = vertex_pair((i + 1) % n);
+            last       = seg.second;
+            result.segments.push_back(seg);
+          }
+        close_run();
+        for (unsigned int i = 0; i < n; ++i)
+          if (slave_partner.count(chain[i]) && pair_of[i] == invalid)
+            report.unpaired.push_back({false, chain[i], mesh.vertex(chain[i]),
+                                       "none of its slave edges has both ends paired (the overlap there is "
+                                       "shorter than one edge)"});
+      }
+    update_geometry(mesh, result);
+    return result;
   }
 
 
 
-  std::vector<ContactNodePair>
-  NodeInsertion::make_pairs(const PolygonalMesh<2>          &mesh,
-                            const dealii::types::boundary_id master_id,
-                            const dealii::types::boundary_id slave_id,
-                            const unsigned int               degree,
-                            const Settings                  &settings,
-                            const unsigned int               interface)
+  void
+  NodeInsertion::update_geometry(const PolygonalMesh<2> &mesh, Interface &interface)
   {
-    AssertThrow(degree == 1 || degree == 2,
-                dealii::ExcMessage(interface_name(master_id, slave_id) +
-                                   "contact node pairs are implemented for order k = 1 and 2, not k = " +
-                                   std::to_string(degree) + "."));
-    const Side master = collect_side(mesh, master_id);
-    const Side slave  = collect_side(mesh, slave_id);
-    check_interface(mesh, master_id, slave_id, master, slave, settings);
-    const double snap = settings.snap_tolerance;
-    // the search distance is measured against the straight runs of edges,
-    // i.e. against the edges before insertion (see run_lengths())
-    const std::vector<double> master_runs = run_lengths(mesh, master);
-    const std::vector<double> slave_runs  = run_lengths(mesh, slave);
-
-    // candidate partners: (slave vertex, master vertex, distance)
-    std::map<unsigned int, std::pair<unsigned int, double>> partner; // slave -> (master, distance)
-    const auto offer = [&](const unsigned int s, const unsigned int m) {
-      const double d  = mesh.vertex(s).distance(mesh.vertex(m));
-      const auto   it = partner.find(s);
-      if (it == partner.end() || d < it->second.second)
-        partner[s] = {m, d};
-    };
-    // the slave vertex projects onto (the snap tolerance of) a master vertex
-    for (const unsigned int s : slave.vertices)
+    const Side master = collect_side(mesh, interface.master_id);
+    for (auto &p : interface.pairs)
       {
-        const Projection pr = project(mesh, master, mesh.vertex(s), settings, &master_runs);
-        if (!pr.found)
-          continue;
-        if (pr.s <= snap)
-          offer(s, master.edges[pr.edge][0]);
-        else if (pr.s >= 1 - snap)
-          offer(s, master.edges[pr.edge][1]);
-      }
-    // the master vertex projects onto a slave vertex (curved master sides,
-    // where the projection of the slave vertex is not the master vertex)
-    for (const unsigned int m : master.vertices)
-      {
-        const Projection pr = project(mesh, slave, mesh.vertex(m), settings, &slave_runs);
-        if (!pr.found)
-          continue;
-        unsigned int s = invalid;
-        if (pr.s <= snap)
-          s = slave.edges[pr.edge][0];
-        else if (pr.s >= 1 - snap)
-          s = slave.edges[pr.edge][1];
-        if (s != invalid && partner.count(s) == 0)
-          offer(s, m);
-      }
-    // each master vertex has at most one partner: the closest slave vertex
-    {
-      std::map<unsigned int, std::pair<unsigned int, double>> best; // master -> (slave, distance)
-      for (const auto &p : partner)
-        {
-          const auto it = best.find(p.second.first);
-          if (it == best.end() || p.second.second < it->second.second)
-            best[p.second.first] = {p.first, p.second.second};
-        }
-      std::map<unsigned int, std::pair<unsigned int, double>> unique;
-      for (const auto &b : best)
-        unique[b.second.first] = {b.first, b.second.second};
-      partner = unique;
-    }
-
-    // master normal at a vertex: average of the adjacent master edge normals
-    std::map<unsigned int, dealii::Tensor<1, 2>> master_normal;
-    for (const auto &e : master.edges)
-      {
-        const dealii::Tensor<1, 2> n = edge_normal(mesh, e);
-        master_normal[e[0]] += n;
-        master_normal[e[1]] += n;
-      }
-    for (auto &n : master_normal)
-      n.second /= n.second.norm();
-
-    // order along the slave side: follow the chains of slave edges (each
-    // edge runs from vertex [0] to vertex [1] in its cell's CCW order)
-    std::map<unsigned int, std::vector<unsigned int>> outgoing; // vertex -> indices into slave.edges
-    std::map<unsigned int, unsigned int>              n_incoming;
-    for (unsigned int i = 0; i < slave.edges.size(); ++i)
-      {
-        outgoing[slave.edges[i][0]].push_back(i);
-        ++n_incoming[slave.edges[i][1]];
-      }
-    std::map<unsigned int, unsigned int> vertex_order, edge_order;
-    {
-      std::vector<bool> visited(slave.edges.size(), false);
-      unsigned int      counter = 0;
-      const auto        walk    = [&](unsigned int v) {
-        if (vertex_order.count(v) == 0)
-          vertex_order[v] = counter++;
-        while (true)
+        if (p.is_midpoint)
           {
-            unsigned int next = invalid;
-            const auto   it   = outgoing.find(v);
-            if (it != outgoing.end())
-              for (const unsigned int i : it->second)
-                if (!visited[i])
-                  {
-                    next = i;
-                    break;
-                  }
-            if (next == invalid)
-              break;
-            visited[next]    = true;
-            edge_order[next] = counter++;
-            v                = slave.edges[next][1];
-            if (vertex_order.count(v) == 0)
-              vertex_order[v] = counter++;
+            const auto &me = mesh.edge(p.master_entity).vertices, &se = mesh.edge(p.slave_entity).vertices;
+            p.master_location = 0.5 * (mesh.vertex(me[0]) + mesh.vertex(me[1]));
+            p.slave_location  = 0.5 * (mesh.vertex(se[0]) + mesh.vertex(se[1]));
+            p.normal          = edge_normal(mesh.vertex(me[0]), mesh.vertex(me[1]));
           }
-      };
-      // open chains first (from the vertices without incoming edge), then
-      // closed loops
-      for (const unsigned int v : slave.vertices)
-        if (n_incoming.count(v) == 0)
-          walk(v);
-      for (unsigned int i = 0; i < slave.edges.size(); ++i)
-        if (!visited[i])
-          walk(slave.edges[i][0]);
-    }
-
-    std::vector<std::pair<unsigned int, ContactNodePair>> ordered;
-
-    // vertex pairs
-    std::map<unsigned int, double> weight;
-    for (const auto &e : slave.edges)
-      if (partner.count(e[0]) && partner.count(e[1]))
-        {
-          const double L = mesh.vertex(e[0]).distance(mesh.vertex(e[1]));
-          const double w = (degree == 1 ? L / 2 : L / 6);
-          weight[e[0]] += w;
-          weight[e[1]] += w;
-        }
-    for (const auto &p : partner)
-      {
-        const auto w = weight.find(p.first);
-        if (w == weight.end() || !(w->second > 0))
-          continue; // isolated node: no paired sub-edge
-        ContactNodePair pair;
-        pair.master_entity   = p.second.first;
-        pair.slave_entity    = p.first;
-        pair.is_midpoint     = false;
-        pair.master_location = mesh.vertex(pair.master_entity);
-        pair.slave_location  = mesh.vertex(pair.slave_entity);
-        pair.normal          = master_normal.at(pair.master_entity);
-        pair.tangent         = tangent_of(pair.normal);
-        pair.initial_gap     = (pair.slave_location - pair.master_location) * pair.normal;
-        pair.weight          = w->second;
-        pair.interface       = interface;
-        ordered.emplace_back(vertex_order.at(p.first), pair);
+        else
+          {
+            p.master_location = mesh.vertex(p.master_entity);
+            p.slave_location  = mesh.vertex(p.slave_entity);
+            const auto n      = master.normal.find(p.master_entity);
+            AssertThrow(n != master.normal.end(),
+                        dealii::ExcInternalError("node insertion: master vertex " + std::to_string(p.master_entity) +
+                                                 " is not on the master side."));
+            p.normal = n->second;
+          }
+        p.tangent     = tangent_of(p.normal);
+        p.initial_gap = (p.slave_location - p.master_location) * p.normal;
+        p.weight      = 0;
       }
-
-    // midpoint pairs
-    if (degree == 2)
-      for (unsigned int i = 0; i < slave.edges.size(); ++i)
-        {
-          const auto &e  = slave.edges[i];
-          const auto  pa = partner.find(e[0]), pb = partner.find(e[1]);
-          if (pa == partner.end() || pb == partner.end())
-            continue;
-          const auto me = master.edge_by_pair.find(key(pa->second.first, pb->second.first));
-          if (me == master.edge_by_pair.end())
-            continue;
-          const auto &medge = mesh.edge(me->second).vertices;
-          ContactNodePair pair;
-          pair.master_entity   = me->second;
-          pair.slave_entity    = slave.edge_indices[i];
-          pair.is_midpoint     = true;
-          pair.master_location = 0.5 * (mesh.vertex(medge[0]) + mesh.vertex(medge[1]));
-          pair.slave_location  = 0.5 * (mesh.vertex(e[0]) + mesh.vertex(e[1]));
-          pair.normal          = edge_normal(mesh, medge);
-          pair.tangent         = tangent_of(pair.normal);
-          pair.initial_gap     = (pair.slave_location - pair.master_location) * pair.normal;
-          pair.weight          = 2. / 3. * mesh.vertex(e[0]).distance(mesh.vertex(e[1]));
-          pair.interface       = interface;
-          ordered.emplace_back(edge_order.at(i), pair);
-        }
-
-    std::sort(ordered.begin(), ordered.end(),
-              [](const auto &x, const auto &y) { return x.first < y.first; });
-    std::vector<ContactNodePair> pairs;
-    pairs.reserve(ordered.size());
-    for (const auto &o : ordered)
-      pairs.push_back(o.second);
-    return pairs;
+    for (auto &s : interface.segments)
+      {
+        s.length = interface.pairs[s.first].slave_location.distance(interface.pairs[s.second].slave_location);
+        const double end_weight = (interface.degree == 1 ? 0.5 : 1. / 6.) * s.length;
+        interface.pairs[s.first].weight += end_weight;
+        interface.pairs[s.second].weight += end_weight;
+        if (s.midpoint != invalid)
+          interface.pairs[s.midpoint].weight += 2. / 3. * s.length;
+      }
   }
 } // namespace dealvem

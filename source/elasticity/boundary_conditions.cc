@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -156,6 +157,45 @@ namespace dealvem
 
 
 
+    namespace
+    {
+      // "Point constraint at (p)" plus the parameter entry, for messages
+      template <int dim>
+      std::string
+      point_constraint_label(const dealii::Point<dim> &p, const std::string &name)
+      {
+        std::ostringstream s;
+        s << "Point constraint at (" << p << ")";
+        if (!name.empty())
+          s << " (parameter '" << name << "')";
+        return s.str();
+      }
+
+      std::string
+      origin_of(const dealii::types::global_dof_index dof, const ConstraintOrigins *origins)
+      {
+        if (origins != nullptr)
+          if (const auto it = origins->find(dof); it != origins->end())
+            return it->second;
+        return "an earlier condition";
+      }
+
+      // the body (material id) of each vertex
+      template <int dim>
+      std::vector<dealii::types::material_id>
+      vertex_bodies(const PolygonalMesh<dim> &mesh)
+      {
+        std::vector<dealii::types::material_id> body(mesh.n_vertices(),
+                                                     dealii::numbers::invalid_material_id);
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          for (const auto v : mesh.cell(c).vertices)
+            body[v] = mesh.cell(c).material_id;
+        return body;
+      }
+    } // namespace
+
+
+
     template <int dim>
     unsigned int
     add_point_constraint(const VEMDoFHandler<dim>          &dof_handler,
@@ -163,37 +203,241 @@ namespace dealvem
                          const unsigned int                 component,
                          const double                       value,
                          dealii::AffineConstraints<double> &constraints,
-                         const double                       relative_tolerance)
+                         const double                       relative_tolerance,
+                         const dealii::types::material_id   body,
+                         const std::string                 &name,
+                         const ConstraintOrigins           *origins)
     {
-      const auto &mesh = dof_handler.get_mesh();
+      const auto       &mesh  = dof_handler.get_mesh();
+      const std::string label = point_constraint_label(p, name);
       AssertThrow(component < 2,
-                  dealii::ExcMessage("Point constraint: component must be 0 (x) or 1 (y), got " +
+                  dealii::ExcMessage(label + ": component must be 0 (x) or 1 (y), got " +
                                      std::to_string(component) + "."));
-      unsigned int best = dealii::numbers::invalid_unsigned_int;
-      double       dist = std::numeric_limits<double>::max();
+      AssertThrow(std::isfinite(value),
+                  dealii::ExcMessage(label + ": the value is not a finite number."));
+      const auto bodies   = vertex_bodies(mesh);
+      const bool any_body = (body == dealii::numbers::invalid_material_id);
+      AssertThrow(any_body || std::find(bodies.begin(), bodies.end(), body) != bodies.end(),
+                  dealii::ExcMessage(label + ": no cell of mesh '" + mesh.name + "' has material id (body) " +
+                                     std::to_string(int(body)) + "."));
+      const double tolerance = relative_tolerance * mesh.cell_diameter_range().first;
+      unsigned int best      = dealii::numbers::invalid_unsigned_int;
+      double       dist      = std::numeric_limits<double>::max();
+      std::set<dealii::types::material_id> bodies_at_point;
       for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-        if (mesh.vertex(v).distance(p) < dist)
-          {
-            dist = mesh.vertex(v).distance(p);
-            best = v;
-          }
-      const double       h = mesh.cell_diameter_range().first;
+        {
+          if (!any_body && bodies[v] != body)
+            continue;
+          const double d = mesh.vertex(v).distance(p);
+          if (d <= tolerance)
+            bodies_at_point.insert(bodies[v]);
+          if (d < dist)
+            {
+              dist = d;
+              best = v;
+            }
+        }
       std::ostringstream msg;
-      msg << "Point constraint at (" << p << ") on mesh '" << mesh.name
-          << "': no mesh vertex there";
+      msg << label << " on mesh '" << mesh.name << "': no mesh vertex there";
+      if (!any_body)
+        msg << " among the vertices of body " << int(body);
       if (best != dealii::numbers::invalid_unsigned_int)
-        msg << " (nearest vertex " << best << " at (" << mesh.vertex(best)
-            << "), distance " << dist << ")";
+        msg << " (nearest vertex " << best << " at (" << mesh.vertex(best) << "), distance " << dist
+            << ")";
       msg << ".";
-      AssertThrow(best != dealii::numbers::invalid_unsigned_int && dist <= relative_tolerance * h,
+      AssertThrow(best != dealii::numbers::invalid_unsigned_int && dist <= tolerance,
                   dealii::ExcMessage(msg.str()));
-      const auto dof = VEMDoFHandler<dim>::node_dof(best, component);
+      if (any_body && bodies_at_point.size() > 1)
+        {
+          std::ostringstream m;
+          m << label << " on mesh '" << mesh.name << "': vertices of several bodies (material ids";
+          for (const auto b : bodies_at_point)
+            m << " " << int(b);
+          m << ") lie at this point. Name the body with a fourth field: "
+               "'x, y : component : value : body'.";
+          AssertThrow(false, dealii::ExcMessage(m.str()));
+        }
+      const auto dof = VEMDoFHandler<dim>::node_dof(dof_handler.vertex_node(best), component);
       if (!constraints.is_constrained(dof))
         {
           constraints.add_line(dof);
           constraints.set_inhomogeneity(dof, value);
+          return best;
+        }
+      // constrained already: accept only the same fixed value
+      const auto  *entries  = constraints.get_constraint_entries(dof);
+      const bool   coupled  = entries != nullptr && !entries->empty();
+      const double existing = constraints.get_inhomogeneity(dof);
+      const bool   same =
+        !coupled && (existing == value ||
+                     std::abs(existing - value) <= 1e-12 * std::max(std::abs(existing), std::abs(value)));
+      if (!same)
+        {
+          std::ostringstream m;
+          m << label << " on mesh '" << mesh.name << "': component " << (component == 0 ? "x" : "y")
+            << " of vertex " << best << " at (" << mesh.vertex(best) << ") is already constrained by "
+            << origin_of(dof, origins);
+          if (coupled)
+            m << ", which couples it to other displacement components, so the value " << value
+              << " cannot be imposed on its own.";
+          else
+            m << " to the value " << existing << ", which conflicts with the value " << value << ".";
+          AssertThrow(false, dealii::ExcMessage(m.str()));
         }
       return best;
+    }
+
+
+
+    template <int dim>
+    RigidBoundary<dim>
+    rigid_boundary_geometry(const VEMDoFHandler<dim> &dof_handler, const dealii::types::boundary_id id)
+    {
+      const auto        &mesh = dof_handler.get_mesh();
+      RigidBoundary<dim> part;
+      part.id     = id;
+      part.length = 0;
+      dealii::Tensor<1, dim> moment;
+      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+        {
+          const auto &edge = mesh.edge(e);
+          if (!edge.at_boundary() || edge.boundary_id != id)
+            continue;
+          const auto  &a = mesh.vertex(edge.vertices[0]);
+          const auto  &b = mesh.vertex(edge.vertices[1]);
+          const double L = a.distance(b);
+          part.length += L;
+          moment += L * 0.5 * ((a - dealii::Point<dim>()) + (b - dealii::Point<dim>()));
+        }
+      AssertThrow(part.length > 0,
+                  dealii::ExcMessage("Rigid boundary: no boundary edge of mesh '" + mesh.name +
+                                     "' has boundary id " + std::to_string(int(id)) + "."));
+      part.centroid = dealii::Point<dim>() + moment / part.length;
+      part.nodes    = dof_handler.boundary_nodes({id});
+      // A: nearest to the centroid; B: farthest from A (first one on ties)
+      double best = std::numeric_limits<double>::max();
+      for (const auto n : part.nodes)
+        if (const double d = dof_handler.node_location(n).distance(part.centroid); d < best)
+          {
+            best        = d;
+            part.node_a = n;
+          }
+      part.point_a = dof_handler.node_location(part.node_a);
+      best         = -1;
+      for (const auto n : part.nodes)
+        if (const double d = dof_handler.node_location(n).distance(part.point_a); d > best)
+          {
+            best        = d;
+            part.node_b = n;
+          }
+      part.point_b                 = dof_handler.node_location(part.node_b);
+      const auto d                 = part.point_b - part.point_a;
+      part.b_free_component        = (std::abs(d[0]) >= std::abs(d[1]) ? 1 : 0);
+      return part;
+    }
+
+
+
+    template <int dim>
+    RigidBoundary<dim>
+    add_rigid_boundary(const VEMDoFHandler<dim>          &dof_handler,
+                       const dealii::types::boundary_id   id,
+                       dealii::AffineConstraints<double> &constraints,
+                       const std::string                 &name,
+                       const ConstraintOrigins           *origins)
+    {
+      const auto part  = rigid_boundary_geometry(dof_handler, id);
+      const auto label = (name.empty() ? "Rigid boundary id " + std::to_string(int(id)) :
+                                         "Parameter '" + name + "'");
+      using dof_type   = dealii::types::global_dof_index;
+      const unsigned int o = part.b_free_component, c_b = 1 - o;
+      const dof_type     a_dof[2] = {VEMDoFHandler<dim>::node_dof(part.node_a, 0),
+                                     VEMDoFHandler<dim>::node_dof(part.node_a, 1)};
+      const dof_type     b_free   = VEMDoFHandler<dim>::node_dof(part.node_b, o);
+
+      // collisions with earlier constraints
+      auto collision = [&](const unsigned int node, const unsigned int c, const std::string &why) {
+        std::ostringstream m;
+        m << label << " on mesh '" << dof_handler.get_mesh().name << "': component "
+          << (c == 0 ? "x" : "y") << " of the node at (" << dof_handler.node_location(node)
+          << ") is already constrained by " << origin_of(VEMDoFHandler<dim>::node_dof(node, c), origins)
+          << ". " << why;
+        AssertThrow(false, dealii::ExcMessage(m.str()));
+      };
+      for (const auto node : part.nodes)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            const auto dof = VEMDoFHandler<dim>::node_dof(node, c);
+            if (!constraints.is_constrained(dof))
+              continue;
+            const bool reference = (node == part.node_a) || (node == part.node_b && c == o);
+            if (!reference)
+              collision(node, c,
+                        "A rigid boundary may share constrained DoFs with other conditions only at "
+                        "its reference nodes A (the node nearest to its centroid) and B (the node "
+                        "farthest from A), and only in the component of B normal to AB.");
+            if (const auto *entries = constraints.get_constraint_entries(dof))
+              for (const auto &e : *entries)
+                if (e.first / 2 != node)
+                  collision(node, c,
+                            "That constraint couples the node to other nodes; a reference node of a "
+                            "rigid boundary may carry only constraints of its own displacement.");
+          }
+
+      // the lines: u_{i,c} = u_{A,c} + theta perp(x_i - x_A)_c with
+      // theta = (u_{B,o} - u_{A,o}) / p_o, coefficients merged per DoF
+      const auto   d   = part.point_b - part.point_a;
+      const double p_o = (o == 0 ? -d[1] : d[0]);
+      std::vector<std::pair<dof_type, double>> entries;
+      auto write_line = [&](const unsigned int node, const unsigned int c) {
+        const auto   r      = dof_handler.node_location(node) - part.point_a;
+        const double perp_c = (c == 0 ? -r[1] : r[0]);
+        const double s      = perp_c / p_o;
+        std::map<dof_type, double> coefficients;
+        coefficients[a_dof[c]] += 1.;
+        coefficients[b_free] += s;
+        coefficients[a_dof[o]] -= s;
+        entries.clear();
+        for (const auto &e : coefficients)
+          if (e.second != 0.)
+            entries.emplace_back(e);
+        const auto dof = VEMDoFHandler<dim>::node_dof(node, c);
+        constraints.add_line(dof);
+        constraints.add_entries(dof, entries);
+      };
+      for (const auto node : part.nodes)
+        {
+          if (node == part.node_a)
+            continue;
+          if (node == part.node_b)
+            write_line(node, c_b);
+          else
+            for (unsigned int c = 0; c < 2; ++c)
+              write_line(node, c);
+        }
+      return part;
+    }
+
+
+
+    template <int dim>
+    std::vector<std::pair<dealii::types::global_dof_index, double>>
+    rigid_boundary_load(const RigidBoundary<dim>     &part,
+                        const dealii::Tensor<1, dim> &force,
+                        const double                  moment)
+    {
+      // work = F.u_A + theta (F.perp(x_0 - x_A) + M), theta = (u_{B,o} - u_{A,o}) / p_o
+      const unsigned int o  = part.b_free_component;
+      const auto         d  = part.point_b - part.point_a;
+      const auto         r  = part.centroid - part.point_a;
+      const double       p_o = (o == 0 ? -d[1] : d[0]);
+      const double       T   = -force[0] * r[1] + force[1] * r[0] + moment;
+      std::map<dealii::types::global_dof_index, double> f;
+      f[VEMDoFHandler<dim>::node_dof(part.node_a, 0)] += force[0];
+      f[VEMDoFHandler<dim>::node_dof(part.node_a, 1)] += force[1];
+      f[VEMDoFHandler<dim>::node_dof(part.node_a, o)] -= T / p_o;
+      f[VEMDoFHandler<dim>::node_dof(part.node_b, o)] += T / p_o;
+      return {f.begin(), f.end()};
     }
 
 
@@ -233,6 +477,10 @@ namespace dealvem
           if (node >= node_body.size())
             continue;
           Eigen::Vector3d row;
+          // size of the terms, to tell a restraint from round-off
+          double magnitude = 1;
+          for (const auto &entry : line.entries)
+            magnitude += std::abs(entry.second);
           for (unsigned int m = 0; m < 3; ++m)
             {
               double r = modes[m][line.index];
@@ -240,6 +488,10 @@ namespace dealvem
                 r -= entry.second * modes[m][entry.first];
               row(m) = (m == 2 ? r / scale : r);
             }
+          // a line that the rigid-body modes satisfy (a rigid boundary)
+          // holds nothing
+          if (row.norm() <= 1e-10 * magnitude)
+            continue;
           gram[node_body[node]] += row * row.transpose();
         }
       for (const auto &b : extra_restraints)
@@ -292,7 +544,17 @@ namespace dealvem
                dealii::AffineConstraints<double> &);
     template unsigned int
     add_point_constraint(const VEMDoFHandler<2> &, const dealii::Point<2> &, const unsigned int,
-                         const double, dealii::AffineConstraints<double> &, const double);
+                         const double, dealii::AffineConstraints<double> &, const double,
+                         const dealii::types::material_id, const std::string &,
+                         const ConstraintOrigins *);
+    template RigidBoundary<2>
+    rigid_boundary_geometry(const VEMDoFHandler<2> &, const dealii::types::boundary_id);
+    template RigidBoundary<2>
+    add_rigid_boundary(const VEMDoFHandler<2> &, const dealii::types::boundary_id,
+                       dealii::AffineConstraints<double> &, const std::string &,
+                       const ConstraintOrigins *);
+    template std::vector<std::pair<dealii::types::global_dof_index, double>>
+    rigid_boundary_load(const RigidBoundary<2> &, const dealii::Tensor<1, 2> &, const double);
     template void
     check_rigid_body_support(
       const VEMDoFHandler<2> &, const dealii::AffineConstraints<double> &,

@@ -5,6 +5,9 @@
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/vem/virtual_element.h>
 
+#include <cmath>
+#include <string>
+
 namespace dealvem
 {
   template <int dim>
@@ -56,6 +59,21 @@ namespace dealvem
                 dealii::ExcMessage("A pressure must be a scalar function (boundary id " +
                                    std::to_string(id) + ")."));
     pressures.emplace_back(id, &p);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityAssembler<dim>::add_nodal_load(const dealii::types::global_dof_index dof,
+                                           const double                          value)
+  {
+    AssertThrow(dof < dof_handler.n_dofs(),
+                dealii::ExcMessage("Nodal load on DoF " + std::to_string(dof) + ", but there are only " +
+                                   std::to_string(dof_handler.n_dofs()) + " DoFs."));
+    AssertThrow(std::isfinite(value),
+                dealii::ExcMessage("Nodal load on DoF " + std::to_string(dof) + " is not finite."));
+    nodal_loads.emplace_back(dof, value);
   }
 
 
@@ -128,6 +146,19 @@ namespace dealvem
         constraints.distribute_local_to_global(
           element.get_stiffness_matrix(), F, indices, matrix, rhs);
       }
+    // nodal loads: a "cell" of their DoFs without matrix, so that loads on
+    // constrained DoFs go to the DoFs they depend on
+    if (!nodal_loads.empty())
+      {
+        indices.clear();
+        F.reinit(nodal_loads.size());
+        for (unsigned int i = 0; i < nodal_loads.size(); ++i)
+          {
+            indices.push_back(nodal_loads[i].first);
+            F[i] = nodal_loads[i].second;
+          }
+        constraints.distribute_local_to_global(F, indices, rhs);
+      }
   }
 
 
@@ -152,6 +183,8 @@ namespace dealvem
         for (unsigned int i = 0; i < indices.size(); ++i)
           rhs[indices[i]] += F[i];
       }
+    for (const auto &l : nodal_loads)
+      rhs[l.first] += l.second;
   }
 
   template class ElasticityAssembler<2>;

@@ -68,7 +68,10 @@ namespace dealvem
       bool             active;
       double           weight;
       double           gap;
-      double           pressure;            ///< -lambda / weight (compression > 0)
+      double           pressure;            ///< consistent recovery M_Gamma p = -lambda (compression > 0)
+      double           lumped_pressure;     ///< -lambda / weight
+      double           multiplier;          ///< raw multiplier lambda (a nodal force)
+      bool             at_open_end;         ///< see ContactNodePair::at_open_end
       double           tangential_traction; ///< tangential force / weight
       double           slip;
     };
@@ -79,6 +82,10 @@ namespace dealvem
       PolygonalMesh<2>             mesh;
       std::vector<PairResult>      pairs;
       std::vector<NodeInsertion::Report> insertion_reports;
+      /// The matched interfaces (pairs and segments) of node insertion.
+      std::vector<NodeInsertion::Interface> interfaces;
+      /// Number of active pairs at an open end (each printed as a warning).
+      unsigned int                 n_open_end_warnings = 0;
       unsigned int                 n_dofs = 0, n_multipliers = 0;
       unsigned int                 active_set_iterations = 0;
       std::vector<unsigned int>    active_set_history;

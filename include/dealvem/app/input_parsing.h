@@ -23,8 +23,11 @@ namespace dealvem
    * - the fields of an entry separated by ':',
    * - the components of a field separated by ',' (commas inside
    *   parentheses, as in pow(x,2), do not split).
-   * Expressions are muparser expressions in x, y (and t) with the
-   * constants of the "Function constants" parameter.
+   * Expressions are muparser expressions in x, y and t with the
+   * constants of the "Function constants" parameter. The programs solve
+   * static problems, so t is always 1 there (a load written as 10*t is the
+   * load 10); t is there so that one parameter file can later serve a load
+   * history.
    */
   namespace InputParsing
   {
@@ -51,10 +54,16 @@ namespace dealvem
     parse_double(const std::string &s, const std::string &parameter);
 
     /**
-     * A function of (x, y) given by muparser expressions, one per component,
-     * with derivatives by fourth-order difference quotients. The
-     * expressions are checked on construction; errors name @p parameter
-     * and the expression.
+     * A function of (x, y) and the time t given by muparser expressions, one
+     * per component, with derivatives by fourth-order difference quotients.
+     * The time starts at t = 1 (the value used by the static problems);
+     * set_time() changes it.
+     *
+     * The expressions are checked on construction; errors name @p parameter
+     * and the expression. Every evaluation checks the result: a value that is
+     * not finite (division by zero, sqrt(-1), ...) stops with an exception
+     * naming @p parameter, the expression, the point and the time, and so
+     * does an error of the parser during evaluation.
      */
     class ParsedFunction : public dealii::AutoDerivativeFunction<2>
     {
@@ -69,6 +78,17 @@ namespace dealvem
       void
       vector_value(const dealii::Point<2> &p, dealii::Vector<double> &values) const override;
 
+      /// Set the time t of the expressions (of this object and its parser).
+      void
+      set_time(const double new_time) override;
+
+      /// The parameter name used in error messages.
+      const std::string &
+      get_parameter() const
+      {
+        return parameter;
+      }
+
       /// The expressions, for output.
       const std::vector<std::string> &
       get_expressions() const
@@ -77,7 +97,13 @@ namespace dealvem
       }
 
     private:
+      /// Throw an error naming the parameter, expression @p component, the
+      /// point and the time, with the explanation @p what.
+      [[noreturn]] void
+      report(const dealii::Point<2> &p, const unsigned int component, const std::string &what) const;
+
       std::vector<std::string>           expressions;
+      std::string                        parameter;
       dealii::FunctionParser<2>          parser;
     };
   } // namespace InputParsing

@@ -12,6 +12,7 @@
 
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <array>
@@ -31,10 +32,22 @@ namespace dealvem
    * - Roller: `id, id, ...` (straight boundary parts, u.n = 0)
    * - Traction: `id : gx, gy; ...`
    * - Pressure: `id : p; ...` (positive pressure pushes into the body)
-   * - Point constraints: `x, y : component : value; ...` (the mesh vertex
-   *   at (x, y); component x or y)
+   * - Point constraints: `x, y : component : value; ...` or
+   *   `x, y : component : value : body` (the mesh vertex at (x, y), of the
+   *   cells with material id `body` if given; component x or y; the value
+   *   is an expression evaluated at (x, y))
+   * - Rigid boundary: `id : Fx, Fy; ...` or `id : Fx, Fy : M; ...` (the
+   *   nodes on the boundary part move as one rigid body, loaded by the
+   *   force (Fx, Fy) at the part's centroid and the moment M about it;
+   *   the expressions are evaluated at the centroid)
    * - Body force: `fx, fy` (empty: none)
-   * Every malformed entry gives an error naming the parameter and the entry.
+   *
+   * Expressions are muparser expressions in x, y and t with the function
+   * constants; the problems are static and t = 1.
+   * Every malformed entry gives an error naming the parameter and the entry;
+   * so does an entry on a boundary id the mesh does not have
+   * (check_boundary_ids()), an expression that is not finite where it is
+   * evaluated, and a constraint that conflicts with an earlier one.
    */
   class BoundaryConditionParameters
   {
@@ -45,12 +58,25 @@ namespace dealvem
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /// Write all constraints (Dirichlet first, then rollers, then points).
+    /**
+     * Stop with an error naming the parameter entry, the missing boundary id
+     * and the ids the mesh has if an entry (Dirichlet, roller, traction,
+     * pressure, rigid boundary) uses a boundary id that no boundary edge of
+     * @p mesh carries.
+     */
+    void
+    check_boundary_ids(const PolygonalMesh<2> &mesh) const;
+
+    /// Write all constraints: Dirichlet first, then rollers, point
+    /// constraints and rigid boundaries. A point constraint or rigid
+    /// boundary that collides with an earlier constraint stops with a
+    /// message naming both entries.
     void
     apply_constraints(const VEMDoFHandler<2> &dof_handler,
                       dealii::AffineConstraints<double> &constraints) const;
 
-    /// Hand the loads to an assembler (the functions live in this object).
+    /// Hand the loads to an assembler (the functions live in this object);
+    /// the resultants of rigid boundaries become nodal loads.
     void
     add_loads(ElasticityAssembler<2> &assembler) const;
 
@@ -67,27 +93,44 @@ namespace dealvem
   private:
     struct Dirichlet
     {
+      std::string                                   name;
       dealii::types::boundary_id                   id;
       std::array<bool, 2>                          mask;
       std::unique_ptr<InputParsing::ParsedFunction> function;
     };
+    struct Roller
+    {
+      std::string                name;
+      dealii::types::boundary_id id;
+    };
     struct Load
     {
+      std::string                                   name;
       dealii::types::boundary_id                   id;
       std::unique_ptr<InputParsing::ParsedFunction> function;
     };
     struct PointConstraint
     {
-      dealii::Point<2> point;
-      unsigned int     component;
-      double           value;
+      std::string                                   name;
+      dealii::Point<2>                              point;
+      unsigned int                                  component;
+      std::unique_ptr<InputParsing::ParsedFunction> value;
+      dealii::types::material_id                    body;
+    };
+    struct RigidBoundary
+    {
+      std::string                                   name;
+      dealii::types::boundary_id                   id;
+      std::unique_ptr<InputParsing::ParsedFunction> force;
+      std::unique_ptr<InputParsing::ParsedFunction> moment;
     };
 
     std::map<std::string, double>                  constants;
     std::vector<Dirichlet>                         dirichlet;
-    std::vector<dealii::types::boundary_id>        rollers;
+    std::vector<Roller>                            rollers;
     std::vector<Load>                              tractions, pressures;
     std::vector<PointConstraint>                   points;
+    std::vector<RigidBoundary>                     rigid_boundaries;
     std::unique_ptr<InputParsing::ParsedFunction>  body_force;
   };
 } // namespace dealvem

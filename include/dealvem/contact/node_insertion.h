@@ -41,40 +41,100 @@ namespace dealvem
     double                 initial_gap = 0;
     /// Tributary weight (length) of the node on the interface: the sum over
     /// the slave sub-edges at the node of L/2 (k = 1) or L/6 at an end and
-    /// 2L/3 at the midpoint (k = 2, Simpson).
+    /// 2L/3 at the midpoint (k = 2, Simpson); the diagonal of the lumped
+    /// interface mass matrix.
     double                 weight = 0;
     /// Index of the contact pair description this node pair belongs to.
     unsigned int           interface = 0;
+    /// True for the first and the last pair of a chain of paired sub-edges
+    /// where one side's contact part goes on beyond the pairs (the overlap
+    /// of the two parts ends there, not both parts): an active pair there
+    /// means the contact zone may be cut off by the extent of a part.
+    bool                   at_open_end = false;
+  };
+
+  /**
+   * One paired sub-edge of a matched interface: the two vertex pairs at its
+   * ends and, for k = 2, the midpoint pair (indices into the pair list), and
+   * its length (on the slave side). The interface mass matrix is assembled
+   * over these segments.
+   */
+  struct ContactSegment
+  {
+    unsigned int first, second;
+    unsigned int midpoint = dealii::numbers::invalid_unsigned_int;
+    double       length   = 0;
   };
 
   /**
    * Node insertion on the contact interface between two bodies of one
-   * PolygonalMesh (see DESIGN.md, "Node insertion and node-to-node
-   * contact").
+   * PolygonalMesh (see doc/architecture.md, "Node insertion").
    *
    * A contact interface names a boundary part of the master body (boundary
-   * id @p master_id) and one of the slave body (@p slave_id). The vertices
-   * of each side are projected onto the other side's edges (closest point);
-   * a projection is used if its distance is at most @p search_distance
-   * times the length of the edge it lands on. A projection that lands
-   * within @p snap_tolerance times the edge length of an existing vertex
-   * snaps to it; otherwise the edge is split there (PolygonalMesh::split_edge)
-   * and the polygon owning it gains a vertex. After both passes both sides
-   * carry the same vertices along the overlapping part of the interface
-   * (and, for k = 2, the same sub-edge midpoints), so every node there has
-   * exactly one partner. Parts of the interface without a counterpart
-   * within the search distance (partial overlap) get no pairs.
+   * id @p master_id) and one of the slave body (@p slave_id). insert() makes
+   * the two parts matching and returns the node pairs it creates; there is
+   * no second geometric search. The rule, with $h$ the local edge length
+   * (the shorter of the two side edges at the node pair):
+   *
+   * 1. <b>Partners.</b> Every vertex of either side whose closest point on
+   *    the other side lies inside that side (not beyond its ends), within
+   *    the search distance, and on a part facing it (outward normals at
+   *    more than 120 degrees) gets exactly one partner on the other side.
+   *    Vertices that lie inside the overlap but fail the distance or facing
+   *    test are listed in Report::unpaired with the reason.
+   * 2. <b>Merge, never split short.</b> A vertex whose closest point on the
+   *    other side lies within Settings::merge_fraction times $h$ of a vertex
+   *    of that side is paired with that vertex (the closest such pairs
+   *    first); no sub-edge shorter than merge_fraction times $h$ is created.
+   *    The other vertices split the edge they project onto; on a side that
+   *    approximates a smooth curve (consecutive turning angles of the same
+   *    sign and similar curvature) the new vertex is placed on the circle
+   *    through the neighbouring vertices, not on the chord.
+   * 3. <b>Discretisation gaps are closed, real gaps are kept.</b> The
+   *    initial gap $g_0$ of a pair is a discretisation gap if
+   *    $|g_0| \le \delta = c_\kappa\, s + \varepsilon_x (|x| + |y|)$:
+   *    $s = \tfrac12 t(1-t)L^2|\kappa|$ is the largest distance between the
+   *    chord of length $L$ that received the inserted node (at parameter
+   *    $t$) and a circle of the side's curvature $\kappa$, counted only
+   *    where both sides approximate the same curve ($|\kappa_m + \kappa_s|
+   *    \le \tfrac12\max|\kappa|$, convex curvature positive), and
+   *    $\varepsilon_x$ is the relative precision of the coordinates (1e-5:
+   *    six significant digits). A discretisation gap is closed by moving
+   *    the inserted vertex onto its partner (for two merged original
+   *    vertices, the slave vertex onto the master vertex), so both sides
+   *    share the node; every other gap or penetration is kept as $g_0$.
+   *
+   * After insertion both sides carry the same vertices along the overlap
+   * (and, for k = 2, the same sub-edges, whose midpoints are paired too).
    */
   class NodeInsertion
   {
   public:
     struct Settings
     {
-      /// Snap tolerance relative to the edge length (0 < tol < 0.5).
-      double snap_tolerance = 1e-6;
-      /// Largest normal distance of a projection, relative to the length of
-      /// the edge it lands on (for curved interfaces with initial gaps).
-      double search_distance = 0.5;
+      /// Nodes closer than this times the local edge length are merged
+      /// (paired without a split); 0 < merge_fraction < 0.5.
+      double merge_fraction = 0.1;
+      /// Largest distance between a node and its partner, relative to the
+      /// size of the interface (the diagonal of the bounding box of both
+      /// sides). Larger gaps leave the node unpaired (reported).
+      double search_distance = 0.25;
+      /// Relative precision of the vertex coordinates: gaps below this
+      /// times |x| + |y| are taken as round-off of the mesh files.
+      double coordinate_precision = 1e-5;
+      /// Factor c_kappa of the chord deviation in the gap tolerance.
+      double curvature_factor = 1.5;
+      /// Close discretisation gaps (rule 3). false keeps every gap.
+      bool close_discretisation_gaps = true;
+    };
+
+    /// A node inside the overlap that did not get a partner.
+    struct UnpairedNode
+    {
+      bool             on_master;
+      unsigned int     vertex;
+      dealii::Point<2> location;
+      std::string      reason;
     };
 
     /// What insert() did.
@@ -82,37 +142,51 @@ namespace dealvem
     {
       unsigned int n_inserted_master = 0; ///< new vertices on the master side
       unsigned int n_inserted_slave  = 0; ///< new vertices on the slave side
-      unsigned int n_snapped         = 0; ///< projections snapped to existing vertices
+      unsigned int n_merged          = 0; ///< pairs of existing vertices (no split)
+      unsigned int n_closed_gaps     = 0; ///< discretisation gaps closed
+      double       max_closed_gap    = 0; ///< largest |g_0| closed (length)
+      double       max_merge_shift   = 0; ///< largest vertex move by a merge
       unsigned int n_master_edges    = 0; ///< master interface edges after insertion
       unsigned int n_slave_edges     = 0; ///< slave interface edges after insertion
+      std::vector<UnpairedNode> unpaired;
+    };
+
+    /// Everything insert() creates for one interface.
+    struct Interface
+    {
+      dealii::types::boundary_id   master_id = 0, slave_id = 0;
+      unsigned int                 degree    = 1;
+      unsigned int                 index     = 0;
+      std::vector<ContactNodePair> pairs;
+      std::vector<ContactSegment>  segments;
+      Report                       report;
     };
 
     /**
-     * Make the interface (master_id, slave_id) matching by inserting
-     * vertices into @p mesh. Throws (AssertThrow, naming the ids) if a
-     * boundary id has no edges, if both ids belong to the same body, or if
-     * the two parts do not face or overlap each other at all (no projection
-     * within the search distance).
+     * Make the interface (master_id, slave_id) matching by inserting,
+     * merging and moving vertices of @p mesh, and return the node pairs for
+     * order @p degree (1: vertex pairs; 2: vertex and midpoint pairs) in
+     * the order of the slave side, with @p index stored in the pairs.
+     * Throws (AssertThrow, naming the ids) if a boundary id has no edges,
+     * if both ids belong to the same body, if the settings are out of
+     * range, if the two parts do not face each other within the search
+     * distance at all, or if moving vertices would invalidate a cell.
      */
-    static Report
+    static Interface
     insert(PolygonalMesh<2>                &mesh,
            const dealii::types::boundary_id master_id,
            const dealii::types::boundary_id slave_id,
-           const Settings                  &settings);
+           const unsigned int               degree,
+           const Settings                  &settings,
+           const unsigned int               index = 0);
 
     /**
-     * The node pairs of a matched interface for order @p degree (1: vertex
-     * pairs; 2: vertex and midpoint pairs). Slave nodes whose partner is
-     * not found (outside the overlap) are skipped. @p interface is stored
-     * in the pairs.
+     * Recompute locations, normals, initial gaps and weights of the pairs
+     * of @p interface from the current mesh (after other interfaces moved
+     * shared vertices).
      */
-    static std::vector<ContactNodePair>
-    make_pairs(const PolygonalMesh<2>          &mesh,
-               const dealii::types::boundary_id master_id,
-               const dealii::types::boundary_id slave_id,
-               const unsigned int               degree,
-               const Settings                  &settings,
-               const unsigned int               interface = 0);
+    static void
+    update_geometry(const PolygonalMesh<2> &mesh, Interface &interface);
   };
 } // namespace dealvem
 

@@ -7,6 +7,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/affine_constraints.h>
 
@@ -15,6 +16,9 @@
 #include <array>
 #include <map>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace dealvem
 {
@@ -29,6 +33,14 @@ namespace dealvem
    */
   namespace BoundaryConditions
   {
+    /**
+     * For error messages: who wrote the constraint of a DoF (for example
+     * the parameter entry "Boundary conditions and loads/Roller entry '2'").
+     * Functions that get such a map name the earlier condition when a new
+     * one collides with it.
+     */
+    using ConstraintOrigins = std::map<dealii::types::global_dof_index, std::string>;
+
     /**
      * Dirichlet data: the components selected by @p mask of the nodes
      * (vertices and, for k = 2, edge midpoints) on the boundary edges with
@@ -59,9 +71,23 @@ namespace dealvem
 
     /**
      * Single-point constraint: component @p component of the mesh vertex
-     * nearest to @p p gets the value @p value. AssertThrow if no vertex
-     * lies within @p relative_tolerance times the smallest cell diameter
-     * of @p p (the message gives the point and the nearest vertex).
+     * at @p p gets the value @p value.
+     *
+     * The vertex is searched among all vertices, or, if @p body is not
+     * numbers::invalid_material_id, among the vertices of the cells with
+     * material id @p body (needed where two bodies have vertices at the same
+     * point). AssertThrow
+     * - if no vertex (of the body) lies within @p relative_tolerance times
+     *   the smallest cell diameter of @p p (the message gives the point and
+     *   the nearest vertex);
+     * - if no body is given and vertices of two bodies lie there (the
+     *   message asks to name the body);
+     * - if the DoF is constrained already in a way that differs from
+     *   u = @p value: to another value, or to other DoFs (a roller). The
+     *   message names the earlier condition through @p origins, if given.
+     *   A constraint to the same value is redundant and accepted.
+     *
+     * @p name, if not empty, names the parameter entry in the messages.
      * Returns the vertex index.
      */
     template <int dim>
@@ -71,7 +97,78 @@ namespace dealvem
                          const unsigned int                 component,
                          const double                       value,
                          dealii::AffineConstraints<double> &constraints,
-                         const double                       relative_tolerance = 1e-6);
+                         const double                       relative_tolerance = 1e-6,
+                         const dealii::types::material_id   body = dealii::numbers::invalid_material_id,
+                         const std::string                 &name = "",
+                         const ConstraintOrigins           *origins = nullptr);
+
+    /**
+     * The geometry of a rigid boundary part: its nodes (vertices and, for
+     * k = 2, edge midpoints on the boundary edges with id @p id), the
+     * arc-length weighted centroid, and the two reference nodes that carry
+     * its motion: A, the node nearest to the centroid, and B, the node
+     * farthest from A. With d = x_B - x_A, B keeps its component
+     * @p b_free_component (the one in which d is smaller, "normal to AB"),
+     * the other one is constrained so that |AB| stays fixed.
+     */
+    template <int dim>
+    struct RigidBoundary
+    {
+      dealii::types::boundary_id id;
+      std::vector<unsigned int>  nodes;
+      unsigned int               node_a;
+      unsigned int               node_b;
+      unsigned int               b_free_component;
+      dealii::Point<dim>         point_a;
+      dealii::Point<dim>         point_b;
+      dealii::Point<dim>         centroid;
+      double                     length;
+    };
+
+    /// Compute the RigidBoundary of boundary id @p id (AssertThrow if no
+    /// boundary edge carries it).
+    template <int dim>
+    RigidBoundary<dim>
+    rigid_boundary_geometry(const VEMDoFHandler<dim> &dof_handler, const dealii::types::boundary_id id);
+
+    /**
+     * Rigid boundary part: all nodes on the boundary edges with id @p id
+     * move as one rigid body, u(x) = u_A + theta (-(y - y_A), x - x_A),
+     * written as affine constraints on the three DoFs that stay free (both
+     * components of A, component RigidBoundary::b_free_component of B):
+     * with d = x_B - x_A, p = (-d_y, d_x) and o = b_free_component,
+     * theta = (u_{B,o} - u_{A,o}) / p_o, and every other DoF of the part
+     * (including the other component of B) is u_A + theta perp(x - x_A).
+     * No new unknowns; rigid-body modes satisfy every line exactly, so the
+     * lines hold no body (check_rigid_body_support() does not count them).
+     *
+     * The part may share constraints with other conditions only through A
+     * and the kept component of B, and only with constraints of a single
+     * node (Dirichlet, roller or point data, e.g. a hinge at A): any other
+     * constrained DoF of the part stops with a message naming the part (by
+     * @p name if not empty) and the earlier condition (through @p origins).
+     */
+    template <int dim>
+    RigidBoundary<dim>
+    add_rigid_boundary(const VEMDoFHandler<dim>          &dof_handler,
+                       const dealii::types::boundary_id   id,
+                       dealii::AffineConstraints<double> &constraints,
+                       const std::string                 &name = "",
+                       const ConstraintOrigins           *origins = nullptr);
+
+    /**
+     * The generalized forces of a resultant force @p force at the centroid
+     * of the rigid part and a moment @p moment (counter-clockwise) about it,
+     * on the free DoFs of A and B: the derivatives of the virtual work
+     * force . u(x_0) + moment theta with respect to u_{A,x}, u_{A,y},
+     * u_{B,o}. They are entries of the unconstrained load vector (as
+     * ElasticityAssembler::add_nodal_load takes them).
+     */
+    template <int dim>
+    std::vector<std::pair<dealii::types::global_dof_index, double>>
+    rigid_boundary_load(const RigidBoundary<dim>     &part,
+                        const dealii::Tensor<1, dim> &force,
+                        const double                  moment);
 
     /**
      * Check that every body (material id) is held against all three
@@ -82,6 +179,9 @@ namespace dealvem
      * material id, further linear restrictions of the rigid-body modes
      * (rows of 3 numbers: the restriction applied to the x-translation,
      * y-translation and rotation modes), e.g. from contact constraints.
+     * Constraint lines that vanish on the rigid-body modes up to round-off
+     * (those of add_rigid_boundary()) restrain nothing and are skipped, so
+     * that a body held by nothing else is reported.
      */
     template <int dim>
     void

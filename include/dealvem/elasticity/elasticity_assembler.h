@@ -55,6 +55,21 @@ namespace dealvem
     void
     add_pressure(const dealii::types::boundary_id id, const dealii::Function<dim> &p);
 
+    /**
+     * A concentrated load @p value on the DoF @p dof, added to the
+     * unconstrained load vector (so assemble() distributes it with the
+     * constraints like the other loads). Used for the resultant of a rigid
+     * boundary part (BoundaryConditions::rigid_boundary_load()).
+     */
+    void
+    add_nodal_load(const dealii::types::global_dof_index dof, const double value);
+
+    const VEMDoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
     /// The material of cell @p c (throws naming the cell if its material id
     /// has no material).
     const ElasticMaterial &
@@ -104,6 +119,7 @@ namespace dealvem
     const dealii::Function<dim>                            *body_force = nullptr;
     std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> tractions;
     std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> pressures;
+    std::vector<std::pair<dealii::types::global_dof_index, double>>                 nodal_loads;
   };
 } // namespace dealvem
 

@@ -248,6 +248,19 @@ namespace dealvem
     unsigned int
     split_edge(const unsigned int e, const dealii::Point<dim> &p);
 
+    /**
+     * Move vertex @p v to @p p. Nothing else changes (edges and cells keep
+     * their indices); the caller checks the cells afterwards with
+     * validate(). Used by node insertion to make the two sides of a
+     * contact interface coincide.
+     */
+    void
+    move_vertex(const unsigned int v, const dealii::Point<dim> &p)
+    {
+      AssertThrow(v < vertices.size(), dealii::ExcMessage("move_vertex: no vertex " + std::to_string(v) + "."));
+      vertices[v] = p;
+    }
+
     /// Smallest and largest cell diameter.
     std::pair<double, double>
     cell_diameter_range() const;
