@@ -118,7 +118,7 @@ namespace Step2
   // The interface is the top of the lower block (id 3, master: it gives
   // the normal) and the bottom of the upper block (id 12, slave). Node
   // insertion carries the vertices of each side over to the other side and
-  // splits the edges there (nodes closer than a tenth of the local edge
+  // splits the edges there (nodes closer than 5 % of the local edge
   // length are merged instead), so that both sides carry the same vertices
   // -- and for k = 2 the same sub-edge midpoints. The polygons that own
   // split edges simply gain a vertex. insert() returns the node pairs it

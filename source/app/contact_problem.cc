@@ -2,6 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <deal.II/base/convergence_table.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -13,6 +14,7 @@
 #include <dealvem/contact/active_set_solver.h>
 #include <dealvem/contact/contact_pressure.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/svg_plots.h>
@@ -50,6 +52,12 @@ namespace dealvem
         prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
                           "Poisson's ratio nu, -1 < nu < 0.5.");
         prm.leave_subsection();
+        prm.enter_subsection("Exact solution");
+        prm.declare_entry("Displacement", "", Anything(),
+                          "Exact displacement 'ux, uy' of this body (muparser in x, y, t with the "
+                          "function constants, t = 1). Empty: the top-level 'Exact solution' "
+                          "applies to this body too.");
+        prm.leave_subsection();
         prm.leave_subsection();
       }
     prm.enter_subsection("Contact");
@@ -67,7 +75,7 @@ namespace dealvem
                       "0 selects the default rule 'Penalty factor' * E_min / h_min, with E_min the "
                       "smallest Young's modulus and h_min the shortest interface sub-edge.");
     prm.declare_entry("Penalty factor", "1000", Double(0), "Factor of the default penalty rule.");
-    prm.declare_entry("Merge fraction", "0.1", Double(1e-6, 0.49),
+    prm.declare_entry("Merge fraction", "0.05", Double(1e-6, 0.49),
                       "Node insertion: a node whose closest point on the other side lies closer "
                       "than this times the local edge length to a node of that side is paired with "
                       "it (the two are merged) instead of splitting the edge: no sub-edge shorter "
@@ -117,6 +125,12 @@ namespace dealvem
     prm.enter_subsection("Mesh");
     bodies[0].mesh.parse_parameters(prm, "Mesh");
     prm.leave_subsection();
+    prm.enter_subsection("Exact solution");
+    bodies[0].exact = prm.get("Displacement");
+    prm.leave_subsection();
+    prm.enter_subsection("Convergence study");
+    n_cycles = prm.get_integer("Refinement cycles");
+    prm.leave_subsection();
     prm.enter_subsection("Material");
     bodies[0].E  = prm.get_double("Young's modulus");
     bodies[0].nu = prm.get_double("Poisson's ratio");
@@ -132,6 +146,11 @@ namespace dealvem
         prm.enter_subsection("Material");
         bodies[b].E  = prm.get_double("Young's modulus");
         bodies[b].nu = prm.get_double("Poisson's ratio");
+        prm.leave_subsection();
+        prm.enter_subsection("Exact solution");
+        bodies[b].exact = prm.get("Displacement");
+        if (InputParsing::trim(bodies[b].exact).empty())
+          bodies[b].exact = bodies[0].exact;
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -301,6 +320,53 @@ namespace dealvem
   ContactProblem::run()
   {
     std::filesystem::create_directories(output_folder);
+    convergence.clear();
+    bool any_exact = false;
+    for (const auto &b : bodies)
+      any_exact = any_exact || !InputParsing::trim(b.exact).empty();
+    std::vector<dealii::ConvergenceTable> tables(bodies.size());
+    for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
+      {
+        if (n_cycles > 1)
+          std::cout << "Cycle " << cycle << ":" << std::endl;
+        run_cycle(cycle);
+        convergence.push_back(results.errors);
+        if (any_exact)
+          for (unsigned int b = 0; b < bodies.size(); ++b)
+            if (!InputParsing::trim(bodies[b].exact).empty())
+              {
+                const auto &e = results.errors[b];
+                tables[b].add_value("cycle", cycle);
+                tables[b].add_value("cells", results.cells_per_body[b]);
+                tables[b].add_value("dofs", results.dofs_per_body[b]);
+                tables[b].add_value("L2", e.l2 / std::max(e.l2_exact, 1e-300));
+                tables[b].add_value("H1", e.h1_seminorm / std::max(e.h1_exact, 1e-300));
+                tables[b].add_value("energy", e.energy / std::max(e.energy_exact, 1e-300));
+              }
+      }
+    if (any_exact)
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        if (!InputParsing::trim(bodies[b].exact).empty())
+          {
+            auto &t = tables[b];
+            for (const char *c : {"L2", "H1", "energy"})
+              {
+                t.set_scientific(c, true);
+                t.set_precision(c, 3);
+              }
+            if (n_cycles > 1)
+              for (const char *c : {"L2", "H1", "energy"})
+                t.evaluate_convergence_rates(c, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
+            std::cout << "Relative errors of body " << b << " (against its exact solution):" << std::endl;
+            t.write_text(std::cout, dealii::TableHandler::org_mode_table);
+          }
+  }
+
+
+
+  void
+  ContactProblem::run_cycle(const unsigned int cycle)
+  {
     dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
     results = Results();
     PolygonalMesh<2> &mesh = results.mesh;
@@ -310,7 +376,7 @@ namespace dealvem
       for (unsigned int b = 0; b < bodies.size(); ++b)
         {
           PolygonalMesh<2> body_mesh;
-          bodies[b].mesh.create_mesh(body_mesh, 0, prm_directory);
+          bodies[b].mesh.create_mesh(body_mesh, cycle, prm_directory);
           for (unsigned int c = 0; c < body_mesh.n_cells(); ++c)
             body_mesh.set_material_id(c, b);
           if (b == 0)
@@ -487,6 +553,40 @@ namespace dealvem
         results.total_contact_force += (-x[n + i]) * p.normal + r.tangential_traction * p.weight * p.tangent;
       }
 
+    // per body: cells, DoFs, and errors against the exact solution
+    results.cells_per_body.assign(bodies.size(), 0);
+    results.dofs_per_body.assign(bodies.size(), 0);
+    results.errors.assign(bodies.size(), ErrorNorms());
+    {
+      std::vector<unsigned int> node_body(dof_handler.n_nodes(), 0), nodes;
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          ++results.cells_per_body[mesh.cell(c).material_id];
+          dof_handler.get_node_indices(c, nodes);
+          for (const auto nd : nodes)
+            node_body[nd] = mesh.cell(c).material_id;
+        }
+      for (const auto b : node_body)
+        results.dofs_per_body[b] += 2;
+    }
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (!InputParsing::trim(bodies[b].exact).empty())
+        {
+          const std::string name = (b == 0 ? std::string("Exact solution/Displacement") :
+                                             "Body " + std::to_string(b) + "/Exact solution/Displacement");
+          const auto        parts = InputParsing::split(bodies[b].exact, ',');
+          AssertThrow(parts.size() == 2,
+                      dealii::ExcMessage("Parameter '" + name + "' needs two expressions 'ux, uy'."));
+          const InputParsing::ParsedFunction exact(parts, bc.get_constants(), name);
+          results.errors[b] = compute_errors(dof_handler, materials, gamma, results.solution, exact,
+                                             dealii::types::material_id(b));
+          for (const double v : {results.errors[b].l2, results.errors[b].h1_seminorm, results.errors[b].energy})
+            AssertThrow(std::isfinite(v),
+                        dealii::ExcMessage("Parameter '" + name + "': the error against '" + bodies[b].exact +
+                                           "' is not finite; the exact solution evaluates to inf or NaN "
+                                           "somewhere in body " + std::to_string(b) + "."));
+        }
+
     StressRecovery<2> stresses(dof_handler, materials, gamma, results.solution);
     results.cell_stress.resize(mesh.n_cells());
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
@@ -511,9 +611,8 @@ namespace dealvem
         const auto &r = interfaces[i].report;
         std::cout << "    interface " << i << " (" << contact_pairs[i].first << " : " << contact_pairs[i].second
                   << "): " << r.n_inserted_master << " + " << r.n_inserted_slave << " inserted, " << r.n_merged
-                  << " merged, " << r.n_closed_gaps << " discretisation gaps closed";
-        if (r.n_closed_gaps > 0)
-          std::cout << " (largest " << r.max_closed_gap << ")";
+                  << " merged; " << r.n_closed_gaps << " pairs coincide (largest discretisation gap closed: "
+                  << r.max_closed_gap << ")";
         std::cout << std::endl;
         if (!r.unpaired.empty())
           {
@@ -572,7 +671,8 @@ namespace dealvem
     std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
               << ", " << results.total_contact_force[1] << ")" << std::endl;
 
-    const std::string prefix = output_folder + "/" + base_name;
+    const std::string prefix =
+      output_folder + "/" + base_name + (n_cycles > 1 ? "-cycle" + std::to_string(cycle) : std::string());
     if (write_csv)
       {
         std::ofstream csv(prefix + "-interface.csv");
@@ -655,6 +755,31 @@ namespace dealvem
             json.set("contact.pressure_min", pmin);
             json.set("contact.pressure_max", pmax);
           }
+        json.set("contact.open_end_warnings", double(results.n_open_end_warnings));
+        {
+          unsigned int n_unpaired = 0, n_closed = 0, n_merged = 0;
+          double       max_closed = 0;
+          for (const auto &r : results.insertion_reports)
+            {
+              n_unpaired += r.unpaired.size();
+              n_closed += r.n_closed_gaps;
+              n_merged += r.n_merged;
+              max_closed = std::max(max_closed, r.max_closed_gap);
+            }
+          json.set("contact.unpaired_nodes", double(n_unpaired));
+          json.set("contact.merged_pairs", double(n_merged));
+          json.set("contact.closed_gaps", double(n_closed));
+          json.set("contact.max_closed_gap", max_closed);
+        }
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          if (!InputParsing::trim(bodies[b].exact).empty())
+            {
+              const auto       &e = results.errors[b];
+              const std::string k = "errors.body" + std::to_string(b) + ".";
+              json.set(k + "L2", e.l2 / std::max(e.l2_exact, 1e-300));
+              json.set(k + "H1", e.h1_seminorm / std::max(e.h1_exact, 1e-300));
+              json.set(k + "energy", e.energy / std::max(e.energy_exact, 1e-300));
+            }
         json.set("contact.total_force_x", results.total_contact_force[0]);
         json.set("contact.total_force_y", results.total_contact_force[1]);
         for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))

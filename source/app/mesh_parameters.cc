@@ -25,7 +25,10 @@ namespace dealvem
                       "Mesh source. Generators work on the rectangle given by the corners; "
                       "'vtk file' reads a polygon mesh in legacy VTK format; 'gridin file' "
                       "reads any format of deal.II's GridIn (gmsh .msh: physical lines become "
-                      "boundary ids, physical surfaces material ids).");
+                      "boundary ids, physical surfaces material ids). In a convergence study a "
+                      "'gridin file' mesh is refined (Triangulation::refine_global) before it is "
+                      "converted; a file name containing '{cycle}' reads one file per level "
+                      "instead (cycle 0, 1, ...), which keeps curved boundaries curved.");
     prm.declare_entry("Lower left corner", "0, 0", Anything(),
                       "Lower left corner x, y of the rectangle of the generators.");
     prm.declare_entry("Upper right corner", "1, 1", Anything(),
@@ -133,16 +136,22 @@ namespace dealvem
       G::nonconvex(mesh, lower_left, upper_right, nx * f, ny * f, nonconvex_depth);
     else
       {
-        AssertThrow(refinement == 0,
-                    dealii::ExcMessage("A mesh read from file '" + file_name +
-                                       "' cannot be refined in a convergence study."));
-        std::string path = file_name;
+        // one file per level ("{cycle}" in the name), or the file refined
+        std::string  path       = file_name;
+        const auto   placeholder = path.find("{cycle}");
+        const bool   per_level   = placeholder != std::string::npos;
+        if (per_level)
+          path.replace(placeholder, 7, std::to_string(refinement));
+        AssertThrow(refinement == 0 || per_level || type == "gridin file",
+                    dealii::ExcMessage("A polygon mesh read from the VTK file '" + file_name +
+                                       "' cannot be refined in a convergence study; name one file per "
+                                       "level with '{cycle}' in the file name."));
         if (!path.empty() && path[0] != '/' && !base_directory.empty())
           path = base_directory + "/" + path;
         if (type == "vtk file")
           MeshIO::read_vtk(mesh, path);
         else
-          G::from_gridin_file(mesh, path);
+          G::from_gridin_file(mesh, path, per_level ? 0 : refinement);
       }
     if (type.find("file") == std::string::npos)
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)

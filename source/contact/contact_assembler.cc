@@ -6,6 +6,11 @@
 
 #include <dealvem/contact/contact_assembler.h>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
 namespace dealvem
 {
   ContactSettings::Normal
@@ -95,6 +100,53 @@ namespace dealvem
 
 
   template <int dim>
+  bool
+  ContactAssembler<dim>::is_fixed_by_constraints(const dealii::AffineConstraints<double> &constraints,
+                                                 const unsigned int                       i,
+                                                 const double                             c[4],
+                                                 double                                  &value) const
+  {
+    // Write the row in the unconstrained DoFs: u_d = sum_k a_k u_k + b for
+    // a constrained d (after close(), the u_k are unconstrained). The row
+    // is fixed if no unconstrained DoF keeps a coefficient.
+    const auto                                       d = pair_dofs(i);
+    std::map<dealii::types::global_dof_index, double> row;
+    double                                           scale = 0;
+    value                                                  = 0;
+    for (unsigned int j = 0; j < 4; ++j)
+      {
+        if (c[j] == 0)
+          continue;
+        scale = std::max(scale, std::abs(c[j]));
+        if (!constraints.is_constrained(d[j]))
+          return false;
+        if (const auto *entries = constraints.get_constraint_entries(d[j]))
+          for (const auto &e : *entries)
+            row[e.first] += c[j] * e.second;
+        value += c[j] * constraints.get_inhomogeneity(d[j]);
+      }
+    for (const auto &r : row)
+      if (std::abs(r.second) > 1e-12 * scale)
+        return false;
+    return true;
+  }
+
+
+
+  namespace
+  {
+    std::string
+    to_string(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
+  template <int dim>
   void
   ContactAssembler<dim>::assemble(const dealii::AffineConstraints<double> &constraints,
                                   const std::vector<bool>                 &active,
@@ -103,6 +155,7 @@ namespace dealvem
   {
     AssertDimension(active.size(), pairs.size());
     const auto n = dof_handler.n_dofs();
+    dropped.clear();
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const auto &p  = pairs[i];
@@ -111,13 +164,45 @@ namespace dealvem
         const double cn[4] = {-p.normal[0], -p.normal[1], p.normal[0], p.normal[1]};
         const double ct[4] = {-p.tangent[0], -p.tangent[1], p.tangent[0], p.tangent[1]};
 
+        // An enforced constraint whose DoFs the displacement constraints
+        // fix already is dropped (lambda = 0) if the two agree, and is an
+        // error if they do not. Tolerance: 1e-12 relative to the values
+        // compared, at least 1e-12 times the tributary length of the pair
+        // (the round-off of the initial gap).
+        const auto redundant = [&](const double c[4], const bool tangential) {
+          double value = 0;
+          if (!is_fixed_by_constraints(constraints, i, c, value))
+            return false;
+          const double required = tangential ? 0. : -p.initial_gap;
+          const double tol      = 1e-12 * std::max({std::abs(value), std::abs(required), p.weight});
+          const bool   unilateral_open =
+            !tangential && settings.normal == ContactSettings::Normal::unilateral && value >= required - tol;
+          std::ostringstream where;
+          where << "(" << p.slave_location[0] << ", " << p.slave_location[1] << ")";
+          AssertThrow(unilateral_open || std::abs(value - required) <= tol,
+                      dealii::ExcMessage(
+                        "Contact pair " + std::to_string(i) + " at " + where.str() + " (interface " +
+                        std::to_string(p.interface) + "): the " + (tangential ? "tangential" : "normal") +
+                        " contact constraint involves only displacements fixed by the Dirichlet, roller "
+                        "or point constraints, and they disagree: the Dirichlet/roller data force a " +
+                        (tangential ? "tangential slip" : "gap") + " of " +
+                        to_string(tangential ? value : value + p.initial_gap) + " at pair " + where.str() +
+                        " but contact requires " +
+                        (tangential ? std::string("0 (stick)") :
+                                      (settings.normal == ContactSettings::Normal::tied ? std::string("0 (tied)") :
+                                                                                          std::string("a gap >= 0"))) +
+                        ". Remove one of the two conditions or make them agree."));
+          dropped.push_back({i, p.slave_location, tangential, value});
+          return true;
+        };
+
         std::vector<dealii::types::global_dof_index> idx(d.begin(), d.end());
         idx.push_back(n + i);
         if (n_tangential > 0)
           idx.push_back(n + n_normal + i);
         dealii::FullMatrix<double> M(idx.size(), idx.size());
         dealii::Vector<double>     F(idx.size());
-        if (active[i])
+        if (active[i] && !redundant(cn, false))
           {
             for (unsigned int j = 0; j < 4; ++j)
               M(4, j) = M(j, 4) = cn[j];
@@ -128,7 +213,7 @@ namespace dealvem
         if (settings.tangential == ContactSettings::Tangential::multipliers)
           {
             // tangential stick only where the normal constraint is active
-            if (active[i])
+            if (active[i] && !redundant(ct, true))
               for (unsigned int j = 0; j < 4; ++j)
                 M(5, j) = M(j, 5) = ct[j];
             else

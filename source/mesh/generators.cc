@@ -368,7 +368,7 @@ namespace dealvem
 
     template <int dim>
     void
-    from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename)
+    from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename, const unsigned int n_refinements)
     {
       AssertThrow(std::filesystem::exists(filename),
                   dealii::ExcMessage("Mesh file '" + filename + "' does not exist."));
@@ -384,6 +384,8 @@ namespace dealvem
         {
           AssertThrow(false, dealii::ExcMessage("Cannot read the mesh file '" + filename + "': " + e.what()));
         }
+      if (n_refinements > 0)
+        tria.refine_global(n_refinements);
       from_triangulation(mesh, tria);
       mesh.name = filename;
     }
@@ -397,6 +399,6 @@ namespace dealvem
     template void voronoi(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int,
                          const unsigned int);
     template void from_triangulation(PolygonalMesh<2> &, const dealii::Triangulation<2, 2> &);
-    template void from_gridin_file(PolygonalMesh<2> &, const std::string &);
+    template void from_gridin_file(PolygonalMesh<2> &, const std::string &, const unsigned int);
   } // namespace PolygonalMeshGenerators
 } // namespace dealvem

@@ -15,7 +15,8 @@ namespace dealvem
                  const std::map<dealii::types::material_id, ElasticMaterial> &materials,
                  const double                                                 gamma,
                  const dealii::Vector<double>                                &solution,
-                 const dealii::Function<dim>                                 &exact)
+                 const dealii::Function<dim>                                 &exact,
+                 const dealii::types::material_id                             body)
   {
     AssertThrow(exact.n_components == 2, dealii::ExcMessage("The exact displacement needs 2 components."));
     const auto        &mesh = dof_handler.get_mesh();
@@ -26,6 +27,8 @@ namespace dealvem
     double l2 = 0, h1 = 0, en = 0, l2e = 0, h1e = 0, ene = 0;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
+        if (body != dealii::numbers::invalid_material_id && mesh.cell(c).material_id != body)
+          continue;
         const auto &material = materials.at(mesh.cell(c).material_id);
         element.reinit(mesh.cell_vertices(c), material, gamma);
         dof_handler.get_dof_values(c, solution, local);
@@ -68,5 +71,6 @@ namespace dealvem
 
   template ErrorNorms
   compute_errors(const VEMDoFHandler<2> &, const std::map<dealii::types::material_id, ElasticMaterial> &,
-                 const double, const dealii::Vector<double> &, const dealii::Function<2> &);
+                 const double, const dealii::Vector<double> &, const dealii::Function<2> &,
+                 const dealii::types::material_id);
 } // namespace dealvem

@@ -184,9 +184,12 @@ namespace dealvem
       out << "<text x=\"" << L << "\" y=\"20\">" << escape(title) << "</text>\n";
       out << "<rect x=\"" << L << "\" y=\"" << T << "\" width=\"" << W - L - R << "\" height=\""
           << H - T - B << "\" fill=\"none\" stroke=\"black\"/>\n";
+      // tick values: round-off next to zero prints as 0
+      const auto tick = [](const double v, const double range) { return std::abs(v) < 1e-9 * range ? 0. : v; };
       for (unsigned int i = 0; i <= 4; ++i)
         {
-          const double xv = xmin + i * (xmax - xmin) / 4, yv = ymin + i * (ymax - ymin) / 4;
+          const double xv = tick(xmin + i * (xmax - xmin) / 4, xmax - xmin),
+                       yv = tick(ymin + i * (ymax - ymin) / 4, ymax - ymin);
           out << "<text x=\"" << px(xv) - 10 << "\" y=\"" << H - B + 16 << "\">" << number(xv)
               << "</text>\n";
           out << "<text x=\"" << 5 << "\" y=\"" << py(yv) + 4 << "\">" << number(yv) << "</text>\n";
@@ -200,15 +203,41 @@ namespace dealvem
         {
           const auto &s = series[k];
           const char *c = colours[k % 4];
-          out << "<polyline fill=\"none\" stroke=\"" << c << "\" stroke-width=\"1.5\" points=\"";
-          for (const auto &p : s.points)
-            out << px(p.first) << "," << py(p.second) << " ";
-          out << "\"/>\n";
-          for (const auto &p : s.points)
-            out << "<circle cx=\"" << px(p.first) << "\" cy=\"" << py(p.second) << "\" r=\"3\" fill=\""
-                << c << "\"/>\n";
-          out << "<text x=\"" << W - R - 220 << "\" y=\"" << T + 18 + 16 * k << "\" fill=\"" << c
-              << "\">" << escape(s.name) << "</text>\n";
+          if (s.line)
+            {
+              out << "<polyline fill=\"none\" stroke=\"" << c << "\" stroke-width=\"1.5\" points=\"";
+              for (const auto &p : s.points)
+                out << px(p.first) << "," << py(p.second) << " ";
+              out << "\"/>\n";
+            }
+          if (s.marker_radius > 0)
+            for (const auto &p : s.points)
+              out << "<circle cx=\"" << px(p.first) << "\" cy=\"" << py(p.second) << "\" r=\""
+                  << s.marker_radius << "\" fill=\"" << c << "\"/>\n";
+        }
+      // legend: a white box in the upper left corner of the plot area
+      if (!series.empty())
+        {
+          std::size_t longest = 0;
+          for (const auto &s : series)
+            longest = std::max(longest, s.name.size());
+          const double lx = L + 8, ly = T + 8, lw = 36 + 6.5 * longest, lh = 8 + 16 * series.size();
+          out << "<rect x=\"" << lx << "\" y=\"" << ly << "\" width=\"" << lw << "\" height=\"" << lh
+              << "\" fill=\"white\" fill-opacity=\"0.9\" stroke=\"#999\"/>\n";
+          for (unsigned int k = 0; k < series.size(); ++k)
+            {
+              const auto  &s = series[k];
+              const char  *c = colours[k % 4];
+              const double y = ly + 14 + 16 * k;
+              if (s.line)
+                out << "<line x1=\"" << lx + 6 << "\" x2=\"" << lx + 26 << "\" y1=\"" << y - 4 << "\" y2=\""
+                    << y - 4 << "\" stroke=\"" << c << "\" stroke-width=\"1.5\"/>\n";
+              if (s.marker_radius > 0)
+                out << "<circle cx=\"" << lx + 16 << "\" cy=\"" << y - 4 << "\" r=\"" << s.marker_radius
+                    << "\" fill=\"" << c << "\"/>\n";
+              out << "<text x=\"" << lx + 32 << "\" y=\"" << y << "\" fill=\"black\">" << escape(s.name)
+                  << "</text>\n";
+            }
         }
       out << "</svg>\n";
     }

@@ -2,30 +2,39 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
-// Node insertion on contact interfaces (NodeInsertion::insert and
-// make_pairs), with numbers fixed by the geometry.
+// Node insertion on contact interfaces (NodeInsertion::insert), with
+// numbers fixed by the geometry.
 //
-// Counting for two straight sides that overlap completely, with n_m + 1
-// master and n_s + 1 slave vertices of which c coincide (the corners and
-// shared interior vertices): pass 1 snaps c slave vertices and inserts
-// n_s + 1 - c into the master side; pass 2 finds the n_s + 1 master
-// vertices matched in pass 1 (counted as snapped) and inserts the other
-// n_m + 1 - c into the slave side. So
-//   n_inserted_master = n_s + 1 - c, n_inserted_slave = n_m + 1 - c,
-//   n_snapped = c + (n_s + 1) = 2c + n_inserted_master,
-//   n_master_edges = n_slave_edges = n_m + n_s + 2 - c - 1.
+// Counting for two straight sides that touch and overlap completely, with
+// n_m + 1 master and n_s + 1 slave vertices of which c coincide (the
+// corners and shared interior vertices; no other pair of vertices is
+// closer than merge_fraction times the local edge length): the c
+// coinciding vertices are merged, every other slave vertex is inserted
+// into the master side and every other master vertex into the slave side:
+//   n_merged = c, n_inserted_master = n_s + 1 - c,
+//   n_inserted_slave = n_m + 1 - c,
+//   n_master_edges = n_slave_edges = n_m + n_s + 1 - c,
+// vertex pairs = edges + 1, midpoint pairs (k = 2) = edges. Every pair has
+// g_0 = 0 (up to round-off), a discretisation gap, so every vertex pair is
+// counted in n_closed_gaps.
 //
-// a) flat interface, 3x3 lower block, 7x7 (and Voronoi) upper block;
-// b) ratios 1:3, 2:7, 1:2 (shared middle vertex), a vertex shifted by 1e-9
-//    (snaps, no tiny edge);
+// a) flat 3 / 4 (hand count), 3 / 7, 3 / Voronoi, inserting twice;
+// b) ratios 1:3, 2:7, 1:2 (shared middle vertex);
 // c) interface sloped at 30 degrees;
 // d) partial overlap;
-// e) curved slave side (polygonal arc) with initial gaps;
-// f) two interfaces in one mesh (three stacked blocks);
-// g) errors.
-// For k = 1 and 2: weights sum to the interface length, normals, gaps,
-// coinciding locations, midpoint pairs for k = 2, the mesh stays valid and
-// its area unchanged.
+// e) two interfaces in one mesh (three stacked blocks);
+// f) merging: slave vertices 1e-7 .. 0.08 edge lengths beside the master
+//    vertices are merged (no sub-edge shorter than 0.05 h); at 0.15 they
+//    are inserted;
+// g) unpaired nodes: a half disc on a flat block, partly beyond the
+//    search distance;
+// h) real gaps and penetrations are kept: blocks 0.01 and 0.1 apart or
+//    overlapping by 0.01, and slave vertices moved normally by 1e-7 .. 1e-2
+//    edge lengths (closed only below the coordinate precision);
+// i) errors, each naming the interface ids.
+// For k = 1 and 2: weights and segment lengths sum to the interface
+// length, pairs ordered along the slave side, locations where the entities
+// are, the mesh valid.
 #include <deal.II/base/mpi.h>
 
 #include <dealvem/contact/node_insertion.h>
@@ -70,8 +79,20 @@ namespace
     return mesh;
   }
 
-  /// nx by ny quads of the unit square mapped by @p map, built by hand;
-  /// boundary ids left/right/bottom/top = offset + 0/1/2/3.
+  /// A Voronoi block [x0,x1]x[y0,y1] with @p n cells, ids 0..3 + offset.
+  Mesh
+  voronoi_block(const double x0, const double y0, const double x1, const double y1,
+                const unsigned int n, const unsigned int material, const unsigned int offset)
+  {
+    Mesh mesh;
+    PolygonalMeshGenerators::voronoi(mesh, P(x0, y0), P(x1, y1), n, 20, 1);
+    relabel(mesh, material, offset);
+    return mesh;
+  }
+
+  /// nx by ny quads of the unit square mapped by @p map (arguments: the
+  /// reference point and the vertex indices i, j), built by hand; boundary
+  /// ids left/right/bottom/top = offset + 0/1/2/3.
   Mesh
   mapped_quads(const unsigned int nx, const unsigned int ny,
                const std::function<P(double, double, unsigned int, unsigned int)> &map,
@@ -108,33 +129,16 @@ namespace
     return lower;
   }
 
-  std::string
-  report_string(const NodeInsertion::Report &r)
+  unsigned int
+  n_edges_with_id(const Mesh &mesh, const unsigned int id)
   {
-    std::ostringstream s;
-    s << "inserted master " << r.n_inserted_master << ", inserted slave " << r.n_inserted_slave
-      << ", snapped " << r.n_snapped << ", master edges " << r.n_master_edges << ", slave edges "
-      << r.n_slave_edges;
-    return s.str();
-  }
-
-  /// Vertices (sorted along @p t) and edge lengths of the boundary part @p id.
-  std::vector<P>
-  side_vertices(const Mesh &mesh, const unsigned int id, const T &t)
-  {
-    std::vector<unsigned int> v;
+    unsigned int n = 0;
     for (const auto &e : mesh.get_edges())
-      if (e.at_boundary() && e.boundary_id == id)
-        v.insert(v.end(), e.vertices.begin(), e.vertices.end());
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    std::vector<P> p;
-    for (const auto i : v)
-      p.push_back(mesh.vertex(i));
-    std::sort(p.begin(), p.end(), [&](const P &a, const P &b) { return a * t < b * t; });
-    return p;
+      n += (e.at_boundary() && e.boundary_id == id);
+    return n;
   }
 
+  /// Shortest edge with boundary id @p id.
   double
   min_edge_length(const Mesh &mesh, const unsigned int id)
   {
@@ -145,140 +149,165 @@ namespace
     return m;
   }
 
+  std::string
+  report_string(const NodeInsertion::Report &r)
+  {
+    std::ostringstream s;
+    s << "inserted master " << r.n_inserted_master << ", inserted slave " << r.n_inserted_slave
+      << ", merged " << r.n_merged << ", closed gaps " << r.n_closed_gaps << " (max "
+      << r.max_closed_gap << "), master edges " << r.n_master_edges << ", slave edges "
+      << r.n_slave_edges << ", unpaired " << r.unpaired.size();
+    return s.str();
+  }
+
   struct Expected
   {
-    int    inserted_master = -1, inserted_slave = -1, snapped = -1, master_edges = -1,
-        slave_edges = -1;
-    /// Length of the overlap (sum of the weights).
+    int inserted_master = -1, inserted_slave = -1, merged = -1, closed = -1, master_edges = -1,
+        slave_edges = -1, pairs_k1 = -1, pairs_k2 = -1;
+    /// Vertices on the master and slave sides before insertion (complete
+    /// overlap: every vertex gets a partner), or -1.
+    int    n_master_vertices = -1, n_slave_vertices = -1;
+    /// Length of the overlap (sum of the weights and segment lengths).
     double length = 1;
     T      normal;
-    /// The sides carry the same vertices (complete overlap, flat).
-    bool   same_vertices = true;
-    /// Tolerance for coinciding locations and zero gaps.
+    /// The initial gap of every pair (the sides are parallel).
+    double gap = 0;
+    /// Tolerance for the gaps and the coinciding tangential positions.
     double tolerance = 1e-14;
     /// Lower bound for the interface edge lengths after insertion.
-    double min_length = 1e-3;
+    double min_length = 0;
+    /// Unpaired nodes expected.
+    bool unpaired = false;
+    /// Total area unchanged (no vertex moved along a side).
+    bool same_area = true;
   };
+
+  void
+  check_count(const int expected, const unsigned int value, const std::string &what)
+  {
+    if (expected >= 0)
+      testing::check(int(value) == expected,
+                     what + " = " + std::to_string(value) + " (expected " + std::to_string(expected) + ")");
+  }
 
   void
   check_report(const NodeInsertion::Report &r, const Expected &x, const std::string &name)
   {
     std::cout << "      " << name << ": " << report_string(r) << std::endl;
-    const auto c = [&](const int expected, const unsigned int value, const std::string &what) {
-      if (expected >= 0)
-        testing::check(int(value) == expected, name + ": " + what + " = " + std::to_string(value) +
-                                                 " (expected " + std::to_string(expected) + ")");
-    };
-    c(x.inserted_master, r.n_inserted_master, "n_inserted_master");
-    c(x.inserted_slave, r.n_inserted_slave, "n_inserted_slave");
-    c(x.snapped, r.n_snapped, "n_snapped");
-    c(x.master_edges, r.n_master_edges, "n_master_edges");
-    c(x.slave_edges, r.n_slave_edges, "n_slave_edges");
+    check_count(x.inserted_master, r.n_inserted_master, name + ": n_inserted_master");
+    check_count(x.inserted_slave, r.n_inserted_slave, name + ": n_inserted_slave");
+    check_count(x.merged, r.n_merged, name + ": n_merged");
+    check_count(x.closed, r.n_closed_gaps, name + ": n_closed_gaps");
+    check_count(x.master_edges, r.n_master_edges, name + ": n_master_edges");
+    check_count(x.slave_edges, r.n_slave_edges, name + ": n_slave_edges");
+    if (x.n_slave_vertices >= 0)
+      check_count(x.n_slave_vertices, r.n_merged + r.n_inserted_master,
+                  name + ": every slave vertex has a partner: n_merged + n_inserted_master");
+    if (x.n_master_vertices >= 0)
+      check_count(x.n_master_vertices, r.n_merged + r.n_inserted_slave,
+                  name + ": every master vertex has a partner: n_merged + n_inserted_slave");
+    if (!x.unpaired)
+      testing::check(r.unpaired.empty(), name + ": no unpaired node");
   }
 
-  /// Checks of the pairs of one interface for one degree.
+  /// Checks of the pairs of one interface.
   void
-  check_pairs(const Mesh &mesh, const std::vector<ContactNodePair> &pairs, const unsigned int k,
-              const unsigned int interface, const unsigned int n_slave_edges, const Expected &x,
-              const std::string &name)
+  check_interface(const Mesh &mesh, const NodeInsertion::Interface &itf, const unsigned int index,
+                  const Expected &x, const std::string &name)
   {
-    const std::string label = name + ", k = " + std::to_string(k);
-    double            weight = 0, normal_err = 0, tangent_err = 0, gap = 0, location = 0;
-    unsigned int      n_mid = 0, wrong_interface = 0;
-    for (const auto &p : pairs)
+    const unsigned int k     = itf.degree;
+    const std::string  label = name + ", k = " + std::to_string(k);
+    double             weight = 0, length = 0, normal_err = 0, tangent_err = 0, gap_err = 0, shift = 0,
+           location = 0;
+    unsigned int n_mid = 0, wrong_interface = 0;
+    T            t;
+    t[0] = -x.normal[1];
+    t[1] = x.normal[0];
+    for (const auto &p : itf.pairs)
       {
         weight += p.weight;
         normal_err  = std::max(normal_err, (p.normal - x.normal).norm());
-        T t;
-        t[0]        = -x.normal[1];
-        t[1]        = x.normal[0];
         tangent_err = std::max(tangent_err, (p.tangent - t).norm());
-        gap         = std::max(gap, std::abs(p.initial_gap));
-        location    = std::max(location, p.master_location.distance(p.slave_location));
+        gap_err     = std::max(gap_err, std::abs(p.initial_gap - x.gap));
+        shift       = std::max(shift, std::abs((p.slave_location - p.master_location) * t));
         n_mid += p.is_midpoint;
-        wrong_interface += (p.interface != interface);
+        wrong_interface += (p.interface != index);
         // the entities are where the locations say
         if (p.is_midpoint)
           {
             const auto &em = mesh.edge(p.master_entity).vertices;
             const auto &es = mesh.edge(p.slave_entity).vertices;
-            location = std::max(location, p.master_location.distance(
-                                            0.5 * (mesh.vertex(em[0]) + mesh.vertex(em[1]))));
-            location = std::max(location, p.slave_location.distance(
-                                            0.5 * (mesh.vertex(es[0]) + mesh.vertex(es[1]))));
+            location       = std::max(
+              {location,
+               p.master_location.distance(0.5 * (mesh.vertex(em[0]) + mesh.vertex(em[1]))),
+               p.slave_location.distance(0.5 * (mesh.vertex(es[0]) + mesh.vertex(es[1])))});
           }
         else
-          {
-            location = std::max(location, p.master_location.distance(mesh.vertex(p.master_entity)));
-            location = std::max(location, p.slave_location.distance(mesh.vertex(p.slave_entity)));
-          }
+          location = std::max({location, p.master_location.distance(mesh.vertex(p.master_entity)),
+                               p.slave_location.distance(mesh.vertex(p.slave_entity))});
       }
-    std::cout << "      " << label << ": " << pairs.size() << " pairs (" << n_mid << " midpoint pairs)"
-              << std::endl;
-    testing::check_near(weight, x.length, 1e-14, label + ": sum of the weights = interface length");
+    for (const auto &s : itf.segments)
+      length += s.length;
+    std::cout << "      " << label << ": " << itf.pairs.size() << " pairs (" << n_mid
+              << " midpoint pairs), " << itf.segments.size() << " segments" << std::endl;
+    check_count(k == 1 ? x.pairs_k1 : x.pairs_k2, itf.pairs.size(), label + ": number of pairs");
+    testing::check(itf.pairs.size() - n_mid == itf.segments.size() + 1 &&
+                     n_mid == (k == 2 ? itf.segments.size() : 0u),
+                   label + ": one chain: vertex pairs = segments + 1, midpoint pairs = " +
+                     (k == 2 ? std::string("segments") : std::string("0")));
+    testing::check_near(weight, x.length, 1e-14 * x.length, label + ": sum of the weights = interface length");
+    testing::check_near(length, x.length, 1e-14 * x.length,
+                        label + ": sum of the segment lengths = interface length");
     testing::check_small(normal_err, 1e-14, label + ": normals");
     testing::check_small(tangent_err, 1e-14, label + ": tangents");
-    testing::check_small(gap, x.tolerance, label + ": initial gaps zero");
-    testing::check_small(location, x.tolerance, label + ": the locations of each pair coincide");
-    testing::check(wrong_interface == 0, label + ": interface index " + std::to_string(interface));
-    if (x.same_vertices)
-      {
-        testing::check(pairs.size() - n_mid == n_slave_edges + 1,
-                       label + ": one vertex pair per interface vertex (" +
-                         std::to_string(pairs.size() - n_mid) + ")");
-        testing::check(n_mid == (k == 2 ? n_slave_edges : 0),
-                       label + ": midpoint pairs = interface sub-edges (" + std::to_string(n_mid) + ")");
-      }
-    // ordered along the interface
-    bool monotone = true;
-    T    t;
-    t[0] = -x.normal[1];
-    t[1] = x.normal[0];
-    for (unsigned int i = 1; i < pairs.size(); ++i)
-      monotone = monotone && (pairs[i].slave_location * t < pairs[i - 1].slave_location * t);
-    testing::check(monotone, label + ": pairs ordered along the interface");
+    testing::check_small(gap_err, x.tolerance, label + ": initial gaps = " + std::to_string(x.gap));
+    testing::check_small(shift, x.tolerance, label + ": master and slave node of each pair opposite");
+    testing::check_small(location, 1e-15, label + ": pair locations = entity locations");
+    testing::check(wrong_interface == 0, label + ": interface index " + std::to_string(index));
+    // ordered along the slave side (which runs along -t, counter-clockwise
+    // around the upper body)
+    bool ordered = true;
+    for (unsigned int i = 1; i < itf.pairs.size(); ++i)
+      ordered = ordered && (itf.pairs[i].slave_location * t < itf.pairs[i - 1].slave_location * t);
+    testing::check(ordered, label + ": pairs ordered along the slave side");
   }
 
-  /// Insert, check the report, the mesh and the pairs for k = 1, 2.
+  /// Insert for k = 1 and 2 (each on a copy of @p mesh), check the report,
+  /// the mesh and the pairs; return the mesh after insertion (k = 1).
   Mesh
-  run(Mesh mesh, const unsigned int master, const unsigned int slave, const Expected &x,
+  run(const Mesh &original, const unsigned int master, const unsigned int slave, const Expected &x,
       const std::string &name, const NodeInsertion::Settings &settings = NodeInsertion::Settings())
   {
     std::cout << name << std::endl;
-    const double area = mesh.total_area();
-    const auto   r    = NodeInsertion::insert(mesh, master, slave, settings);
-    check_report(r, x, name);
-    bool valid = true;
-    try
-      {
-        mesh.validate();
-      }
-    catch (const std::exception &e)
-      {
-        std::cout << e.what() << std::endl;
-        valid = false;
-      }
-    testing::check(valid, name + ": mesh valid after insertion");
-    testing::check_near(mesh.total_area(), area, 1e-14 * area, name + ": total area unchanged");
-    T t;
-    t[0] = -x.normal[1];
-    t[1] = x.normal[0];
-    if (x.same_vertices)
-      {
-        const auto   pm = side_vertices(mesh, master, t), ps = side_vertices(mesh, slave, t);
-        double       d  = (pm.size() == ps.size() ? 0 : 1e300);
-        for (unsigned int i = 0; i < std::min(pm.size(), ps.size()); ++i)
-          d = std::max(d, pm[i].distance(ps[i]));
-        testing::check_small(d, x.tolerance, name + ": master and slave interface vertices coincide (" +
-                                               std::to_string(pm.size()) + " and " +
-                                               std::to_string(ps.size()) + ")");
-      }
-    testing::check(min_edge_length(mesh, master) > x.min_length && min_edge_length(mesh, slave) > x.min_length,
-                   name + ": no tiny interface edge");
+    const double area = original.total_area();
+    Mesh         result;
     for (const unsigned int k : {1u, 2u})
-      check_pairs(mesh, NodeInsertion::make_pairs(mesh, master, slave, k, settings), k, 0,
-                  r.n_slave_edges, x, name);
-    return mesh;
+      {
+        Mesh       mesh = original;
+        const auto itf  = NodeInsertion::insert(mesh, master, slave, k, settings);
+        const std::string label = name + ", k = " + std::to_string(k);
+        check_report(itf.report, x, label);
+        bool valid = true;
+        try
+          {
+            mesh.validate();
+          }
+        catch (const std::exception &e)
+          {
+            std::cout << e.what() << std::endl;
+            valid = false;
+          }
+        testing::check(valid, label + ": mesh valid after insertion");
+        if (x.same_area)
+          testing::check_near(mesh.total_area(), area, 1e-14 * area, label + ": total area unchanged");
+        const double h_min = std::min(min_edge_length(mesh, master), min_edge_length(mesh, slave));
+        testing::check(h_min >= x.min_length, label + ": shortest interface edge " + std::to_string(h_min) +
+                                                " >= " + std::to_string(x.min_length));
+        check_interface(mesh, itf, 0, x, name);
+        if (k == 1)
+          result = mesh;
+      }
+    return result;
   }
 
   T
@@ -289,15 +318,24 @@ namespace
     return n;
   }
 
+  /// Flat touching interface, complete overlap (see the top of the file).
   Expected
   flat(const int n_m, const int n_s, const int c)
   {
     Expected x;
-    x.inserted_master = n_s + 1 - c;
-    x.inserted_slave  = n_m + 1 - c;
-    x.snapped         = 2 * c + x.inserted_master;
-    x.master_edges = x.slave_edges = n_m + n_s + 1 - c;
-    x.normal                       = up();
+    x.inserted_master   = n_s + 1 - c;
+    x.inserted_slave    = n_m + 1 - c;
+    x.merged            = c;
+    x.master_edges      = n_m + n_s + 1 - c;
+    x.slave_edges       = x.master_edges;
+    x.closed            = x.master_edges + 1;
+    x.pairs_k1          = x.master_edges + 1;
+    x.pairs_k2          = 2 * x.master_edges + 1;
+    x.n_master_vertices = n_m + 1;
+    x.n_slave_vertices  = n_s + 1;
+    x.normal            = up();
+    // shortest sub-edge: 1 / (n_m n_s) times the gcd structure; a bound
+    x.min_length = 1. / (n_m * n_s) - 1e-14;
     return x;
   }
 } // namespace
@@ -310,31 +348,44 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // lower block: ids 0..3 (top 3 = master); upper block: ids 4..7 (bottom 6 = slave)
 
-  // a) flat, non-matching: 3 vs 7 subdivisions; only the corners coincide
+  // a) 3 against 4 quads: master 0, 1/3, 2/3, 1 and slave 0, 1/4, .., 1;
+  // the corners merge, the 3 interior slave vertices go into the master
+  // side and the 2 interior master vertices into the slave side: 7
+  // vertices, 6 sub-edges, 7 pairs (k = 1) and 13 (k = 2); the shortest
+  // sub-edge is 1/3 - 1/4 = 1/12
   {
-    const Expected x = flat(3, 7, 2);
-    testing::check(x.inserted_master == 6 && x.inserted_slave == 2 && x.snapped == 10,
-                   "a) hand count: 6 inserted master, 2 inserted slave, 10 snapped");
-    Mesh mesh = run(join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 1, 1, 2, 7, 7, 1, 4)), 3, 6, x,
-                    "a) flat 3x3 / 7x7");
-    // inserting again changes nothing: every vertex snaps
+    Expected x = flat(3, 4, 2);
+    testing::check(x.inserted_master == 3 && x.inserted_slave == 2 && x.merged == 2 && x.pairs_k1 == 7 &&
+                     x.pairs_k2 == 13,
+                   "a) hand count 3 / 4: 3 inserted master, 2 inserted slave, 2 merged, 7 and 13 pairs");
+    x.min_length = 1. / 12 - 1e-14;
+    Mesh mesh = run(join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 1, 1, 2, 4, 4, 1, 4)), 3, 6, x,
+                    "a) flat 3x3 / 4x4");
+    // inserting again changes nothing: all 7 vertex pairs merge
     const unsigned int n_vertices = mesh.n_vertices();
-    Expected           again      = x;
-    again.inserted_master = again.inserted_slave = 0;
-    again.snapped                                 = 20;
-    check_report(NodeInsertion::insert(mesh, 3, 6, NodeInsertion::Settings()), again, "a) insert again");
-    testing::check(mesh.n_vertices() == n_vertices, "a) insert again: no new vertex");
+    const auto         again      = NodeInsertion::insert(mesh, 3, 6, 1, NodeInsertion::Settings());
+    Expected           y;
+    y.inserted_master = y.inserted_slave = 0;
+    y.merged = y.closed = 7;
+    y.master_edges = y.slave_edges = 6;
+    check_report(again.report, y, "a) insert again");
+    testing::check(mesh.n_vertices() == n_vertices && again.pairs.size() == 7u,
+                   "a) insert again: no new vertex, the same 7 pairs");
   }
-  // a') Voronoi upper block: count its interface vertices
+  run(join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 1, 1, 2, 7, 7, 1, 4)), 3, 6, flat(3, 7, 2),
+      "a) flat 3x3 / 7x7");
   {
-    Mesh upper;
-    PolygonalMeshGenerators::voronoi(upper, P(0, 1), P(1, 2), 49, 20, 1);
-    relabel(upper, 1, 4);
-    unsigned int n_s = 0;
-    for (const auto &e : upper.get_edges())
-      n_s += (e.at_boundary() && e.boundary_id == 6);
+    // Voronoi upper block: only the partner counts are fixed (a Voronoi
+    // vertex may fall within the merge distance of 1/3 or 2/3)
+    const Mesh   upper = voronoi_block(0, 1, 1, 2, 49, 1, 4);
+    const int    n_s   = n_edges_with_id(upper, 6);
+    Expected     x;
+    x.n_master_vertices = 4;
+    x.n_slave_vertices  = n_s + 1;
+    x.normal            = up();
+    x.min_length        = 0.05 * min_edge_length(upper, 6);
     std::cout << "      Voronoi upper block: " << n_s << " interface edges" << std::endl;
-    run(join(block(0, 0, 1, 1, 3, 3, 0, 0), upper), 3, 6, flat(3, n_s, 2), "a') flat 3x3 / Voronoi");
+    run(join(block(0, 0, 1, 1, 3, 3, 0, 0), upper), 3, 6, x, "a) flat 3x3 / Voronoi");
   }
 
   // b) ratios
@@ -344,18 +395,6 @@ main(int argc, char **argv)
       "b) ratio 2:7");
   run(join(block(0, 0, 1, 1, 2, 2, 0, 0), block(0, 1, 1, 2, 4, 4, 1, 4)), 3, 6, flat(2, 4, 3),
       "b) ratio 1:2, shared middle vertex");
-  {
-    // the shared middle vertex of the upper block moved by 1e-9: it snaps
-    const auto shifted = [](const double xi, const double eta, const unsigned int i,
-                            const unsigned int j) {
-      return P(xi + (i == 2 && j == 0 ? 1e-9 : 0.), 1 + eta);
-    };
-    Expected x  = flat(2, 4, 3);
-    x.tolerance = 2e-9;
-    const Mesh mesh = run(join(block(0, 0, 1, 1, 2, 2, 0, 0), mapped_quads(4, 4, shifted, 1, 4)), 3, 6, x,
-                          "b) vertex 1e-9 off the shared middle vertex");
-    testing::check(mesh.n_vertices() == 9 + 25 + 2, "b) shifted: only the two new master vertices added");
-  }
 
   // c) sloped at 30 degrees: lower top y = 1 + tan30 x, upper bottom the same line
   {
@@ -366,56 +405,120 @@ main(int argc, char **argv)
     const auto upper = [t](const double xi, const double eta, unsigned int, unsigned int) {
       return P(xi, 1 + t * xi + eta * (1 - t * xi));
     };
-    Expected x = flat(3, 5, 2);
-    x.length   = 1 / std::cos(M_PI / 6);
+    Expected x  = flat(3, 5, 2);
+    x.length    = 1 / std::cos(M_PI / 6);
     x.normal[0] = -std::sin(M_PI / 6);
     x.normal[1] = std::cos(M_PI / 6);
+    x.tolerance = 1e-14;
     run(join(mapped_quads(3, 3, lower, 0, 0), mapped_quads(5, 4, upper, 1, 4)), 3, 6, x,
         "c) sloped 30 degrees, 3 / 5");
   }
 
-  // d) partial overlap: upper block [0.5,1.5]x[1,2] with 4x4 cells
+  // d) partial overlap: upper block [0.5,1.5]x[1,2] with 4x4 cells; slave
+  // vertices 0.5, 0.75 go into the master side, master vertex 2/3 into
+  // the slave side, the vertices at x = 1 merge; 1/3, 1.25, 1.5 lie
+  // outside the overlap [0.5, 1]
   {
     Expected x;
-    x.inserted_master = 2; // x = 0.5, 0.75
-    x.inserted_slave  = 1; // x = 2/3
-    x.snapped         = 4; // x = 1 in pass 1; 0.5, 0.75, 1 in pass 2
+    x.inserted_master = 2;
+    x.inserted_slave  = 1;
+    x.merged          = 1;
+    x.closed          = 4;
     x.master_edges    = 5;
     x.slave_edges     = 5;
+    x.pairs_k1        = 4;
+    x.pairs_k2        = 7;
     x.length          = 0.5;
     x.normal          = up();
-    x.same_vertices   = false;
-    const Mesh mesh =
-      run(join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0.5, 1, 1.5, 2, 4, 4, 1, 4)), 3, 6, x, "d) partial overlap");
+    x.min_length      = 0.75 - 2. / 3 - 1e-14; // 1/12
+    run(join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0.5, 1, 1.5, 2, 4, 4, 1, 4)), 3, 6, x,
+        "d) partial overlap");
+  }
+
+  // e) three stacked blocks, two interfaces (ids 3 : 6 and 7 : 10)
+  {
+    std::cout << "e) two interfaces" << std::endl;
+    Mesh mesh = join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 1, 1, 2, 5, 5, 1, 4));
+    mesh.append(block(0, 2, 1, 3, 4, 4, 2, 8));
+    const double            area = mesh.total_area();
+    NodeInsertion::Settings settings;
     for (const unsigned int k : {1u, 2u})
       {
-        const auto pairs = NodeInsertion::make_pairs(mesh, 3, 6, k, NodeInsertion::Settings());
-        bool       inside = true;
-        for (const auto &p : pairs)
-          inside = inside && p.slave_location[0] >= 0.5 - 1e-14 && p.slave_location[0] <= 1 + 1e-14;
-        testing::check(inside && pairs.size() == (k == 1 ? 4u : 7u),
-                       "d) k = " + std::to_string(k) + ": " + std::to_string(pairs.size()) +
-                         " pairs, all on x in [0.5, 1]");
+        Mesh       m    = mesh;
+        const auto itf0 = NodeInsertion::insert(m, 3, 6, k, settings, 0);
+        const auto itf1 = NodeInsertion::insert(m, 7, 10, k, settings, 1);
+        const std::string label = "e) k = " + std::to_string(k);
+        check_report(itf0.report, flat(3, 5, 2), label + ", interface 0 (3 : 6)");
+        check_report(itf1.report, flat(5, 4, 2), label + ", interface 1 (7 : 10)");
+        m.validate();
+        testing::check_near(m.total_area(), area, 1e-14 * area, label + ": total area unchanged");
+        check_interface(m, itf0, 0, flat(3, 5, 2), "e) interface 0");
+        check_interface(m, itf1, 1, flat(5, 4, 2), "e) interface 1");
       }
   }
 
-  // e) curved slave side: a half disc of radius R = 1 centred at (0, 1),
-  // fan of triangles, arc vertices every 7.5 degrees; it touches the flat
-  // master side y = 0 (x in [-1, 1], 4 edges of length 0.5) at x = 0. With
-  // search distance 0.1 (0.05 absolute on the master side) the arc vertices
-  // at 0, +-7.5, +-15 degrees (|x| < 0.3, gaps up to 0.034) pair, the next
-  // ones (gap 0.076) do not.
+  // f) merging instead of short sub-edges: master vertices 0, 1/4, .., 1
+  // (h = 1/4); the 3 interior slave vertices are moved along the interface
+  // by delta h. With merge fraction f, a pair merges if delta h <= f times
+  // the shortest edge at the two vertices, h (1 - delta) at the last one:
+  // delta <= f (1 - delta). Then all 5 vertex pairs merge, nothing is
+  // inserted, the slave vertices move onto the master vertices and every
+  // sub-edge is h again. Otherwise the 3 interior vertices of each side go
+  // into the other one (8 vertices, 7 sub-edges) and the shortest sub-edge
+  // is delta h >= 0.05 h. Merge fractions 0.05 and 0.1.
+  for (const double fraction : {0.05, 0.1})
+    for (const double delta : {1e-7, 1e-5, 1e-3, 1e-2, 0.03, 0.08, 0.15})
+      {
+        NodeInsertion::Settings settings;
+        settings.merge_fraction = fraction;
+        const double h          = 0.25;
+        const auto upper = [&](const double xi, const double eta, const unsigned int i, const unsigned int j) {
+          return P(xi + (j == 0 && i > 0 && i < 4 ? delta * h : 0.), 1 + eta);
+        };
+        const bool merge = delta <= fraction * (1 - delta);
+        Expected   x;
+        x.inserted_master   = merge ? 0 : 3;
+        x.inserted_slave    = merge ? 0 : 3;
+        x.merged            = merge ? 5 : 2;
+        x.closed            = merge ? 5 : 8;
+        x.master_edges      = merge ? 4 : 7;
+        x.slave_edges       = x.master_edges;
+        x.pairs_k1          = x.master_edges + 1;
+        x.pairs_k2          = 2 * x.master_edges + 1;
+        x.n_master_vertices = 5;
+        x.n_slave_vertices  = 5;
+        x.normal            = up();
+        x.min_length        = (merge ? h : delta * h) - 1e-15;
+        x.same_area         = !merge; // a merge moves the slave vertex
+        std::ostringstream name;
+        name << "f) merge fraction " << fraction << ", slave vertices " << delta
+             << " h beside the master vertices";
+        run(join(block(0, 0, 1, 1, 4, 1, 0, 0), mapped_quads(4, 2, upper, 1, 4)), 3, 6, x, name.str(),
+            settings);
+      }
+
+  // g) unpaired nodes: a half disc of radius 1 centred at (0, 1) (fan of
+  // triangles, arc vertices every 7.5 degrees at (sin a, 1 - cos a)) on the
+  // flat top y = 0 of the block [-1,1]x[-0.5,0] (4 edges). The interface
+  // size is the diagonal of [-1,1]x[0,1], sqrt(5); with search distance
+  // 0.02 nodes farther than 0.02 sqrt(5) = 0.0447 from the other side stay
+  // unpaired: the arc vertices at a = 0, +-7.5, +-15 degrees (gaps 1 - cos a
+  // up to 0.034) pair, those at +-22.5 degrees (gap 0.076) are reported,
+  // as are the master vertices at x = +-0.5 (gap 1 - cos 30 = 0.134).
+  // Pairs: the bottom vertices merge, the 4 other arc vertices go into the
+  // master side; 5 vertex pairs, 4 segments (chords of 7.5 degrees), the
+  // gaps 1 - cos a are real and kept.
   {
-    std::cout << "e) curved slave side" << std::endl;
+    std::cout << "g) half disc on a block, partly beyond the search distance" << std::endl;
     const double R = 1, dtheta = M_PI / 24;
     Mesh         upper;
-    upper.name = "half disc";
+    upper.name                = "half disc";
     const unsigned int centre = upper.add_vertex(P(0, R));
     std::vector<unsigned int> arc;
     for (int j = 0; j <= 24; ++j)
       {
-        const double theta = -M_PI / 2 + j * dtheta;
-        arc.push_back(upper.add_vertex(P(R * std::sin(theta), R - R * std::cos(theta))));
+        const double a = -M_PI / 2 + j * dtheta;
+        arc.push_back(upper.add_vertex(P(R * std::sin(a), R - R * std::cos(a))));
       }
     for (unsigned int j = 0; j < 24; ++j)
       {
@@ -425,38 +528,55 @@ main(int argc, char **argv)
     upper.set_boundary_id(centre, arc[0], 7);
     upper.set_boundary_id(arc[24], centre, 7);
     upper.finalize();
-    Mesh mesh = join(block(-1, -0.5, 1, 0, 4, 1, 0, 0), upper);
+    const Mesh original = join(block(-1, -0.5, 1, 0, 4, 1, 0, 0), upper);
 
     NodeInsertion::Settings settings;
-    settings.search_distance = 0.1;
-    const double area = mesh.total_area();
-    const auto   r    = NodeInsertion::insert(mesh, 3, 6, settings);
-    Expected     x;
-    x.inserted_master = 4;
-    x.inserted_slave  = 0;
-    x.snapped         = 6; // the bottom vertex in pass 1; it and the 4 new vertices in pass 2
-    x.master_edges    = 8;
-    x.slave_edges     = 24;
-    check_report(r, x, "e) curved");
-    testing::check_near(mesh.total_area(), area, 1e-14 * area, "e) total area unchanged");
-    mesh.validate();
-    const double chord = 2 * R * std::sin(dtheta / 2);
+    settings.search_distance = 0.02;
+    const double chord       = 2 * R * std::sin(dtheta / 2);
     for (const unsigned int k : {1u, 2u})
       {
-        const std::string label = "e) curved, k = " + std::to_string(k);
-        const auto        pairs = NodeInsertion::make_pairs(mesh, 3, 6, k, settings);
-        double            weight = 0, gap_err = 0, normal_err = 0, x_err = 0, max_x = 0;
-        unsigned int      n_mid  = 0;
-        for (const auto &p : pairs)
+        const std::string label = "g) half disc, k = " + std::to_string(k);
+        Mesh              mesh  = original;
+        const auto        itf   = NodeInsertion::insert(mesh, 3, 6, k, settings);
+        const auto       &r     = itf.report;
+        Expected          x;
+        x.inserted_master = 4;
+        x.inserted_slave  = 0;
+        x.merged          = 1;
+        x.closed          = 1; // the touching bottom vertex (g_0 = 0)
+        x.master_edges    = 8;
+        x.slave_edges     = 24;
+        x.unpaired        = true;
+        check_report(r, x, label);
+        mesh.validate();
+        // the reported nodes
+        bool         slave_22 = false, master_05 = false, reasons = true;
+        unsigned int n_listed_paired = 0;
+        for (const auto &u : r.unpaired)
+          {
+            std::cout << "      unpaired " << (u.on_master ? "master" : "slave") << " vertex at ("
+                      << u.location[0] << ", " << u.location[1] << "): " << u.reason << std::endl;
+            reasons = reasons && u.reason.find("search distance") != std::string::npos;
+            if (!u.on_master && std::abs(std::abs(u.location[0]) - std::sin(3 * dtheta)) < 1e-14)
+              slave_22 = true;
+            if (u.on_master && std::abs(std::abs(u.location[0]) - 0.5) < 1e-14 && std::abs(u.location[1]) < 1e-14)
+              master_05 = true;
+            n_listed_paired += (std::abs(u.location[0]) < 0.3);
+          }
+        testing::check(!r.unpaired.empty() && reasons,
+                       label + ": unpaired nodes reported, each beyond the search distance");
+        testing::check(slave_22 && master_05,
+                       label + ": the arc vertices at +-22.5 degrees and the master vertices at x = +-0.5 "
+                               "are reported");
+        testing::check(n_listed_paired == 0, label + ": no paired node (|x| < 0.3) reported");
+        double weight = 0, gap_err = 0, x_err = 0, max_x = 0;
+        for (const auto &p : itf.pairs)
           {
             weight += p.weight;
-            n_mid += p.is_midpoint;
-            normal_err = std::max(normal_err, (p.normal - up()).norm());
-            x_err      = std::max(x_err, std::abs(p.master_location[0] - p.slave_location[0]));
-            max_x      = std::max(max_x, std::abs(p.slave_location[0]));
-            const double xs = p.slave_location[0];
+            x_err = std::max(x_err, std::abs(p.master_location[0] - p.slave_location[0]));
+            max_x = std::max(max_x, std::abs(p.slave_location[0]));
             // vertex: on the circle; midpoint: mean of the chord's ends
-            double g0 = R - std::sqrt(R * R - xs * xs);
+            double g0 = R - std::sqrt(R * R - p.slave_location[0] * p.slave_location[0]);
             if (p.is_midpoint)
               {
                 const auto &e = mesh.edge(p.slave_entity).vertices;
@@ -464,59 +584,112 @@ main(int argc, char **argv)
               }
             gap_err = std::max(gap_err, std::abs(p.initial_gap - g0));
           }
-        std::cout << "      " << label << ": " << pairs.size() << " pairs (" << n_mid << " midpoint pairs)"
-                  << std::endl;
-        testing::check(pairs.size() == (k == 1 ? 5u : 9u) && n_mid == (k == 1 ? 0u : 4u),
-                       label + ": 5 vertex pairs (|x| < 0.3)" + (k == 2 ? " and 4 midpoint pairs" : ""));
+        check_count(k == 1 ? 5 : 9, itf.pairs.size(), label + ": number of pairs");
+        check_count(4, itf.segments.size(), label + ": number of segments");
         testing::check(max_x < 0.3, label + ": only nodes with |x| < 0.3 pair");
-        testing::check_small(gap_err, 1e-12, label + ": gaps g0 = R - sqrt(R^2 - x^2)");
-        testing::check_small(normal_err, 1e-14, label + ": normals (0, 1)");
+        testing::check_small(gap_err, 1e-12, label + ": real gaps kept: g0 = R - sqrt(R^2 - x^2)");
         testing::check_small(x_err, 1e-14, label + ": master node below the slave node");
         testing::check_near(weight, 4 * chord, 1e-14, label + ": weights sum to the paired arc length");
       }
   }
 
-  // f) three stacked blocks, two interfaces
-  {
-    std::cout << "f) two interfaces" << std::endl;
-    Mesh mesh = join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 1, 1, 2, 5, 5, 1, 4));
-    mesh.append(block(0, 2, 1, 3, 4, 4, 2, 8));
-    const double area = mesh.total_area();
-    NodeInsertion::Settings settings;
-    check_report(NodeInsertion::insert(mesh, 3, 6, settings), flat(3, 5, 2), "f) interface 0 (3 : 6)");
-    check_report(NodeInsertion::insert(mesh, 7, 10, settings), flat(5, 4, 2), "f) interface 1 (7 : 10)");
-    mesh.validate();
-    testing::check_near(mesh.total_area(), area, 1e-14 * area, "f) total area unchanged");
+  // h) real gaps and penetrations are kept. Two blocks g apart (upper
+  // block independently meshed, structured and Voronoi): every pair has
+  // g_0 = g (to 1e-12 relative), the nodes are opposite each other along
+  // the normal, and no gap is closed (|g| is far above the coordinate
+  // precision 1e-5 (|x| + |y|) <= 2e-5 and the sides are flat).
+  for (const double g : {0.01, 0.1, -0.01})
+    for (const bool voronoi : {false, true})
+      {
+        const Mesh upper = voronoi ? voronoi_block(0, 1 + g, 1, 2 + g, 30, 1, 4) :
+                                     block(0, 1 + g, 1, 2 + g, 4, 4, 1, 4);
+        Expected   x;
+        x.closed            = 0;
+        x.n_master_vertices = 4;
+        x.n_slave_vertices  = n_edges_with_id(upper, 6) + 1;
+        x.normal            = up();
+        x.gap               = g;
+        x.tolerance         = 1e-12 * std::abs(g);
+        x.min_length        = voronoi ? 0.05 * min_edge_length(upper, 6) : 1. / 12 - 1e-14;
+        std::ostringstream name;
+        name << "h) " << (g > 0 ? "gap " : "penetration ") << std::abs(g) << ", 3x3 / "
+             << (voronoi ? "Voronoi" : "4x4");
+        run(join(block(0, 0, 1, 1, 3, 3, 0, 0), upper), 3, 6, x, name.str());
+      }
+  // ... and slave interior vertices moved normally (away from the lower
+  // block) by delta h, h = 1/4: all 5 vertex pairs merge; below the
+  // coordinate precision (delta h <= 2.5e-6 < 1e-5 (|x| + |y|)) the gap is
+  // closed (the slave vertex moves onto the master vertex, all 5 pairs
+  // closed), above it (delta = 1e-3, 1e-2) the gap delta h is kept at the
+  // 3 interior pairs (only the 2 corner pairs closed).
+  for (const double delta : {1e-7, 1e-5, 1e-3, 1e-2})
     for (const unsigned int k : {1u, 2u})
       {
-        const Expected x0 = flat(3, 5, 2), x1 = flat(5, 4, 2);
-        check_pairs(mesh, NodeInsertion::make_pairs(mesh, 3, 6, k, settings, 0), k, 0, x0.slave_edges, x0,
-                    "f) interface 0");
-        check_pairs(mesh, NodeInsertion::make_pairs(mesh, 7, 10, k, settings, 1), k, 1, x1.slave_edges, x1,
-                    "f) interface 1");
+        const double h     = 0.25;
+        const auto   upper = [&](const double xi, const double eta, const unsigned int i, const unsigned int j) {
+          return P(xi, 1 + eta + (j == 0 && i > 0 && i < 4 ? delta * h : 0.));
+        };
+        const bool closed = delta * h < 1e-5;
+        Mesh       mesh   = join(block(0, 0, 1, 1, 4, 1, 0, 0), mapped_quads(4, 2, upper, 1, 4));
+        const auto itf    = NodeInsertion::insert(mesh, 3, 6, k, NodeInsertion::Settings());
+        std::ostringstream name;
+        name << "h) slave vertices " << delta << " h above the master vertices, k = " << k;
+        Expected x;
+        x.inserted_master = x.inserted_slave = 0;
+        x.merged                             = 5;
+        x.closed                             = closed ? 5 : 2;
+        check_report(itf.report, x, name.str());
+        double gap_err = 0, shift = 0;
+        for (const auto &p : itf.pairs)
+          {
+            const double xs     = p.slave_location[0];
+            const auto   vertex = [&](const double x) { return (x > 0.1 && x < 0.9) ? delta * h : 0.; };
+            // a midpoint pair: the mean of the gaps at the ends of its edge
+            const double expected =
+              closed ? 0. : (p.is_midpoint ? 0.5 * (vertex(xs - h / 2) + vertex(xs + h / 2)) : vertex(xs));
+            gap_err               = std::max(gap_err, std::abs(p.initial_gap - expected));
+            shift                 = std::max(shift, std::abs(p.slave_location[0] - p.master_location[0]));
+          }
+        check_count(k == 1 ? 5 : 9, itf.pairs.size(), name.str() + ": number of pairs");
+        testing::check_small(gap_err, 1e-15, name.str() + (closed ? ": gaps closed (g0 = 0)" :
+                                                                     ": gaps delta h kept at the interior pairs"));
+        testing::check_small(shift, 1e-15, name.str() + ": nodes opposite each other");
       }
-  }
 
-  // g) errors
+  // i) errors, each naming the interface
   {
-    std::cout << "g) errors" << std::endl;
+    std::cout << "i) errors" << std::endl;
     const NodeInsertion::Settings settings;
     const Mesh two = join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 1, 1, 2, 4, 4, 1, 4));
-    testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 42, settings); },
-                          "boundary id 42 has no boundary edges", "g) unknown boundary id");
-    testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 0, settings); },
-                          "belong to the same body", "g) both ids on the same body");
-    testing::check_throws([&] { NodeInsertion::make_pairs(two, 3, 0, 1, settings); },
-                          "belong to the same body", "g) make_pairs: both ids on the same body");
+    testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 42, 1, settings); },
+                          "(master id 3, slave id 42): boundary id 42 has no boundary edges",
+                          "i) unknown boundary id");
+    testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 0, 1, settings); },
+                          "(master id 3, slave id 0): both boundary ids 3 and 0 belong to the same body",
+                          "i) both ids on the same body");
+    testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 6, 3, settings); },
+                          "(master id 3, slave id 6): contact node pairs are implemented for order k = 1 and "
+                          "2, not k = 3",
+                          "i) degree 3");
     // the upper block keeps the ids 0..3: id 3 is on both bodies
     const Mesh same_ids = join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 1, 1, 2, 4, 4, 1, 0));
-    testing::check_throws([&] { Mesh m = same_ids; NodeInsertion::insert(m, 3, 2, settings); },
-                          "belong to more than one body", "g) one boundary id on two bodies");
+    testing::check_throws([&] { Mesh m = same_ids; NodeInsertion::insert(m, 3, 2, 1, settings); },
+                          "(master id 3, slave id 2): the boundary edges with id 3 belong to more than one body",
+                          "i) one boundary id on two bodies");
     const Mesh far = join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 5, 1, 6, 4, 4, 1, 4));
-    testing::check_throws([&] { Mesh m = far; NodeInsertion::insert(m, 3, 6, settings); },
-                          "do not face or overlap", "g) parts far apart");
-    testing::check_throws([&] { NodeInsertion::make_pairs(two, 3, 6, 3, settings); }, "k = 3",
-                          "g) make_pairs: degree 3");
+    testing::check_throws([&] { Mesh m = far; NodeInsertion::insert(m, 3, 6, 1, settings); },
+                          "(master id 3, slave id 6): the boundary parts do not face or overlap",
+                          "i) parts far apart");
+    // the top of the lower block against the left side of the upper block:
+    // they touch at (0, 1), but the normals are at 90 degrees
+    testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 4, 1, settings); },
+                          "(master id 3, slave id 4): the boundary parts do not face or overlap",
+                          "i) parts not facing each other");
+    NodeInsertion::Settings bad;
+    bad.merge_fraction = 0.6;
+    testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 6, 1, bad); },
+                          "(master id 3, slave id 6): the merge fraction must lie in (0, 0.5)",
+                          "i) merge fraction out of range");
   }
 
   return testing::finish();

@@ -16,6 +16,7 @@
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/polygonal_mesh.h>
+#include <dealvem/postprocessing/error_norms.h>
 
 #include <map>
 #include <string>
@@ -56,8 +57,14 @@ namespace dealvem
     void
     parse_parameters(dealii::ParameterHandler &prm, const std::string &prm_directory = "");
 
+    /// Solve (every refinement cycle of the convergence study; results()
+    /// then holds the last cycle, convergence_history() the errors of all).
     void
     run();
+
+    /// One cycle: meshes refined @p cycle times.
+    void
+    run_cycle(const unsigned int cycle);
 
     /// Results of one contact node pair.
     struct PairResult
@@ -97,6 +104,10 @@ namespace dealvem
       std::vector<std::array<double, 3>> cell_stress;
       dealii::Vector<double>       solution;
       std::string                  solver;
+      /// Per body: cells, DoFs, and errors against its exact solution
+      /// (zero where none is given).
+      std::vector<unsigned int>    cells_per_body, dofs_per_body;
+      std::vector<ErrorNorms>      errors;
       /// Wall times of the stages (mesh, node insertion, assembly, solve).
       std::map<std::string, double> timings;
     };
@@ -107,11 +118,19 @@ namespace dealvem
       return results;
     }
 
+    /// The per-body errors of every cycle of run().
+    const std::vector<std::vector<ErrorNorms>> &
+    convergence_history() const
+    {
+      return convergence;
+    }
+
   private:
     struct Body
     {
       MeshParameters mesh;
       double         E = 1000, nu = 0.3;
+      std::string    exact; ///< exact displacement 'ux, uy' (may be empty)
     };
     std::vector<Body>          bodies;
     ElasticMaterial::Model     model = ElasticMaterial::Model::plane_strain;
@@ -128,7 +147,9 @@ namespace dealvem
     bool                       write_vtu = true, write_json = true, write_pictures = true,
                                write_csv = true;
     std::string                prm_directory;
+    unsigned int               n_cycles = 1;
     Results                    results;
+    std::vector<std::vector<ErrorNorms>> convergence;
   };
 } // namespace dealvem
 

@@ -82,11 +82,36 @@ namespace dealvem
    *
    * A multiplier is a nodal force: $\lambda_i < 0$ is compression, and the
    * contact pressure at the node is $p_i = -\lambda_i / w_i$.
+   *
+   * <b>Redundant constraints.</b> A contact constraint whose displacement
+   * DoFs are all fixed by the displacement constraints (Dirichlet, roller,
+   * point constraints), e.g. the tangential constraint of a pair whose two
+   * nodes both sit on a roller $u_x = 0$, becomes a zero row of $C$ after
+   * condensation and would make the system singular. assemble() treats
+   * such a row as AffineConstraints treats a constraint on a constrained
+   * DoF: if the value that the displacement constraints impose on
+   * $C_i u$ agrees with the value contact requires ($-g_0$ for a tied or
+   * active normal constraint, 0 for a tangential one; for unilateral
+   * contact any value that does not force a penetration), the multiplier
+   * gets the equation $\lambda = 0$ and the constraint is listed in
+   * get_dropped_constraints(); otherwise assemble() throws an error naming
+   * the pair and the two values.
    */
   template <int dim>
   class ContactAssembler
   {
   public:
+    /// A contact constraint that the displacement constraints already fix.
+    struct DroppedConstraint
+    {
+      unsigned int     pair;       ///< index into get_pairs()
+      dealii::Point<2> location;   ///< slave location of the pair
+      bool             tangential; ///< false: the normal constraint
+      /// Value of $(u_B - u_A)\cdot n$ (or $\cdot t$) imposed by the
+      /// displacement constraints.
+      double           imposed_value;
+    };
+
     ContactAssembler(const VEMDoFHandler<dim>            &dof_handler,
                      const std::vector<ContactNodePair> &pairs,
                      const ContactSettings              &settings,
@@ -153,12 +178,37 @@ namespace dealvem
       return pairs;
     }
 
+    /**
+     * The enforced contact constraints of the last call of assemble() that
+     * were redundant with the displacement constraints and replaced by
+     * $\lambda = 0$ (see the class documentation), in the order of the
+     * pairs, normal before tangential.
+     */
+    const std::vector<DroppedConstraint> &
+    get_dropped_constraints() const
+    {
+      return dropped;
+    }
+
   private:
+    /**
+     * If the row @p c (coefficients of the four DoFs of pair @p i) only
+     * involves DoFs that @p constraints fix, return true and the value the
+     * constraints impose on it in @p value.
+     */
+    bool
+    is_fixed_by_constraints(const dealii::AffineConstraints<double> &constraints,
+                            const unsigned int                       i,
+                            const double                             c[4],
+                            double                                  &value) const;
+
     const VEMDoFHandler<dim>     &dof_handler;
     std::vector<ContactNodePair>  pairs;
     ContactSettings               settings;
     double                        penalty;
     unsigned int                  n_normal, n_tangential;
+    /// Filled by assemble() (which is otherwise const).
+    mutable std::vector<DroppedConstraint> dropped;
   };
 } // namespace dealvem
 

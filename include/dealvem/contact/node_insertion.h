@@ -114,7 +114,7 @@ namespace dealvem
     {
       /// Nodes closer than this times the local edge length are merged
       /// (paired without a split); 0 < merge_fraction < 0.5.
-      double merge_fraction = 0.1;
+      double merge_fraction = 0.05;
       /// Largest distance between a node and its partner, relative to the
       /// size of the interface (the diagonal of the bounding box of both
       /// sides). Larger gaps leave the node unpaired (reported).
@@ -143,7 +143,9 @@ namespace dealvem
       unsigned int n_inserted_master = 0; ///< new vertices on the master side
       unsigned int n_inserted_slave  = 0; ///< new vertices on the slave side
       unsigned int n_merged          = 0; ///< pairs of existing vertices (no split)
-      unsigned int n_closed_gaps     = 0; ///< discretisation gaps closed
+      /// pairs whose gap was a discretisation gap (zero gaps included):
+      /// their two nodes now coincide
+      unsigned int n_closed_gaps     = 0;
       double       max_closed_gap    = 0; ///< largest |g_0| closed (length)
       double       max_merge_shift   = 0; ///< largest vertex move by a merge
       unsigned int n_master_edges    = 0; ///< master interface edges after insertion

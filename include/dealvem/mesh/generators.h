@@ -107,10 +107,14 @@ namespace dealvem
                        const dealii::Triangulation<dim, dim>      &tria);
 
     /// Read a mesh file with deal.II's GridIn (format from the extension:
-    /// .msh, .inp, .ucd, .vtk of deal.II's own kind, ...) and convert it.
+    /// .msh, .inp, .ucd, .vtk of deal.II's own kind, ...), refine the
+    /// triangulation @p n_refinements times (Triangulation::refine_global:
+    /// new vertices on the straight edges, since a file carries no
+    /// manifold) and convert it.
     template <int dim>
     void
-    from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename);
+    from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename,
+                     const unsigned int n_refinements = 0);
   } // namespace PolygonalMeshGenerators
 } // namespace dealvem
 

@@ -34,7 +34,9 @@ namespace dealvem
   /**
    * Compute the errors by a quadrature of degree 2k + 6 on every polygon.
    * @p exact has two components; its gradient() must be implemented (for
-   * example dealii::AutoDerivativeFunction, or analytically).
+   * example dealii::AutoDerivativeFunction, or analytically). With
+   * @p body set, only the cells of that material id (one body of a contact
+   * problem) are measured.
    */
   template <int dim>
   ErrorNorms
@@ -42,7 +44,8 @@ namespace dealvem
                  const std::map<dealii::types::material_id, ElasticMaterial> &materials,
                  const double                                                 gamma,
                  const dealii::Vector<double>                                &solution,
-                 const dealii::Function<dim>                                 &exact);
+                 const dealii::Function<dim>                                 &exact,
+                 const dealii::types::material_id body = dealii::numbers::invalid_material_id);
 } // namespace dealvem
 
 #endif

@@ -42,9 +42,14 @@ namespace dealvem
     {
       std::string                             name;
       std::vector<std::pair<double, double>> points;
+      /// Join the points by a line.
+      bool                                    line = true;
+      /// Radius of the point markers (0: none).
+      double                                  marker_radius = 3;
     };
 
-    /// A line plot with markers, axes with ticks, and a legend.
+    /// A line plot with markers, axes with ticks, and a legend in the
+    /// upper left corner; series are drawn in order (the last on top).
     void
     write_line_plot(const std::string         &filename,
                     const std::vector<Series> &series,

@@ -1,0 +1,208 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// Hertz contact (NAFEMS): a half cylinder R = 50, E = 70000, on a block
+// [-100,100]x[-100,0], E = 210000, nu = 0.3, plane strain, frictionless
+// unilateral contact; the flat cut of the cylinder is a rigid boundary part
+// loaded by (0, -P), P = 35000. Both meshes are deal.II quadrilaterals
+// refined toward the contact zone (block edge 0.125, cylinder arc edge
+// 0.153 there), converted to polygons and read back through 'vtk file', so
+// the curved and the flat side do not match and node insertion keeps the
+// real gaps between them. For k = 1 and k = 2:
+// - recovered peak pressure within 1 % of p0 = 2P/(pi a);
+// - half-width within one local edge of a = sqrt(4PR/(pi E*));
+// - recovered nodal pressure within 3 % of p0 at every pair with |x| < 0.8a;
+// - no open pair inside |x| < a - h; no open-end warning;
+// - total contact force = P to 1e-10 relative.
+// The mesh code is a copy of the one in examples/step-3 (kept small).
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+
+#include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/mesh_io.h>
+
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <sstream>
+
+#include "../contact_common.h"
+#include "../tests.h"
+
+namespace
+{
+  constexpr double R = 50., E_cyl = 70000., E_block = 210000., nu = 0.3, P = 35000.;
+  constexpr double h_target = 0.125, x_strip = 8.;
+
+  // refine cells longer than 1.3 h whose centre is within two cell sizes of
+  // the contact strip
+  void
+  refine_toward(dealii::Triangulation<2> &tria, const std::function<double(const dealii::Point<2> &)> &distance)
+  {
+    for (bool any = true; any;)
+      {
+        any = false;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            double size = 0;
+            for (unsigned int l = 0; l < 4; ++l)
+              size = std::max(size, cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
+            if (size > 1.3 * h_target && distance(cell->center()) < 2. * size)
+              {
+                cell->set_refine_flag();
+                any = true;
+              }
+          }
+        if (any)
+          tria.execute_coarsening_and_refinement();
+      }
+  }
+
+  // block: ids 0 left, 1 right, 2 bottom, 3 top
+  void
+  write_block(const std::string &file)
+  {
+    dealii::Triangulation<2> tria;
+    dealii::GridGenerator::subdivided_hyper_rectangle(tria, {25u, 12u}, dealii::Point<2>(-100, -100),
+                                                      dealii::Point<2>(100, 0), true);
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(0);
+    refine_toward(tria, [](const dealii::Point<2> &p) {
+      const double dx = std::max(std::abs(p[0]) - x_strip, 0.);
+      return std::sqrt(dx * dx + p[1] * p[1]);
+    });
+    dealvem::PolygonalMesh<2> mesh;
+    dealvem::PolygonalMeshGenerators::from_triangulation(mesh, tria);
+    dealvem::MeshIO::write_vtk(mesh, file);
+  }
+
+  // lower half disk about (0, R): ids 0 arc, 1 flat cut
+  void
+  write_cylinder(const std::string &file)
+  {
+    const dealii::Point<2>   centre(0, R);
+    dealii::Triangulation<2> tria;
+    dealii::GridGenerator::half_hyper_ball(tria, dealii::Point<2>(), R);
+    dealii::GridTools::rotate(-M_PI / 2, tria);
+    dealii::GridTools::shift(centre - dealii::Point<2>(), tria);
+    tria.set_manifold(0, dealii::SphericalManifold<2>(centre));
+    tria.refine_global(3);
+    refine_toward(tria, [&](const dealii::Point<2> &p) {
+      const auto   q = p - centre;
+      const double r = q.norm();
+      if (r > 1e-12 * R)
+        {
+          const auto on_arc = centre + (R / r) * q;
+          if (std::abs(on_arc[0]) <= x_strip && on_arc[1] < R)
+            return std::abs(r - R);
+        }
+      const double ye = R - std::sqrt(R * R - x_strip * x_strip);
+      return std::min(p.distance(dealii::Point<2>(-x_strip, ye)), p.distance(dealii::Point<2>(x_strip, ye)));
+    });
+    dealvem::PolygonalMesh<2> mesh;
+    dealvem::PolygonalMeshGenerators::from_triangulation(mesh, tria);
+    dealvem::MeshIO::write_vtk(mesh, file);
+  }
+
+  // longest edge with boundary id @p id of the mesh in @p file over |x| <= s
+  double
+  local_edge(const std::string &file, const unsigned int id, const double s)
+  {
+    dealvem::PolygonalMesh<2> mesh;
+    dealvem::MeshIO::read_vtk(mesh, file);
+    double h = 0;
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      {
+        const auto &edge = mesh.edge(e);
+        if (!edge.at_boundary() || edge.boundary_id != id)
+          continue;
+        const auto &a = mesh.vertex(edge.vertices[0]), &b = mesh.vertex(edge.vertices[1]);
+        if (std::abs(0.5 * (a[0] + b[0])) <= s)
+          h = std::max(h, a.distance(b));
+      }
+    return h;
+  }
+
+  std::string
+  hertz_prm(const unsigned int k)
+  {
+    std::ostringstream p;
+    p << "set Number of bodies = 2\n"
+      << "subsection Mesh\n  set Type = vtk file\n  set File name = block.vtk\nend\n"
+      << "subsection Material\n  set Model = plane strain\n  set Young's modulus = " << E_block
+      << "\n  set Poisson's ratio = " << nu << "\nend\n"
+      << "subsection Body 1\n  subsection Mesh\n    set Type = vtk file\n    set File name = cylinder.vtk\n"
+      << "    set Boundary id offset = 10\n  end\n  subsection Material\n    set Young's modulus = " << E_cyl
+      << "\n    set Poisson's ratio = " << nu << "\n  end\nend\n"
+      << "subsection Discretization\n  set Order = " << k << "\nend\n"
+      << "subsection Contact\n  set Pairs = 3 : 10\n  set Normal = unilateral\n"
+      << "  set Tangential = frictionless\nend\n"
+      << "subsection Boundary conditions and loads\n  set Dirichlet = 2 : xy : 0, 0\n"
+      << "  set Rigid boundary = 11 : 0, " << -P << "\n  set Point constraints = 0, 50 : x : 0 : 1\nend\n"
+      << "subsection Output\n  set Write VTU = false\n  set Write JSON = false\n"
+      << "  set Write pictures = false\n  set Write CSV = false\nend\n";
+    return p.str();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const double E_star = 1. / ((1. - nu * nu) / E_cyl + (1. - nu * nu) / E_block);
+  const double a      = std::sqrt(4. * P * R / (M_PI * E_star));
+  const double p0     = 2. * P / (M_PI * a);
+  auto         exact  = [&](const double x) { return std::abs(x) < a ? p0 * std::sqrt(1. - x * x / (a * a)) : 0.; };
+  std::cout << "a = " << a << ", p0 = " << p0 << std::endl;
+
+  write_block("block.vtk");
+  write_cylinder("cylinder.vtk");
+  const double h = std::max(local_edge("block.vtk", 3, a + 1), local_edge("cylinder.vtk", 0, a + 1));
+  std::cout << "local edge length h = " << h << std::endl;
+
+  for (const unsigned int k : {1u, 2u})
+    {
+      const std::string tag = "k=" + std::to_string(k);
+      const auto        r   = testing::run_contact(hertz_prm(k));
+      double            p_max = 0, error = 0, x_min = 0, x_max = 0;
+      unsigned int      open_inside = 0;
+      for (const auto &pair : r.pairs)
+        if (pair.active)
+          {
+            x_min = std::min(x_min, pair.location[0]);
+            x_max = std::max(x_max, pair.location[0]);
+          }
+      double open_left = -1e10, open_right = 1e10;
+      for (const auto &pair : r.pairs)
+        {
+          const double x = pair.location[0];
+          p_max          = std::max(p_max, pair.pressure);
+          if (std::abs(x) < 0.8 * a)
+            error = std::max(error, std::abs(pair.pressure - exact(x)));
+          if (!pair.active)
+            {
+              if (std::abs(x) < a - h)
+                ++open_inside;
+              if (x > x_max)
+                open_right = std::min(open_right, x);
+              if (x < x_min)
+                open_left = std::max(open_left, x);
+            }
+        }
+      // edge of the contact zone: middle between the last closed and the
+      // first open pair, on both sides
+      const double a_h = 0.25 * (x_max + open_right - x_min - open_left);
+      testing::check_small(p_max / p0 - 1., 0.01, tag + ": peak pressure / p0 - 1");
+      testing::check_small((a_h - a) / h, 1., tag + ": (half-width - a) / h");
+      testing::check_small(error / p0, 0.03, tag + ": max nodal pressure error inside 0.8a / p0");
+      testing::check(open_inside == 0, tag + ": no open pair inside |x| < a - h (" + std::to_string(open_inside) + ")");
+      testing::check(r.n_open_end_warnings == 0, tag + ": no open-end warnings");
+      testing::check_small(r.total_contact_force[1] / P - 1., 1e-10, tag + ": total contact force / P - 1");
+      testing::check_small(r.total_contact_force[0] / P, 1e-10, tag + ": horizontal contact force / P");
+    }
+  return testing::finish();
+}
