@@ -628,6 +628,12 @@ namespace dealvem
               std::cout << "    ... (" << r.unpaired.size() - 5 << " more)" << std::endl;
           }
       }
+    for (const auto &d : contact.get_dropped_constraints())
+      std::cout << "  note: the " << (d.tangential ? "tangential" : "normal") << " constraint of the pair at ("
+                << d.location[0] << ", " << d.location[1]
+                << ") is already imposed by the displacement constraints (value " << d.imposed_value
+                << "); its multiplier is dropped." << std::endl;
+    results.n_dropped_constraints = contact.get_dropped_constraints().size();
     for (const auto &r : results.pairs)
       if (r.active && r.at_open_end)
         {

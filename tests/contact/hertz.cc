@@ -15,6 +15,10 @@
 // - recovered nodal pressure within 3 % of p0 at every pair with |x| < 0.8a;
 // - no open pair inside |x| < a - h; no open-end warning;
 // - total contact force = P to 1e-10 relative.
+// And the warning for a contact part that is too short: with the block's
+// contact part cut to |x| <= 4 < a, the pairs at both ends of the paired
+// part are active where both boundaries go on smoothly, so the run reports
+// two open-end warnings (k = 1).
 // The mesh code is a copy of the one in examples/step-3 (kept small).
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
@@ -128,11 +132,11 @@ namespace
   }
 
   std::string
-  hertz_prm(const unsigned int k)
+  hertz_prm(const unsigned int k, const std::string &block_file = "block.vtk")
   {
     std::ostringstream p;
     p << "set Number of bodies = 2\n"
-      << "subsection Mesh\n  set Type = vtk file\n  set File name = block.vtk\nend\n"
+      << "subsection Mesh\n  set Type = vtk file\n  set File name = " << block_file << "\nend\n"
       << "subsection Material\n  set Model = plane strain\n  set Young's modulus = " << E_block
       << "\n  set Poisson's ratio = " << nu << "\nend\n"
       << "subsection Body 1\n  subsection Mesh\n    set Type = vtk file\n    set File name = cylinder.vtk\n"
@@ -204,5 +208,20 @@ main(int argc, char **argv)
       testing::check_small(r.total_contact_force[1] / P - 1., 1e-10, tag + ": total contact force / P - 1");
       testing::check_small(r.total_contact_force[0] / P, 1e-10, tag + ": horizontal contact force / P");
     }
+  {
+    dealvem::PolygonalMesh<2> block;
+    dealvem::MeshIO::read_vtk(block, "block.vtk");
+    for (unsigned int e = 0; e < block.n_edges(); ++e)
+      {
+        const auto &edge = block.edge(e);
+        if (edge.at_boundary() && edge.boundary_id == 3 &&
+            std::abs(0.5 * (block.vertex(edge.vertices[0])[0] + block.vertex(edge.vertices[1])[0])) > 4.)
+          block.set_edge_boundary_id(e, 4);
+      }
+    dealvem::MeshIO::write_vtk(block, "block-cut.vtk");
+    const auto r = testing::run_contact(hertz_prm(1, "block-cut.vtk"));
+    testing::check(r.n_open_end_warnings == 2,
+                   "contact part |x| <= 4 < a: two open-end warnings (" + std::to_string(r.n_open_end_warnings) + ")");
+  }
   return testing::finish();
 }

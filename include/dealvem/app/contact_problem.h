@@ -93,6 +93,9 @@ namespace dealvem
       std::vector<NodeInsertion::Interface> interfaces;
       /// Number of active pairs at an open end (each printed as a warning).
       unsigned int                 n_open_end_warnings = 0;
+      /// Contact constraints already imposed by the displacement constraints
+      /// (see ContactAssembler::get_dropped_constraints()).
+      unsigned int                 n_dropped_constraints = 0;
       unsigned int                 n_dofs = 0, n_multipliers = 0;
       unsigned int                 active_set_iterations = 0;
       std::vector<unsigned int>    active_set_history;
