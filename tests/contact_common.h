@@ -33,13 +33,16 @@ namespace testing
   inline std::string
   block_mesh(const std::string &type, const double x0, const double y0, const double x1,
              const double y1, const unsigned int nx, const unsigned int ny,
-             const unsigned int offset, const unsigned int seed = 1)
+             const unsigned int offset, const unsigned int seed = 1, const double tilt = 0)
   {
     std::ostringstream s;
     s << "subsection Mesh\n  set Type = " << type << "\n  set Lower left corner = " << x0 << ", "
       << y0 << "\n  set Upper right corner = " << x1 << ", " << y1 << "\n  set Subdivisions = " << nx
       << ", " << ny << "\n  set Number of cells = " << nx * ny << "\n  set Seed = " << seed
-      << "\n  set Boundary id offset = " << offset << "\nend\n";
+      << "\n  set Boundary id offset = " << offset;
+    if (tilt != 0) // raise the block linearly in x: its bottom slopes by tilt
+      s << "\n  set Transformation = x, y + " << tilt << "*x";
+    s << "\nend\n";
     return s.str();
   }
 } // namespace testing

@@ -13,9 +13,11 @@
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/contact/active_set_solver.h>
 #include <dealvem/contact/contact_pressure.h>
+#include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/postprocessing/output_file.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/svg_plots.h>
 #include <dealvem/postprocessing/vtu_output.h>
@@ -23,7 +25,6 @@
 #include <dealvem/vem/vem_dof_handler.h>
 #include <dealvem/vem/virtual_element.h>
 
-#include <Eigen/Dense>
 
 #include <filesystem>
 #include <fstream>
@@ -157,6 +158,11 @@ namespace dealvem
     for (unsigned int b = 0; b < n; ++b)
       {
         bodies[b].mesh.material_id = b;
+        InputParsing::check_range(bodies[b].E, ElasticMaterial::min_youngs_modulus,
+                                  ElasticMaterial::max_youngs_modulus,
+                                  (b == 0 ? std::string() : "Body " + std::to_string(b) + "/") +
+                                    "Material/Young's modulus",
+                                  false, false, "Choose units that bring E nearer to 1.");
         (void)ElasticMaterial(bodies[b].E, bodies[b].nu, model);
       }
 
@@ -164,6 +170,7 @@ namespace dealvem
     degree = prm.get_integer("Order");
     gamma  = prm.get_double("Stabilization factor");
     prm.leave_subsection();
+    InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
     bc.parse_parameters(prm);
 
     prm.enter_subsection("Contact");
@@ -197,6 +204,11 @@ namespace dealvem
     insertion_settings.coordinate_precision      = prm.get_double("Coordinate precision");
     insertion_settings.close_discretisation_gaps = prm.get_bool("Close discretisation gaps");
     prm.leave_subsection();
+    InputParsing::check_range(contact_settings.penalty, 0, 1e12, "Contact/Penalty", false, false,
+                              "Larger penalties make the system too ill-conditioned for correct pressures.");
+    InputParsing::check_range(contact_settings.penalty_factor, 0, 1e12, "Contact/Penalty factor", false,
+                              false,
+                              "Larger penalties make the system too ill-conditioned for correct pressures.");
     AssertThrow(n == 1 || !contact_pairs.empty(),
                 dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
                                    std::to_string(n) + " bodies: name at least one contact pair."));
@@ -208,6 +220,13 @@ namespace dealvem
     solver_tolerance      = prm.get_double("Relative tolerance");
     solver_max_iterations = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
+    InputParsing::check_range(solver_tolerance, 0, 1, "Solver/Relative tolerance", true, true);
+    {
+      std::vector<const MeshParameters *> meshes;
+      for (const auto &b : bodies)
+        meshes.push_back(&b.mesh);
+      InputParsing::check_run_size(meshes, n_cycles, degree, prm.get_bool("Allow large runs"));
+    }
 
     prm.enter_subsection("Output");
     output_folder  = prm.get("Folder");
@@ -217,102 +236,9 @@ namespace dealvem
     write_pictures = prm.get_bool("Write pictures");
     write_csv      = prm.get_bool("Write CSV");
     prm.leave_subsection();
+    check_output_names(output_folder, base_name);
+    create_output_folder(output_folder);
   }
-
-
-
-  namespace
-  {
-    // Check that the Dirichlet constraints and the contact constraints
-    // together hold every body against rigid motion: the restrictions of
-    // the 3 * n_bodies rigid-body modes must have full rank.
-    void
-    check_support(const VEMDoFHandler<2>                  &dof_handler,
-                  const dealii::AffineConstraints<double> &constraints,
-                  const ContactAssembler<2>               &contact,
-                  const bool                               tangential_stick,
-                  const unsigned int                       n_bodies)
-    {
-      const auto &mesh = dof_handler.get_mesh();
-      std::vector<unsigned int> node_body(dof_handler.n_nodes(), 0);
-      std::vector<unsigned int> nodes;
-      std::vector<dealii::Point<2>> centre(n_bodies);
-      std::vector<double>           size(n_bodies, 1e-300), count(n_bodies, 0);
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        {
-          dof_handler.get_node_indices(c, nodes);
-          for (const auto n : nodes)
-            node_body[n] = mesh.cell(c).material_id;
-        }
-      for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-        {
-          centre[node_body[v]] += mesh.vertex(v);
-          count[node_body[v]] += 1;
-        }
-      for (unsigned int b = 0; b < n_bodies; ++b)
-        centre[b] /= std::max(count[b], 1.);
-      for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-        size[node_body[v]] = std::max(size[node_body[v]], mesh.vertex(v).distance(centre[node_body[v]]));
-      const unsigned int N = 3 * n_bodies;
-      // value of mode m (of the dof's body) at a dof
-      auto mode_row = [&](const dealii::types::global_dof_index dof, const double factor, Eigen::VectorXd &row) {
-        const unsigned int node = dof / 2, comp = dof % 2, b = node_body[node];
-        const auto         x = dof_handler.node_location(node) - centre[b];
-        row(3 * b + comp) += factor;
-        row(3 * b + 2) += factor * (comp == 0 ? -x[1] : x[0]) / size[b];
-      };
-      Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(N, N);
-      for (const auto &line : constraints.get_lines())
-        {
-          if (line.index >= dof_handler.n_dofs())
-            continue;
-          Eigen::VectorXd row = Eigen::VectorXd::Zero(N);
-          mode_row(line.index, 1., row);
-          for (const auto &e : line.entries)
-            mode_row(e.first, -e.second, row);
-          gram += row * row.transpose();
-        }
-      for (unsigned int i = 0; i < contact.n_pairs(); ++i)
-        {
-          const auto  d = contact.pair_dofs(i);
-          const auto &p = contact.get_pairs()[i];
-          for (unsigned int dir = 0; dir < (tangential_stick ? 2u : 1u); ++dir)
-            {
-              const auto     &v   = (dir == 0 ? p.normal : p.tangent);
-              Eigen::VectorXd row = Eigen::VectorXd::Zero(N);
-              mode_row(d[0], -v[0], row);
-              mode_row(d[1], -v[1], row);
-              mode_row(d[2], v[0], row);
-              mode_row(d[3], v[1], row);
-              gram += row * row.transpose();
-            }
-        }
-      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
-      const double vmax = std::max(eig.eigenvalues().maxCoeff(), 1e-300);
-      std::ostringstream msg;
-      bool               ok = true;
-      for (unsigned int k = 0; k < N; ++k)
-        if (eig.eigenvalues()(k) <= 1e-10 * vmax)
-          {
-            ok = false;
-            msg << " [";
-            const char *names[3] = {"x-translation", "y-translation", "rotation"};
-            bool        first    = true;
-            for (unsigned int j = 0; j < N; ++j)
-              if (std::abs(eig.eigenvectors()(j, k)) > 1e-3)
-                {
-                  msg << (first ? "" : " + ") << names[j % 3] << " of body " << j / 3;
-                  first = false;
-                }
-            msg << "]";
-          }
-      AssertThrow(ok, dealii::ExcMessage(
-                        "Unsupported body / rigid-body mode: the constraints and contact pairs "
-                        "leave these rigid-body motions free:" + msg.str() +
-                        ". Add Dirichlet, roller or point constraints (with frictionless contact, "
-                        "each body must be held against sliding along the interface)."));
-    }
-  } // namespace
 
 
 
@@ -427,9 +353,18 @@ namespace dealvem
     bc.check_boundary_ids(mesh);
     bc.apply_constraints(dof_handler, constraints);
     constraints.close();
-    check_support(dof_handler, constraints, contact,
-                  contact_settings.tangential != ContactSettings::Tangential::frictionless,
-                  bodies.size());
+    // every body must be held by the constraints and the contact pairs
+    // together (with every pair closed); the active set checks its sets too
+    RigidBodySupport support(dof_handler, constraints, contact,
+                             contact_settings.tangential != ContactSettings::Tangential::frictionless);
+    {
+      const std::string free = support.free_motions(std::vector<bool>(contact.n_pairs(), true));
+      AssertThrow(free.empty(),
+                  dealii::ExcMessage("Unsupported body / rigid-body mode: the constraints and contact pairs "
+                                     "leave these rigid-body motions free: " + free +
+                                     ". Add Dirichlet, roller or point constraints (with frictionless contact, "
+                                     "each body must be held against sliding along the interface)."));
+    }
 
     const unsigned int n = dof_handler.n_dofs(), m = contact.n_multipliers();
     dealii::SparsityPattern      sparsity;
@@ -495,6 +430,7 @@ namespace dealvem
     if (settings.type == SaddlePointSolver::Type::gmres_amg)
       solver.set_near_null_space(dof_handler.rigid_body_modes());
     ActiveSetSolver<2>     active_set(contact, constraints, solver, contact_settings, E_min / h_min);
+    active_set.set_support(&support);
     dealii::Vector<double> x;
     typename ActiveSetSolver<2>::Result as;
     {
@@ -649,6 +585,9 @@ namespace dealvem
               << "  active set: " << as.n_iterations << " iteration(s), active pairs per iteration:";
     for (const auto a : as.n_active_history)
       std::cout << " " << a;
+    if (as.n_closed_for_support > 0)
+      std::cout << " (the first set closes the " << as.n_closed_for_support
+                << " pair(s) of smallest initial gap, so that every body is held)";
     std::cout << std::endl << "  solver: " << solver.description();
     if (as.linear_iterations > as.n_iterations)
       std::cout << ", " << as.linear_iterations << " linear iterations in all";
@@ -677,11 +616,11 @@ namespace dealvem
     std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
               << ", " << results.total_contact_force[1] << ")" << std::endl;
 
-    const std::string prefix =
-      output_folder + "/" + base_name + (n_cycles > 1 ? "-cycle" + std::to_string(cycle) : std::string());
+    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
     if (write_csv)
       {
-        std::ofstream csv(prefix + "-interface.csv");
+        OutputFile    csv_file(prefix + "-interface.csv");
+        std::ostream &csv = csv_file.stream();
         csv << "interface,x,y,midpoint,active,weight,gap,pressure,lumped_pressure,multiplier,"
                "tangential_traction,slip\n";
         csv << std::setprecision(15);
@@ -690,6 +629,7 @@ namespace dealvem
               << "," << r.active << "," << r.weight << "," << r.gap << "," << r.pressure << ","
               << r.lumped_pressure << "," << r.multiplier << ","
               << r.tangential_traction << "," << r.slip << "\n";
+        csv_file.commit();
         std::cout << "  interface results: " << prefix << "-interface.csv" << std::endl;
       }
     if (write_vtu)

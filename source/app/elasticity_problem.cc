@@ -17,6 +17,7 @@
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/postprocessing/output_file.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/linear_solver.h>
@@ -32,12 +33,16 @@ namespace dealvem
   ElasticityProblem::declare_parameters(dealii::ParameterHandler &prm)
   {
     using namespace dealii::Patterns;
+    prm.declare_entry("Allow large runs", "false", Bool(),
+                      "Before a run starts, its size is estimated from the mesh parameters and the "
+                      "refinement cycles; runs estimated above 2e7 DoFs, 1e7 Voronoi cells, 1e5 Lloyd "
+                      "iterations or 1e8 Lloyd iterations x cells (summed over the cycles) are refused unless this is true.");
     prm.enter_subsection("Mesh");
     MeshParameters::declare_parameters(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Material");
-    prm.declare_entry("Young's modulus", "1000", Double(0), "Young's modulus E (> 0).");
+    prm.declare_entry("Young's modulus", "1000", Double(0), "Young's modulus E, 1e-200 <= E <= 1e200.");
     prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
                       "Poisson's ratio nu, -1 < nu < 0.5.");
     prm.declare_entry("Model", "plane strain", Selection("plane strain|plane stress"),
@@ -48,7 +53,7 @@ namespace dealvem
     prm.declare_entry("Order", "2", Integer(1, 2), "Order k of the virtual elements (1 or 2).");
     prm.declare_entry("Stabilization factor", "1.0", Double(1e-8),
                       "Factor gamma of the dofi-dofi stabilization gamma*tau*(I-Pi)^T(I-Pi), "
-                      "tau = trace(consistency matrix)/n_dofs.");
+                      "tau = trace(consistency matrix)/n_dofs; 1e-6 <= gamma <= 1e6.");
     prm.leave_subsection();
 
     BoundaryConditionParameters::declare_parameters(prm);
@@ -69,7 +74,7 @@ namespace dealvem
                       "preconditioner (AMG on the displacement block, exact approximate Schur "
                       "complement); one body: GMRES-AMG means CG-AMG.");
     prm.declare_entry("Relative tolerance", "1e-12", Double(1e-16, 1),
-                      "Relative residual tolerance of the iterative solver.");
+                      "Relative residual tolerance of the iterative solver, 0 < tolerance < 1.");
     prm.declare_entry("Maximum iterations", "10000", Integer(1), "Iteration limit of the iterative solver.");
     prm.leave_subsection();
 
@@ -81,10 +86,16 @@ namespace dealvem
 
     prm.enter_subsection("Output");
     prm.declare_entry("Folder", "output", Anything(),
-                      "Output folder (relative to the working directory), created if needed.");
-    prm.declare_entry("Base name", "solution", Anything(), "Base name of the output files.");
-    prm.declare_entry("Write VTU", "true", Bool(), "Write <base name>-<cycle>.vtu for ParaView.");
-    prm.declare_entry("Write JSON", "true", Bool(), "Write the summary <base name>.json.");
+                      "Output folder (relative to the working directory, not empty), created if "
+                      "needed.");
+    prm.declare_entry("Base name", "solution", Anything(),
+                      "Base name of the output files (not empty, no '/'). With several refinement "
+                      "cycles the files of cycle c are <base name>-cycle<c>.*.");
+    prm.declare_entry("Write VTU", "true", Bool(),
+                      "Write <base name>.vtu (one cycle) or <base name>-cycle<c>.vtu for ParaView.");
+    prm.declare_entry("Write JSON", "true", Bool(),
+                      "Write the summary <base name>.json (one body: all cycles in one file, "
+                      "rewritten after each cycle).");
     prm.leave_subsection();
   }
 
@@ -103,6 +114,9 @@ namespace dealvem
     poissons_ratio = prm.get_double("Poisson's ratio");
     model          = ElasticMaterial::parse_model(prm.get("Model"));
     prm.leave_subsection();
+    InputParsing::check_range(youngs_modulus, ElasticMaterial::min_youngs_modulus,
+                              ElasticMaterial::max_youngs_modulus, "Material/Young's modulus", false,
+                              false, "Choose units that bring E nearer to 1.");
     // validates E and nu
     (void)ElasticMaterial(youngs_modulus, poissons_ratio, model);
 
@@ -110,6 +124,7 @@ namespace dealvem
     degree = prm.get_integer("Order");
     gamma  = prm.get_double("Stabilization factor");
     prm.leave_subsection();
+    InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
 
     bc.parse_parameters(prm);
 
@@ -124,10 +139,12 @@ namespace dealvem
     solver_tolerance      = prm.get_double("Relative tolerance");
     solver_max_iterations = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
+    InputParsing::check_range(solver_tolerance, 0, 1, "Solver/Relative tolerance", true, true);
 
     prm.enter_subsection("Convergence study");
     n_cycles = prm.get_integer("Refinement cycles");
     prm.leave_subsection();
+    InputParsing::check_run_size({&mesh_parameters}, n_cycles, degree, prm.get_bool("Allow large runs"));
 
     prm.enter_subsection("Output");
     output_folder = prm.get("Folder");
@@ -135,6 +152,7 @@ namespace dealvem
     write_vtu     = prm.get_bool("Write VTU");
     write_json    = prm.get_bool("Write JSON");
     prm.leave_subsection();
+    check_output_names(output_folder, base_name);
   }
 
 
@@ -142,7 +160,8 @@ namespace dealvem
   void
   ElasticityProblem::run()
   {
-    std::filesystem::create_directories(output_folder);
+    check_output_names(output_folder, base_name);
+    create_output_folder(output_folder);
     const ElasticMaterial                                 material(youngs_modulus, poissons_ratio, model);
     const std::map<dealii::types::material_id, ElasticMaterial> materials = {
       {dealii::types::material_id(mesh_parameters.material_id), material}};
@@ -226,7 +245,7 @@ namespace dealvem
             dealii::TimerOutput::Scope t(timer, "errors");
             errors = compute_errors(dof_handler, materials, gamma, solution, *exact);
           }
-        const std::string vtu = output_folder + "/" + base_name + "-" + std::to_string(cycle) + ".vtu";
+        const std::string vtu = output_prefix(output_folder, base_name, cycle, n_cycles) + ".vtu";
         if (write_vtu)
           {
             dealii::TimerOutput::Scope t(timer, "output");
@@ -273,6 +292,9 @@ namespace dealvem
         last_timings.clear();
         for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
           last_timings[s.first] = s.second;
+        // the summary of the cycles so far: a later failure keeps it
+        if (write_json)
+          json.write(output_folder + "/" + base_name + ".json");
       }
 
     if (exact)
@@ -297,10 +319,10 @@ namespace dealvem
     if (write_json)
       {
         const std::string file = output_folder + "/" + base_name + ".json";
-        json.write(file);
         std::cout << "Summary written to " << file << std::endl;
       }
     if (write_vtu)
-      std::cout << "ParaView files: " << output_folder << "/" << base_name << "-*.vtu" << std::endl;
+      std::cout << "ParaView files: " << output_folder << "/" << base_name
+                << (n_cycles > 1 ? "-cycle*.vtu" : ".vtu") << std::endl;
   }
 } // namespace dealvem

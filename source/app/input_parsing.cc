@@ -7,9 +7,14 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/app/input_parsing.h>
+#include <dealvem/app/mesh_parameters.h>
 
+#include <muParserError.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iomanip>
 #include <sstream>
 
 namespace dealvem
@@ -95,6 +100,84 @@ namespace dealvem
 
 
 
+    void
+    check_range(const double       value,
+                const double       lower,
+                const double       upper,
+                const std::string &parameter,
+                const bool         lower_open,
+                const bool         upper_open,
+                const std::string &reason)
+    {
+      const bool ok = std::isfinite(value) && (lower_open ? value > lower : value >= lower) &&
+                      (upper_open ? value < upper : value <= upper);
+      if (ok)
+        return;
+      std::ostringstream msg;
+      msg << "Parameter '" << parameter << "' = " << value << " is out of range: it must lie in "
+          << (lower_open ? "(" : "[") << lower << ", " << upper << (upper_open ? ")" : "]") << ".";
+      if (!reason.empty())
+        msg << " " << reason;
+      AssertThrow(false, dealii::ExcMessage(msg.str()));
+    }
+
+
+
+    void
+    check_constant_names(const std::map<std::string, double> &constants, const std::string &parameter)
+    {
+      // the variables, and the functions and constants of muparser and of
+      // deal.II's FunctionParser
+      static const std::vector<std::string> reserved = {
+        "x",     "y",     "t",     "sin",  "cos",  "tan",   "asin",  "acos",  "atan", "sinh",
+        "cosh",  "tanh",  "asinh", "acosh", "atanh", "log2", "log10", "log",   "ln",   "exp",
+        "sqrt",  "sign",  "rint",  "abs",  "min",  "max",   "sum",   "avg",   "ceil", "cot",
+        "csc",   "floor", "sec",   "pow",  "erfc", "rand",  "rand_seed", "atan2", "fmod", "int",
+        "_pi",   "_e"};
+      for (const auto &c : constants)
+        {
+          const std::string &name = c.first;
+          const bool valid = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                             std::all_of(name.begin(), name.end(), [](const char ch) {
+                               return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+                             });
+          AssertThrow(valid,
+                      dealii::ExcMessage("Parameter '" + parameter + "': '" + name +
+                                         "' is not a valid constant name (a letter or '_' followed by "
+                                         "letters, digits or '_')."));
+          AssertThrow(std::find(reserved.begin(), reserved.end(), name) == reserved.end(),
+                      dealii::ExcMessage("Parameter '" + parameter + "': the name '" + name +
+                                         "' is reserved (" +
+                                         (name == "x" || name == "y" || name == "t" ?
+                                            std::string("a variable of the expressions") :
+                                            std::string("a function or constant of the expression parser")) +
+                                         "); choose another name for this constant."));
+        }
+      // whatever else the parser does not accept
+      std::string error;
+      try
+        {
+          dealii::FunctionParser<2> parser(1);
+          parser.initialize("x,y,t", "0", constants, true);
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+      catch (const mu::ParserError &e)
+        {
+          error = e.GetMsg();
+        }
+      catch (...)
+        {
+          error = "the expression parser rejected them";
+        }
+      AssertThrow(error.empty(), dealii::ExcMessage("Parameter '" + parameter +
+                                                    "': the constants are not accepted: " + error));
+    }
+
+
+
     std::map<std::string, double>
     parse_constants(const std::string &s, const std::string &parameter)
     {
@@ -105,9 +188,116 @@ namespace dealvem
           AssertThrow(kv.size() == 2 && !kv[0].empty(),
                       dealii::ExcMessage("Parameter '" + parameter + "': expected name=value, got '" +
                                          entry + "'."));
+          AssertThrow(c.count(kv[0]) == 0,
+                      dealii::ExcMessage("Parameter '" + parameter + "': the constant '" + kv[0] +
+                                         "' is defined twice."));
           c[kv[0]] = parse_double(kv[1], parameter + " (" + kv[0] + ")");
         }
+      check_constant_names(c, parameter);
       return c;
+    }
+
+
+
+    RunSizeEstimate
+    estimate_run_size(const std::vector<const MeshParameters *> &meshes,
+                      const unsigned int                        n_cycles,
+                      const unsigned int                        degree)
+    {
+      RunSizeEstimate e;
+      for (const MeshParameters *m : meshes)
+        for (unsigned int cycle = 0; cycle < std::max(n_cycles, 1u); ++cycle)
+          {
+            const bool   last = (cycle + 1 == std::max(n_cycles, 1u));
+            const double f    = std::ldexp(1., int(cycle));
+            const double nx = double(m->nx) * f, ny = double(m->ny) * f;
+            double       cells = 0, vertices = 0, edges = 0;
+            if (m->type == "structured quads" || m->type == "perturbed quads")
+              {
+                cells    = nx * ny;
+                vertices = (nx + 1) * (ny + 1);
+                edges    = 2 * nx * ny + nx + ny;
+              }
+            else if (m->type == "structured triangles")
+              {
+                cells    = 2 * nx * ny;
+                vertices = (nx + 1) * (ny + 1);
+                edges    = 3 * nx * ny + nx + ny;
+              }
+            else if (m->type == "nonconvex")
+              {
+                // a polygon per subdivision, with an extra (reflex) vertex
+                cells    = nx * ny;
+                vertices = 2 * (nx + 1) * (ny + 1);
+                edges    = 3 * nx * ny + 2 * (nx + ny);
+              }
+            else if (m->type == "voronoi")
+              {
+                // a centroidal Voronoi mesh has about 2 vertices and 3 edges per cell
+                cells    = double(m->n_cells) * f * f;
+                vertices = 2 * cells + 4;
+                edges    = 3 * cells + 4;
+                e.lloyd_work += (double(m->lloyd_iterations) + 1) * cells;
+                e.lloyd_iterations = std::max(e.lloyd_iterations, double(m->lloyd_iterations));
+                if (last)
+                  e.voronoi_cells += cells;
+              }
+            else
+              {
+                e.complete = false;
+                continue;
+              }
+            if (last)
+              {
+                e.cells += cells;
+                // k = 2: a node per edge and the two moments of each cell
+                e.dofs += 2 * vertices + (degree >= 2 ? 2 * edges + 2 * cells : 0.);
+              }
+          }
+      return e;
+    }
+
+
+
+    void
+    check_run_size(const std::vector<const MeshParameters *> &meshes,
+                   const unsigned int                        n_cycles,
+                   const unsigned int                        degree,
+                   const bool                                allow_large_runs)
+    {
+      const RunSizeEstimate e = estimate_run_size(meshes, n_cycles, degree);
+      std::ostringstream    estimate;
+      estimate << std::setprecision(3) << "the estimate for the last of the " << n_cycles
+               << " refinement cycle(s) is " << e.cells << " cells and " << e.dofs << " DoFs";
+      if (e.voronoi_cells > 0)
+        estimate << ", " << e.voronoi_cells << " Voronoi cells, " << e.lloyd_iterations
+                 << " Lloyd iterations (Lloyd iterations x cells summed over the cycles: "
+                 << e.lloyd_work << ")";
+      AssertThrow(e.cells <= max_representable_cells,
+                  dealii::ExcMessage("The mesh parameters ('Mesh/Subdivisions', 'Mesh/Number of cells', "
+                                     "'Convergence study/Refinement cycles') ask for more cells than the "
+                                     "program can represent: " +
+                                     estimate.str() + "."));
+      if (allow_large_runs)
+        return;
+      std::string what;
+      std::ostringstream limit;
+      limit << std::setprecision(3);
+      if (e.dofs > max_dofs)
+        limit << " more than " << max_dofs << " DoFs;";
+      if (e.voronoi_cells > max_voronoi_cells)
+        limit << " more than " << max_voronoi_cells << " Voronoi cells;";
+      if (e.lloyd_iterations > max_lloyd_iterations)
+        limit << " more than " << max_lloyd_iterations << " Lloyd iterations;";
+      if (e.lloyd_work > max_lloyd_work)
+        limit << " Lloyd iterations x cells above " << max_lloyd_work << ";";
+      what = limit.str();
+      AssertThrow(what.empty(),
+                  dealii::ExcMessage("This run is very large:" + what + " " + estimate.str() +
+                                     ". It would take very long or run out of memory. Reduce 'Mesh/Subdivisions', "
+                                     "'Mesh/Number of cells', 'Mesh/Lloyd iterations' or 'Convergence "
+                                     "study/Refinement cycles', or set 'Allow large runs = true' (top "
+                                     "level of the parameter file) to go ahead anyway."));
     }
 
 
@@ -139,6 +329,10 @@ namespace dealvem
       catch (const std::exception &e)
         {
           error = e.what();
+        }
+      catch (const mu::ParserError &e)
+        {
+          error = e.GetMsg();
         }
       catch (...)
         {
@@ -180,9 +374,13 @@ namespace dealvem
         {
           error = e.what();
         }
+      catch (const mu::ParserError &e)
+        {
+          error = e.GetMsg();
+        }
       catch (...)
         {
-          error = "unknown parser error";
+          error = "the expression parser failed";
         }
       if (!error.empty())
         report(p, component, "cannot be evaluated (" + error + ")");

@@ -45,6 +45,16 @@ namespace dealvem
     const double gap_tol = 1e-12 * length;
     for (unsigned int i = 0; i < pairs.size(); ++i)
       result.active[i] = tied || pairs[i].initial_gap <= gap_tol;
+    if (support != nullptr && !tied && !support->holds(result.active))
+      {
+        result.n_closed_for_support = support->close_smallest_gaps(result.active);
+        const std::string free = support->free_motions(result.active);
+        AssertThrow(free.empty(),
+                    dealii::ExcMessage("Contact: even with every contact pair closed, these rigid-body motions "
+                                       "are free: " + free +
+                                       ". Add Dirichlet, roller or point constraints (with frictionless contact, "
+                                       "each body must be held against sliding along the interface)."));
+      }
 
     std::set<std::vector<bool>> history;
     std::ostringstream          log;
@@ -85,6 +95,18 @@ namespace dealvem
           }
         if (next == result.active)
           break;
+        if (support != nullptr)
+          {
+            const std::string free = support->free_motions(next);
+            AssertThrow(free.empty(),
+                        dealii::ExcMessage(
+                          "No static equilibrium: in active-set iteration " + std::to_string(it) +
+                          " every contact pair that held these rigid-body motions came out in tension or "
+                          "open: " + free + " (active pairs per iteration:" + log.str() +
+                          "). The loads pull the body off its contact partner, or the bodies are too far "
+                          "apart for the load to close the gap; hold the body by Dirichlet, roller or point "
+                          "constraints, or check the sign of the loads."));
+          }
         AssertThrow(history.count(next) == 0,
                     dealii::ExcMessage("The contact active set cycles: the set of iteration " +
                                        std::to_string(it + 1) +

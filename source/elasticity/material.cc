@@ -7,6 +7,7 @@
 #include <dealvem/elasticity/material.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace dealvem
 {
@@ -15,9 +16,14 @@ namespace dealvem
     , nu(nu)
     , model_(model)
   {
+    std::ostringstream e_text;
+    e_text << E;
     AssertThrow(std::isfinite(E) && E > 0,
-                dealii::ExcMessage("Young's modulus must be positive, got E = " +
-                                   std::to_string(E)));
+                dealii::ExcMessage("Young's modulus must be positive, got E = " + e_text.str()));
+    AssertThrow(E >= min_youngs_modulus && E <= max_youngs_modulus,
+                dealii::ExcMessage("Young's modulus E = " + e_text.str() +
+                                   " is outside the supported range [1e-200, 1e200] (choose units "
+                                   "that bring E nearer to 1)."));
     AssertThrow(std::isfinite(nu) && nu > -1.0 && nu < 0.5,
                 dealii::ExcMessage("Poisson's ratio must lie in (-1, 0.5), got nu = " +
                                    std::to_string(nu)));

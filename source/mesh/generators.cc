@@ -11,11 +11,17 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <random>
+#include <set>
+#include <sstream>
+#include <unordered_set>
 
 namespace dealvem
 {
@@ -366,19 +372,513 @@ namespace dealvem
 
 
 
+    namespace
+    {
+      // Coordinates beyond this magnitude are refused (PolygonalMesh uses
+      // the same limit): products of coordinate differences would overflow.
+      constexpr double max_gmsh_coordinate = 1e100;
+
+      // Checks a gmsh .msh file before deal.II's GridIn reads it. GridIn
+      // trusts the counts and the version in the file (a wrong count or
+      // version corrupts memory or hangs it, ids out of range are silently
+      // truncated), so everything GridIn relies on is checked here, one line
+      // at a time: the header, the section markers, the counts (against the
+      // size of the file and the lines actually present), node tags, the
+      // element types and the physical ids used as material and boundary
+      // ids. Memory is proportional to the number of nodes actually present.
+      class GmshChecker
+      {
+      public:
+        explicit GmshChecker(const std::string &filename)
+          : filename(filename)
+          , in(filename)
+        {
+          AssertThrow(in, dealii::ExcMessage("Cannot open the mesh file '" + filename + "'."));
+          std::error_code ec;
+          file_size = std::filesystem::file_size(filename, ec);
+          if (ec)
+            file_size = std::numeric_limits<std::uintmax_t>::max();
+        }
+
+        void
+        run()
+        {
+          read_line("$MeshFormat");
+          AssertThrow(words.size() == 1 && words[0] == "$MeshFormat",
+                      error(words.size() == 1 && words[0] == "$NOD" ?
+                              "gmsh format 1 ($NOD) is not supported; save the mesh in format 2.2 or 4.1." :
+                              "expected $MeshFormat (a gmsh .msh file), found '" + text + "'."));
+          read_header();
+          read_line("$EndMeshFormat");
+          expect_marker("$EndMeshFormat");
+          read_line("$Nodes");
+          if (words[0] == "$PhysicalNames")
+            {
+              skip_physical_names();
+              read_line("$Nodes");
+            }
+          if (words[0] == "$Entities")
+            {
+              AssertThrow(version >= 40,
+                          error("an $Entities section in a gmsh " + version_text + " file; is the version in "
+                                "$MeshFormat right?"));
+              read_entities();
+              read_line("$Nodes");
+            }
+          if (words[0] == "$PartitionedEntities")
+            {
+              skip_section("$EndPartitionedEntities");
+              read_line("$Nodes");
+            }
+          expect_marker("$Nodes");
+          if (version < 40)
+            read_nodes_2();
+          else
+            read_nodes_4();
+          read_line("$EndNodes");
+          expect_marker("$EndNodes");
+          read_line("$Elements");
+          expect_marker("$Elements");
+          if (version < 40)
+            read_elements_2();
+          else
+            read_elements_4();
+          read_line("$EndElements");
+          expect_marker("$EndElements");
+          AssertThrow(n_triangles + n_quads > 0,
+                      error("the file has no triangles or quadrangles (element types 2 and 3): no cells."));
+          AssertThrow(n_triangles == 0 || n_quads == 0,
+                      error("the file mixes " + std::to_string(n_triangles) + " triangles and " +
+                            std::to_string(n_quads) + " quadrangles; deal.II reads one kind only."));
+        }
+
+      private:
+        std::string           filename;
+        std::ifstream         in;
+        std::uintmax_t        file_size = 0;
+        std::size_t           line = 0;
+        std::string           text;
+        std::vector<std::string> words;
+        int                   version = 0; // 22, 40, 41
+        std::string           version_text;
+        std::unordered_set<long long> node_tags;
+        // (dimension, tag) of the entities of a version 4 file
+        std::set<std::pair<long long, long long>> entities;
+        bool                  have_entities = false;
+        unsigned long long    n_triangles = 0, n_quads = 0;
+
+        dealii::ExcMessage
+        error(const std::string &what) const
+        {
+          return dealii::ExcMessage("Invalid gmsh file " + filename + ":" + std::to_string(line) + ": " + what);
+        }
+
+        // the next line that is not blank, split into words
+        void
+        read_line(const std::string &expected)
+        {
+          while (true)
+            {
+              AssertThrow(static_cast<bool>(std::getline(in, text)),
+                          error("unexpected end of file, expected " + expected +
+                                "; the file is truncated."));
+              ++line;
+              if (!text.empty() && text.back() == '\r')
+                text.pop_back();
+              words.clear();
+              std::istringstream s(text);
+              std::string        w;
+              while (s >> w)
+                words.push_back(w);
+              if (!words.empty())
+                return;
+            }
+        }
+
+        void
+        expect_marker(const std::string &marker)
+        {
+          AssertThrow(words.size() == 1 && words[0] == marker,
+                      error("expected " + marker + ", found '" + text + "'."));
+        }
+
+        void
+        expect_words(const std::size_t n, const std::string &what)
+        {
+          AssertThrow(words.size() == n, error("expected " + what + " (" + std::to_string(n) +
+                                               (n == 1 ? " number" : " numbers") + " on the line), found '" +
+                                               text + "'."));
+        }
+
+        long long
+        integer(const std::string &word, const std::string &what, const long long min, const long long max) const
+        {
+          long long  v = 0;
+          const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
+          AssertThrow(r.ec == std::errc() && r.ptr == word.data() + word.size() && v >= min && v <= max,
+                      error("expected " + what + " (an integer from " + std::to_string(min) + " to " +
+                            std::to_string(max) + "), found '" + word + "'."));
+          return v;
+        }
+
+        // A count of records that follow, each on a line of its own of at
+        // least @p min_bytes bytes: bounded by the size of the file.
+        long long
+        count(const std::string &word, const std::string &what, const std::uintmax_t min_bytes = 2) const
+        {
+          long long  n = 0;
+          const auto r = std::from_chars(word.data(), word.data() + word.size(), n);
+          AssertThrow(r.ec == std::errc() && r.ptr == word.data() + word.size() && n >= 0,
+                      error("expected " + what + " (a non-negative integer), found '" + word + "'."));
+          const std::uintmax_t capacity = file_size / min_bytes;
+          AssertThrow(static_cast<std::uintmax_t>(n) <= capacity,
+                      error(what + " is " + word + ", but the file has only " + std::to_string(file_size) +
+                            " bytes, room for at most " + std::to_string(capacity) +
+                            "; the count is wrong or the file is truncated."));
+          return n;
+        }
+
+        double
+        coordinate(const std::string &word, const std::string &what) const
+        {
+          char        *end = nullptr;
+          const double v   = std::strtod(word.c_str(), &end);
+          AssertThrow(end == word.c_str() + word.size() && std::isfinite(v),
+                      error("expected " + what + " (a finite number), found '" + word + "'."));
+          AssertThrow(std::abs(v) <= max_gmsh_coordinate,
+                      error(what + " is " + word + "; coordinates larger than 1e100 in magnitude are not "
+                            "supported."));
+          return v;
+        }
+
+        // a physical tag that deal.II turns into a material or boundary id
+        void
+        check_id(const std::string &word, const std::string &what) const
+        {
+          long long  v = 0;
+          const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
+          AssertThrow(r.ec == std::errc() && r.ptr == word.data() + word.size() && v >= 0 && v <= 254,
+                      error(what + " is '" + word + "', but it becomes a material or boundary id, which must "
+                            "be an integer from 0 to 254 (255 is reserved)."));
+        }
+
+        void
+        read_header()
+        {
+          read_line("the version line");
+          expect_words(3, "'version file-type data-size'");
+          version_text = words[0];
+          if (words[0] == "2.2" || words[0] == "2.1" || words[0] == "2" || words[0] == "2.0")
+            version = 22;
+          else if (words[0] == "4" || words[0] == "4.0")
+            version = 40;
+          else if (words[0] == "4.1")
+            version = 41;
+          else
+            AssertThrow(false, error("unsupported gmsh format version '" + words[0] +
+                                     "' (supported: 2.2 and 4.x, that is 4.0 and 4.1)."));
+          AssertThrow(words[1] == "0",
+                      error(words[1] == "1" ? "binary gmsh files (file-type 1) are not supported; save the mesh "
+                                              "as ASCII (file-type 0)." :
+                                              "expected the file-type 0 (ASCII), found '" + words[1] + "'."));
+          AssertThrow(words[2] == "8", error("expected the data size 8, found '" + words[2] + "'."));
+        }
+
+        void
+        skip_physical_names()
+        {
+          read_line("the number of physical names");
+          expect_words(1, "the number of physical names");
+          const long long n = count(words[0], "the number of physical names", 6);
+          for (long long i = 0; i < n; ++i)
+            {
+              read_line("physical name " + std::to_string(i + 1) + " of " + std::to_string(n));
+              AssertThrow(words.size() >= 3 && words[0][0] != '$',
+                          error("expected physical name " + std::to_string(i + 1) + " of " +
+                                std::to_string(n) + " ('dimension tag \"name\"'), found '" + text + "'."));
+              integer(words[0], "the dimension of a physical name", 0, 3);
+            }
+          read_line("$EndPhysicalNames");
+          expect_marker("$EndPhysicalNames");
+        }
+
+        void
+        skip_section(const std::string &end)
+        {
+          const std::string begin = words[0];
+          do
+            {
+              read_line(end);
+              AssertThrow(words[0] == end || words[0][0] != '$',
+                          error("expected " + end + " to close " + begin + ", found '" + text + "'."));
+            }
+          while (words[0] != end);
+          expect_marker(end);
+        }
+
+        void
+        read_entities()
+        {
+          read_line("the numbers of points, curves, surfaces and volumes");
+          expect_words(4, "the numbers of points, curves, surfaces and volumes");
+          long long n[4];
+          for (unsigned int d = 0; d < 4; ++d)
+            n[d] = count(words[d], "the number of entities of dimension " + std::to_string(d), 8);
+          have_entities = true;
+          for (unsigned int d = 0; d < 4; ++d)
+            for (long long i = 0; i < n[d]; ++i)
+              {
+                const std::string what = "entity " + std::to_string(i + 1) + " of " + std::to_string(n[d]) +
+                                         " of dimension " + std::to_string(d);
+                read_line(what);
+                // tag, a box (one point for points in 4.1), physical tags,
+                // and bounding entities for curves and up
+                const std::size_t n_box = (d == 0 && version == 41) ? 3 : 6;
+                AssertThrow(words.size() >= 2 + n_box && words[0][0] != '$',
+                            error("expected " + what + ", found '" + text + "'."));
+                const long long tag = integer(words[0], "the tag of " + what, std::numeric_limits<int>::min(),
+                                              std::numeric_limits<int>::max());
+                for (std::size_t k = 1; k <= n_box; ++k)
+                  coordinate(words[k], "a bounding box coordinate of " + what);
+                const long long n_physicals =
+                  integer(words[1 + n_box], "the number of physical tags of " + what, 0, 1);
+                std::size_t w = 2 + n_box;
+                AssertThrow(words.size() >= w + n_physicals,
+                            error("expected " + what + ", found '" + text + "'."));
+                for (long long k = 0; k < n_physicals; ++k)
+                  check_id(words[w++], "the physical tag of " + what);
+                if (d > 0)
+                  {
+                    AssertThrow(words.size() > w, error("expected the number of bounding entities of " + what +
+                                                        ", found '" + text + "'."));
+                    const long long n_bounding = integer(words[w++], "the number of bounding entities of " + what,
+                                                         0, std::numeric_limits<int>::max());
+                    AssertThrow(words.size() == w + n_bounding,
+                                error("expected " + std::to_string(n_bounding) + " bounding entities of " + what +
+                                      ", found '" + text + "'."));
+                    for (; w < words.size(); ++w)
+                      integer(words[w], "a bounding entity of " + what, std::numeric_limits<int>::min(),
+                              std::numeric_limits<int>::max());
+                  }
+                else
+                  AssertThrow(words.size() == w, error("expected " + what + ", found '" + text + "'."));
+                entities.insert({d, tag});
+              }
+          read_line("$EndEntities");
+          expect_marker("$EndEntities");
+        }
+
+        void
+        add_node(const std::string &tag_word, const std::string &what)
+        {
+          const long long tag = integer(tag_word, "the tag of " + what, 1, std::numeric_limits<int>::max());
+          AssertThrow(node_tags.insert(tag).second, error("node tag " + tag_word + " is used twice."));
+        }
+
+        void
+        read_nodes_2()
+        {
+          read_line("the number of nodes");
+          expect_words(1, "the number of nodes after $Nodes");
+          // "tag x y z": at least 8 bytes a node
+          const long long n = count(words[0], "the number of nodes", 8);
+          for (long long i = 0; i < n; ++i)
+            {
+              const std::string what = "node " + std::to_string(i + 1) + " of " + std::to_string(n);
+              read_line(what);
+              AssertThrow(words.size() == 4 && words[0][0] != '$',
+                          error("expected " + what + " ('tag x y z'), found '" + text + "'."));
+              add_node(words[0], what);
+              for (unsigned int d = 0; d < 3; ++d)
+                coordinate(words[1 + d], std::string(1, "xyz"[d]) + " of " + what);
+            }
+        }
+
+        void
+        read_nodes_4()
+        {
+          read_line("the node counts");
+          const bool v41 = (version == 41);
+          expect_words(v41 ? 4 : 2, v41 ? "'numEntityBlocks numNodes minNodeTag maxNodeTag' after $Nodes, as "
+                                          "format 4.1 in $MeshFormat says" :
+                                          "'numEntityBlocks numNodes' after $Nodes, as format 4.0 in $MeshFormat "
+                                          "says");
+          const long long n_blocks = count(words[0], "the number of node blocks", 8);
+          const long long n        = count(words[1], "the number of nodes", 8);
+          long long       n_read   = 0;
+          for (long long b = 0; b < n_blocks; ++b)
+            {
+              const std::string block = "node block " + std::to_string(b + 1) + " of " + std::to_string(n_blocks);
+              read_line(block);
+              expect_words(4, "the header of " + block);
+              // 4.1: dim tag parametric count; 4.0: tag dim parametric count
+              integer(words[v41 ? 0 : 1], "the entity dimension of " + block, 0, 3);
+              const long long parametric = integer(words[2], "the parametric flag of " + block, 0, 1);
+              AssertThrow(parametric == 0, error("parametric nodes are not supported; save the mesh without "
+                                                 "parametric coordinates."));
+              const long long m = count(words[3], "the number of nodes in " + block, 8);
+              AssertThrow(n_read + m <= n, error(block + " goes beyond the " + std::to_string(n) +
+                                                 " nodes announced after $Nodes."));
+              if (v41)
+                {
+                  for (long long i = 0; i < m; ++i)
+                    {
+                      const std::string what = "node " + std::to_string(n_read + i + 1) + " of " + std::to_string(n);
+                      read_line("the tag of " + what);
+                      expect_words(1, "the tag of " + what);
+                      add_node(words[0], what);
+                    }
+                  for (long long i = 0; i < m; ++i)
+                    {
+                      const std::string what = "node " + std::to_string(n_read + i + 1) + " of " + std::to_string(n);
+                      read_line("the coordinates of " + what);
+                      expect_words(3, "the coordinates 'x y z' of " + what);
+                      for (unsigned int d = 0; d < 3; ++d)
+                        coordinate(words[d], std::string(1, "xyz"[d]) + " of " + what);
+                    }
+                }
+              else
+                for (long long i = 0; i < m; ++i)
+                  {
+                    const std::string what = "node " + std::to_string(n_read + i + 1) + " of " + std::to_string(n);
+                    read_line(what);
+                    expect_words(4, what + " ('tag x y z')");
+                    add_node(words[0], what);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      coordinate(words[1 + d], std::string(1, "xyz"[d]) + " of " + what);
+                  }
+              n_read += m;
+            }
+          AssertThrow(n_read == n, error("the node blocks hold " + std::to_string(n_read) + " nodes, but " +
+                                         std::to_string(n) + " are announced after $Nodes."));
+        }
+
+        // number of nodes of a gmsh element type deal.II can read in 2d
+        unsigned int
+        nodes_of_type(const std::string &word, const std::string &what)
+        {
+          const long long type = integer(word, "the element type of " + what, 0, std::numeric_limits<int>::max());
+          AssertThrow(type == 1 || type == 2 || type == 3 || type == 15,
+                      error("element type " + word + " of " + what + " is not supported in 2d (supported: 1 line, "
+                            "2 triangle, 3 quadrangle, 15 point)."));
+          n_triangles += (type == 2);
+          n_quads += (type == 3);
+          return type == 1 ? 2 : type == 2 ? 3 : type == 3 ? 4 : 1;
+        }
+
+        void
+        check_element_nodes(const std::size_t first, const std::string &what)
+        {
+          for (std::size_t k = first; k < words.size(); ++k)
+            {
+              long long  v = 0;
+              const auto r = std::from_chars(words[k].data(), words[k].data() + words[k].size(), v);
+              AssertThrow(r.ec == std::errc() && r.ptr == words[k].data() + words[k].size() &&
+                            node_tags.count(v) == 1,
+                          error(what + " refers to node '" + words[k] + "', which is not in $Nodes."));
+              for (std::size_t j = first; j < k; ++j)
+                AssertThrow(words[j] != words[k], error(what + " uses node " + words[k] + " twice."));
+            }
+        }
+
+        void
+        read_elements_2()
+        {
+          read_line("the number of elements");
+          expect_words(1, "the number of elements after $Elements");
+          const long long n = count(words[0], "the number of elements", 8);
+          for (long long i = 0; i < n; ++i)
+            {
+              const std::string what = "element " + std::to_string(i + 1) + " of " + std::to_string(n);
+              read_line(what);
+              AssertThrow(words.size() >= 3 && words[0][0] != '$',
+                          error("expected " + what + " ('number type n-tags tags... nodes...'), found '" + text +
+                                "'."));
+              integer(words[0], "the number of " + what, 0, std::numeric_limits<int>::max());
+              const unsigned int n_nodes = nodes_of_type(words[1], what);
+              const long long    n_tags  = integer(words[2], "the number of tags of " + what, 0, 1000);
+              AssertThrow(words.size() == std::size_t(3 + n_tags + n_nodes),
+                          error("expected " + std::to_string(n_tags) + " tags and " + std::to_string(n_nodes) +
+                                " nodes for " + what + ", found '" + text + "'."));
+              // the first tag (the physical group) becomes the id
+              if (n_tags > 0)
+                check_id(words[3], "the physical tag of " + what);
+              for (long long k = 1; k < n_tags; ++k)
+                integer(words[3 + k], "a tag of " + what, std::numeric_limits<int>::min(),
+                        std::numeric_limits<int>::max());
+              check_element_nodes(3 + n_tags, what);
+            }
+        }
+
+        void
+        read_elements_4()
+        {
+          read_line("the element counts");
+          const bool v41 = (version == 41);
+          expect_words(v41 ? 4 : 2, v41 ? "'numEntityBlocks numElements minElementTag maxElementTag' after "
+                                          "$Elements in format 4.1" :
+                                          "'numEntityBlocks numElements' after $Elements in format 4.0");
+          const long long n_blocks = count(words[0], "the number of element blocks", 8);
+          const long long n        = count(words[1], "the number of elements", 4);
+          long long       n_read   = 0;
+          for (long long b = 0; b < n_blocks; ++b)
+            {
+              const std::string block =
+                "element block " + std::to_string(b + 1) + " of " + std::to_string(n_blocks);
+              read_line(block);
+              expect_words(4, "the header of " + block);
+              // 4.1: dim tag type count; 4.0: tag dim type count
+              const long long dim = integer(words[v41 ? 0 : 1], "the entity dimension of " + block, 0, 3);
+              const long long tag = integer(words[v41 ? 1 : 0], "the entity tag of " + block,
+                                            std::numeric_limits<int>::min(), std::numeric_limits<int>::max());
+              AssertThrow(!have_entities || entities.count({dim, tag}) == 1,
+                          error(block + " refers to the entity of dimension " + std::to_string(dim) +
+                                " and tag " + std::to_string(tag) + ", which is not in $Entities."));
+              const std::string  type_word = words[2];
+              const long long    m         = count(words[3], "the number of elements in " + block, 4);
+              AssertThrow(n_read + m <= n, error(block + " goes beyond the " + std::to_string(n) +
+                                                 " elements announced after $Elements."));
+              for (long long i = 0; i < m; ++i)
+                {
+                  const std::string what =
+                    "element " + std::to_string(n_read + i + 1) + " of " + std::to_string(n);
+                  const unsigned int n_nodes = nodes_of_type(type_word, block);
+                  read_line(what);
+                  AssertThrow(words.size() == 1 + n_nodes,
+                              error("expected " + what + " ('tag' and " + std::to_string(n_nodes) +
+                                    " nodes), found '" + text + "'."));
+                  integer(words[0], "the tag of " + what, 1, std::numeric_limits<int>::max());
+                  check_element_nodes(1, what);
+                }
+              n_read += m;
+            }
+          AssertThrow(n_read == n, error("the element blocks hold " + std::to_string(n_read) + " elements, but " +
+                                         std::to_string(n) + " are announced after $Elements."));
+        }
+      };
+    } // namespace
+
+
+
     template <int dim>
     void
     from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename, const unsigned int n_refinements)
     {
       AssertThrow(std::filesystem::exists(filename),
                   dealii::ExcMessage("Mesh file '" + filename + "' does not exist."));
+      AssertThrow(!std::filesystem::is_directory(filename),
+                  dealii::ExcMessage("Mesh file '" + filename + "' is a directory."));
+      const std::string ext    = std::filesystem::path(filename).extension().string();
+      const std::string format = ext.empty() ? "msh" : ext.substr(1);
+      // deal.II's gmsh reader trusts the file: check it first
+      if (format == "msh")
+        GmshChecker(filename).run();
       dealii::Triangulation<dim> tria;
       dealii::GridIn<dim>        grid_in(tria);
       std::ifstream              in(filename);
-      const std::string          ext = std::filesystem::path(filename).extension().string();
       try
         {
-          grid_in.read(in, dealii::GridIn<dim>::parse_format(ext.empty() ? "msh" : ext.substr(1)));
+          grid_in.read(in, dealii::GridIn<dim>::parse_format(format));
         }
       catch (const std::exception &e)
         {
@@ -386,7 +886,14 @@ namespace dealvem
         }
       if (n_refinements > 0)
         tria.refine_global(n_refinements);
-      from_triangulation(mesh, tria);
+      try
+        {
+          from_triangulation(mesh, tria);
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false, dealii::ExcMessage("The mesh in the file '" + filename + "' is invalid: " + e.what()));
+        }
       mesh.name = filename;
     }
 

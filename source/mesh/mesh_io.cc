@@ -4,9 +4,13 @@
 // ---------------------------------------------------------------------
 #include <dealvem/mesh/mesh_io.h>
 
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <iomanip>
+#include <limits>
+#include <set>
 #include <sstream>
 
 namespace dealvem
@@ -15,112 +19,221 @@ namespace dealvem
   {
     namespace
     {
-      // A token reader that knows the line of every token.
+      // Coordinates beyond this magnitude are refused: the geometric checks
+      // multiply differences of coordinates, which would overflow (the same
+      // limit is enforced by PolygonalMesh::finalize()).
+      constexpr double max_coordinate = 1e100;
+
+      // The smallest number of bytes of text one entry of a list can take:
+      // one character and one separator per number.
+      constexpr std::uintmax_t bytes_per_number = 2;
+
+      // Number of bytes from the current position of @p in to its end, or
+      // the largest value when the stream cannot tell (a pipe).
+      std::uintmax_t
+      remaining_bytes(std::istream &in)
+      {
+        const auto unknown = std::numeric_limits<std::uintmax_t>::max();
+        if (!in)
+          return unknown;
+        const std::streampos here = in.tellg();
+        if (here == std::streampos(-1))
+          {
+            in.clear();
+            return unknown;
+          }
+        in.seekg(0, std::ios::end);
+        const std::streampos end = in.tellg();
+        in.clear();
+        in.seekg(here);
+        if (end == std::streampos(-1) || end < here || !in)
+          {
+            in.clear();
+            return unknown;
+          }
+        return static_cast<std::uintmax_t>(end - here);
+      }
+
+      // Reads the stream token by token, one line at a time, and knows the
+      // line of every token. Nothing is stored beyond the current line, so
+      // memory does not depend on the size of the file or on counts written
+      // in it.
       class Tokens
       {
       public:
-        Tokens(std::istream &in, const std::string &name)
+        Tokens(std::istream &in, const std::string &name, const std::uintmax_t size)
           : name(name)
+          , size(size)
+          , in(in)
         {
-          std::string  line;
-          unsigned int n = 0;
-          while (std::getline(in, line))
-            {
-              ++n;
-              lines.push_back(line);
-              if (n <= 2)
-                continue; // header and title are free text
-              std::istringstream s(line);
-              std::string        t;
-              while (s >> t)
-                tokens.emplace_back(t, n);
-            }
+          // the first two lines (header and title) are free text
+          if (std::getline(in, header))
+            ++n_lines;
+          std::string title;
+          if (std::getline(in, title))
+            ++n_lines;
+          pos = current.size();
         }
 
+        // true when only white space is left
         bool
-        done() const
+        done()
         {
-          return pos >= tokens.size();
+          return !fill();
         }
 
-        unsigned int
-        line() const
+        // the line of the next token (the last line at the end of the file)
+        std::size_t
+        line()
         {
-          return pos < tokens.size() ? tokens[pos].second : lines.size();
+          fill();
+          return n_lines;
+        }
+
+        // "file:line: " for the next token
+        std::string
+        where()
+        {
+          return at(line());
         }
 
         std::string
-        where() const
+        at(const std::size_t l) const
         {
-          return name + ":" + std::to_string(line()) + ": ";
+          return name + ":" + std::to_string(l) + ": ";
         }
 
         std::string
         next(const std::string &expected)
         {
-          AssertThrow(!done(), ExcInvalidMesh(name + ":" + std::to_string(lines.size()) +
-                                              ": unexpected end of file, expected " + expected + "."));
-          return tokens[pos++].first;
+          AssertThrow(fill(), ExcInvalidMesh(at(n_lines) + "unexpected end of file, expected " + expected + "."));
+          const std::size_t begin = pos;
+          while (pos < current.size() && !is_space(current[pos]))
+            ++pos;
+          last = current.substr(begin, pos - begin);
+          return last;
         }
 
         void
         expect(const std::string &keyword)
         {
-          const unsigned int l = line();
-          const std::string  t = next(keyword);
-          AssertThrow(t == keyword, ExcInvalidMesh(name + ":" + std::to_string(l) + ": expected " +
-                                                   keyword + ", found '" + t + "'."));
+          const std::size_t l = line();
+          const std::string t = next(keyword);
+          AssertThrow(t == keyword,
+                      ExcInvalidMesh(at(l) + "expected " + keyword + ", found '" + t + "'."));
         }
 
+        // an integer that fits into a long long
         long long
         integer(const std::string &what)
         {
-          const unsigned int l = line();
-          const std::string  t = next(what);
-          std::size_t        p = 0;
-          long long          v = 0;
-          bool               ok = true;
-          try
-            {
-              v = std::stoll(t, &p);
-            }
-          catch (...)
-            {
-              ok = false;
-            }
-          AssertThrow(ok && p == t.size(), ExcInvalidMesh(name + ":" + std::to_string(l) + ": expected " + what +
-                                                          " (an integer), found '" + t + "'."));
+          const std::size_t l = line();
+          const std::string t = next(what);
+          long long         v = 0;
+          const auto        r = std::from_chars(t.data(), t.data() + t.size(), v);
+          AssertThrow(r.ec != std::errc::result_out_of_range,
+                      ExcInvalidMesh(at(l) + "expected " + what + ", found '" + t +
+                                     "', which is out of the range of integers."));
+          AssertThrow(r.ec == std::errc() && r.ptr == t.data() + t.size(),
+                      ExcInvalidMesh(at(l) + "expected " + what + " (an integer), found '" + t + "'."));
           return v;
+        }
+
+        // A count of entries that follow in the file, each taking at least
+        // @p min_bytes bytes of text: it must be an integer of at least
+        // @p min and the file must be large enough to hold that many entries.
+        // Checked before anything is allocated for the entries.
+        long long
+        count(const std::string &what, const std::uintmax_t min_bytes, const long long min = 0)
+        {
+          const std::size_t l = line();
+          const long long   n = integer(what);
+          AssertThrow(n >= min, ExcInvalidMesh(at(l) + what + " must be " +
+                                               (min == 0 ? std::string("non-negative") :
+                                                           "at least " + std::to_string(min)) +
+                                               ", found " + std::to_string(n) + "."));
+          if (size != std::numeric_limits<std::uintmax_t>::max())
+            {
+              const std::uintmax_t capacity = size / min_bytes;
+              AssertThrow(static_cast<std::uintmax_t>(n) <= capacity,
+                          ExcInvalidMesh(at(l) + what + " is " + std::to_string(n) + ", but the file has only " +
+                                         std::to_string(size) + " bytes, room for at most " +
+                                         std::to_string(capacity) +
+                                         "; the count is wrong or the file is truncated."));
+            }
+          return n;
         }
 
         double
         real(const std::string &what)
         {
-          const unsigned int l = line();
-          const std::string  t = next(what);
-          std::size_t        p = 0;
-          double             v = 0;
-          bool               ok = true;
-          try
-            {
-              v = std::stod(t, &p);
-            }
-          catch (...)
-            {
-              ok = false;
-            }
-          AssertThrow(ok && p == t.size() && std::isfinite(v),
-                      ExcInvalidMesh(name + ":" + std::to_string(l) + ": expected " + what +
-                                     " (a finite number), found '" + t + "'."));
+          const std::size_t l = line();
+          const std::string t = next(what);
+          char             *end = nullptr;
+          const double      v = std::strtod(t.c_str(), &end);
+          const bool number   = !t.empty() && end == t.c_str() + t.size();
+          AssertThrow(number && std::isfinite(v),
+                      ExcInvalidMesh(at(l) + "expected " + what + " (a finite number), found '" + t + "'."));
           return v;
         }
 
-        std::string              name;
-        std::vector<std::string> lines;
+        // a real number of magnitude up to max_coordinate
+        double
+        coordinate(const std::string &what)
+        {
+          const std::size_t l = line();
+          const double      v = real(what);
+          AssertThrow(std::abs(v) <= max_coordinate,
+                      ExcInvalidMesh(at(l) + what + " is " + number_string(v) + "; coordinates larger than " +
+                                     number_string(max_coordinate) + " in magnitude are not supported."));
+          return v;
+        }
+
+        std::string    name;
+        std::string    header;
+        std::string    last; // the token last read
+        std::uintmax_t size;
+        std::size_t    n_lines = 0;
 
       private:
-        std::vector<std::pair<std::string, unsigned int>> tokens;
-        std::size_t                                        pos = 0;
+        static bool
+        is_space(const char c)
+        {
+          return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+        }
+
+        static std::string
+        number_string(const double v)
+        {
+          std::ostringstream s;
+          s << v;
+          return s.str();
+        }
+
+        // move to the next token; false at the end of the file
+        bool
+        fill()
+        {
+          while (true)
+            {
+              while (pos < current.size() && is_space(current[pos]))
+                ++pos;
+              if (pos < current.size())
+                return true;
+              if (!std::getline(in, current))
+                {
+                  current.clear();
+                  pos = 0;
+                  return false;
+                }
+              ++n_lines;
+              pos = 0;
+            }
+        }
+
+        std::istream &in;
+        std::string   current;
+        std::size_t   pos = 0;
       };
     } // namespace
 
@@ -130,141 +243,227 @@ namespace dealvem
     void
     read_vtk(PolygonalMesh<dim> &mesh, std::istream &in, const std::string &name)
     {
-      Tokens t(in, name);
-      AssertThrow(!t.lines.empty() && t.lines[0].find("# vtk DataFile") == 0,
+      const std::uintmax_t size = remaining_bytes(in);
+      Tokens               t(in, name, size);
+      const bool           size_known = size != std::numeric_limits<std::uintmax_t>::max();
+      AssertThrow(t.n_lines >= 1 && t.header.find("# vtk DataFile") == 0,
                   ExcInvalidMesh(name + ":1: not a legacy VTK file (the first line must start with "
                                         "'# vtk DataFile')."));
-      AssertThrow(t.lines.size() >= 3, ExcInvalidMesh(name + ": the file is truncated after its header."));
+      AssertThrow(t.n_lines >= 2 && !t.done(), ExcInvalidMesh(name + ": the file is truncated after its header."));
       {
-        const unsigned int l = t.line();
-        const std::string  fmt = t.next("ASCII");
-        AssertThrow(fmt == "ASCII", ExcInvalidMesh(name + ":" + std::to_string(l) + ": only ASCII VTK files "
-                                                   "are supported, found '" + fmt + "'."));
+        const std::size_t l   = t.line();
+        const std::string fmt = t.next("ASCII");
+        AssertThrow(fmt == "ASCII", ExcInvalidMesh(t.at(l) + "only ASCII VTK files are supported, found '" +
+                                                   fmt + "'."));
       }
       t.expect("DATASET");
       {
-        const unsigned int l  = t.line();
-        const std::string  ds = t.next("UNSTRUCTURED_GRID");
+        const std::size_t l  = t.line();
+        const std::string ds = t.next("UNSTRUCTURED_GRID");
         AssertThrow(ds == "UNSTRUCTURED_GRID",
-                    ExcInvalidMesh(name + ":" + std::to_string(l) +
-                                   ": expected DATASET UNSTRUCTURED_GRID, found '" + ds + "'."));
+                    ExcInvalidMesh(t.at(l) + "expected DATASET UNSTRUCTURED_GRID, found '" + ds + "'."));
       }
+
+      // points: three numbers each
       t.expect("POINTS");
-      const long long n_points = t.integer("the number of points");
-      AssertThrow(n_points > 0, ExcInvalidMesh(t.where() + "the number of points must be positive."));
+      const long long n_points = t.count("the number of points", 3 * bytes_per_number, 1);
       t.next("the point data type");
       mesh.clear();
       mesh.name = name;
       for (long long i = 0; i < n_points; ++i)
         {
-          const double x = t.real("x of point " + std::to_string(i));
-          const double y = t.real("y of point " + std::to_string(i));
-          const double z = t.real("z of point " + std::to_string(i));
-          (void)z;
+          const double x = t.coordinate("x of point " + std::to_string(i));
+          const double y = t.coordinate("y of point " + std::to_string(i));
+          t.coordinate("z of point " + std::to_string(i));
           mesh.add_vertex(dealii::Point<dim>(x, y));
         }
+
+      // cells: a count and at least one index each
       t.expect("CELLS");
-      const long long n_cells = t.integer("the number of cells");
-      t.integer("the size of the cell list");
-      std::vector<std::vector<unsigned int>> conn(n_cells);
-      std::vector<unsigned int>              cell_line(n_cells);
+      const std::size_t cells_line = t.line();
+      const long long   n_cells    = t.count("the number of cells", 2 * bytes_per_number, 1);
+      const long long   list_size  = t.count("the size of the cell list", bytes_per_number, 2 * n_cells);
+      // the counts are bounded by the size of the file: reserving is safe
+      std::vector<std::vector<unsigned int>> conn;
+      std::vector<std::size_t>               cell_line;
+      if (size_known)
+        {
+          conn.reserve(n_cells);
+          cell_line.reserve(n_cells);
+        }
+      long long n_numbers = 0;
       for (long long c = 0; c < n_cells; ++c)
         {
-          cell_line[c]     = t.line();
-          const long long n = t.integer("the vertex count of cell " + std::to_string(c));
+          cell_line.push_back(t.line());
+          conn.emplace_back();
+          const std::size_t l = t.line();
+          const long long   n = t.integer("the point count of cell " + std::to_string(c));
           AssertThrow(n >= 1 && n < 100000,
-                      ExcInvalidMesh(t.where() + "invalid vertex count " + std::to_string(n) + " of cell " +
-                                     std::to_string(c) + "."));
+                      ExcInvalidMesh(t.at(l) + "invalid point count " + std::to_string(n) + " of cell " +
+                                     std::to_string(c) + " (expected 1 to 99999)."));
+          n_numbers += n + 1;
+          AssertThrow(n_numbers <= list_size,
+                      ExcInvalidMesh(t.at(l) + "cell " + std::to_string(c) + " goes beyond the size " +
+                                     std::to_string(list_size) + " of the cell list given on line " +
+                                     std::to_string(cells_line) + "."));
           for (long long k = 0; k < n; ++k)
             {
-              const long long v = t.integer("a vertex index of cell " + std::to_string(c));
+              const std::size_t lv = t.line();
+              const long long   v  = t.integer("a point index of cell " + std::to_string(c));
               AssertThrow(v >= 0 && v < n_points,
-                          ExcInvalidMesh(name + ":" + std::to_string(cell_line[c]) + ": cell " + std::to_string(c) +
-                                         " refers to point " + std::to_string(v) + ", but there are " +
-                                         std::to_string(n_points) + " points."));
+                          ExcInvalidMesh(t.at(lv) + "cell " + std::to_string(c) + " refers to point " +
+                                         std::to_string(v) + ", but the points are numbered 0 to " +
+                                         std::to_string(n_points - 1) + "."));
               conn[c].push_back(v);
             }
         }
+      AssertThrow(n_numbers == list_size,
+                  ExcInvalidMesh(t.at(cells_line) + "the size of the cell list is given as " +
+                                 std::to_string(list_size) + ", but the " + std::to_string(n_cells) +
+                                 " cells hold " + std::to_string(n_numbers) + " numbers."));
+
+      // cell types
       t.expect("CELL_TYPES");
-      const long long n_types = t.integer("the number of cell types");
-      AssertThrow(n_types == n_cells, ExcInvalidMesh(t.where() + "CELL_TYPES gives " + std::to_string(n_types) +
-                                                     " types for " + std::to_string(n_cells) + " cells."));
+      {
+        const std::size_t l       = t.line();
+        const long long   n_types = t.count("the number of cell types", bytes_per_number);
+        AssertThrow(n_types == n_cells, ExcInvalidMesh(t.at(l) + "CELL_TYPES gives " + std::to_string(n_types) +
+                                                       " types for " + std::to_string(n_cells) + " cells."));
+      }
       std::vector<int> types(n_cells);
+      long long        n_line_cells = 0;
       for (long long c = 0; c < n_cells; ++c)
         {
-          const unsigned int l = t.line();
-          types[c]             = t.integer("the type of cell " + std::to_string(c));
-          AssertThrow(types[c] == 3 || types[c] == 5 || types[c] == 7 || types[c] == 9,
-                      ExcInvalidMesh(name + ":" + std::to_string(l) + ": cell " + std::to_string(c) +
-                                     " has the unsupported VTK cell type " + std::to_string(types[c]) +
-                                     " (supported: 3 line, 5 triangle, 7 polygon, 9 quad)."));
-          AssertThrow(types[c] != 3 || conn[c].size() == 2,
-                      ExcInvalidMesh(name + ":" + std::to_string(cell_line[c]) + ": line cell " +
-                                     std::to_string(c) + " must have 2 points."));
+          const std::size_t l    = t.line();
+          const long long   type = t.integer("the type of cell " + std::to_string(c));
+          AssertThrow(type == 3 || type == 5 || type == 7 || type == 9,
+                      ExcInvalidMesh(t.at(l) + "cell " + std::to_string(c) + " has the unsupported VTK cell type " +
+                                     std::to_string(type) + " (supported: 3 line, 5 triangle, 7 polygon, 9 quad)."));
+          types[c]                = type;
+          const std::size_t n     = conn[c].size();
+          const std::size_t n_req = (type == 3 ? 2 : type == 5 ? 3 : type == 9 ? 4 : 0);
+          AssertThrow(n_req == 0 || n == n_req,
+                      ExcInvalidMesh(t.at(cell_line[c]) + "cell " + std::to_string(c) + " of VTK type " +
+                                     std::to_string(type) + " must have " + std::to_string(n_req) + " points, found " +
+                                     std::to_string(n) + "."));
+          AssertThrow(type != 7 || n >= 3,
+                      ExcInvalidMesh(t.at(cell_line[c]) + "polygon cell " + std::to_string(c) + " has " +
+                                     std::to_string(n) + " points; a polygon needs at least 3."));
+          n_line_cells += (type == 3);
         }
-      std::vector<long long> material(n_cells, 0), boundary(n_cells, 0);
+      AssertThrow(n_line_cells < n_cells,
+                  ExcInvalidMesh(t.at(cells_line) + "the file has no polygon cells, only lines."));
+
+      // cell data: SCALARS material_id (polygons) and boundary_id (lines)
+      std::vector<int>      material(n_cells, 0), boundary(n_cells, 0);
+      std::set<std::string> fields;
+      std::size_t           cell_data_line = 0;
       while (!t.done())
         {
-          const unsigned int l  = t.line();
-          const std::string  kw = t.next("a data section");
+          const std::size_t l  = t.line();
+          const std::string kw = t.next("a data section");
           if (kw == "CELL_DATA")
             {
-              const long long n = t.integer("the number of cell data values");
-              AssertThrow(n == n_cells, ExcInvalidMesh(name + ":" + std::to_string(l) + ": CELL_DATA " +
-                                                       std::to_string(n) + " does not match " +
-                                                       std::to_string(n_cells) + " cells."));
+              AssertThrow(cell_data_line == 0,
+                          ExcInvalidMesh(t.at(l) + "a second CELL_DATA section (the first is on line " +
+                                         std::to_string(cell_data_line) + ")."));
+              cell_data_line  = l;
+              const long long n = t.count("the number of cell data values", bytes_per_number);
+              AssertThrow(n == n_cells, ExcInvalidMesh(t.at(l) + "CELL_DATA " + std::to_string(n) +
+                                                       " does not match the " + std::to_string(n_cells) +
+                                                       " cells."));
             }
           else if (kw == "SCALARS")
             {
+              AssertThrow(cell_data_line > 0,
+                          ExcInvalidMesh(t.at(l) + "SCALARS before CELL_DATA (point data is not supported)."));
               const std::string field = t.next("a field name");
+              AssertThrow(fields.insert(field).second,
+                          ExcInvalidMesh(t.at(l) + "the field '" + field + "' is given twice."));
               t.next("a data type");
-              // optional number of components, then LOOKUP_TABLE
-              std::string w = t.next("LOOKUP_TABLE");
-              if (w != "LOOKUP_TABLE")
-                w = t.next("LOOKUP_TABLE");
-              AssertThrow(w == "LOOKUP_TABLE",
-                          ExcInvalidMesh(t.where() + "expected LOOKUP_TABLE, found '" + w + "'."));
+              // an optional number of components (must be 1), then LOOKUP_TABLE
+              {
+                const std::size_t lw = t.line();
+                std::string       w  = t.next("LOOKUP_TABLE");
+                if (w != "LOOKUP_TABLE")
+                  {
+                    AssertThrow(w == "1", ExcInvalidMesh(t.at(lw) + "the field '" + field +
+                                                         "' must have 1 component, found '" + w + "'."));
+                    w = t.next("LOOKUP_TABLE");
+                  }
+                AssertThrow(w == "LOOKUP_TABLE",
+                            ExcInvalidMesh(t.at(lw) + "expected LOOKUP_TABLE, found '" + w + "'."));
+              }
               t.next("a lookup table name");
+              const bool is_material = (field == "material_id"), is_boundary = (field == "boundary_id");
               for (long long c = 0; c < n_cells; ++c)
                 {
-                  const double v = t.real("value " + std::to_string(c) + " of field " + field);
-                  if (field == "material_id")
-                    material[c] = std::llround(v);
-                  else if (field == "boundary_id")
-                    boundary[c] = std::llround(v);
+                  const std::size_t lv = t.line();
+                  const double      v  = t.real("value " + std::to_string(c) + " of field " + field + " (" +
+                                                std::to_string(n_cells) + " values, one per cell)");
+                  // ids count where they are used: material ids on polygons,
+                  // boundary ids on lines
+                  const bool used = (is_material && types[c] != 3) || (is_boundary && types[c] == 3);
+                  if (used)
+                    {
+                      AssertThrow(v == std::floor(v) && v >= 0 && v <= 254,
+                                  ExcInvalidMesh(t.at(lv) + field + " of cell " + std::to_string(c) + " is '" +
+                                                 t.last + "'; ids must be integers from 0 to 254."));
+                      (is_material ? material : boundary)[c] = int(v);
+                    }
                 }
             }
           else
-            AssertThrow(false, ExcInvalidMesh(name + ":" + std::to_string(l) + ": unsupported section '" + kw +
+            AssertThrow(false, ExcInvalidMesh(t.at(l) + "unsupported section '" + kw +
                                               "' (supported after CELL_TYPES: CELL_DATA with SCALARS "
                                               "material_id and boundary_id)."));
         }
+      AssertThrow(cell_data_line == 0 || !fields.empty(),
+                  ExcInvalidMesh(t.at(cell_data_line) + "CELL_DATA is announced, but no SCALARS field "
+                                 "follows; the file is truncated."));
+      // Line cells exist only to carry boundary ids (write_vtk always writes
+      // them with CELL_DATA material_id and boundary_id): without the ids
+      // the file has lost its end.
+      AssertThrow(n_line_cells == 0 || fields.count("boundary_id") == 1,
+                  ExcInvalidMesh(t.at(t.n_lines) + "the file has " + std::to_string(n_line_cells) +
+                                 " line cells (boundary edges), but no CELL_DATA field boundary_id for them; the "
+                                 "file is truncated or incomplete."));
+
+      // every line cell must be an edge of a polygon
+      std::set<std::pair<unsigned int, unsigned int>> polygon_edges;
+      for (long long c = 0; c < n_cells; ++c)
+        if (types[c] != 3)
+          for (std::size_t i = 0; i < conn[c].size(); ++i)
+            {
+              const unsigned int a = conn[c][i], b = conn[c][(i + 1) % conn[c].size()];
+              polygon_edges.insert({std::min(a, b), std::max(a, b)});
+            }
+      for (long long c = 0; c < n_cells; ++c)
+        if (types[c] == 3)
+          AssertThrow(polygon_edges.count({std::min(conn[c][0], conn[c][1]), std::max(conn[c][0], conn[c][1])}) == 1,
+                      ExcInvalidMesh(t.at(cell_line[c]) + "line cell " + std::to_string(c) + " from point " +
+                                     std::to_string(conn[c][0]) + " to point " + std::to_string(conn[c][1]) +
+                                     " is not an edge of any polygon."));
+
       for (long long c = 0; c < n_cells; ++c)
         if (types[c] != 3)
           {
             // reject clockwise polygons here, where the file line is known
-            double             a = 0;
-            const unsigned int n = conn[c].size();
-            for (unsigned int i = 0; i < n; ++i)
+            double            a = 0;
+            const std::size_t n = conn[c].size();
+            for (std::size_t i = 0; i < n; ++i)
               {
                 const auto &p = mesh.vertex(conn[c][i]), &q = mesh.vertex(conn[c][(i + 1) % n]);
                 a += p[0] * q[1] - q[0] * p[1];
               }
-            AssertThrow(n < 3 || a > 0,
-                        ExcInvalidMesh(name + ":" + std::to_string(cell_line[c]) + ": cell " + std::to_string(c) +
-                                       (a < 0 ? " is clockwise" : " has zero area") +
-                                       "; polygons must be counter-clockwise."));
-            AssertThrow(material[c] >= 0 && material[c] < 255,
-                        ExcInvalidMesh(name + ": cell " + std::to_string(c) + " has an invalid material_id."));
+            AssertThrow(a > 0, ExcInvalidMesh(t.at(cell_line[c]) + "cell " + std::to_string(c) +
+                                              (a < 0 ? " is clockwise" : " has zero area") +
+                                              "; polygons must be counter-clockwise."));
             mesh.add_cell(conn[c], dealii::types::material_id(material[c]));
           }
       for (long long c = 0; c < n_cells; ++c)
         if (types[c] == 3)
-          {
-            AssertThrow(boundary[c] >= 0 && boundary[c] < 255,
-                        ExcInvalidMesh(name + ": line cell " + std::to_string(c) + " has an invalid boundary_id."));
-            mesh.set_boundary_id(conn[c][0], conn[c][1], dealii::types::boundary_id(boundary[c]));
-          }
+          mesh.set_boundary_id(conn[c][0], conn[c][1], dealii::types::boundary_id(boundary[c]));
       mesh.finalize();
     }
 

@@ -17,6 +17,11 @@ namespace dealvem
   {
     using P = dealii::Point<2>;
 
+    // Coordinates beyond this magnitude are refused: the geometric checks
+    // multiply coordinate differences and sum such products over a loop,
+    // which must stay far from overflow.
+    constexpr double max_coordinate = 1e100;
+
     inline double
     cross(const P &o, const P &a, const P &b)
     {
@@ -35,6 +40,19 @@ namespace dealvem
       std::ostringstream s;
       s << "(" << p[0] << ", " << p[1] << ")";
       return s.str();
+    }
+
+    // finite coordinates of at most max_coordinate in magnitude
+    void
+    check_coordinates(const std::string &mesh_name, const unsigned int v, const P &p)
+    {
+      AssertThrow(std::isfinite(p[0]) && std::isfinite(p[1]),
+                  ExcInvalidMesh("mesh '" + mesh_name + "': vertex " + std::to_string(v) +
+                                 " has a non-finite coordinate."));
+      AssertThrow(std::abs(p[0]) <= max_coordinate && std::abs(p[1]) <= max_coordinate,
+                  ExcInvalidMesh("mesh '" + mesh_name + "': vertex " + std::to_string(v) + " at " + point_string(p) +
+                                 " has a coordinate larger than 1e100 in magnitude; such coordinates are not "
+                                 "supported."));
     }
 
     // Proper crossing of segments ab and cd (interiors cross at one point),
@@ -66,39 +84,61 @@ namespace dealvem
       return std::min(s1, r1) - std::max(s0, r0) > 1e-10 * l;
     }
 
-    // A uniform bucket grid over a bounding box.
+    // A uniform bucket grid over a bounding box. Items outside the box (or
+    // with NaN coordinates) go to the nearest bucket, so any input gives a
+    // valid bucket index; a box that is empty, a single point or not finite
+    // gets a single bucket (correct, only slower).
     struct Grid
     {
       P            lo;
-      double       h = 1;
+      double       h  = 1;
       unsigned int nx = 1, ny = 1;
       std::vector<std::vector<unsigned int>> buckets;
 
       Grid(const P &lo_, const P &hi, const unsigned int n_items)
+        : lo(lo_)
       {
-        lo              = lo_;
-        const double w  = std::max(hi[0] - lo[0], 1e-300);
-        const double ht = std::max(hi[1] - lo[1], 1e-300);
-        const double n  = std::max(1u, n_items);
-        h               = std::sqrt(w * ht / n);
-        if (!(h > 0) || !std::isfinite(h))
-          h = std::max(w, ht);
-        h  = std::max(h, std::max(w, ht) / 2048.);
-        nx = std::min(4096u, unsigned(w / h) + 1);
-        ny = std::min(4096u, unsigned(ht / h) + 1);
+        const double w = hi[0] - lo[0], ht = hi[1] - lo[1];
+        const double extent = std::max(w, ht);
+        const bool   usable = std::isfinite(lo[0]) && std::isfinite(lo[1]) && std::isfinite(w) &&
+                            std::isfinite(ht) && w >= 0 && ht >= 0 && extent > 0;
+        if (usable)
+          {
+            // about one item per bucket, at most 2048 buckets along a side;
+            // sqrt of each factor avoids overflowing w * ht
+            const double n = std::max(1u, n_items);
+            h              = std::max(std::sqrt(w / n) * std::sqrt(ht), extent / 2048.);
+            if (h > 0 && std::isfinite(h))
+              {
+                nx = 1 + static_cast<unsigned int>(std::min(2048., std::floor(w / h)));
+                ny = 1 + static_cast<unsigned int>(std::min(2048., std::floor(ht / h)));
+              }
+            else
+              h = 1;
+          }
         buckets.resize(std::size_t(nx) * ny);
+      }
+
+      // bucket index of the scaled coordinate r in 0..n-1: clamped in double
+      // before the conversion (NaN and r <= 0 give 0)
+      static unsigned int
+      index(const double r, const unsigned int n)
+      {
+        if (!(r > 0))
+          return 0;
+        if (r >= double(n - 1))
+          return n - 1;
+        return static_cast<unsigned int>(r);
       }
       unsigned int
       ix(const double x) const
       {
-        const double r = (x - lo[0]) / h;
-        return r <= 0 ? 0 : std::min(nx - 1, unsigned(r));
+        return index((x - lo[0]) / h, nx);
       }
       unsigned int
       iy(const double y) const
       {
-        const double r = (y - lo[1]) / h;
-        return r <= 0 ? 0 : std::min(ny - 1, unsigned(r));
+        return index((y - lo[1]) / h, ny);
       }
       void
       insert_box(const P &a, const P &b, const unsigned int item)
@@ -214,9 +254,7 @@ namespace dealvem
   {
     // (1) checks on the raw loops that the later steps rely on
     for (unsigned int v = 0; v < vertices.size(); ++v)
-      AssertThrow(std::isfinite(vertices[v][0]) && std::isfinite(vertices[v][1]),
-                  ExcInvalidMesh("mesh '" + name + "': vertex " + std::to_string(v) +
-                                 " has a non-finite coordinate."));
+      check_coordinates(name, v, vertices[v]);
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
         const auto &loop = cells[c].vertices;
@@ -445,9 +483,7 @@ namespace dealvem
         for (unsigned int i = 0; i < n; ++i)
           {
             const P &p = vertices[loop[i]];
-            AssertThrow(std::isfinite(p[0]) && std::isfinite(p[1]),
-                        ExcInvalidMesh(cname + ": vertex " + std::to_string(loop[i]) +
-                                       " has a non-finite coordinate."));
+            check_coordinates(name, loop[i], p);
             for (unsigned int d = 0; d < 2; ++d)
               {
                 lo[d] = std::min(lo[d], p[d]);

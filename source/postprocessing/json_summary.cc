@@ -5,9 +5,9 @@
 #include <deal.II/base/exceptions.h>
 
 #include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/postprocessing/output_file.h>
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -112,8 +112,8 @@ namespace dealvem
   void
   JsonSummary::write(const std::string &filename) const
   {
-    std::ofstream f(filename);
-    AssertThrow(f, dealii::ExcMessage("Cannot write the JSON file '" + filename + "'."));
-    f << to_string();
+    OutputFile file(filename);
+    file.stream() << to_string();
+    file.commit();
   }
 } // namespace dealvem

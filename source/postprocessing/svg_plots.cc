@@ -4,11 +4,11 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
+#include <dealvem/postprocessing/output_file.h>
 #include <dealvem/postprocessing/svg_plots.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -115,8 +115,8 @@ namespace dealvem
           vmax = c + d;
         }
 
-      std::ofstream out(filename);
-      AssertThrow(out, dealii::ExcMessage("Cannot write the file '" + filename + "'."));
+      OutputFile    file(filename);
+      std::ostream &out = file.stream();
       out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width + bar << "\" height=\""
           << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
       out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -143,6 +143,7 @@ namespace dealvem
       out << "<text x=\"" << bx + 20 << "\" y=\"" << by0 + 10 << "\">" << number(vmax) << "</text>\n";
       out << "<text x=\"" << bx + 20 << "\" y=\"" << by0 + bh << "\">" << number(vmin) << "</text>\n";
       out << "</svg>\n";
+      file.commit();
     }
 
 
@@ -176,8 +177,8 @@ namespace dealvem
       auto py = [&](double y) { return H - B - (y - ymin) / (ymax - ymin) * (H - T - B); };
       const char *colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
 
-      std::ofstream out(filename);
-      AssertThrow(out, dealii::ExcMessage("Cannot write the file '" + filename + "'."));
+      OutputFile    file(filename);
+      std::ostream &out = file.stream();
       out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
           << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
       out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
@@ -240,6 +241,7 @@ namespace dealvem
             }
         }
       out << "</svg>\n";
+      file.commit();
     }
   } // namespace SVGPlots
 } // namespace dealvem

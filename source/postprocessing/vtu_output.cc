@@ -2,9 +2,9 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <dealvem/postprocessing/output_file.h>
 #include <dealvem/postprocessing/vtu_output.h>
 
-#include <fstream>
 #include <iomanip>
 
 namespace dealvem
@@ -17,8 +17,8 @@ namespace dealvem
                  const StressRecovery<dim>    &s)
   {
     const auto   &mesh = dof_handler.get_mesh();
-    std::ofstream out(filename);
-    AssertThrow(out, dealii::ExcMessage("Cannot write the VTU file '" + filename + "'."));
+    OutputFile    file(filename);
+    std::ostream &out = file.stream();
     out << std::setprecision(14);
     out << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -77,6 +77,7 @@ namespace dealvem
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       out << c << "\n";
     out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    file.commit();
   }
 
   template void

@@ -39,7 +39,7 @@ endforeach()
 
 # a good single-body run: uniform tension is reproduced exactly
 run_dealvem("cantilever" TRUE "Summary written to" ${TEST_DIR}/cantilever.prm)
-foreach(f output/solution-0.vtu output/solution-1.vtu output/solution.json)
+foreach(f output/solution-cycle0.vtu output/solution-cycle1.vtu output/solution.json)
   if(NOT EXISTS ${WORK_DIR}/${f})
     message(FATAL_ERROR "FAIL cantilever: ${f} was not written")
   endif()

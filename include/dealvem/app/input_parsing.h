@@ -15,6 +15,8 @@
 
 namespace dealvem
 {
+  struct MeshParameters;
+
   /**
    * Helpers that turn the compact strings of the parameter file into
    * objects. Syntax (used by the "Boundary conditions" section of
@@ -52,6 +54,82 @@ namespace dealvem
     /// Parse a real number; throws naming @p parameter otherwise.
     double
     parse_double(const std::string &s, const std::string &parameter);
+
+    /**
+     * Check that @p value lies in the interval from @p lower to @p upper
+     * (each end included unless @p lower_open or @p upper_open); throws an
+     * ExcMessage naming @p parameter, the value and the interval, followed
+     * by @p reason (may be empty) otherwise. Non-finite values are always
+     * rejected.
+     */
+    void
+    check_range(const double       value,
+                const double       lower,
+                const double       upper,
+                const std::string &parameter,
+                const bool         lower_open = false,
+                const bool         upper_open = false,
+                const std::string &reason     = "");
+
+    /**
+     * Check the names of the function constants: each must be a valid
+     * muparser name (a letter or '_' followed by letters, digits or '_'),
+     * and must not be one of the variables x, y, t or a function or
+     * constant muparser already knows (sin, pi, ...). Throws naming
+     * @p parameter and the offending name.
+     */
+    void
+    check_constant_names(const std::map<std::string, double> &constants, const std::string &parameter);
+
+    /// Size estimate of a run, see estimate_run_size().
+    struct RunSizeEstimate
+    {
+      /// Cells and DoFs of the largest (last) refinement cycle, all bodies.
+      double cells = 0, dofs = 0;
+      /// Voronoi cells of the largest cycle (summed over the bodies).
+      double voronoi_cells = 0;
+      /// The largest number of Lloyd iterations of a Voronoi body.
+      double lloyd_iterations = 0;
+      /// Sum over cycles and bodies of (Lloyd iterations + 1) * cells.
+      double lloyd_work = 0;
+      /// false when a mesh is read from a file (its size is not known
+      /// before it is read; it does not enter the numbers above).
+      bool complete = true;
+    };
+
+    /// The limits checked by check_run_size().
+    constexpr double max_dofs             = 2e7;
+    constexpr double max_voronoi_cells    = 1e7;
+    constexpr double max_lloyd_iterations = 1e5;
+    constexpr double max_lloyd_work       = 1e8;
+    /// Cell counts beyond this cannot be represented by the mesh classes,
+    /// whatever 'Allow large runs' says.
+    constexpr double max_representable_cells = 1e9;
+
+    /**
+     * Estimate the size of a run from the mesh generators' parameters of
+     * the bodies @p meshes, the number of refinement cycles (subdivisions
+     * times 2^cycle, Voronoi cells times 4^cycle) and the order @p degree
+     * (DoFs: 2 per vertex, plus 2 per edge and 2 per cell for k = 2;
+     * Voronoi meshes: about 2 vertices and 3 edges per cell).
+     */
+    RunSizeEstimate
+    estimate_run_size(const std::vector<const MeshParameters *> &meshes,
+                      const unsigned int                        n_cycles,
+                      const unsigned int                        degree);
+
+    /**
+     * Refuse a run whose estimate exceeds max_dofs, max_voronoi_cells,
+     * max_lloyd_iterations or max_lloyd_work unless @p allow_large_runs
+     * (the parameter 'Allow large runs'); the message gives the estimate
+     * and names that parameter. Runs beyond max_representable_cells are
+     * refused in any case.
+     */
+    void
+    check_run_size(const std::vector<const MeshParameters *> &meshes,
+                   const unsigned int                        n_cycles,
+                   const unsigned int                        degree,
+                   const bool                                allow_large_runs);
 
     /**
      * A function of (x, y) and the time t given by muparser expressions, one

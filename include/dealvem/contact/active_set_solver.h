@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
 #include <vector>
@@ -30,6 +31,14 @@ namespace dealvem
    * not change. A set seen before (other than the last one) means the
    * iteration cycles: this and exceeding the iteration limit throw an
    * exception with the iteration history.
+   *
+   * With a RigidBodySupport (set_support()), bodies that start apart or
+   * touch at a single point get a first active set that holds them: the
+   * pairs of smallest initial gap are closed until every body is held (the
+   * contact a rigid approach makes first), so the first system is not
+   * singular, whatever the solver. An active set that would leave a body
+   * free (every pair that held it pulled open) means there is no static
+   * equilibrium: solve() then stops with a message naming the free motions.
    */
   template <int dim>
   class ActiveSetSolver
@@ -41,6 +50,9 @@ namespace dealvem
       unsigned int              n_iterations = 0;
       std::vector<unsigned int> n_active_history;
       unsigned int              linear_iterations = 0;
+      /// Pairs with an open initial gap closed for the first iteration so
+      /// that every body is held.
+      unsigned int              n_closed_for_support = 0;
     };
 
     /// @p c is the constant of the active-set update, units of E/h.
@@ -56,6 +68,13 @@ namespace dealvem
      * (same sparsity) is used as work space. On return @p x holds the
      * displacements followed by the multipliers.
      */
+    /// Check every active set against the rigid-body motions (see above).
+    void
+    set_support(const RigidBodySupport *support)
+    {
+      this->support = support;
+    }
+
     Result
     solve(const dealii::SparseMatrix<double> &system_matrix,
           const dealii::Vector<double>       &system_rhs,
@@ -68,6 +87,7 @@ namespace dealvem
     SaddlePointSolver                       &solver;
     ContactSettings                          settings;
     double                                   c;
+    const RigidBodySupport                  *support = nullptr;
   };
 } // namespace dealvem
 

@@ -32,9 +32,15 @@ namespace dealvem
       plane_stress
     };
 
+    /// The range of Young's modulus the element computations support:
+    /// outside it, products such as E * h^2 underflow to zero or
+    /// overflow (zero stresses or "degenerate polygon" errors).
+    static constexpr double min_youngs_modulus = 1e-200;
+    static constexpr double max_youngs_modulus = 1e200;
+
     /**
      * Constructor. Throws (AssertThrow, also in Release builds) unless
-     * E > 0 and -1 < nu < 0.5.
+     * min_youngs_modulus <= E <= max_youngs_modulus and -1 < nu < 0.5.
      */
     ElasticMaterial(const double E = 1.0,
                     const double nu = 0.3,

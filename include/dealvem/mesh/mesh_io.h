@@ -23,9 +23,18 @@ namespace dealvem
    *   VTK_TRIANGLE (5) and VTK_QUAD (9) are also accepted as polygons;
    * - CELL_DATA with an integer SCALARS field "material_id" (value for the
    *   polygons, ignored on lines) and "boundary_id" (value for the lines,
-   *   ignored on polygons). Both fields are optional (default 0).
+   *   ignored on polygons). Both fields are optional (default 0) for a file
+   *   of polygons only; when the file has line cells, the boundary_id field
+   *   is required (write_vtk() always writes both), so that a file that lost
+   *   its end is not read with every id 0. Ids must be integers 0..254.
    * Polygons given clockwise are rejected (not silently reversed): the
    * message names the file, line and cell.
+   *
+   * The reader trusts nothing in the file: every count is checked against
+   * the size of the file before anything is allocated for it, and counts,
+   * indices, coordinates (finite, at most 1e100 in magnitude), section
+   * lengths and line cells (each must be an edge of a polygon) are checked;
+   * every error names the file and line.
    */
   namespace MeshIO
   {

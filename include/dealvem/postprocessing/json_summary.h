@@ -37,7 +37,8 @@ namespace dealvem
     std::string
     to_string() const;
 
-    /// Write to a file (throws naming the file on failure).
+    /// Write to a file through OutputFile: the file is replaced only when
+    /// it was written completely; throws naming the file on failure.
     void
     write(const std::string &filename) const;
 

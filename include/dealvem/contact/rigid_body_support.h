@@ -1,0 +1,83 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_contact_rigid_body_support_h
+#define dealvem_contact_rigid_body_support_h
+
+#include <deal.II/lac/affine_constraints.h>
+
+#include <dealvem/contact/contact_assembler.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * Which rigid-body motions of the bodies the displacement constraints and
+   * a set of closed contact pairs hold.
+   *
+   * Every body (material id) has three rigid-body modes: the two
+   * translations and the rotation about its centroid (scaled by its size).
+   * A constraint line, or the normal (and, with tangential stick, the
+   * tangential) row of a closed contact pair, restricts the modes by its
+   * values on them; the bodies are held when the restrictions have full
+   * rank 3 n_bodies (the Gram matrix of the restrictions has no eigenvalue
+   * below 1e-10 times its largest one). Only closed (active) pairs count:
+   * an open pair transmits nothing.
+   *
+   * The contact solver uses this to start from a set of pairs that holds
+   * every body (close_smallest_gaps(): bodies that start apart) and to
+   * stop with a clear message when the active set would let a body fly off
+   * (no static equilibrium under the load).
+   */
+  class RigidBodySupport
+  {
+  public:
+    RigidBodySupport(const VEMDoFHandler<2>                  &dof_handler,
+                     const dealii::AffineConstraints<double> &constraints,
+                     const ContactAssembler<2>               &contact,
+                     const bool                               tangential_stick);
+
+    /// The free rigid-body motions with the closed pairs @p closed (one
+    /// entry per pair), as a readable list "[y-translation of body 1] ...";
+    /// empty when every body is held.
+    std::string
+    free_motions(const std::vector<bool> &closed) const;
+
+    /// Whether every body is held with the closed pairs @p closed.
+    bool
+    holds(const std::vector<bool> &closed) const
+    {
+      return free_motions(closed).empty();
+    }
+
+    /**
+     * Close further pairs, in the order of increasing initial gap (pairs
+     * with equal gaps, to 1e-9 of the largest gap, together), until every
+     * body is held or every pair is closed. This is the contact that a
+     * rigid approach of the bodies makes first. Returns the number of pairs
+     * closed.
+     */
+    unsigned int
+    close_smallest_gaps(std::vector<bool> &closed) const;
+
+    unsigned int
+    n_bodies() const
+    {
+      return n_body;
+    }
+
+  private:
+    unsigned int n_body;
+    /// Gram matrix (3 n_bodies squared, row major) of the constraint lines.
+    std::vector<double> gram_constraints;
+    /// Per pair, its one or two rows (3 n_bodies values each).
+    std::vector<std::vector<std::vector<double>>> pair_rows;
+    std::vector<double>                            initial_gaps;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,140 @@
+# Bad parameter files: each must stop with a non-zero exit code and a
+# message that names the cause (the parameter and its value, the file, the
+# folder), never crash, hang or give a silent wrong answer. Each case is a
+# small parameter file written here and a
+# fragment the message must contain. Also: a multi-cycle run writes
+# <base>-cycle<c>.* files, a single cycle <base>.*.
+function(run_dealvem name expect_success fragment)
+  execute_process(COMMAND ${DEALVEM} ${ARGN} WORKING_DIRECTORY ${WORK_DIR}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+  set(all "${out}${err}")
+  # deal.II breaks the text of an error message into lines: compare with
+  # the white space collapsed
+  string(REGEX REPLACE "[ \t\r\n]+" " " all_flat "${all}")
+  string(REGEX REPLACE "[ \t\r\n]+" " " fragment "${fragment}")
+  if(expect_success AND NOT rc EQUAL 0)
+    message(FATAL_ERROR "FAIL ${name}: exit code ${rc}\n${all}")
+  endif()
+  if(NOT expect_success AND (rc EQUAL 0 OR NOT rc MATCHES "^[0-9]+$"))
+    # rc is a text such as "Segmentation fault" or "Process terminated due to timeout"
+    message(FATAL_ERROR "FAIL ${name}: exit '${rc}', expected an error exit\n${all}")
+  endif()
+  string(FIND "${all_flat}" "${fragment}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "FAIL ${name}: output lacks '${fragment}'\n${all}")
+  endif()
+  string(FIND "${all_flat}" "unknown exception" pos)
+  if(NOT pos EQUAL -1)
+    message(FATAL_ERROR "FAIL ${name}: 'unknown exception'\n${all}")
+  endif()
+  message(STATUS "PASS ${name}")
+  set(LAST_OUTPUT "${all}" PARENT_SCOPE)
+endfunction()
+
+function(bad_case name fragment text)
+  file(WRITE ${WORK_DIR}/${name}.prm "${text}")
+  run_dealvem("bad input: ${name}" FALSE "${fragment}" ${WORK_DIR}/${name}.prm)
+  set(LAST_OUTPUT "${LAST_OUTPUT}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR}/output ${WORK_DIR}/somefile)
+set(ok_bc "subsection Boundary conditions and loads\n  set Dirichlet = 0 : xy : 0, 0\nend\n")
+set(small_mesh "subsection Mesh\n  set Type = structured quads\n  set Subdivisions = 2, 2\nend\n")
+
+# ---- output names and folders
+bad_case(empty_base_name "Parameter 'Output/Base name' is empty"
+  "${small_mesh}${ok_bc}subsection Output\n  set Base name =\nend\n")
+bad_case(slash_base_name "Parameter 'Output/Base name' = 'a/b' contains '/'"
+  "${small_mesh}${ok_bc}subsection Output\n  set Base name = a/b\nend\n")
+bad_case(empty_folder "Parameter 'Output/Folder' is empty"
+  "${small_mesh}${ok_bc}subsection Output\n  set Folder =\nend\n")
+file(WRITE ${WORK_DIR}/somefile "a regular file, not a folder\n")
+bad_case(folder_below_file "cannot create the output folder 'somefile/out'"
+  "${small_mesh}${ok_bc}subsection Output\n  set Folder = somefile/out\nend\n")
+# the target of the JSON summary is a folder: the writer names the file
+file(MAKE_DIRECTORY ${WORK_DIR}/output/blocked.json)
+bad_case(json_target_is_folder "Cannot write the file 'output/blocked.json': it is a directory"
+  "${small_mesh}${ok_bc}subsection Output\n  set Base name = blocked\n  set Write VTU = false\nend\n")
+
+# ---- parameter ranges
+bad_case(tiny_E "Parameter 'Material/Young's modulus' = 1e-300 is out of range: it must lie in [1e-200, 1e+200]"
+  "${small_mesh}${ok_bc}subsection Material\n  set Young's modulus = 1e-300\nend\n")
+bad_case(huge_E "Parameter 'Material/Young's modulus' = 1e+308 is out of range"
+  "${small_mesh}${ok_bc}subsection Material\n  set Young's modulus = 1e308\nend\n")
+bad_case(zero_E "Parameter 'Material/Young's modulus' = 0 is out of range"
+  "${small_mesh}${ok_bc}subsection Material\n  set Young's modulus = 0\nend\n")
+bad_case(small_gamma "Parameter 'Discretization/Stabilization factor' = 1e-07 is out of range: it must lie in [1e-06, 1e+06]"
+  "${small_mesh}${ok_bc}subsection Discretization\n  set Stabilization factor = 1e-7\nend\n")
+bad_case(large_gamma "Parameter 'Discretization/Stabilization factor' = 1e+07 is out of range"
+  "${small_mesh}${ok_bc}subsection Discretization\n  set Stabilization factor = 1e7\nend\n")
+bad_case(tolerance_one "Parameter 'Solver/Relative tolerance' = 1 is out of range: it must lie in (0, 1)"
+  "${small_mesh}${ok_bc}subsection Solver\n  set Relative tolerance = 1\nend\n")
+file(READ ${SOURCE_DIR}/examples/step-2/patch-test.prm contact_prm)
+string(REPLACE "subsection Contact\n" "subsection Contact\n  set Penalty = 1e308\n" prm "${contact_prm}")
+bad_case(contact_penalty "Parameter 'Contact/Penalty' = 1e+308 is out of range: it must lie in [0, 1e+12]" "${prm}")
+string(REPLACE "subsection Contact\n" "subsection Contact\n  set Penalty factor = 1e13\n" prm "${contact_prm}")
+bad_case(contact_penalty_factor "Parameter 'Contact/Penalty factor' = 1e+13 is out of range" "${prm}")
+string(REGEX REPLACE "(subsection Body 1.*Young's modulus *)= 7000" "\\1= 1e-300" prm "${contact_prm}")
+bad_case(contact_body_E "Parameter 'Body 1/Material/Young's modulus' = 1e-300 is out of range" "${prm}")
+
+# ---- the size of a run
+bad_case(huge_subdivisions "This run is very large: more than 2e+07 DoFs"
+  "subsection Mesh\n  set Type = structured quads\n  set Subdivisions = 10000, 10000\nend\n${ok_bc}")
+string(REGEX REPLACE "[ \t\r\n]+" " " flat "${LAST_OUTPUT}")
+string(FIND "${flat}" "set 'Allow large runs = true'" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "FAIL huge_subdivisions: the message does not name 'Allow large runs'")
+endif()
+bad_case(huge_voronoi "more than 1e+07 Voronoi cells"
+  "subsection Mesh\n  set Type = voronoi\n  set Number of cells = 20000000\n  set Lloyd iterations = 0\nend\n${ok_bc}")
+bad_case(many_cycles "more than 2e+07 DoFs"
+  "subsection Mesh\n  set Type = voronoi\n  set Number of cells = 1000\nend\nsubsection Convergence study\n  set Refinement cycles = 8\nend\n${ok_bc}")
+bad_case(lloyd "more than 1e+05 Lloyd iterations"
+  "subsection Mesh\n  set Type = voronoi\n  set Lloyd iterations = 1000000\nend\n${ok_bc}")
+bad_case(unrepresentable "more cells than the program can represent"
+  "set Allow large runs = true\nsubsection Mesh\n  set Type = structured quads\n  set Subdivisions = 999999999, 999999999\nend\n${ok_bc}")
+
+# ---- expressions and function constants
+set(bc_head "subsection Boundary conditions and loads\n  set Dirichlet = 0 : xy : 0, 0\n")
+bad_case(constant_x "Parameter 'Boundary conditions and loads/Function constants': the name 'x' is reserved"
+  "${small_mesh}${bc_head}  set Function constants = x=1\nend\n")
+bad_case(constant_1a "Parameter 'Boundary conditions and loads/Function constants': '1a' is not a valid constant name"
+  "${small_mesh}${bc_head}  set Function constants = 1a=2\nend\n")
+bad_case(constant_a_b "Parameter 'Boundary conditions and loads/Function constants (a)': 'b' is not a finite real number"
+  "${small_mesh}${bc_head}  set Function constants = a=b\nend\n")
+bad_case(unknown_function "Parameter 'Boundary conditions and loads/Body force': cannot parse the expression(s) 'foo(x), 0'"
+  "${small_mesh}${bc_head}  set Body force = foo(x), 0\nend\n")
+
+# ---- parameter files
+# include names are relative to the working directory (as in deal.II)
+file(WRITE ${WORK_DIR}/include-self.prm "# includes itself\ninclude include-self.prm\n")
+run_dealvem("bad input: file includes itself" FALSE "include each other in a cycle" ${WORK_DIR}/include-self.prm)
+file(WRITE ${WORK_DIR}/include-a.prm "include include-b.prm\n")
+file(WRITE ${WORK_DIR}/include-b.prm "# b includes a\ninclude include-a.prm\n")
+run_dealvem("bad input: two files include each other" FALSE "include-b.prm' includes" ${WORK_DIR}/include-a.prm)
+file(WRITE ${WORK_DIR}/include-missing.prm "include no-such-file.prm\n")
+run_dealvem("bad input: missing include file" FALSE "cannot open the included file 'no-such-file.prm'"
+  ${WORK_DIR}/include-missing.prm)
+file(MAKE_DIRECTORY ${WORK_DIR}/a-folder.prm)
+run_dealvem("bad input: parameter file is a folder" FALSE "it is a directory" ${WORK_DIR}/a-folder.prm)
+
+# ---- good runs: an include that is not a cycle; cycle file names
+file(WRITE ${WORK_DIR}/common.prm "${small_mesh}${ok_bc}")
+file(WRITE ${WORK_DIR}/with-include.prm
+  "include common.prm\nsubsection Convergence study\n  set Refinement cycles = 2\nend\nsubsection Output\n  set Base name = multi\nend\n")
+run_dealvem("include and two cycles" TRUE "Summary written to" ${WORK_DIR}/with-include.prm)
+foreach(f output/multi-cycle0.vtu output/multi-cycle1.vtu output/multi.json)
+  if(NOT EXISTS ${WORK_DIR}/${f})
+    message(FATAL_ERROR "FAIL include and two cycles: ${f} was not written")
+  endif()
+endforeach()
+file(WRITE ${WORK_DIR}/single.prm "${small_mesh}${ok_bc}subsection Output\n  set Base name = single\nend\n")
+run_dealvem("one cycle" TRUE "Summary written to" ${WORK_DIR}/single.prm)
+if(NOT EXISTS ${WORK_DIR}/output/single.vtu)
+  message(FATAL_ERROR "FAIL one cycle: output/single.vtu was not written")
+endif()
+file(GLOB leftovers ${WORK_DIR}/output/.*tmp*)
+if(leftovers)
+  message(FATAL_ERROR "FAIL: temporary files left behind: ${leftovers}")
+endif()
+message(STATUS "PASS no temporary files left")
