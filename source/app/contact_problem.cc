@@ -17,7 +17,7 @@
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
-#include <dealvem/postprocessing/output_file.h>
+#include <dealvem/base/output_file.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/svg_plots.h>
 #include <dealvem/postprocessing/vtu_output.h>

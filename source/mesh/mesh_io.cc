@@ -2,6 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <dealvem/base/output_file.h>
 #include <dealvem/mesh/mesh_io.h>
 
 #include <charconv>
@@ -531,9 +532,10 @@ namespace dealvem
     void
     write_vtk(const PolygonalMesh<dim> &mesh, const std::string &filename)
     {
-      std::ofstream out(filename);
-      AssertThrow(out, dealii::ExcMessage("Cannot write the mesh file '" + filename + "'."));
-      write_vtk(mesh, out);
+      // written to a temporary file and renamed: never half-written
+      OutputFile file(filename);
+      write_vtk(mesh, file.stream());
+      file.commit();
     }
 
     template void read_vtk(PolygonalMesh<2> &, const std::string &);

@@ -5,7 +5,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <dealvem/postprocessing/json_summary.h>
-#include <dealvem/postprocessing/output_file.h>
+#include <dealvem/base/output_file.h>
 
 #include <cmath>
 #include <iomanip>

@@ -4,7 +4,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
-#include <dealvem/postprocessing/output_file.h>
+#include <dealvem/base/output_file.h>
 #include <dealvem/postprocessing/svg_plots.h>
 
 #include <algorithm>

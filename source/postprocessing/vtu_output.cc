@@ -2,7 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
-#include <dealvem/postprocessing/output_file.h>
+#include <dealvem/base/output_file.h>
 #include <dealvem/postprocessing/vtu_output.h>
 
 #include <iomanip>

@@ -9,7 +9,7 @@
 // behind, and the error message names the file. The checks of the output
 // parameters (folder, base name) and the cycle file names.
 #include <dealvem/postprocessing/json_summary.h>
-#include <dealvem/postprocessing/output_file.h>
+#include <dealvem/base/output_file.h>
 #include <dealvem/postprocessing/svg_plots.h>
 
 #include <filesystem>

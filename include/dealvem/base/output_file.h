@@ -2,8 +2,8 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
-#ifndef dealvem_postprocessing_output_file_h
-#define dealvem_postprocessing_output_file_h
+#ifndef dealvem_base_output_file_h
+#define dealvem_base_output_file_h
 
 #include <fstream>
 #include <ostream>

@@ -4,7 +4,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
-#include <dealvem/postprocessing/output_file.h>
+#include <dealvem/base/output_file.h>
 
 #include <atomic>
 #include <cerrno>
