@@ -80,7 +80,13 @@ endforeach()
 file(READ ${WORK_DIR}/output/patch-test.json json)
 string(JSON pmin GET "${json}" contact pressure_min)
 string(JSON pmax GET "${json}" contact pressure_max)
-message(STATUS "PASS contact JSON: contact pressure in [${pmin}, ${pmax}]")
+# uniform pressure p = 10 at every pair (the patch test), to round-off
+foreach(v ${pmin} ${pmax})
+  if(v LESS 9.999999999 OR v GREATER 10.000000001)
+    message(FATAL_ERROR "FAIL contact JSON: contact pressure ${v} is not 10 (range [${pmin}, ${pmax}])")
+  endif()
+endforeach()
+message(STATUS "PASS contact JSON: contact pressure in [${pmin}, ${pmax}] = 10 to 1e-10")
 
 # the contact patch test with nu = 0 and the top of the upper body a rigid
 # plate under the resultant (0, -p) instead of the pressure p: the same

@@ -18,8 +18,9 @@ namespace dealvem
    * the constraints have been condensed), behind one interface:
    * - UMFPACK: SuiteSparse's sparse LU (dealii::SparseDirectUMFPACK);
    * - KLU: Trilinos Amesos KLU (dealii::TrilinosWrappers::SolverDirect);
-   * - CG-AMG: Trilinos CG preconditioned by one ML smoothed-aggregation
-   *   V-cycle whose near-null space is the three rigid-body modes
+   * - CG-AMG: deal.II's SolverCG on the matrix copied into Trilinos,
+   *   preconditioned by one ML smoothed-aggregation V-cycle whose
+   *   near-null space is the three rigid-body modes
    *   (set_near_null_space(), e.g. VEMDoFHandler::rigid_body_modes()).
    *
    * The Trilinos solvers need MPI to be initialized
