@@ -35,6 +35,7 @@
 #include <sstream>
 
 #include "../contact_common.h"
+#include "../graded_meshes.h"
 #include "../tests.h"
 
 namespace
@@ -42,47 +43,13 @@ namespace
   constexpr double R = 50., E_cyl = 70000., E_block = 210000., nu = 0.3, P = 35000.;
   constexpr double h_target = 0.125, x_strip = 8.;
 
-  // refine cells longer than 1.3 h whose centre is within two cell sizes of
-  // the contact strip
-  void
-  refine_toward(dealii::Triangulation<2> &tria, const std::function<double(const dealii::Point<2> &)> &distance)
-  {
-    for (bool any = true; any;)
-      {
-        any = false;
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            double size = 0;
-            for (unsigned int l = 0; l < 4; ++l)
-              size = std::max(size, cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
-            if (size > 1.3 * h_target && distance(cell->center()) < 2. * size)
-              {
-                cell->set_refine_flag();
-                any = true;
-              }
-          }
-        if (any)
-          tria.execute_coarsening_and_refinement();
-      }
-  }
-
   // block: ids 0 left, 1 right, 2 bottom, 3 top
   void
   write_block(const std::string &file)
   {
-    dealii::Triangulation<2> tria;
-    dealii::GridGenerator::subdivided_hyper_rectangle(tria, {25u, 12u}, dealii::Point<2>(-100, -100),
-                                                      dealii::Point<2>(100, 0), true);
-    for (const auto &cell : tria.active_cell_iterators())
-      cell->set_material_id(0);
-    refine_toward(tria, [](const dealii::Point<2> &p) {
-      const double dx = std::max(std::abs(p[0]) - x_strip, 0.);
-      return std::sqrt(dx * dx + p[1] * p[1]);
-    });
-    dealvem::PolygonalMesh<2> mesh;
-    dealvem::PolygonalMeshGenerators::from_triangulation(mesh, tria);
-    dealvem::MeshIO::write_vtk(mesh, file);
+    testing::write_graded_block(file, h_target, x_strip);
   }
+
 
   // lower half disk about (0, R): ids 0 arc, 1 flat cut
   void
@@ -95,7 +62,7 @@ namespace
     dealii::GridTools::shift(centre - dealii::Point<2>(), tria);
     tria.set_manifold(0, dealii::SphericalManifold<2>(centre));
     tria.refine_global(3);
-    refine_toward(tria, [&](const dealii::Point<2> &p) {
+    testing::refine_toward(tria, h_target, [&](const dealii::Point<2> &p) {
       const auto   q = p - centre;
       const double r = q.norm();
       if (r > 1e-12 * R)
