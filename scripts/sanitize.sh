@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Sanitizer run: configure a Debug build against deal.II's debug library with
+# AddressSanitizer + LeakSanitizer + UBSan (-DDEALVEM_SANITIZE=ON) in
+# ./build-sanitize (override with BUILD_DIR), build it (ccache when present)
+# and run the ctest suite without the labels "long" and "sanitize_slow"
+# (tests too slow at -O0 with the sanitizers; they run in the normal suite).
+# Any sanitizer report makes the test, and so this script, fail.
+#   SANITIZE_BUILD_ONLY=1  only configure and build
+#   extra arguments are passed to ctest (e.g. -R app/)
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${BUILD_DIR:-$ROOT/build-sanitize}"
+JOBS="${JOBS:-$(nproc)}"
+mkdir -p "$BUILD_DIR"
+cmake -S "$ROOT" -B "$BUILD_DIR" -DDEALVEM_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug \
+  -DDEALVEM_ENABLE_BENCHMARKS=OFF > "$BUILD_DIR/configure.log" 2>&1 || {
+  cat "$BUILD_DIR/configure.log"; exit 1; }
+cmake --build "$BUILD_DIR" -j "$JOBS"
+if [ -n "${SANITIZE_BUILD_ONLY:-}" ]; then exit 0; fi
+
+# shellcheck source=scripts/sanitizer-env.sh
+source "$ROOT/scripts/sanitizer-env.sh"
+cd "$BUILD_DIR"
+ctest -LE 'long|sanitize_slow' --output-on-failure -j "$JOBS" --timeout 1500 "$@"
