@@ -307,6 +307,28 @@ namespace dealvem
       bool         facing = false; ///< outward normals opposed
     };
 
+    /**
+     * Complete a projection found on edge best.edge at the unclamped edge
+     * parameter @p unclamped: beyond an end of the side it is accepted only
+     * within the merge distance of the end vertex; the outward normal of the
+     * side there (the vertex normal at an end of the edge) must be opposed
+     * to @p own_normal.
+     */
+    void
+    classify(const Mesh &mesh, const Side &side, const double unclamped, const Vector &own_normal,
+             const double merge_fraction, Projection &best)
+    {
+      const unsigned int end_vertex = side.edges[best.edge][unclamped < 0.5 ? 0 : 1];
+      const double       beyond     = (unclamped < 0 ? -unclamped : unclamped - 1) * best.length;
+      best.inside = (beyond <= 0) || !side.is_end(end_vertex) ||
+                    beyond <= merge_fraction * side.h.at(end_vertex);
+      const Vector other_normal =
+        (best.t == 0 || best.t == 1) ? side.normal.at(side.edges[best.edge][best.t == 0 ? 0 : 1]) :
+                                       edge_normal(mesh.vertex(side.edges[best.edge][0]),
+                                                   mesh.vertex(side.edges[best.edge][1]));
+      best.facing = (other_normal * own_normal) <= -0.5;
+    }
+
     Projection
     project(const Mesh &mesh, const Side &side, const Point &p, const Vector &own_normal,
             const double merge_fraction)
@@ -334,17 +356,7 @@ namespace dealvem
             }
         }
       best.distance = best_distance;
-      // beyond an end of the side: accepted only within the merge distance
-      // of the end vertex
-      const unsigned int end_vertex = side.edges[best.edge][unclamped < 0.5 ? 0 : 1];
-      const double       beyond     = (unclamped < 0 ? -unclamped : unclamped - 1) * best.length;
-      best.inside = (beyond <= 0) || !side.is_end(end_vertex) ||
-                    beyond <= merge_fraction * side.h.at(end_vertex);
-      const Vector other_normal =
-        (best.t == 0 || best.t == 1) ? side.normal.at(side.edges[best.edge][best.t == 0 ? 0 : 1]) :
-                                       edge_normal(mesh.vertex(side.edges[best.edge][0]),
-                                                   mesh.vertex(side.edges[best.edge][1]));
-      best.facing = (other_normal * own_normal) <= -0.5;
+      classify(mesh, side, unclamped, own_normal, merge_fraction, best);
       return best;
     }
 
@@ -390,19 +402,8 @@ namespace dealvem
       if (best.edge == invalid)
         return best; // inside = false
       best.distance = p.distance(best.point);
-      const unsigned int end_vertex = side.edges[best.edge][unclamped < 0.5 ? 0 : 1];
-      best.inside = (unclamped >= 0 && unclamped <= 1) || !side.is_end(end_vertex);
-      if (!best.inside)
-        {
-          // beyond an end of the side but within the merge distance of it
-          const double beyond = (unclamped < 0 ? -unclamped : unclamped - 1) * best.length;
-          best.inside         = beyond <= merge_fraction * side.h.at(end_vertex);
-        }
-      const Vector other_normal =
-        (best.t == 0 || best.t == 1) ? side.normal.at(side.edges[best.edge][best.t == 0 ? 0 : 1]) :
-                                       edge_normal(mesh.vertex(side.edges[best.edge][0]),
-                                                   mesh.vertex(side.edges[best.edge][1]));
-      best.facing = (other_normal * direction) <= -0.5;
+      // (a hit inside the edge is inside the side; classify() decides the rest)
+      classify(mesh, side, unclamped, direction, merge_fraction, best);
       return best;
     }
 
