@@ -137,11 +137,12 @@ namespace dealvem
     else
       {
         // one file per level ("{cycle}" in the name), or the file refined
-        std::string  path       = file_name;
-        const auto   placeholder = path.find("{cycle}");
-        const bool   per_level   = placeholder != std::string::npos;
+        const std::string placeholder = "{cycle}";
+        std::string       path        = file_name;
+        const auto        at          = path.find(placeholder);
+        const bool        per_level   = (at != std::string::npos);
         if (per_level)
-          path.replace(placeholder, 7, std::to_string(refinement));
+          path.replace(at, placeholder.size(), std::to_string(refinement));
         AssertThrow(refinement == 0 || per_level || type == "gridin file",
                     dealii::ExcMessage("A polygon mesh read from the VTK file '" + file_name +
                                        "' cannot be refined in a convergence study; name one file per "
