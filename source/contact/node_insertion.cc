@@ -102,9 +102,12 @@ namespace dealvem
       std::map<unsigned int, double>           h;      ///< shortest side edge at the vertex
       std::map<unsigned int, Vector>           normal; ///< averaged outward normal
       std::map<unsigned int, double>           kappa;  ///< smooth signed curvature, 0 at kinks
-      std::map<unsigned int, double>           kappa_raw; ///< circle through the neighbours, 0 at corners
       std::vector<double>                      edge_kappa;     ///< smooth, for placing new vertices
-      std::vector<double>                      edge_kappa_raw; ///< larger of the ends, for tolerances
+      /// Circle through the vertex and its neighbours for the gap rule:
+      /// interior vertices turning by less than 60 degrees (a coarse
+      /// sampling of a curve turns that much); absent at chain ends and
+      /// sharper corners.
+      std::map<unsigned int, double>           kappa_gap;
 
       bool
       is_end(const unsigned int v) const
@@ -114,16 +117,17 @@ namespace dealvem
     };
 
     /// Signed curvature (convex > 0) of the circle through a, b, c, or 0 if
-    /// the side turns by more than 30 degrees at b (a corner, not a curve).
+    /// the side turns at b by more than the angle whose sine is
+    /// @p corner_sine (default 30 degrees: a corner, not a curve).
     double
-    menger_curvature(const Point &a, const Point &b, const Point &c)
+    menger_curvature(const Point &a, const Point &b, const Point &c, const double corner_sine = 0.5)
     {
       const Vector d1 = b - a, d2 = c - b;
       const double l1 = d1.norm(), l2 = d2.norm(), l3 = (c - a).norm();
       if (l1 == 0 || l2 == 0 || l3 == 0)
         return 0;
       const double sine = cross(d1, d2) / (l1 * l2);
-      if ((d1 * d2) <= 0 || std::abs(sine) > 0.5)
+      if ((d1 * d2) <= 0 || std::abs(sine) > corner_sine)
         return 0;
       return 2 * cross(d1, d2) / (l1 * l2 * l3);
     }
@@ -227,23 +231,27 @@ namespace dealvem
               side.kappa[chain[i]] = smooth;
             }
           for (unsigned int i = 0; i < n; ++i)
-            side.kappa_raw[chain[i]] = std::isnan(raw[chain[i]]) ? 0. : raw[chain[i]];
+            if (side.closed[c] || (i > 0 && i + 1 < n))
+              {
+                const Point &a = mesh.vertex(chain[(i + n - 1) % n]), &b = mesh.vertex(chain[i]),
+                            &d = mesh.vertex(chain[(i + 1) % n]);
+                const Vector d1 = b - a, d2 = d - b;
+                // a turn above 60 degrees is a corner (sin 60 = 0.866)
+                if ((d1 * d2) > 0 && std::abs(cross(d1, d2)) <= 0.866 * d1.norm() * d2.norm())
+                  side.kappa_gap[chain[i]] = menger_curvature(a, b, d, 1.);
+              }
           // chain ends take the curvature of their neighbour
           if (!side.closed[c] && n >= 3)
-            for (auto *k : {&side.kappa, &side.kappa_raw})
-              {
-                (*k)[chain[0]]     = (*k)[chain[1]];
-                (*k)[chain[n - 1]] = (*k)[chain[n - 2]];
-              }
+            {
+              side.kappa[chain[0]]     = side.kappa[chain[1]];
+              side.kappa[chain[n - 1]] = side.kappa[chain[n - 2]];
+            }
         }
       side.edge_kappa.resize(side.edges.size());
-      side.edge_kappa_raw.resize(side.edges.size());
       for (unsigned int i = 0; i < side.edges.size(); ++i)
         {
           const double ka = side.kappa[side.edges[i][0]], kb = side.kappa[side.edges[i][1]];
           side.edge_kappa[i] = (ka * kb > 0 ? (std::abs(ka) < std::abs(kb) ? ka : kb) : 0.);
-          const double ra = side.kappa_raw[side.edges[i][0]], rb = side.kappa_raw[side.edges[i][1]];
-          side.edge_kappa_raw[i] = (std::abs(ra) > std::abs(rb) ? ra : rb);
         }
       return side;
     }
@@ -535,9 +543,11 @@ namespace dealvem
     {
       unsigned int vertex;  ///< the new vertex
       unsigned int partner; ///< its partner on the other side
-      double       deviation; ///< chord deviation bound at the new vertex
-      double       kappa;     ///< curvature of the side that received it
       bool         on_master;
+      unsigned int edge;    ///< the split edge of the receiving side (before insertion)
+      Point        chord;   ///< the point of the chord at the split
+      Vector       normal;  ///< outward normal of the chord
+      double       q;       ///< t(1 - t) L^2 / 2: chord deviation per unit curvature
     };
     std::vector<Inserted> inserted;
     const auto split_side = [&](const Side &onto, const Side &from, std::map<unsigned int, Candidate> &cands,
@@ -567,7 +577,6 @@ namespace dealvem
           const Point        xa = mesh.vertex(a), xb = mesh.vertex(b);
           const double       L  = xa.distance(xb);
           const double       kappa = onto.edge_kappa[entry.first];
-          const double       kappa_raw = onto.edge_kappa_raw[entry.first];
           unsigned int       e        = onto.edge_indices[entry.first]; // the piece (previous, b)
           double             previous = 0;
           std::vector<std::pair<unsigned int, Point>> moves; // after all splits of this edge
@@ -593,8 +602,8 @@ namespace dealvem
                 moves.emplace_back(nv, mesh.vertex(nv) + deviation * edge_normal(xa, xb));
               partner_onto[nv] = v;
               partner_from[v]  = nv;
-              inserted.push_back({nv, v, 0.5 * t * (1 - t) * L * L * std::abs(kappa_raw), kappa_raw,
-                                  onto_master});
+              inserted.push_back({nv, v, onto_master, entry.first, xa + t * (xb - xa), edge_normal(xa, xb),
+                                  0.5 * t * (1 - t) * L * L});
               previous = t;
               ++(onto_master ? report.n_inserted_master : report.n_inserted_slave);
             }
@@ -605,11 +614,39 @@ namespace dealvem
     split_side(master, slave, on_master, master_partner, slave_partner, true);
     split_side(slave, master, on_slave, slave_partner, master_partner, false);
 
-    // 4. close discretisation gaps
+    // 4. close discretisation gaps. A gap at an inserted vertex is one if
+    // the partner lies where the receiving chord's curve would put it with
+    // a curvature that both sides show around the pair (see the class
+    // documentation); everything else is a real gap (or penetration).
     if (settings.close_discretisation_gaps)
       {
-        const auto kappa_of = [&](const Side &side, const unsigned int v, const Inserted *ins) {
-          return ins ? ins->kappa : side.kappa_raw.at(v);
+        // curvatures (convex > 0 for @p side) of the vertices in @p vs and
+        // their neighbours on @p side, as an interval widened by the
+        // curvature factor; sign -1 turns them into the other side's view
+        const auto curvature_range = [&](const Side &side, const std::vector<unsigned int> &vs, const double sign) {
+          std::vector<unsigned int> around;
+          for (const unsigned int v : vs)
+            {
+              around.push_back(v);
+              if (const auto in = side.incoming.find(v); in != side.incoming.end())
+                around.push_back(side.edges[in->second][0]);
+              if (const auto out = side.outgoing.find(v); out != side.outgoing.end())
+                around.push_back(side.edges[out->second][1]);
+            }
+          double lo = 0, hi = 0;
+          bool   first = true;
+          for (const unsigned int v : around)
+            if (const auto k = side.kappa_gap.find(v); k != side.kappa_gap.end())
+              {
+                lo    = first ? sign * k->second : std::min(lo, sign * k->second);
+                hi    = first ? sign * k->second : std::max(hi, sign * k->second);
+                first = false;
+              }
+          // the interval reaches 0 (the curvature of a smooth curve may
+          // fall towards an inflection or a chain end between samples); no
+          // interior vertex nearby: the side is straight there
+          const double f = settings.curvature_factor;
+          return std::make_pair(f * std::min(lo, 0.), f * std::max(hi, 0.));
         };
         std::map<unsigned int, const Inserted *> by_vertex;
         for (const auto &ins : inserted)
@@ -620,16 +657,23 @@ namespace dealvem
             const unsigned int m = mp.first, s = mp.second;
             const auto         im = by_vertex.find(m), is = by_vertex.find(s);
             const Inserted    *ins = (im != by_vertex.end() ? im->second : (is != by_vertex.end() ? is->second : nullptr));
-            const double       km = kappa_of(master, m, im != by_vertex.end() ? im->second : nullptr);
-            const double       ks = kappa_of(slave, s, is != by_vertex.end() ? is->second : nullptr);
-            const bool         same_curve = std::abs(km + ks) <= 0.5 * std::max(std::abs(km), std::abs(ks));
             const Point        xm = mesh.vertex(m), xs = mesh.vertex(s);
             const double       g0 = (xs - xm) * master_now.normal.at(m);
             const double       tol =
-              (same_curve && ins ? settings.curvature_factor * ins->deviation : 0.) +
               settings.coordinate_precision * (std::abs(xs[0]) + std::abs(xs[1])) +
               1e-12 * std::min(master_now.h.at(m), slave.h.count(s) ? slave.h.at(s) : master_now.h.at(m));
-            if (std::abs(g0) > tol)
+            bool discretisation_gap = std::abs(g0) <= tol;
+            if (ins && !discretisation_gap)
+              {
+                const Side &onto = ins->on_master ? master : slave, &from = ins->on_master ? slave : master;
+                const auto  r = curvature_range(onto, {onto.edges[ins->edge][0], onto.edges[ins->edge][1]}, 1.);
+                const auto  p = curvature_range(from, {ins->partner}, -1.);
+                const double lo = std::max(r.first, p.first), hi = std::min(r.second, p.second);
+                // the partner's offset from the chord, against the curvatures
+                const double delta = (mesh.vertex(ins->partner) - ins->chord) * ins->normal;
+                discretisation_gap = lo <= hi && delta >= ins->q * lo - tol && delta <= ins->q * hi + tol;
+              }
+            if (!discretisation_gap)
               {
                 // a real gap: keep it, but put two merged vertices opposite
                 // each other along the master normal (the slave vertex onto
