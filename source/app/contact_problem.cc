@@ -563,6 +563,20 @@ namespace dealvem
             if (r.unpaired.size() > 5)
               std::cout << "    ... (" << r.unpaired.size() - 5 << " more)" << std::endl;
           }
+        if (!r.unresolved_gaps.empty())
+          {
+            const auto worst = std::max_element(r.unresolved_gaps.begin(), r.unresolved_gaps.end(),
+                                                [](const auto &a, const auto &b) {
+                                                  return std::abs(a.second) < std::abs(b.second);
+                                                });
+            std::cout << "  warning: interface " << i << " keeps " << r.unresolved_gaps.size()
+                      << " gap(s) that may be discretisation gaps of a curve whose curvature changes sign "
+                         "between too few vertices (largest "
+                      << worst->second << " at (" << worst->first[0] << ", " << worst->first[1]
+                      << ")). If the bodies touch along one curve, refine the interface meshes there; if "
+                         "the gaps are real, ignore this."
+                      << std::endl;
+          }
       }
     for (const auto &d : contact.get_dropped_constraints())
       std::cout << "  note: the " << (d.tangential ? "tangential" : "normal") << " constraint of the pair at ("
@@ -703,16 +717,18 @@ namespace dealvem
           }
         json.set("contact.open_end_warnings", double(results.n_open_end_warnings));
         {
-          unsigned int n_unpaired = 0, n_closed = 0, n_merged = 0;
+          unsigned int n_unpaired = 0, n_closed = 0, n_merged = 0, n_unresolved = 0;
           double       max_closed = 0;
           for (const auto &r : results.insertion_reports)
             {
               n_unpaired += r.unpaired.size();
+              n_unresolved += r.unresolved_gaps.size();
               n_closed += r.n_closed_gaps;
               n_merged += r.n_merged;
               max_closed = std::max(max_closed, r.max_closed_gap);
             }
           json.set("contact.unpaired_nodes", double(n_unpaired));
+          json.set("contact.unresolved_gaps", double(n_unresolved));
           json.set("contact.merged_pairs", double(n_merged));
           json.set("contact.closed_gaps", double(n_closed));
           json.set("contact.max_closed_gap", max_closed);

@@ -643,8 +643,18 @@ namespace dealvem
                 first = false;
               }
           // the interval reaches 0 (the curvature of a smooth curve may
-          // fall towards an inflection or a chain end between samples); no
-          // interior vertex nearby: the side is straight there
+          // fall towards an inflection between samples); beyond the end of a
+          // side nothing is known, so next to one either sign is possible
+          // up to the largest curvature seen
+          // no interior vertex nearby: the side is straight there
+          // (an inflection nearby is sampled like an end: the extremes of
+          // either sign may lie between the samples)
+          if ((lo < 0 && hi > 0) ||
+              std::any_of(around.begin(), around.end(), [&](const unsigned int v) { return side.is_end(v); }))
+            {
+              const double k = std::max(std::abs(lo), std::abs(hi));
+              lo = -k, hi = k;
+            }
           const double f = settings.curvature_factor;
           return std::make_pair(f * std::min(lo, 0.), f * std::max(hi, 0.));
         };
@@ -662,17 +672,64 @@ namespace dealvem
             const double       tol =
               settings.coordinate_precision * (std::abs(xs[0]) + std::abs(xs[1])) +
               1e-12 * std::min(master_now.h.at(m), slave.h.count(s) ? slave.h.at(s) : master_now.h.at(m));
-            bool discretisation_gap = std::abs(g0) <= tol;
-            if (ins && !discretisation_gap)
+            // the partner's offset from a chord of the receiving side,
+            // against the curvatures both sides show around the pair: on one
+            // curve the offset is t(1 - t) L^2 kappa / 2 for a kappa between
+            // the chord's ends
+            enum class Verdict
+            {
+              real,
+              discretisation,
+              unresolved
+            };
+            const auto same_curve = [&](const Side &onto, const unsigned int edge, const Point &chord,
+                                        const Vector &normal, const double q, const Side &from,
+                                        const unsigned int partner) {
+              const auto   r  = curvature_range(onto, {onto.edges[edge][0], onto.edges[edge][1]}, 1.);
+              const auto   p  = curvature_range(from, {partner}, -1.);
+              const double lo = std::min(r.first, p.first), hi = std::max(r.second, p.second);
+              const double delta = (mesh.vertex(partner) - chord) * normal;
+              // q < 0 beyond the chord's ends: the circle lies on the other side
+              if (delta >= std::min(q * lo, q * hi) - tol && delta <= std::max(q * lo, q * hi) + tol)
+                return Verdict::discretisation;
+              // near an inflection, a gap up to twice the largest chord
+              // deviation may still be one of a curve sampled too coarsely
+              const double k = std::max(-lo, hi);
+              if (lo < 0 && hi > 0 && std::abs(delta) <= 2 * std::abs(q) * k)
+                return Verdict::unresolved;
+              return Verdict::real;
+            };
+            Verdict verdict = (std::abs(g0) <= tol ? Verdict::discretisation : Verdict::real);
+            if (verdict == Verdict::real && ins)
+              verdict = ins->on_master ? same_curve(master, ins->edge, ins->chord, ins->normal, ins->q, slave, s) :
+                                         same_curve(slave, ins->edge, ins->chord, ins->normal, ins->q, master, m);
+            else if (verdict == Verdict::real)
               {
-                const Side &onto = ins->on_master ? master : slave, &from = ins->on_master ? slave : master;
-                const auto  r = curvature_range(onto, {onto.edges[ins->edge][0], onto.edges[ins->edge][1]}, 1.);
-                const auto  p = curvature_range(from, {ins->partner}, -1.);
-                const double lo = std::max(r.first, p.first), hi = std::min(r.second, p.second);
-                // the partner's offset from the chord, against the curvatures
-                const double delta = (mesh.vertex(ins->partner) - ins->chord) * ins->normal;
-                discretisation_gap = lo <= hi && delta >= ins->q * lo - tol && delta <= ins->q * hi + tol;
+                // two merged original vertices: the chord is the master
+                // edge at m nearest to the slave vertex along the side (on a
+                // convex vertex the slave vertex may lie beyond both)
+                unsigned int best = invalid;
+                double       best_t = 0, best_out = std::numeric_limits<double>::max();
+                for (const auto *edges : {&master.incoming, &master.outgoing})
+                  if (const auto it = edges->find(m); it != edges->end())
+                    {
+                      const Point &a = mesh.vertex(master.edges[it->second][0]),
+                                  &b = mesh.vertex(master.edges[it->second][1]);
+                      const double t   = ((xs - a) * (b - a)) / a.distance_square(b);
+                      const double out = std::max({-t, t - 1, 0.});
+                      if (out < best_out)
+                        best = it->second, best_t = t, best_out = out;
+                    }
+                if (best != invalid)
+                  {
+                    const Point &a = mesh.vertex(master.edges[best][0]), &b = mesh.vertex(master.edges[best][1]);
+                    verdict = same_curve(master, best, a + best_t * (b - a), edge_normal(a, b),
+                                         0.5 * best_t * (1 - best_t) * a.distance_square(b), slave, s);
+                  }
               }
+            if (verdict == Verdict::unresolved)
+              report.unresolved_gaps.emplace_back(0.5 * (xm + xs), g0);
+            const bool discretisation_gap = (verdict == Verdict::discretisation);
             if (!discretisation_gap)
               {
                 // a real gap: keep it, but put two merged vertices opposite

@@ -90,19 +90,34 @@ namespace dealvem
    *    approximates a smooth curve (consecutive turning angles of the same
    *    sign and similar curvature) the new vertex is placed on the circle
    *    through the neighbouring vertices, not on the chord.
-   * 3. <b>Discretisation gaps are closed, real gaps are kept.</b> The
-   *    initial gap $g_0$ of a pair is a discretisation gap if
-   *    $|g_0| \le \delta = c_\kappa\, s + \varepsilon_x (|x| + |y|)$:
-   *    $s = \tfrac12 t(1-t)L^2|\kappa|$ is the largest distance between the
-   *    chord of length $L$ that received the inserted node (at parameter
-   *    $t$) and a circle of the side's curvature $\kappa$, counted only
-   *    where both sides approximate the same curve ($|\kappa_m + \kappa_s|
-   *    \le \tfrac12\max|\kappa|$, convex curvature positive), and
-   *    $\varepsilon_x$ is the relative precision of the coordinates (1e-5:
-   *    six significant digits). A discretisation gap is closed by moving
-   *    the inserted vertex onto its partner (for two merged original
-   *    vertices, the slave vertex onto the master vertex), so both sides
-   *    share the node; every other gap or penetration is kept as $g_0$.
+   * 3. <b>Discretisation gaps are closed, real gaps are kept.</b> If both
+   *    sides sample one curve, the partner of a node inserted on a chord of
+   *    length $L$ (at parameter $t$) lies off the chord by
+   *    $\delta = \tfrac12 t(1-t)L^2\kappa$ for a curvature $\kappa$ the
+   *    curve takes between the chord's ends. The pair's gap is therefore a
+   *    discretisation gap if the partner's offset $\delta$ (along the
+   *    chord's outward normal) lies in $\tfrac12 t(1-t)L^2\,[\kappa_-,
+   *    \kappa_+]$, up to $\varepsilon_x(|x|+|y|)$, where $[\kappa_-,
+   *    \kappa_+]$ spans the vertex curvatures (circles through three
+   *    neighbours; turns above 60 degrees are corners) of the chord's ends
+   *    and their neighbours on the receiving side and of the partner and its
+   *    neighbours on the other side (in the receiving side's sign, convex
+   *    positive), always reaching 0, made symmetric next to the end of a
+   *    side or an inflection (the extremes of either sign may lie between
+   *    the samples), and widened by Settings::curvature_factor. Two merged
+   *    original vertices are judged the same way against the master edge
+   *    next to the slave vertex. A flat block under a cylinder does not
+   *    qualify (the block shows no curvature, the cylinder the other sign);
+   *    a real gap on a curved interface is kept if it exceeds about the
+   *    chord deviation. $\varepsilon_x$ is the relative precision of the
+   *    coordinates (1e-5: six significant digits). A discretisation gap is
+   *    closed by moving the inserted vertex onto its partner (for two
+   *    merged original vertices, the slave vertex onto the master vertex),
+   *    so both sides share the node; every other gap or penetration is kept
+   *    as $g_0$. A gap kept next to an inflection although it is at most
+   *    twice the largest chord deviation there is listed in
+   *    Report::unresolved_gaps (the curve changes sign between too few
+   *    vertices to tell; the program prints a warning).
    *
    * After insertion both sides carry the same vertices along the overlap
    * (and, for k = 2, the same sub-edges, whose midpoints are paired too).
@@ -122,7 +137,8 @@ namespace dealvem
       /// Relative precision of the vertex coordinates: gaps below this
       /// times |x| + |y| are taken as round-off of the mesh files.
       double coordinate_precision = 1e-5;
-      /// Factor c_kappa of the chord deviation in the gap tolerance.
+      /// Factor by which the range of the sides' curvatures is widened in
+      /// the gap rule (rule 3); 0 closes only gaps of coordinate precision.
       double curvature_factor = 1.5;
       /// Close discretisation gaps (rule 3). false keeps every gap.
       bool close_discretisation_gaps = true;
@@ -151,6 +167,10 @@ namespace dealvem
       unsigned int n_master_edges    = 0; ///< master interface edges after insertion
       unsigned int n_slave_edges     = 0; ///< slave interface edges after insertion
       std::vector<UnpairedNode> unpaired;
+      /// Gaps kept although they may be discretisation gaps of a curve that
+      /// changes the sign of its curvature between too few vertices (up to
+      /// twice the chord deviation): the midpoint of the pair and g_0.
+      std::vector<std::pair<dealii::Point<2>, double>> unresolved_gaps;
     };
 
     /// Everything insert() creates for one interface.
