@@ -6,7 +6,8 @@
 // step-5: embedding dealvem in a deal.II program.
 //
 // Build (from a dealvem build directory):   make step-5
-// Run:                                      ./examples/step-5 [k]   (k = 1 or 2; both if omitted)
+// Run:                                      ./examples/step-5 [k [cycles]]
+//                                           (k = 1 or 2, both if omitted; 5 cycles)
 // What it does: a deal.II program owns a Triangulation (a distorted square,
 // refined globally cycle by cycle), hands it to dealvem, which solves plane
 // strain elasticity with a manufactured solution by virtual elements on the
@@ -18,7 +19,8 @@
 // - integrate_difference on the discontinuous field gives dealvem's own
 //   error norms of Pi u_h to 1e-8 relative, every cycle, and
 // - the rates on the two finest meshes are within 0.2 of k + 1 (L2) and k
-//   (H1 seminorm), for both the projection and the continuous field.
+//   (H1 seminorm) for the projection, and between 0.2 below and 0.5 above
+//   them for the continuous field (which superconverges on the first meshes).
 // The mathematics is in doc/intro.dox, the measured table in doc/results.dox.
 
 // @sect3{Include files}
@@ -144,7 +146,7 @@ namespace Step5
   class EmbeddingProblem
   {
   public:
-    explicit EmbeddingProblem(const unsigned int degree);
+    EmbeddingProblem(const unsigned int degree, const unsigned int n_cycles);
     void
     run();
 
@@ -166,7 +168,7 @@ namespace Step5
     void
     check_results() const;
 
-    const unsigned int degree;
+    const unsigned int degree, n_cycles;
 
     // the deal.II program
     Triangulation<2> triangulation;
@@ -196,8 +198,9 @@ namespace Step5
 
 
 
-  EmbeddingProblem::EmbeddingProblem(const unsigned int degree)
+  EmbeddingProblem::EmbeddingProblem(const unsigned int degree, const unsigned int n_cycles)
     : degree(degree)
+    , n_cycles(n_cycles)
     , fe_discontinuous(FE_DGQ<2>(degree), 2)
     , fe_continuous(FE_Q<2>(degree), 2)
     , dof_handler_discontinuous(triangulation)
@@ -276,7 +279,7 @@ namespace Step5
   void
   EmbeddingProblem::solve()
   {
-    dealvem::LinearSolver solver;
+    dealvem::LinearSolver solver(dealvem::LinearSolver::Settings{});
     solver.solve(system_matrix, solution, system_rhs);
     constraints.distribute(solution);
   }
@@ -389,19 +392,31 @@ namespace Step5
                 ExcMessage("integrate_difference and dealvem's compute_errors disagree: relative differences " +
                            std::to_string(max_l2_mismatch) + " (L2), " + std::to_string(max_h1_mismatch) +
                            " (H1)."));
-    // rates against h, which halves from cycle to cycle
-    for (const auto &[column, expected] :
-         std::vector<std::pair<std::string, double>>{{"L2 (dealvem)", degree + 1.},
-                                                     {"H1 (dealvem)", 1. * degree},
-                                                     {"L2 (FE_Q)", degree + 1.},
-                                                     {"H1 (FE_Q)", 1. * degree}})
+    // Rates against h, which halves from cycle to cycle. The projection
+    // must show the textbook rates, k + 1 and k, within 0.2. The continuous
+    // field converges faster than that on the first meshes (the refined cells
+    // become parallelograms, on which nodal values superconverge) and
+    // approaches the textbook rates from above (results.dox shows six
+    // cycles): its rates must lie between 0.2 below and 0.5 above them.
+    struct Expected
+    {
+      std::string column;
+      double      rate, below, above;
+    };
+    for (const Expected &x : {Expected{"L2 (dealvem)", degree + 1., 0.2, 0.2},
+                              Expected{"H1 (dealvem)", 1. * degree, 0.2, 0.2},
+                              Expected{"L2 (FE_Q)", degree + 1., 0.2, 0.5},
+                              Expected{"H1 (FE_Q)", 1. * degree, 0.2, 0.5}})
       {
-        const std::vector<double> &e    = history.at(column);
+        const std::vector<double> &e    = history.at(x.column);
         const double               rate = std::log2(e[e.size() - 2] / e.back());
-        AssertThrow(std::abs(rate - expected) <= 0.2,
-                    ExcMessage("k = " + std::to_string(degree) + ": the " + column +
+        AssertThrow(rate >= x.rate - x.below && rate <= x.rate + x.above,
+                    ExcMessage("k = " + std::to_string(degree) + ": the " + x.column +
                                " rate on the two finest meshes is " + std::to_string(rate) + ", expected " +
-                               std::to_string(expected) + " +- 0.2."));
+                               std::to_string(x.rate) + " (-" + std::to_string(x.below) + ", +" +
+                               std::to_string(x.above) + ")."));
+        std::cout << "k = " << degree << ": " << x.column << " rate on the two finest meshes " << rate
+                  << ", expected " << x.rate << " (-" << x.below << ", +" << x.above << "): OK" << std::endl;
       }
   }
 
@@ -411,7 +426,7 @@ namespace Step5
   void
   EmbeddingProblem::run()
   {
-    for (unsigned int cycle = 0; cycle < 4; ++cycle)
+    for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
       {
         make_grid(cycle);
         setup_system();
@@ -449,9 +464,11 @@ main(int argc, char **argv)
       std::vector<unsigned int>                degrees = {1, 2};
       if (argc > 1)
         degrees = {static_cast<unsigned int>(std::stoi(argv[1]))};
+      const unsigned int n_cycles = (argc > 2 ? std::stoi(argv[2]) : 5);
+      AssertThrow(n_cycles >= 2, dealii::ExcMessage("step-5 needs at least two cycles for the rates."));
       for (const unsigned int k : degrees)
         {
-          Step5::EmbeddingProblem problem(k);
+          Step5::EmbeddingProblem problem(k, n_cycles);
           problem.run();
           std::cout << std::endl;
         }
