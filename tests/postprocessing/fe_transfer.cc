@@ -18,11 +18,14 @@
 //   is the gradient of Pi u_h;
 // - a locally refined triangulation: the discontinuous transfer is exact
 //   there too, the continuous one refuses (hanging nodes);
-// - refining the triangulation after the map was made is refused.
+// - refining the triangulation after the map was made is refused;
+// - a triangle mesh: FE_SimplexDGP(k)^2 field = Pi u_h (exact on affine
+//   triangles), integrate_difference = compute_errors.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -104,8 +107,10 @@ namespace
                                const dealii::Vector<double> &u_h, const dealii::DoFHandler<2> &dof_handler,
                                const dealii::Vector<double> &field)
   {
-    const dealii::QGauss<2>             q(3);
-    dealii::FEValues<2>                 fe_values(dealii::StaticMappingQ1<2>::mapping, dof_handler.get_fe(), q,
+    const auto &reference_cell = dof_handler.get_triangulation().get_reference_cells()[0];
+    const dealii::Quadrature<2> q = reference_cell.is_hyper_cube() ? dealii::Quadrature<2>(dealii::QGauss<2>(3)) :
+                                                                     dealii::Quadrature<2>(dealii::QGaussSimplex<2>(3));
+    dealii::FEValues<2> fe_values(reference_cell.get_default_linear_mapping<2, 2>(), dof_handler.get_fe(), q,
                                   dealii::update_values | dealii::update_quadrature_points);
     std::vector<dealii::Vector<double>> values(q.size(), dealii::Vector<double>(2));
     VirtualElement<2>                   element(vem_dofs.get_degree());
@@ -294,6 +299,34 @@ main()
         testing::check_throws([&] { FETransfer::interpolate_to_continuous(map2, vem_dofs2, u_h2, dof_handler_q, field); },
                               "the triangulation has hanging nodes", tag + "hanging nodes: continuous transfer refused");
       }
+    }
+  for (const unsigned int k : {1u, 2u})
+    {
+      const std::string        tag = "triangles, k = " + std::to_string(k) + ": ";
+      dealii::Triangulation<2> tria;
+      dealii::GridGenerator::subdivided_hyper_rectangle_with_simplices(tria, {5, 5}, dealii::Point<2>(0, 0),
+                                                                       dealii::Point<2>(1, 1));
+      // (boundary id 0 everywhere: the Dirichlet data of solve_dirichlet_problem)
+      PolygonalMesh<2>    mesh;
+      TriangulationMap<2> map;
+      PolygonalMeshGenerators::from_triangulation(mesh, tria, map);
+      VEMDoFHandler<2> vem_dofs(mesh);
+      vem_dofs.distribute_dofs(k);
+      const dealii::Vector<double> u_h = testing::solve_dirichlet_problem(vem_dofs, material, exact, &f);
+      const ErrorNorms             e   = compute_errors(vem_dofs, materials, 1.0, u_h, exact);
+      dealii::DoFHandler<2>        dof_handler(tria);
+      dof_handler.distribute_dofs(dealii::FESystem<2>(dealii::FE_SimplexDGP<2>(k), 2));
+      dealii::Vector<double> field;
+      FETransfer::interpolate_to_discontinuous(map, vem_dofs, u_h, dof_handler, field);
+      testing::check_small(max_difference_to_projection(map, vem_dofs, u_h, dof_handler, field) / u_h.linfty_norm(),
+                           1e-12, tag + "FE_SimplexDGP field = Pi u_h (relative)");
+      dealii::Vector<double> per_cell(tria.n_active_cells());
+      const auto &mapping = tria.get_reference_cells()[0].get_default_linear_mapping<2, 2>();
+      dealii::VectorTools::integrate_difference(mapping, dof_handler, field, exact, per_cell,
+                                                dealii::QWitherdenVincentSimplex<2>(6), dealii::VectorTools::L2_norm);
+      const double l2 = dealii::VectorTools::compute_global_error(tria, per_cell, dealii::VectorTools::L2_norm);
+      testing::check_small(std::abs(l2 / e.l2 - 1), 1e-8, tag + "integrate_difference L2 = compute_errors L2 (" +
+                                                            std::to_string(l2) + ")");
     }
   return testing::finish();
 }
