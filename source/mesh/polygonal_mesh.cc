@@ -5,6 +5,7 @@
 #include <dealvem/mesh/polygonal_mesh.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -161,6 +162,18 @@ namespace dealvem
 
 
 
+  namespace internal
+  {
+    std::uint64_t
+    new_mesh_revision()
+    {
+      static std::atomic<std::uint64_t> counter{0};
+      return ++counter;
+    }
+  } // namespace internal
+
+
+
   template <int dim>
   void
   PolygonalMesh<dim>::clear()
@@ -169,6 +182,7 @@ namespace dealvem
     cells.clear();
     edges.clear();
     boundary_ids_by_pair.clear();
+    changed("clear()");
   }
 
 
@@ -178,6 +192,7 @@ namespace dealvem
   PolygonalMesh<dim>::add_vertex(const dealii::Point<dim> &p)
   {
     vertices.push_back(p);
+    changed("add_vertex()");
     return vertices.size() - 1;
   }
 
@@ -193,6 +208,7 @@ namespace dealvem
     c.material_id = material_id;
     cells.push_back(c);
     edges.clear();
+    changed("add_cell()");
     return cells.size() - 1;
   }
 
@@ -278,6 +294,7 @@ namespace dealvem
     remove_unused_vertices();
     build_edges();
     validate();
+    changed("finalize()");
   }
 
 
@@ -665,6 +682,7 @@ namespace dealvem
   {
     for (auto &v : vertices)
       v += s;
+    changed("shift()");
   }
 
 
@@ -691,6 +709,7 @@ namespace dealvem
         boundary_ids_by_pair[key(b.first.first + offset, b.first.second + offset)] = b.second;
     build_edges();
     validate();
+    changed("append()");
   }
 
 
@@ -742,6 +761,7 @@ namespace dealvem
         boundary_ids_by_pair[key(a, v)] = edge.boundary_id;
         boundary_ids_by_pair[key(v, b)] = edge.boundary_id;
       }
+    changed("split_edge()");
     return v;
   }
 

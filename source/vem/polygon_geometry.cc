@@ -179,31 +179,34 @@ namespace dealvem
 
   namespace
   {
-    // Collapsed (Duffy) Gauss rule with n x n points on the reference
-    // triangle: (x, y) = (u (1 - v), v), weight (1 - v). Exact for
-    // polynomials of degree 2n - 2. Built once per n.
-    const std::vector<std::array<double, 3>> &
-    duffy_rule(const unsigned int n_points)
+    // The largest degree the triangle rules below integrate exactly.
+    constexpr unsigned int max_simplex_degree = 13;
+
+    // deal.II's rules on the reference triangle (0,0), (1,0), (0,1) (weights
+    // summing to 1/2), by the degree they integrate exactly, built once:
+    // QGaussSimplex<2>(n) is exact for degree 2n - 1 and available for
+    // n <= 4 (degree 7); above, QWitherdenVincentSimplex<2>(n) (also
+    // 2n - 1, positive weights, n <= 7 in 2D).
+    const dealii::Quadrature<2> &
+    triangle_rule(const unsigned int degree)
     {
-      static const std::vector<std::vector<std::array<double, 3>>> rules = [] {
-        std::vector<std::vector<std::array<double, 3>>> r(13);
-        for (unsigned int n = 1; n <= 12; ++n)
+      static const std::vector<dealii::Quadrature<2>> rules = [] {
+        std::vector<dealii::Quadrature<2>> r;
+        for (unsigned int d = 0; d <= max_simplex_degree; ++d)
           {
-            const dealii::Quadrature<1> &g = internal::gauss_rule(n);
-            for (unsigned int i = 0; i < g.size(); ++i)
-              for (unsigned int j = 0; j < g.size(); ++j)
-                {
-                  const double u = g.point(i)[0], v = g.point(j)[0];
-                  r[n].push_back({{u * (1 - v), v, g.weight(i) * g.weight(j) * (1 - v)}});
-                }
+            const unsigned int n = std::max(1u, (d + 2) / 2); // 2n - 1 >= d
+            if (n <= 4)
+              r.emplace_back(dealii::QGaussSimplex<2>(n));
+            else
+              r.emplace_back(dealii::QWitherdenVincentSimplex<2>(n));
           }
         return r;
       }();
-      AssertThrow(n_points >= 1 && n_points <= 12,
-                  dealii::ExcMessage("Polygon quadrature: degree " +
-                                     std::to_string(2 * n_points - 2) +
-                                     " is above the largest available (22)."));
-      return rules[n_points];
+      AssertThrow(degree <= max_simplex_degree,
+                  dealii::ExcMessage("Polygon quadrature: degree " + std::to_string(degree) +
+                                     " is above the largest available (" + std::to_string(max_simplex_degree) +
+                                     ")."));
+      return rules[degree];
     }
   } // namespace
 
@@ -215,9 +218,10 @@ namespace dealvem
                                    std::vector<dealii::Point<dim>> &points,
                                    std::vector<double>             &weights) const
   {
-    // Exact for the given degree: degree + 1 in v with n Gauss points needs
-    // 2n - 1 >= degree + 1.
-    const auto        &ref = duffy_rule((degree + 3) / 2);
+    // A rule exact for the given degree on every triangle of the fan
+    // (centroid, v_i, v_{i+1}), mapped affinely; the signed weights make the
+    // sum exact on non-convex polygons too.
+    const dealii::Quadrature<2> &ref = triangle_rule(degree);
     const unsigned int n   = vertices.size();
     points.clear();
     weights.clear();
@@ -229,12 +233,13 @@ namespace dealvem
         const double                 det = e1[0] * e2[1] - e1[1] * e2[0];
         if (det == 0.)
           continue;
-        for (const auto &r : ref)
+        for (unsigned int q = 0; q < ref.size(); ++q)
           {
+            const dealii::Point<2> &r = ref.point(q);
             points.emplace_back(p0 + r[0] * e1 + r[1] * e2);
             // the reference weights sum to 1/2 (the reference area); det is
             // twice the signed area
-            weights.push_back(r[2] * det);
+            weights.push_back(ref.weight(q) * det);
           }
       }
   }

@@ -23,9 +23,21 @@ namespace dealvem
   void
   VEMDoFHandler<dim>::reinit(const PolygonalMesh<dim> &m)
   {
-    mesh    = &m;
-    degree  = 0;
-    n_dofs_ = 0;
+    mesh          = &m;
+    degree        = 0;
+    n_dofs_       = 0;
+    mesh_revision = 0;
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::check_mesh_unchanged() const
+  {
+    AssertThrow(mesh != nullptr && degree != 0, ExcNoDoFsDistributed());
+    AssertThrow(mesh->get_revision() == mesh_revision,
+                ExcMeshChangedAfterDistributeDofs(mesh->name, mesh->get_last_change()));
   }
 
 
@@ -34,7 +46,7 @@ namespace dealvem
   void
   VEMDoFHandler<dim>::distribute_dofs(const unsigned int k)
   {
-    Assert(mesh != nullptr, dealii::ExcMessage("No mesh attached."));
+    AssertThrow(mesh != nullptr, dealii::ExcMessage("VEMDoFHandler: no mesh attached; call reinit(mesh) first."));
     AssertThrow(k == 1 || k == 2,
                 dealii::ExcMessage("VEMDoFHandler: the order must be 1 or 2, got " +
                                    std::to_string(k) + "."));
@@ -42,6 +54,7 @@ namespace dealvem
                 dealii::ExcMessage("VEMDoFHandler: the mesh '" + mesh->name +
                                    "' has no edges; call finalize() first."));
     degree         = k;
+    mesh_revision  = mesh->get_revision();
     n_vertex_nodes = mesh->n_vertices();
     n_edge_nodes   = (k == 2 ? mesh->n_edges() : 0);
     const unsigned int n_cell_nodes = (k == 2 ? mesh->n_cells() : 0);
@@ -58,6 +71,7 @@ namespace dealvem
   unsigned int
   VEMDoFHandler<dim>::n_dofs_per_cell(const unsigned int c) const
   {
+    check_mesh_unchanged();
     const unsigned int n = mesh->cell(c).vertices.size();
     return degree == 1 ? 2 * n : 2 * (2 * n + 1);
   }
@@ -97,6 +111,7 @@ namespace dealvem
   dealii::Point<dim>
   VEMDoFHandler<dim>::node_location(const unsigned int node) const
   {
+    check_mesh_unchanged();
     if (node < n_vertex_nodes)
       return mesh->vertex(node);
     if (node < n_vertex_nodes + n_edge_nodes)
@@ -133,6 +148,7 @@ namespace dealvem
   VEMDoFHandler<dim>::get_node_indices(const unsigned int         c,
                                        std::vector<unsigned int> &nodes) const
   {
+    check_mesh_unchanged();
     nodes.resize(n_dofs_per_cell(c) / 2);
     for_each_node(c, [&](const unsigned int j, const unsigned int node) { nodes[j] = node; });
   }
@@ -145,6 +161,7 @@ namespace dealvem
     const unsigned int                            c,
     std::vector<dealii::types::global_dof_index> &indices) const
   {
+    check_mesh_unchanged();
     indices.resize(n_dofs_per_cell(c));
     for_each_node(c, [&](const unsigned int j, const unsigned int node) {
       indices[2 * j]     = node_dof(node, 0);
@@ -173,6 +190,7 @@ namespace dealvem
   void
   VEMDoFHandler<dim>::map_dofs_to_support_points(std::vector<dealii::Point<dim>> &points) const
   {
+    check_mesh_unchanged();
     points.resize(n_dofs_);
     for (unsigned int node = 0; node < n_nodes(); ++node)
       points[2 * node] = points[2 * node + 1] = node_location(node);
@@ -184,6 +202,7 @@ namespace dealvem
   std::vector<unsigned int>
   VEMDoFHandler<dim>::boundary_nodes(const std::set<dealii::types::boundary_id> &ids) const
   {
+    check_mesh_unchanged();
     std::vector<unsigned int> nodes;
     for (unsigned int e = 0; e < mesh->n_edges(); ++e)
       {
@@ -206,6 +225,7 @@ namespace dealvem
   void
   VEMDoFHandler<dim>::make_sparsity_pattern(dealii::DynamicSparsityPattern &dsp) const
   {
+    check_mesh_unchanged();
     std::vector<dealii::types::global_dof_index> indices;
     for (unsigned int c = 0; c < mesh->n_cells(); ++c)
       {
@@ -225,6 +245,7 @@ namespace dealvem
                                             const dealii::AffineConstraints<double> &constraints,
                                             const bool keep_constrained_dofs) const
   {
+    check_mesh_unchanged();
     std::vector<dealii::types::global_dof_index> indices;
     for (unsigned int c = 0; c < mesh->n_cells(); ++c)
       {
@@ -239,6 +260,7 @@ namespace dealvem
   std::vector<std::vector<double>>
   VEMDoFHandler<dim>::rigid_body_modes() const
   {
+    check_mesh_unchanged();
     std::vector<std::vector<double>> modes(3, std::vector<double>(n_dofs_, 0.));
     for (unsigned int node = 0; node < n_nodes(); ++node)
       {

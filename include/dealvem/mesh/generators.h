@@ -17,6 +17,9 @@ namespace dealii
 
 namespace dealvem
 {
+  template <int dim>
+  class TriangulationMap;
+
   /**
    * Functions that fill a PolygonalMesh. Every generated mesh is finalized
    * (conforming, edges built, validated).
@@ -105,6 +108,18 @@ namespace dealvem
     void
     from_triangulation(PolygonalMesh<dim>                         &mesh,
                        const dealii::Triangulation<dim, dim>      &tria);
+
+    /**
+     * The same, and keep the correspondence of active cells and polygons
+     * and of triangulation and mesh vertices in @p map (see
+     * TriangulationMap), so that a VEM solution can be transferred back to
+     * finite element fields on @p tria (FETransfer).
+     */
+    template <int dim>
+    void
+    from_triangulation(PolygonalMesh<dim>                    &mesh,
+                       const dealii::Triangulation<dim, dim> &tria,
+                       TriangulationMap<dim>                 &map);
 
     /// Read a mesh file with deal.II's GridIn (format from the extension:
     /// .msh, .inp, .ucd, .vtk of deal.II's own kind, ...), refine the

@@ -7,10 +7,12 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/subscriptor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <utility>
 #include <string>
@@ -18,6 +20,14 @@
 
 namespace dealvem
 {
+  namespace internal
+  {
+    /// A number never handed out before in this program run (thread-safe):
+    /// the revision stamps of PolygonalMesh.
+    std::uint64_t
+    new_mesh_revision();
+  } // namespace internal
+
   /**
    * A conforming mesh of arbitrary polygons.
    *
@@ -44,11 +54,22 @@ namespace dealvem
    * Cells of different bodies (different material ids) never share vertices
    * or edges: bodies interact only through contact.
    *
+   * <h3>Revisions</h3>
+   * Objects that cache data computed from the mesh (VEMDoFHandler) hold it
+   * through a dealii::SmartPointer (the class is a dealii::Subscriptor, like
+   * dealii::Triangulation) and remember get_revision(). Every operation that
+   * changes the topology or the geometry -- clear(), add_vertex(),
+   * add_cell(), finalize(), shift(), append(), split_edge(), move_vertex(),
+   * and assigning another mesh -- gives the mesh a new revision, a number
+   * no other mesh of the program run has had; get_last_change() names the
+   * operation. Changing material or boundary ids does not count: the DoFs do
+   * not depend on them.
+   *
    * Only dim == 2 is implemented; the template parameter follows deal.II's
    * convention.
    */
   template <int dim>
-  class PolygonalMesh
+  class PolygonalMesh : public dealii::Subscriptor
   {
   public:
     static_assert(dim == 2, "PolygonalMesh is implemented for dim == 2 only.");
@@ -259,6 +280,26 @@ namespace dealvem
     {
       AssertThrow(v < vertices.size(), dealii::ExcMessage("move_vertex: no vertex " + std::to_string(v) + "."));
       vertices[v] = p;
+      changed("move_vertex()");
+    }
+
+    /**
+     * The revision of the mesh: a new value after every change of its
+     * vertices, cells or edges (see the class documentation). Two meshes
+     * never share a revision unless one is a copy of the other.
+     */
+    std::uint64_t
+    get_revision() const
+    {
+      return revision;
+    }
+
+    /// The operation that gave the mesh its current revision, for example
+    /// "split_edge()" (used in error messages).
+    const std::string &
+    get_last_change() const
+    {
+      return last_change;
     }
 
     /// Smallest and largest cell diameter.
@@ -273,6 +314,14 @@ namespace dealvem
     std::string name = "mesh";
 
   private:
+    /// Record a change of topology or geometry made by @p what.
+    void
+    changed(const char *what)
+    {
+      revision    = internal::new_mesh_revision();
+      last_change = what;
+    }
+
     void
     build_edges();
 
@@ -291,6 +340,9 @@ namespace dealvem
     /// of split edges, and applied whenever the edges are built.
     std::map<std::pair<unsigned int, unsigned int>, dealii::types::boundary_id>
       boundary_ids_by_pair;
+
+    std::uint64_t revision    = internal::new_mesh_revision();
+    std::string   last_change = "construction";
   };
 
   /**

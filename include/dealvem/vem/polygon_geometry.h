@@ -137,7 +137,9 @@ namespace dealvem
     integrate_scaled_monomials(std::array<double, 6> &integrals) const;
 
     /// A quadrature rule on the polygon exact for polynomials of degree
-    /// @p degree (signed triangle fan from the centroid).
+    /// @p degree <= 13 (signed triangle fan from the centroid; on each
+    /// triangle deal.II's QGaussSimplex<2>, above degree 7
+    /// QWitherdenVincentSimplex<2>).
     dealii::Quadrature<dim>
     quadrature(const unsigned int degree) const;
 

@@ -5,7 +5,9 @@
 #ifndef dealvem_vem_vem_dof_handler_h
 #define dealvem_vem_vem_dof_handler_h
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/smartpointer.h>
 #include <deal.II/base/types.h>
 
 #include <dealvem/mesh/polygonal_mesh.h>
@@ -43,6 +45,18 @@ namespace dealvem
    *
    * A node is an entity carrying two DoFs (one per component); nodes are
    * numbered like the DoFs: node j owns DoFs 2j and 2j + 1.
+   *
+   * <h3>Lifetime and mesh changes</h3>
+   * The mesh is held through a dealii::SmartPointer, as deal.II's DoFHandler
+   * holds its Triangulation: destroying the mesh while a DoF handler still
+   * points to it is reported (in Debug builds). distribute_dofs() records the
+   * mesh's revision (PolygonalMesh::get_revision()). If the mesh is changed
+   * afterwards -- node insertion splits edges and moves vertices, shift(),
+   * finalize(), assignment of another mesh -- the numbering no longer
+   * matches the mesh, and every function below that reads the mesh throws
+   * ExcMeshChangedAfterDistributeDofs (also in Release builds), naming the
+   * change. Calling distribute_dofs() again renumbers the DoFs for the
+   * changed mesh.
    */
   template <int dim>
   class VEMDoFHandler
@@ -63,8 +77,18 @@ namespace dealvem
     const PolygonalMesh<dim> &
     get_mesh() const
     {
+      Assert(mesh != nullptr, dealii::ExcMessage("VEMDoFHandler: no mesh attached."));
       return *mesh;
     }
+
+    /**
+     * Throw ExcMeshChangedAfterDistributeDofs unless distribute_dofs() has
+     * been called for the present revision of the mesh. The member functions
+     * that read the mesh call this; user code that combines the DoF handler
+     * with its own look at the mesh can call it too.
+     */
+    void
+    check_mesh_unchanged() const;
 
     unsigned int
     get_degree() const
@@ -169,13 +193,31 @@ namespace dealvem
     void
     for_each_node(const unsigned int c, const F &f) const;
 
-    const PolygonalMesh<dim>                      *mesh = nullptr;
+    dealii::SmartPointer<const PolygonalMesh<dim>, VEMDoFHandler<dim>> mesh;
+    /// Revision of the mesh at the last distribute_dofs().
+    std::uint64_t                                  mesh_revision = 0;
     unsigned int                                   degree = 0;
     dealii::types::global_dof_index                n_dofs_ = 0;
     unsigned int                                   n_vertex_nodes = 0;
     unsigned int                                   n_edge_nodes   = 0;
     std::vector<dealii::Point<dim>>                cell_centroids;
   };
+
+
+
+  /**
+   * The mesh of a VEMDoFHandler was changed after distribute_dofs():
+   * arguments are the mesh's name and the operation that changed it.
+   */
+  DeclException2(ExcMeshChangedAfterDistributeDofs,
+                 std::string,
+                 std::string,
+                 << "VEMDoFHandler: the mesh '" << arg1 << "' was changed after distribute_dofs() (last change: "
+                 << arg2 << "), so the DoF numbering no longer matches it; call distribute_dofs() again.");
+
+  /// A VEMDoFHandler was used before distribute_dofs() was called.
+  DeclExceptionMsg(ExcNoDoFsDistributed,
+                   "VEMDoFHandler: no DoFs; call reinit(mesh) and distribute_dofs(degree) first.");
 } // namespace dealvem
 
 #endif

@@ -1,9 +1,20 @@
 // A downstream program: a Voronoi mesh, VEM k = 2 DoFs and one element
-// stiffness, through the installed-style package dealvem::dealvem.
+// stiffness, and a deal.II triangulation solved nowhere but transferred
+// (a linear field, reproduced exactly), through the package dealvem::dealvem.
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
 #include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/triangulation_map.h>
+#include <dealvem/postprocessing/fe_transfer.h>
 #include <dealvem/vem/vem_dof_handler.h>
 #include <dealvem/vem/virtual_element.h>
 
+#include <cmath>
 #include <iostream>
 
 int
@@ -17,5 +28,43 @@ main()
   element.reinit(mesh.cell_vertices(0), dealvem::ElasticMaterial(1000, 0.3));
   std::cout << "downstream: " << mesh.n_cells() << " cells, " << dof_handler.n_dofs() << " dofs, element matrix "
             << element.get_stiffness_matrix().m() << "x" << element.get_stiffness_matrix().n() << std::endl;
+
+  // u = (x + 2y, 3x - y) at the VEM nodes, transferred to FE_DGQ(1)^2
+  dealii::Triangulation<2> tria;
+  dealii::GridGenerator::hyper_cube(tria);
+  tria.refine_global(2);
+  dealvem::PolygonalMesh<2>    tria_mesh;
+  dealvem::TriangulationMap<2> map;
+  dealvem::PolygonalMeshGenerators::from_triangulation(tria_mesh, tria, map);
+  dealvem::VEMDoFHandler<2> vem_dofs(tria_mesh);
+  vem_dofs.distribute_dofs(1);
+  dealii::Vector<double> u_h(vem_dofs.n_dofs());
+  for (unsigned int node = 0; node < vem_dofs.n_nodes(); ++node)
+    {
+      const dealii::Point<2> x = vem_dofs.node_location(node);
+      u_h[2 * node]            = x[0] + 2 * x[1];
+      u_h[2 * node + 1]        = 3 * x[0] - x[1];
+    }
+  const dealii::FESystem<2> fe(dealii::FE_DGQ<2>(1), 2);
+  dealii::DoFHandler<2>     fe_dofs(tria);
+  fe_dofs.distribute_dofs(fe);
+  dealii::Vector<double> field;
+  dealvem::FETransfer::interpolate_to_discontinuous(map, vem_dofs, u_h, fe_dofs, field);
+  std::vector<dealii::Point<2>> support(fe.n_dofs_per_cell());
+  std::vector<dealii::types::global_dof_index> indices(fe.n_dofs_per_cell());
+  double error = 0;
+  for (const auto &cell : fe_dofs.active_cell_iterators())
+    {
+      cell->get_dof_indices(indices);
+      for (unsigned int i = 0; i < indices.size(); ++i)
+        {
+          // FE_DGQ(1) support points are the vertices, in deal.II's order
+          const dealii::Point<2> x = cell->vertex(fe.system_to_base_index(i).second);
+          const double exact = fe.system_to_component_index(i).first == 0 ? x[0] + 2 * x[1] : 3 * x[0] - x[1];
+          error = std::max(error, std::abs(field[indices[i]] - exact));
+        }
+    }
+  std::cout << "transfer: " << tria.n_active_cells() << " cells, " << fe_dofs.n_dofs()
+            << " FE_DGQ(1) DoFs, max |u - u_h| at the DoFs " << (error < 1e-14 ? 0. : error) << std::endl;
   return 0;
 }
