@@ -46,7 +46,7 @@ namespace dealvem
     prm.declare_entry("Function constants", "", Anything(),
                       "Constants usable in every expression of this section and of the exact "
                       "solution, as 'name=value, name=value'. Expressions are muparser expressions "
-                      "in x, y and the time t; the problems are static and t = 1.");
+                      "in x, y and the time t; t = 1 unless the contact problem has load steps (section 'Load steps': t runs over the steps).");
     prm.declare_entry("Dirichlet", "", Anything(),
                       "Prescribed displacements: 'id : components : expressions; ...' with "
                       "components x, y or xy and one expression per component (in x, y, t; t = 1), "
@@ -293,6 +293,27 @@ namespace dealvem
         for (const auto &l : BoundaryConditions::rigid_boundary_load(part, force, moment))
           assembler.add_nodal_load(l.first, l.second);
       }
+  }
+
+
+
+  void
+  BoundaryConditionParameters::set_time(const double t)
+  {
+    for (auto &d : dirichlet)
+      d.function->set_time(t);
+    for (auto *loads : {&tractions, &pressures})
+      for (auto &l : *loads)
+        l.function->set_time(t);
+    for (auto &pc : points)
+      pc.value->set_time(t);
+    for (auto &r : rigid_boundaries)
+      {
+        r.force->set_time(t);
+        r.moment->set_time(t);
+      }
+    if (body_force)
+      body_force->set_time(t);
   }
 
 
