@@ -9,7 +9,10 @@
 //   the interface pressure), the upper block held tangentially by friction
 //   only: every pair sticks, the interface pressure and shear equal n.sigma.n
 //   and t.sigma.n to 1e-10 relative, the stress is uniform to 1e-10; k = 1, 2,
-//   stick by multipliers and by the penalty;
+//   stick by multipliers and by the penalty (KLU and GMRES-AMG too);
+// - a curved interface y = 1 + 0.15 sin(pi x) meshed independently on both
+//   sides, mu = 1, tau = 0.1 p: every pair sticks, the stress is uniform to
+//   1e-10, the contact force balances the load;
 // - mu = 0 gives the frictionless solution, a large mu the stuck one (stick
 //   by multipliers), both to 1e-10 relative in displacements;
 // - a load cycle (a block sheared forth and back by a traction on its top
@@ -45,6 +48,8 @@ namespace
     std::string  load_steps;    // contents of the section 'Load steps'
     std::string  output;        // contents of the section 'Output'
     std::string  point_constraints = "0, 0 : x : 0 : 0";
+    std::string  solver            = "UMFPACK";
+    std::string  curve;         // interface y = 1 + curve(x) (overrides sloped)
   };
 
   // Two blocks: lower [0,1] x [0,1] (3x3 quads, ids 0..3), upper above it
@@ -54,16 +59,21 @@ namespace
   parameters(const Case &c)
   {
     const double       t = c.sloped ? std::tan(M_PI / 6) : 0.;
-    std::ostringstream prm;
+    std::ostringstream f, prm;
+    f << std::setprecision(17);
+    if (c.curve.empty())
+      f << t << "*(x - 0.5)";
+    else
+      f << c.curve;
     prm << std::setprecision(17);
     prm << "set Number of bodies = 2\n"
-        << "subsection Mesh\n  set Type = structured quads\n  set Subdivisions = 3, 3\n"
-        << "  set Transformation = x, y*(1 + " << t << "*(x - 0.5))\nend\n"
+        << "subsection Mesh\n  set Type = structured quads\n  set Subdivisions = " << (c.curve.empty() ? "3, 3" : "7, 5")
+        << "\n  set Transformation = x, y*(1 + " << f.str() << ")\nend\n"
         << "subsection Material\n  set Young's modulus = 7000\n  set Poisson's ratio = 0.3\nend\n"
         << "subsection Body 1\n  subsection Mesh\n    set Type = structured quads\n"
         << "    set Lower left corner = 0, 1\n    set Upper right corner = 1, 2\n"
-        << "    set Subdivisions = 5, 4\n    set Boundary id offset = 10\n"
-        << "    set Transformation = x, (1 + " << t << "*(x - 0.5)) + (y - 1)*(1 - " << t << "*(x - 0.5))\n"
+        << "    set Subdivisions = " << (c.curve.empty() ? "5, 4" : "6, 4") << "\n    set Boundary id offset = 10\n"
+        << "    set Transformation = x, (1 + " << f.str() << ") + (y - 1)*(1 - " << f.str() << ")\n"
         << "  end\n  subsection Material\n    set Young's modulus = 7000\n    set Poisson's ratio = 0.3\n"
         << "  end\nend\n"
         << "subsection Discretization\n  set Order = " << c.k << "\nend\n"
@@ -83,7 +93,7 @@ namespace
     else
       prm << c.extra_loads << "\n";
     prm << "end\n"
-        << "subsection Solver\n  set Relative tolerance = 1e-14\nend\n"
+        << "subsection Solver\n  set Type = " << c.solver << "\n  set Relative tolerance = 1e-14\nend\n"
         << "subsection Output\n"
         << (c.output.empty() ? "  set Write VTU = false\n  set Write JSON = false\n  set Write pictures = false\n"
                                "  set Write CSV = false\n" :
@@ -113,7 +123,8 @@ namespace
         n_stick += (pr.status == "stick");
       }
     std::ostringstream tag;
-    tag << "patch test, " << (c.sloped ? "sloped" : "flat") << ", k = " << c.k << ", " << c.tangential
+    tag << "patch test, " << (c.sloped ? "sloped" : "flat") << ", k = " << c.k << ", " << c.solver << ", "
+        << c.tangential
         << ", mu = " << c.mu << " (pressure " << pn << ", shear " << tn << " = " << tn / (c.mu * pn)
         << " mu p)";
     testing::check(n_stick == r.pairs.size() && !r.pairs.empty(),
@@ -162,6 +173,45 @@ main(int argc, char **argv)
         sloped.mu       = 2 * tn / pn;
         patch_test(sloped);
       }
+
+  // The flat patch test with the other solvers (the matrix of a slipping
+  // pair is not symmetric; KLU and GMRES-AMG take it as it is).
+  for (const std::string solver : {"KLU", "GMRES-AMG"})
+    {
+      Case c;
+      c.solver = solver;
+      patch_test(c);
+    }
+
+  // A curved interface y = 1 + 0.15 sin(pi x), meshed independently on the
+  // two sides: with tau = 0.1 p the interface shear stays below 0.6 times
+  // the interface pressure, so with mu = 1 every pair sticks and the
+  // uniform stress is the exact solution.
+  for (const unsigned int k : {1u, 2u})
+    {
+      Case c;
+      c.k     = k;
+      c.mu    = 1.0;
+      c.tau   = 1.0;
+      c.curve = "0.15*sin(_pi*x)";
+      const auto   r          = testing::run_contact(parameters(c));
+      double       stress_err = 0, ratio = 0;
+      unsigned int n_stick    = 0;
+      for (const auto &st : r.cell_stress)
+        stress_err = std::max({stress_err, std::abs(st[0]), std::abs(st[1] + c.p), std::abs(st[2] - c.tau)});
+      for (const auto &pr : r.pairs)
+        {
+          n_stick += (pr.status == "stick");
+          ratio = std::max(ratio, std::abs(pr.tangential_traction / pr.lumped_pressure));
+        }
+      const std::string tag = "curved interface, k = " + std::to_string(k) + ", mu = 1: ";
+      testing::check(n_stick == r.pairs.size() && !r.pairs.empty(),
+                     tag + "all " + std::to_string(r.pairs.size()) + " pairs stick");
+      testing::check_small(stress_err / c.p, 1e-10, tag + "max stress error / p");
+      testing::check(ratio < 0.7, tag + "max |shear / pressure| below 0.7 (" + std::to_string(ratio) + ")");
+      testing::check_small((r.total_contact_force + r.applied_load_per_body[1]).norm() / c.p, 1e-10,
+                           tag + "|contact force + load on the upper body| / p");
+    }
 
   // 2. mu = 0 against frictionless, large mu against stick by multipliers:
   // the upper block sheared by its top only, held in x at one point.

@@ -47,16 +47,28 @@ namespace dealvem
    * of states seen before means a cycle and stops with the history, and so
    * does the iteration limit.
    *
+   * Two rules keep the iteration from oscillating. A slipping pair whose
+   * trial traction $\hat\tau_i$ turned round is set to stick, not to slip
+   * the other way: with $c = E/h$ the term $c\,\Delta s_i$ of an iterate
+   * that still carries the old friction force dominates $\hat\tau_i$, and
+   * without the rule a reversed load (unloading) makes whole groups of pairs
+   * jump between the two slip directions. And where the next states would
+   * leave a body free (every pair that holds it tangentially slipping), the
+   * would-be slipping pairs closest to the friction cone (smallest
+   * $|\hat\tau_i|/(\mu\hat p_i)$) stick until every body is held; an
+   * iterate may pass through such a set on its way to equilibrium.
+   *
    * With the penalty variant (ContactSettings::coulomb_penalty) the trial
    * traction is $\hat\tau_i = \varepsilon_t (s_i - s^p_i)$ (return mapping
    * of elasto-plastic slip; $s^p_i$ the plastic slip of the last step), and
    * stick means $\tau_i = \varepsilon_t (s_i - s^p_i)$.
    *
-   * If the next states would leave a body free (every pair that held it
-   * tangentially slipping, or every pair open), the load step has no static
-   * equilibrium (for example a tangential load above $\mu$ times the normal
-   * load on a body held only by friction) and solve() throws a message
-   * saying so.
+   * If that safeguard is needed at the converged states, at states visited
+   * before, or in three iterations in a row, or if a body would be free even
+   * with every closed pair sticking (pulled off its partner), the load step
+   * has no static equilibrium (for example a tangential load above $\mu$
+   * times the normal load on a body held only by friction) and solve()
+   * throws a message saying so.
    */
   template <int dim>
   class FrictionSolver
