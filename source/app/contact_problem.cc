@@ -128,7 +128,8 @@ namespace dealvem
                       "the inserted node onto its partner. Larger gaps (bodies apart, or surfaces of "
                       "different curvature as in Hertz contact) are kept. false keeps every gap.");
     prm.declare_entry("Maximum active set iterations", "50", Integer(1),
-                      "Iteration limit of the active set.");
+                      "Iteration limit of the active set (per load step; with Coulomb friction, of the "
+                      "semismooth Newton iteration over open/stick/slip).");
     prm.leave_subsection();
     prm.enter_subsection("Load steps");
     prm.declare_entry("Number of steps", "1", Integer(),
@@ -703,7 +704,17 @@ namespace dealvem
                       << step_result.n_open << " open / " << step_result.n_stick
                       << (friction ? " stick / " : " closed") ;
             if (friction)
-              std::cout << step_result.n_slip << " slip, dissipated energy " << step_result.dissipated_energy;
+              {
+                std::cout << step_result.n_slip << " slip, dissipated energy " << step_result.dissipated_energy;
+                if (fr.history.size() > 1)
+                  {
+                    // the states each iteration solved with
+                    std::cout << " (open/stick/slip per iteration:";
+                    for (const auto &h : fr.history)
+                      std::cout << " " << h[0] << "/" << h[1] << "/" << h[2];
+                    std::cout << ")";
+                  }
+              }
             std::cout << std::endl;
           }
         if (write_steps)
