@@ -50,6 +50,7 @@ namespace
     std::string  point_constraints = "0, 0 : x : 0 : 0";
     std::string  solver            = "UMFPACK";
     std::string  curve;         // interface y = 1 + curve(x) (overrides sloped)
+    bool         mu_in_pairs = false; // give mu in 'Pairs' instead of 'Friction coefficient'
   };
 
   // Two blocks: lower [0,1] x [0,1] (3x3 quads, ids 0..3), upper above it
@@ -77,9 +78,11 @@ namespace
         << "  end\n  subsection Material\n    set Young's modulus = 7000\n    set Poisson's ratio = 0.3\n"
         << "  end\nend\n"
         << "subsection Discretization\n  set Order = " << c.k << "\nend\n"
-        << "subsection Contact\n  set Pairs = 3 : 12\n  set Normal = unilateral\n  set Tangential = "
-        << c.tangential << "\n";
-    if (c.tangential == "coulomb" || c.tangential == "coulomb penalty")
+        << "subsection Contact\n  set Pairs = 3 : 12";
+    if (c.mu_in_pairs)
+      prm << " : " << c.mu;
+    prm << "\n  set Normal = unilateral\n  set Tangential = " << c.tangential << "\n";
+    if ((c.tangential == "coulomb" || c.tangential == "coulomb penalty") && !c.mu_in_pairs)
       prm << "  set Friction coefficient = " << c.mu << "\n";
     prm << "end\n"
         << "subsection Load steps\n" << c.load_steps << "end\n"
@@ -124,7 +127,7 @@ namespace
       }
     std::ostringstream tag;
     tag << "patch test, " << (c.sloped ? "sloped" : "flat") << ", k = " << c.k << ", " << c.solver << ", "
-        << c.tangential
+        << c.tangential << (c.mu_in_pairs ? " (mu in 'Pairs')" : "")
         << ", mu = " << c.mu << " (pressure " << pn << ", shear " << tn << " = " << tn / (c.mu * pn)
         << " mu p)";
     testing::check(n_stick == r.pairs.size() && !r.pairs.empty(),
@@ -182,6 +185,13 @@ main(int argc, char **argv)
       c.solver = solver;
       patch_test(c);
     }
+  // the friction coefficient given per pair ('3 : 12 : 0.4'; the default
+  // coefficient is 0, which would let the block slide off)
+  {
+    Case c;
+    c.mu_in_pairs = true;
+    patch_test(c);
+  }
 
   // A curved interface y = 1 + 0.15 sin(pi x), meshed independently on the
   // two sides: with tau = 0.1 p the interface shear stays below 0.6 times
