@@ -228,8 +228,9 @@ namespace dealvem
         const auto state = result.state[i];
         if (multipliers)
           {
+            // an open pair does not slip; it starts from where it is
             result.reference[i]      = s[i];
-            result.slip_increment[i] = s[i] - reference[i];
+            result.slip_increment[i] = (state == PairState::open ? 0. : s[i] - reference[i]);
           }
         else
           {

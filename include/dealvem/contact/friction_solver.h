@@ -83,7 +83,8 @@ namespace dealvem
       std::vector<std::array<unsigned int, 3>> history;
       unsigned int                              linear_iterations = 0;
       /// Per pair: relative tangential displacement $(u_B-u_A)\cdot t$, its
-      /// increment over the step, the friction nodal force $\lambda_t$
+      /// increment over the step (zero for open pairs), the friction nodal
+      /// force $\lambda_t$
       /// (the slave node receives $-\lambda_t t$) and the new reference
       /// (relative tangential displacement, or plastic slip with the
       /// penalty) for the next step.
