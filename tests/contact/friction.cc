@@ -21,7 +21,9 @@
 //   slip, and the Newton iterations per step stay at most 6;
 // - no static equilibrium: a block held only by friction under a tangential
 //   load of 1.01 mu N stops at that step with "No static equilibrium", and
-//   the files of the converged steps are kept.
+//   the files of the converged steps are kept; with the shear applied on the
+//   top only (partly open, partly sticking interface) 0.999 mu N converges
+//   and 1.001 mu N stops.
 #include <deal.II/base/mpi.h>
 
 #include <chrono>
@@ -302,6 +304,34 @@ main(int argc, char **argv)
     const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
     testing::check(text.find("\"failed_step\": 2") != std::string::npos, "the summary names the failed step 2");
   }
+
+  // 5. The equilibrium limit is sharp also where the shear is not uniform
+  // (traction on the top only: the interface opens at one end and sticks at
+  // the other): 0.999 mu N converges, 1.001 mu N stops.
+  for (const double ratio : {0.999, 1.001})
+    {
+      Case c;
+      c.mu          = 0.3;
+      c.extra_loads = "  set Traction = 13 : " + std::to_string(ratio) + "*0.3*p, -p";
+      const std::string tag = "top traction " + std::to_string(ratio).substr(0, 5) + " mu N: ";
+      if (ratio < 1)
+        {
+          const auto   r      = testing::run_contact(parameters(c));
+          unsigned int n_open = 0, n_stick = 0;
+          for (const auto &pr : r.pairs)
+            {
+              n_open += (pr.status == "open");
+              n_stick += (pr.status == "stick");
+            }
+          testing::check(n_stick > 0 && n_open > 0, tag + "converges with " + std::to_string(n_stick) +
+                                                      " sticking and " + std::to_string(n_open) + " open pairs");
+          testing::check_small((r.total_contact_force + r.applied_load_per_body[1]).norm() / c.p, 1e-10,
+                               tag + "|contact force + load on the upper block| / p");
+        }
+      else
+        testing::check_throws([&]() { testing::run_contact(parameters(c)); }, "No static equilibrium",
+                              tag + "no static equilibrium");
+    }
 
   std::cout << "run time: " << std::fixed << std::setprecision(1)
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s" << std::endl;
