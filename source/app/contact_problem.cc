@@ -13,6 +13,7 @@
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/contact/active_set_solver.h>
 #include <dealvem/contact/contact_pressure.h>
+#include <dealvem/contact/friction_solver.h>
 #include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/postprocessing/error_norms.h>
@@ -30,10 +31,33 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace dealvem
 {
+  namespace
+  {
+    // The interface results of one solve (or load step) as CSV.
+    void
+    write_interface_csv(const std::string &filename, const std::vector<ContactProblem::PairResult> &pairs)
+    {
+      OutputFile    csv_file(filename);
+      std::ostream &csv = csv_file.stream();
+      csv << "interface,x,y,midpoint,active,weight,gap,pressure,lumped_pressure,multiplier,"
+             "tangential_traction,slip,status,slip_increment,shear\n";
+      csv << std::setprecision(15);
+      for (const auto &r : pairs)
+        csv << r.interface << "," << r.location[0] << "," << r.location[1] << "," << r.midpoint << ","
+            << r.active << "," << r.weight << "," << r.gap << "," << r.pressure << "," << r.lumped_pressure
+            << "," << r.multiplier << "," << r.tangential_traction << "," << r.slip << "," << r.status << ","
+            << r.slip_increment << "," << r.shear << "\n";
+      csv_file.commit();
+    }
+  } // namespace
+
+
+
   void
   ContactProblem::declare_parameters(dealii::ParameterHandler &prm)
   {
@@ -64,13 +88,21 @@ namespace dealvem
     prm.enter_subsection("Contact");
     prm.declare_entry("Pairs", "", Anything(),
                       "Contact interfaces 'master id : slave id; ...': boundary parts of two "
-                      "different bodies. The master side gives the normal.");
+                      "different bodies. The master side gives the normal. With Coulomb friction an "
+                      "entry may give its own friction coefficient: 'master id : slave id : mu'.");
     prm.declare_entry("Normal", "unilateral", Selection("tied|unilateral"),
                       "tied: g = 0 at every pair (bilateral); unilateral: g >= 0, pressure >= 0, "
                       "complementarity, by a primal-dual active set.");
-    prm.declare_entry("Tangential", "penalty", Selection("frictionless|penalty|multipliers"),
+    prm.declare_entry("Tangential", "penalty",
+                      Selection("frictionless|penalty|multipliers|coulomb|coulomb penalty"),
                       "frictionless; stick by a penalty (see 'Penalty'); stick by Lagrange "
-                      "multipliers (exactly tied).");
+                      "multipliers (exactly tied); Coulomb friction with exact stick by multipliers "
+                      "(coulomb) or regularised by the penalty (coulomb penalty): each pair is open, "
+                      "sticking or slipping, |tangential traction| <= mu * pressure, solved by a "
+                      "semismooth Newton (active set) method per load step.");
+    prm.declare_entry("Friction coefficient", "0", Double(),
+                      "Coulomb friction coefficient mu >= 0 of the contact pairs that do not give "
+                      "their own in 'Pairs' (only with 'Tangential = coulomb' or 'coulomb penalty').");
     prm.declare_entry("Penalty", "0", Double(0),
                       "Tangential stick penalty (stiffness per length and slip, units of E/h). "
                       "0 selects the default rule 'Penalty factor' * E_min / h_min, with E_min the "
@@ -96,7 +128,18 @@ namespace dealvem
                       "the inserted node onto its partner. Larger gaps (bodies apart, or surfaces of "
                       "different curvature as in Hertz contact) are kept. false keeps every gap.");
     prm.declare_entry("Maximum active set iterations", "50", Integer(1),
-                      "Iteration limit of the active set.");
+                      "Iteration limit of the active set (per load step; with Coulomb friction, of the "
+                      "semismooth Newton iteration over open/stick/slip).");
+    prm.leave_subsection();
+    prm.enter_subsection("Load steps");
+    prm.declare_entry("Number of steps", "1", Integer(),
+                      "Contact problems: number of quasi-static load steps. Step k solves at the time "
+                      "t = k * 'Final time' / 'Number of steps' of the load and Dirichlet expressions; "
+                      "Coulomb friction measures the slip against the previous step. With more than one "
+                      "step every step writes its VTU and CSV files (base name + '-step-NNN') and a "
+                      "ParaView time series (base name + '.pvd').");
+    prm.declare_entry("Final time", "1", Double(),
+                      "Contact problems: the time t of the last load step (> 0).");
     prm.leave_subsection();
     prm.enter_subsection("Output");
     prm.declare_entry("Write pictures", "true", Bool(),
@@ -175,12 +218,23 @@ namespace dealvem
 
     prm.enter_subsection("Contact");
     contact_pairs.clear();
+    std::vector<double> pair_friction;
     for (const auto &entry : InputParsing::split(prm.get("Pairs"), ';'))
       {
         const std::string name   = "Contact/Pairs entry '" + entry + "'";
         const auto        fields = InputParsing::split(entry, ':', true);
-        AssertThrow(fields.size() == 2,
-                    dealii::ExcMessage("Parameter '" + name + "': expected 'master id : slave id'."));
+        AssertThrow(fields.size() == 2 || fields.size() == 3,
+                    dealii::ExcMessage("Parameter '" + name +
+                                       "': expected 'master id : slave id' or 'master id : slave id : "
+                                       "friction coefficient'."));
+        double mu = -1;
+        if (fields.size() == 3)
+          {
+            mu = InputParsing::parse_double(fields[2], name);
+            InputParsing::check_range(mu, 0, 1e6, name + " (friction coefficient)", false, false,
+                                      "The Coulomb friction coefficient is a number >= 0.");
+          }
+        pair_friction.push_back(mu);
         const unsigned int a = InputParsing::parse_unsigned(fields[0], name);
         const unsigned int s = InputParsing::parse_unsigned(fields[1], name);
         AssertThrow(a < 255 && s < 255 && a != s,
@@ -196,6 +250,33 @@ namespace dealvem
       }
     contact_settings.normal     = ContactSettings::parse_normal(prm.get("Normal"));
     contact_settings.tangential = ContactSettings::parse_tangential(prm.get("Tangential"));
+    contact_settings.friction_coefficient  = prm.get_double("Friction coefficient");
+    contact_settings.friction_coefficients = pair_friction;
+    InputParsing::check_range(contact_settings.friction_coefficient, 0, 1e6, "Contact/Friction coefficient",
+                              false, false, "The Coulomb friction coefficient is a number >= 0.");
+    if (!contact_settings.is_coulomb())
+      {
+        AssertThrow(contact_settings.friction_coefficient == 0,
+                    dealii::ExcMessage("Parameter 'Contact/Friction coefficient' is " +
+                                       std::to_string(contact_settings.friction_coefficient) +
+                                       ", but 'Contact/Tangential' is '" + prm.get("Tangential") +
+                                       "': a friction coefficient needs 'Tangential = coulomb' or "
+                                       "'coulomb penalty'."));
+        for (unsigned int i = 0; i < pair_friction.size(); ++i)
+          AssertThrow(pair_friction[i] < 0,
+                      dealii::ExcMessage("Parameter 'Contact/Pairs': the entry of interface " + std::to_string(i) +
+                                         " gives a friction coefficient, but 'Contact/Tangential' is '" +
+                                         prm.get("Tangential") +
+                                         "': a friction coefficient needs 'Tangential = coulomb' or "
+                                         "'coulomb penalty'."));
+      }
+    else
+      AssertThrow(contact_settings.normal == ContactSettings::Normal::unilateral,
+                  dealii::ExcMessage("Parameter 'Contact/Tangential' is '" + prm.get("Tangential") +
+                                     "' (Coulomb friction) but 'Contact/Normal' is 'tied': friction needs "
+                                     "unilateral normal contact, where a pair can open and the pressure "
+                                     "bounds the friction force. Use 'Normal = unilateral', or "
+                                     "'Tangential = multipliers' for a tied interface that sticks."));
     contact_settings.penalty    = prm.get_double("Penalty");
     contact_settings.penalty_factor           = prm.get_double("Penalty factor");
     contact_settings.max_active_set_iterations = prm.get_integer("Maximum active set iterations");
@@ -212,6 +293,19 @@ namespace dealvem
     AssertThrow(n == 1 || !contact_pairs.empty(),
                 dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
                                    std::to_string(n) + " bodies: name at least one contact pair."));
+
+    prm.enter_subsection("Load steps");
+    {
+      const long steps = prm.get_integer("Number of steps");
+      AssertThrow(steps >= 1 && steps <= 100000,
+                  dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(steps) +
+                                     ": it must be at least 1 (and at most 100000)."));
+      n_steps = steps;
+    }
+    final_time = prm.get_double("Final time");
+    prm.leave_subsection();
+    InputParsing::check_range(final_time, 0, 1e300, "Load steps/Final time", true, false,
+                              "The load steps run from t = 0 to the final time.");
 
     prm.enter_subsection("Solver");
     solver_type = prm.get("Type");
@@ -351,6 +445,7 @@ namespace dealvem
 
     dealii::AffineConstraints<double> constraints;
     bc.check_boundary_ids(mesh);
+    bc.set_time(final_time / n_steps);
     bc.apply_constraints(dof_handler, constraints);
     constraints.close();
     // every body must be held by the constraints and the contact pairs
@@ -370,8 +465,6 @@ namespace dealvem
     dealii::SparsityPattern      sparsity;
     dealii::SparseMatrix<double> system_matrix, work_matrix;
     dealii::Vector<double>       system_rhs;
-    ElasticityAssembler<2>       assembler(dof_handler, materials, gamma);
-    bc.add_loads(assembler);
     {
       dealii::TimerOutput::Scope     t(timer, "assembly");
       dealii::DynamicSparsityPattern dsp(n + m);
@@ -381,8 +474,19 @@ namespace dealvem
       sparsity.copy_from(dsp);
       system_matrix.reinit(sparsity);
       work_matrix.reinit(sparsity);
-      dealii::Vector<double> rhs_n;
-      // the elasticity part, assembled directly into the big system
+    }
+    // The elasticity part at the time t of a load step, assembled directly
+    // into the big system; the constraints are rebuilt because their
+    // values may depend on t.
+    const auto assemble_system = [&](const double time) {
+      dealii::TimerOutput::Scope t(timer, "assembly");
+      bc.set_time(time);
+      constraints.clear();
+      bc.apply_constraints(dof_handler, constraints);
+      constraints.close();
+      ElasticityAssembler<2> assembler(dof_handler, materials, gamma);
+      bc.add_loads(assembler);
+      system_matrix = 0;
       system_rhs.reinit(n + m);
       VirtualElement<2>                            element(degree);
       std::vector<dealii::types::global_dof_index> indices;
@@ -420,7 +524,7 @@ namespace dealvem
       results.applied_load_per_body.assign(bodies.size(), dealii::Tensor<1, 2>());
       for (unsigned int i = 0; i < n; ++i)
         results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
-    }
+    };
 
     SaddlePointSolver::Settings settings;
     settings.type               = SaddlePointSolver::parse_type(solver_type);
@@ -431,62 +535,210 @@ namespace dealvem
       solver.set_near_null_space(dof_handler.rigid_body_modes());
     ActiveSetSolver<2>     active_set(contact, constraints, solver, contact_settings, E_min / h_min);
     active_set.set_support(&support);
+    const bool friction = contact_settings.is_coulomb();
+    std::unique_ptr<FrictionSolver<2>> friction_solver;
+    std::vector<PairState>             state;
+    std::vector<double>                reference(pairs.size(), 0.);
+    if (friction)
+      {
+        friction_solver =
+          std::make_unique<FrictionSolver<2>>(contact, constraints, solver, contact_settings, E_min / h_min);
+        friction_solver->set_support(&support);
+        state = friction_solver->initial_state();
+      }
     dealii::Vector<double> x;
     typename ActiveSetSolver<2>::Result as;
-    {
-      dealii::TimerOutput::Scope t(timer, "solve");
-      as = active_set.solve(system_matrix, system_rhs, work_matrix, x);
-    }
-    results.solution.reinit(n);
-    for (unsigned int i = 0; i < n; ++i)
-      results.solution[i] = x[i];
-    results.n_dofs                = n;
-    results.n_multipliers         = m;
-    results.active_set_iterations = as.n_iterations;
-    results.active_set_history    = as.n_active_history;
-    results.linear_iterations     = as.linear_iterations;
-    results.solver                = solver.description();
+    typename FrictionSolver<2>::Result  fr;
+    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
+    const auto        step_prefix = [&](const unsigned int step) {
+      std::ostringstream s;
+      s << prefix << "-step-" << std::setw(3) << std::setfill('0') << step;
+      return s.str();
+    };
+    const bool write_steps = (n_steps > 1);
 
-    // interface results
-    const auto gaps  = contact.gaps(x);
-    const auto slips = contact.slips(x);
-    const auto ft    = contact.tangential_forces(x);
-    // consistent pressure per interface: M_Gamma p = -lambda
-    std::vector<double> recovered;
-    {
-      unsigned int offset = 0;
-      for (const auto &itf : interfaces)
-        {
-          std::vector<double> force(itf.pairs.size());
-          std::vector<bool>   closed(itf.pairs.size());
-          for (unsigned int j = 0; j < force.size(); ++j)
-            {
-              force[j]  = -x[n + offset + j];
-              closed[j] = as.active[offset + j];
-            }
-          const auto p = ContactPressure::recover(itf, force, closed);
-          recovered.insert(recovered.end(), p.begin(), p.end());
-          offset += itf.pairs.size();
-        }
-    }
-    for (unsigned int i = 0; i < pairs.size(); ++i)
+    for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        const auto &p = pairs[i];
-        PairResult  r;
-        r.interface           = p.interface;
-        r.location            = p.slave_location;
-        r.midpoint            = p.is_midpoint;
-        r.active              = as.active[i];
-        r.weight              = p.weight;
-        r.gap                 = gaps[i];
-        r.multiplier          = x[n + i];
-        r.lumped_pressure     = -x[n + i] / p.weight;
-        r.pressure            = recovered[i];
-        r.at_open_end         = p.at_open_end;
-        r.slip                = slips[i];
-        r.tangential_traction = (as.active[i] ? ft[i] / p.weight : 0.);
-        results.pairs.push_back(r);
-        results.total_contact_force += (-x[n + i]) * p.normal + r.tangential_traction * p.weight * p.tangent;
+        const double time = final_time * step / n_steps;
+        try
+          {
+            assemble_system(time);
+            dealii::TimerOutput::Scope t(timer, "solve");
+            if (friction)
+              {
+                fr    = friction_solver->solve(system_matrix, system_rhs, work_matrix, x, state, reference);
+                state = fr.state;
+                reference = fr.reference;
+                as        = typename ActiveSetSolver<2>::Result();
+                as.n_iterations      = fr.n_iterations;
+                as.linear_iterations = fr.linear_iterations;
+                for (const auto &h : fr.history)
+                  as.n_active_history.push_back(h[1] + h[2]);
+                for (const auto s : fr.state)
+                  as.active.push_back(s != PairState::open);
+              }
+            else
+              as = active_set.solve(system_matrix, system_rhs, work_matrix, x);
+          }
+        catch (...)
+          {
+            if (n_steps > 1)
+              {
+                std::cout << "  load step " << step << " of " << n_steps << " (t = " << time
+                          << ") failed; the results of the " << step - 1 << " converged step(s) are kept";
+                if (write_steps && (write_vtu || write_csv))
+                  std::cout << " (" << prefix << "-step-*, " << prefix << ".pvd)";
+                std::cout << "." << std::endl;
+                if (write_json)
+                  {
+                    JsonSummary json;
+                    json.set("program", "dealvem");
+                    json.set("problem", "contact");
+                    json.set("load_steps.requested", double(n_steps));
+                    json.set("load_steps.converged", double(step - 1));
+                    json.set("load_steps.failed_step", double(step));
+                    json.set("load_steps.failed_time", time);
+                    for (const auto &sr : results.steps)
+                      {
+                        const std::string k = "steps." + std::to_string(sr.step) + ".";
+                        json.set(k + "time", sr.time);
+                        json.set(k + "iterations", double(sr.iterations));
+                        json.set(k + "dissipated_energy", sr.dissipated_energy);
+                      }
+                    json.write(prefix + ".json");
+                  }
+              }
+            throw;
+          }
+
+        results.solution.reinit(n);
+        for (unsigned int i = 0; i < n; ++i)
+          results.solution[i] = x[i];
+        results.n_dofs                = n;
+        results.n_multipliers         = m;
+        results.active_set_iterations = as.n_iterations;
+        results.active_set_history    = as.n_active_history;
+        results.linear_iterations     = as.linear_iterations;
+        results.solver                = solver.description();
+
+        // interface results
+        const auto gaps  = contact.gaps(x);
+        const auto slips = contact.slips(x);
+        const auto ft    = friction ? std::vector<double>() : contact.tangential_forces(x);
+        // consistent pressure per interface: M_Gamma p = -lambda
+        // the tangential nodal force on the slave node, along t
+        std::vector<double> tangential_force(pairs.size(), 0.);
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          tangential_force[i] = (friction ? -fr.tangential_multiplier[i] : ft[i]);
+        // the same recovery for the tangential traction
+        std::vector<double> recovered, recovered_shear;
+        {
+          unsigned int offset = 0;
+          for (const auto &itf : interfaces)
+            {
+              std::vector<double> force(itf.pairs.size()), force_t(itf.pairs.size());
+              std::vector<bool>   closed(itf.pairs.size());
+              for (unsigned int j = 0; j < force.size(); ++j)
+                {
+                  force[j]   = -x[n + offset + j];
+                  force_t[j] = tangential_force[offset + j];
+                  closed[j]  = as.active[offset + j];
+                }
+              const auto p = ContactPressure::recover(itf, force, closed);
+              recovered.insert(recovered.end(), p.begin(), p.end());
+              const auto q = ContactPressure::recover(itf, force_t, closed);
+              recovered_shear.insert(recovered_shear.end(), q.begin(), q.end());
+              offset += itf.pairs.size();
+            }
+        }
+        results.pairs.clear();
+        results.total_contact_force = dealii::Tensor<1, 2>();
+        StepResult step_result;
+        step_result.step       = step;
+        step_result.time       = time;
+        step_result.iterations = as.n_iterations;
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          {
+            const auto &p = pairs[i];
+            PairResult  r;
+            r.interface       = p.interface;
+            r.location        = p.slave_location;
+            r.midpoint        = p.is_midpoint;
+            r.active          = as.active[i];
+            r.weight          = p.weight;
+            r.gap             = gaps[i];
+            r.multiplier      = x[n + i];
+            r.lumped_pressure = -x[n + i] / p.weight;
+            r.pressure        = recovered[i];
+            r.at_open_end     = p.at_open_end;
+            r.slip            = slips[i];
+            r.tangent         = p.tangent;
+            r.shear           = recovered_shear[i];
+            r.tangential_traction = (as.active[i] ? tangential_force[i] / p.weight : 0.);
+            if (friction)
+              {
+                r.slip_increment      = fr.slip_increment[i];
+                r.status              = (state[i] == PairState::open ? "open" :
+                                         state[i] == PairState::stick ? "stick" :
+                                                                        "slip");
+              }
+            else
+              r.status = (as.active[i] ? "closed" : "open");
+            step_result.n_open += (!r.active);
+            step_result.n_stick += (r.active && r.status != "slip");
+            step_result.n_slip += (r.status == "slip");
+            results.pairs.push_back(r);
+            results.total_contact_force +=
+              (-x[n + i]) * p.normal + r.tangential_traction * p.weight * p.tangent;
+          }
+        step_result.dissipated_energy   = (friction ? fr.dissipated_energy : 0.);
+        step_result.total_contact_force = results.total_contact_force;
+        step_result.pairs               = results.pairs;
+        results.dissipated_energy += step_result.dissipated_energy;
+        results.steps.push_back(step_result);
+
+        if (n_steps > 1 || friction)
+          {
+            std::cout << "  load step " << step << " of " << n_steps << ", t = " << time << ": "
+                      << as.n_iterations << (friction ? " Newton" : " active-set") << " iteration(s), "
+                      << step_result.n_open << " open / " << step_result.n_stick
+                      << (friction ? " stick / " : " closed") ;
+            if (friction)
+              {
+                std::cout << step_result.n_slip << " slip, dissipated energy " << step_result.dissipated_energy;
+                if (fr.history.size() > 1)
+                  {
+                    // the states each iteration solved with
+                    std::cout << " (open/stick/slip per iteration:";
+                    for (const auto &h : fr.history)
+                      std::cout << " " << h[0] << "/" << h[1] << "/" << h[2];
+                    std::cout << ")";
+                  }
+              }
+            std::cout << std::endl;
+          }
+        if (write_steps)
+          {
+            if (write_csv)
+              write_interface_csv(step_prefix(step) + "-interface.csv", results.pairs);
+            if (write_vtu)
+              {
+                StressRecovery<2> step_stresses(dof_handler, materials, gamma, results.solution);
+                write_vtu_file(step_prefix(step) + ".vtu", dof_handler, results.solution, step_stresses);
+                // the time series so far, rewritten after every step
+                OutputFile    pvd_file(prefix + ".pvd");
+                std::ostream &pvd = pvd_file.stream();
+                pvd << "<?xml version=\"1.0\"?>\n"
+                    << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                    << "  <Collection>\n";
+                for (const auto &sr : results.steps)
+                  pvd << "    <DataSet timestep=\"" << std::setprecision(17) << sr.time
+                      << "\" group=\"\" part=\"0\" file=\""
+                      << std::filesystem::path(step_prefix(sr.step) + ".vtu").filename().string() << "\"/>\n";
+                pvd << "  </Collection>\n</VTKFile>\n";
+                pvd_file.commit();
+              }
+          }
       }
 
     // per body: cells, DoFs, and errors against the exact solution
@@ -630,26 +882,18 @@ namespace dealvem
     std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
               << ", " << results.total_contact_force[1] << ")" << std::endl;
 
-    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
     if (write_csv)
       {
-        OutputFile    csv_file(prefix + "-interface.csv");
-        std::ostream &csv = csv_file.stream();
-        csv << "interface,x,y,midpoint,active,weight,gap,pressure,lumped_pressure,multiplier,"
-               "tangential_traction,slip\n";
-        csv << std::setprecision(15);
-        for (const auto &r : results.pairs)
-          csv << r.interface << "," << r.location[0] << "," << r.location[1] << "," << r.midpoint
-              << "," << r.active << "," << r.weight << "," << r.gap << "," << r.pressure << ","
-              << r.lumped_pressure << "," << r.multiplier << ","
-              << r.tangential_traction << "," << r.slip << "\n";
-        csv_file.commit();
+        write_interface_csv(prefix + "-interface.csv", results.pairs);
         std::cout << "  interface results: " << prefix << "-interface.csv" << std::endl;
       }
     if (write_vtu)
       {
         write_vtu_file(prefix + ".vtu", dof_handler, results.solution, stresses);
         std::cout << "  ParaView file (all bodies, field body_id): " << prefix << ".vtu" << std::endl;
+        if (write_steps)
+          std::cout << "  load steps: " << prefix << "-step-NNN.vtu, -interface.csv; time series " << prefix
+                    << ".pvd" << std::endl;
       }
     if (write_pictures)
       {
@@ -742,6 +986,26 @@ namespace dealvem
               json.set(k + "H1", e.h1_seminorm / std::max(e.h1_exact, 1e-300));
               json.set(k + "energy", e.energy / std::max(e.energy_exact, 1e-300));
             }
+        if (friction || n_steps > 1)
+          {
+            json.set("contact.tangential", friction ? "coulomb" : "stick or frictionless");
+            json.set("load_steps.requested", double(n_steps));
+            json.set("load_steps.converged", double(results.steps.size()));
+            json.set("load_steps.final_time", final_time);
+            json.set("contact.dissipated_energy", results.dissipated_energy);
+            for (const auto &sr : results.steps)
+              {
+                const std::string k = "steps." + std::to_string(sr.step) + ".";
+                json.set(k + "time", sr.time);
+                json.set(k + "iterations", double(sr.iterations));
+                json.set(k + "open", double(sr.n_open));
+                json.set(k + "stick", double(sr.n_stick));
+                json.set(k + "slip", double(sr.n_slip));
+                json.set(k + "dissipated_energy", sr.dissipated_energy);
+                json.set(k + "force_x", sr.total_contact_force[0]);
+                json.set(k + "force_y", sr.total_contact_force[1]);
+              }
+          }
         json.set("contact.total_force_x", results.total_contact_force[0]);
         json.set("contact.total_force_y", results.total_contact_force[1]);
         for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))

@@ -46,23 +46,23 @@ namespace dealvem
     prm.declare_entry("Function constants", "", Anything(),
                       "Constants usable in every expression of this section and of the exact "
                       "solution, as 'name=value, name=value'. Expressions are muparser expressions "
-                      "in x, y and the time t; the problems are static and t = 1.");
+                      "in x, y and the time t; t = 1 unless the contact problem has load steps (section 'Load steps': t runs over the steps).");
     prm.declare_entry("Dirichlet", "", Anything(),
                       "Prescribed displacements: 'id : components : expressions; ...' with "
-                      "components x, y or xy and one expression per component (in x, y, t; t = 1), "
+                      "components x, y or xy and one expression per component (in x, y, t; t = 1, or the time of the load step), "
                       "e.g. '0 : xy : 0, 0; 2 : y : 0'.");
     prm.declare_entry("Roller", "", Anything(),
                       "Boundary ids of straight boundary parts (any inclination) with zero normal "
                       "displacement, comma separated.");
     prm.declare_entry("Traction", "", Anything(),
-                      "Tractions 'id : gx, gy; ...' (force per length; expressions in x, y, t; t = 1).");
+                      "Tractions 'id : gx, gy; ...' (force per length; expressions in x, y, t; t = 1, or the time of the load step).");
     prm.declare_entry("Pressure", "", Anything(),
                       "Normal pressures 'id : p; ...'; positive pressure pushes into the body "
-                      "(expressions in x, y, t; t = 1).");
+                      "(expressions in x, y, t; t = 1, or the time of the load step).");
     prm.declare_entry("Point constraints", "", Anything(),
                       "Single-point constraints 'x, y : component : value; ...' on the mesh vertex "
                       "at (x, y), component x or y; the value is an expression evaluated at (x, y), "
-                      "t = 1. Where vertices of two bodies lie at (x, y), name the body (its "
+                      "t = 1 (or the time of the load step). Where vertices of two bodies lie at (x, y), name the body (its "
                       "material id) in a fourth field: 'x, y : component : value : body'. A point "
                       "constraint on a displacement that a Dirichlet or roller condition fixes "
                       "already must agree with it.");
@@ -71,11 +71,11 @@ namespace dealvem
                       "all nodes on the boundary edges with this id move as one rigid body, "
                       "loaded by the force (Fx, Fy) at the arc-length centroid of the part and the "
                       "moment M (counter-clockwise) about it. Expressions with the function "
-                      "constants, evaluated at the centroid, t = 1. A rigid part does not hold its "
+                      "constants, evaluated at the centroid, t = 1 (or the time of the load step). A rigid part does not hold its "
                       "body (add Dirichlet data elsewhere) and may share constrained nodes with "
                       "other conditions only at its two reference nodes.");
     prm.declare_entry("Body force", "", Anything(),
-                      "Body force 'fx, fy' (force per area; expressions in x, y, t; t = 1); empty "
+                      "Body force 'fx, fy' (force per area; expressions in x, y, t; t = 1, or the time of the load step); empty "
                       "for none.");
     prm.leave_subsection();
   }
@@ -293,6 +293,27 @@ namespace dealvem
         for (const auto &l : BoundaryConditions::rigid_boundary_load(part, force, moment))
           assembler.add_nodal_load(l.first, l.second);
       }
+  }
+
+
+
+  void
+  BoundaryConditionParameters::set_time(const double t)
+  {
+    for (auto &d : dirichlet)
+      d.function->set_time(t);
+    for (auto *loads : {&tractions, &pressures})
+      for (auto &l : *loads)
+        l.function->set_time(t);
+    for (auto &pc : points)
+      pc.value->set_time(t);
+    for (auto &r : rigid_boundaries)
+      {
+        r.force->set_time(t);
+        r.moment->set_time(t);
+      }
+    if (body_force)
+      body_force->set_time(t);
   }
 
 

@@ -36,8 +36,13 @@ namespace dealvem
       return Tangential::penalty;
     if (s == "multipliers")
       return Tangential::multipliers;
+    if (s == "coulomb")
+      return Tangential::coulomb;
+    if (s == "coulomb penalty")
+      return Tangential::coulomb_penalty;
     AssertThrow(false, dealii::ExcMessage("Unknown tangential contact model '" + s +
-                                          "': expected 'frictionless', 'penalty' or 'multipliers'."));
+                                          "': expected 'frictionless', 'penalty', 'multipliers', "
+                                          "'coulomb' or 'coulomb penalty'."));
     return Tangential::frictionless;
   }
 
@@ -53,10 +58,20 @@ namespace dealvem
     , settings(settings)
     , penalty(penalty)
     , n_normal(pairs.size())
-    , n_tangential(settings.tangential == ContactSettings::Tangential::multipliers ? pairs.size() : 0)
+    , n_tangential((settings.tangential == ContactSettings::Tangential::multipliers ||
+                    settings.tangential == ContactSettings::Tangential::coulomb) ?
+                     pairs.size() :
+                     0)
   {
-    AssertThrow(settings.tangential != ContactSettings::Tangential::penalty || penalty > 0,
+    AssertThrow((settings.tangential != ContactSettings::Tangential::penalty &&
+                 settings.tangential != ContactSettings::Tangential::coulomb_penalty) ||
+                  penalty > 0,
                 dealii::ExcMessage("The tangential penalty must be positive."));
+    for (const auto &p : pairs)
+      AssertThrow(std::isfinite(settings.friction_coefficient_of(p.interface)) &&
+                    settings.friction_coefficient_of(p.interface) >= 0,
+                  dealii::ExcMessage("The friction coefficient of contact interface " +
+                                     std::to_string(p.interface) + " must be finite and >= 0."));
     for (const auto &p : pairs)
       AssertThrow(p.is_midpoint == false || dof_handler.get_degree() == 2,
                   dealii::ExcMessage("Midpoint contact pairs need order k = 2."));
@@ -230,6 +245,105 @@ namespace dealvem
 
 
   template <int dim>
+  void
+  ContactAssembler<dim>::assemble_friction(const dealii::AffineConstraints<double> &constraints,
+                                           const std::vector<PairState>            &state,
+                                           const std::vector<double>               &reference,
+                                           dealii::SparseMatrix<double>            &matrix,
+                                           dealii::Vector<double>                  &rhs) const
+  {
+    AssertThrow(settings.is_coulomb(),
+                dealii::ExcMessage("assemble_friction() needs 'Tangential = coulomb' or 'coulomb penalty'."));
+    AssertDimension(state.size(), pairs.size());
+    AssertDimension(reference.size(), pairs.size());
+    const bool multipliers = (settings.tangential == ContactSettings::Tangential::coulomb);
+    const auto n           = dof_handler.n_dofs();
+    dropped.clear();
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto  &p      = pairs[i];
+        const auto   d      = pair_dofs(i);
+        const double cn[4]  = {-p.normal[0], -p.normal[1], p.normal[0], p.normal[1]};
+        const double ct[4]  = {-p.tangent[0], -p.tangent[1], p.tangent[0], p.tangent[1]};
+        const bool   closed = (state[i] != PairState::open);
+        const double sigma  = (state[i] == PairState::slip_positive ? 1. : -1.);
+        const double mu     = friction_coefficient(i);
+
+        // A closed normal or sticking tangential row that the displacement
+        // constraints fix already: as in assemble(), dropped if they agree.
+        const auto redundant = [&](const double c[4], const bool tangential, const double required) {
+          double value = 0;
+          if (!is_fixed_by_constraints(constraints, i, c, value))
+            return false;
+          const double tol = 1e-12 * std::max({std::abs(value), std::abs(required), p.weight});
+          const bool   open_ok = !tangential && value >= required - tol;
+          AssertThrow(open_ok || std::abs(value - required) <= tol,
+                      dealii::ExcMessage("Contact pair " + std::to_string(i) + " (interface " +
+                                         std::to_string(p.interface) + "): the " +
+                                         (tangential ? "tangential (stick)" : "normal") +
+                                         " contact constraint involves only displacements fixed by the "
+                                         "Dirichlet, roller or point constraints, and they disagree (imposed " +
+                                         to_string(value) + ", required " + to_string(required) + ")."));
+          dropped.push_back({i, p.slave_location, tangential, value});
+          return true;
+        };
+
+        std::vector<dealii::types::global_dof_index> idx(d.begin(), d.end());
+        idx.push_back(n + i);
+        if (multipliers)
+          idx.push_back(n + n_normal + i);
+        dealii::FullMatrix<double> M(idx.size(), idx.size());
+        dealii::Vector<double>     F(idx.size());
+        const bool normal_on = closed && !redundant(cn, false, -p.initial_gap);
+        if (normal_on)
+          {
+            for (unsigned int j = 0; j < 4; ++j)
+              M(4, j) = M(j, 4) = cn[j];
+            F(4) = -p.initial_gap;
+          }
+        else
+          M(4, 4) = 1.;
+        if (multipliers)
+          {
+            if (state[i] == PairState::stick && !redundant(ct, true, reference[i]))
+              {
+                for (unsigned int j = 0; j < 4; ++j)
+                  M(5, j) = M(j, 5) = ct[j];
+                F(5) = reference[i];
+              }
+            else if (closed && state[i] != PairState::stick)
+              {
+                // slip: lambda_t + mu sigma lambda_n = 0; lambda_t still acts
+                // on the displacements
+                for (unsigned int j = 0; j < 4; ++j)
+                  M(j, 5) = ct[j];
+                M(5, 5) = 1.;
+                M(5, 4) = mu * sigma;
+              }
+            else
+              M(5, 5) = 1.;
+          }
+        else if (state[i] == PairState::stick)
+          {
+            const double eps = penalty * p.weight;
+            for (unsigned int j = 0; j < 4; ++j)
+              {
+                for (unsigned int k = 0; k < 4; ++k)
+                  M(j, k) += eps * ct[j] * ct[k];
+                F(j) += eps * reference[i] * ct[j];
+              }
+          }
+        else if (closed && normal_on)
+          // slip: the tangential force -mu sigma lambda_n acts through c_t
+          for (unsigned int j = 0; j < 4; ++j)
+            M(j, 4) += -mu * sigma * ct[j];
+        constraints.distribute_local_to_global(M, F, idx, matrix, rhs);
+      }
+  }
+
+
+
+  template <int dim>
   std::vector<double>
   ContactAssembler<dim>::gaps(const dealii::Vector<double> &u) const
   {
@@ -265,7 +379,8 @@ namespace dealvem
   ContactAssembler<dim>::tangential_forces(const dealii::Vector<double> &x) const
   {
     std::vector<double> f(pairs.size(), 0.);
-    if (settings.tangential == ContactSettings::Tangential::multipliers)
+    if (settings.tangential == ContactSettings::Tangential::multipliers ||
+        settings.tangential == ContactSettings::Tangential::coulomb)
       {
         // the force on the slave node is -lambda_t t
         for (unsigned int i = 0; i < pairs.size(); ++i)

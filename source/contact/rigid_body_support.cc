@@ -88,7 +88,17 @@ namespace dealvem
   std::string
   RigidBodySupport::free_motions(const std::vector<bool> &closed) const
   {
+    return free_motions(closed, closed);
+  }
+
+
+
+  std::string
+  RigidBodySupport::free_motions(const std::vector<bool> &closed,
+                                 const std::vector<bool> &tangential_held) const
+  {
     AssertDimension(closed.size(), pair_rows.size());
+    AssertDimension(tangential_held.size(), pair_rows.size());
     const unsigned int N = 3 * n_body;
     Eigen::MatrixXd    gram(N, N);
     for (unsigned int i = 0; i < N; ++i)
@@ -96,11 +106,12 @@ namespace dealvem
         gram(i, j) = gram_constraints[i * N + j];
     for (unsigned int p = 0; p < pair_rows.size(); ++p)
       if (closed[p])
-        for (const auto &row : pair_rows[p])
-          for (unsigned int i = 0; i < N; ++i)
-            if (row[i] != 0)
-              for (unsigned int j = 0; j < N; ++j)
-                gram(i, j) += row[i] * row[j];
+        for (unsigned int r = 0; r < pair_rows[p].size(); ++r)
+          if (const auto &row = pair_rows[p][r]; r == 0 || tangential_held[p])
+            for (unsigned int i = 0; i < N; ++i)
+              if (row[i] != 0)
+                for (unsigned int j = 0; j < N; ++j)
+                  gram(i, j) += row[i] * row[j];
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
     const double       vmax = std::max(eig.eigenvalues().maxCoeff(), 1e-300);
     std::ostringstream msg;

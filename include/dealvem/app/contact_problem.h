@@ -33,7 +33,12 @@ namespace dealvem
    * with its own "Mesh" and "Material" subsections. Every body gets its
    * index as material id; the "Boundary id offset" of a body's mesh keeps
    * the boundary ids of the bodies apart. The section "Contact" lists the
-   * contact pairs "master id : slave id; ..." and the contact options.
+   * contact pairs "master id : slave id; ..." (with Coulomb friction
+   * optionally "master id : slave id : friction coefficient") and the
+   * contact options. The section "Load steps" runs the problem as a
+   * sequence of quasi-static steps in the time t of the load expressions;
+   * Coulomb friction (FrictionSolver) carries the pair states and slips
+   * from step to step.
    *
    * Data flow of run(): meshes of the bodies -> one mesh -> node insertion
    * on each contact pair -> DoFs -> constraints -> assembly of K and f ->
@@ -80,7 +85,32 @@ namespace dealvem
       double           multiplier;          ///< raw multiplier lambda (a nodal force)
       bool             at_open_end;         ///< see ContactNodePair::at_open_end
       double           tangential_traction; ///< tangential force / weight
-      double           slip;
+      double           slip;                ///< relative tangential displacement (u_B - u_A).t
+      /// Coulomb friction: open, stick or slip (frictionless and stick
+      /// models: open or closed), and the slip of this load step (with the
+      /// penalty variant, the plastic slip).
+      std::string      status;
+      double           slip_increment = 0;
+      /// Tangent t of the pair (tangential traction and slip are along it).
+      dealii::Tensor<1, 2> tangent;
+      /// Tangential traction recovered as the pressure (ContactPressure::recover
+      /// applied to the tangential nodal forces); tangential_traction is the
+      /// raw force per tributary length.
+      double           shear = 0;
+    };
+
+    /// One converged load step.
+    struct StepResult
+    {
+      unsigned int step;
+      double       time;
+      /// Newton (active-set) iterations of the step.
+      unsigned int iterations;
+      unsigned int n_open = 0, n_stick = 0, n_slip = 0;
+      /// Energy dissipated by friction in the step (zero without friction).
+      double       dissipated_energy = 0;
+      dealii::Tensor<1, 2> total_contact_force;
+      std::vector<PairResult> pairs;
     };
 
     /// Everything a test or a user program wants to look at after run().
@@ -113,6 +143,11 @@ namespace dealvem
       std::vector<ErrorNorms>      errors;
       /// Wall times of the stages (mesh, node insertion, assembly, solve).
       std::map<std::string, double> timings;
+      /// The converged load steps (one for a static problem); pairs, solution
+      /// and stresses above are those of the last one.
+      std::vector<StepResult>      steps;
+      /// Sum of the dissipated energy of the steps.
+      double                       dissipated_energy = 0;
     };
 
     const Results &
@@ -151,6 +186,9 @@ namespace dealvem
                                write_csv = true;
     std::string                prm_directory;
     unsigned int               n_cycles = 1;
+    /// Load steps: t = final_time * step / n_steps, step = 1..n_steps.
+    unsigned int               n_steps    = 1;
+    double                     final_time = 1;
     Results                    results;
     std::vector<std::vector<ErrorNorms>> convergence;
   };

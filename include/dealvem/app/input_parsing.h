@@ -26,10 +26,10 @@ namespace dealvem
    * - the components of a field separated by ',' (commas inside
    *   parentheses, as in pow(x,2), do not split).
    * Expressions are muparser expressions in x, y and t with the
-   * constants of the "Function constants" parameter. The programs solve
-   * static problems, so t is always 1 there (a load written as 10*t is the
-   * load 10); t is there so that one parameter file can later serve a load
-   * history.
+   * constants of the "Function constants" parameter. A static problem
+   * evaluates them at t = 1 (a load written as 10*t is the load 10); a
+   * contact problem with load steps (section "Load steps") evaluates them at
+   * the time of each step, which makes a load history.
    */
   namespace InputParsing
   {

@@ -43,7 +43,8 @@ namespace dealvem
    * - Body force: `fx, fy` (empty: none)
    *
    * Expressions are muparser expressions in x, y and t with the function
-   * constants; the problems are static and t = 1.
+   * constants; t = 1 unless set_time() says otherwise (contact problems with
+   * load steps, section "Load steps").
    * Every malformed entry gives an error naming the parameter and the entry;
    * so does an entry on a boundary id the mesh does not have
    * (check_boundary_ids()), an expression that is not finite where it is
@@ -79,6 +80,14 @@ namespace dealvem
     /// the resultants of rigid boundaries become nodal loads.
     void
     add_loads(ElasticityAssembler<2> &assembler) const;
+
+    /**
+     * Set the time t of every expression of this section (Dirichlet data,
+     * loads, point constraints, rigid boundaries, body force). Load steps
+     * call this before apply_constraints() and add_loads().
+     */
+    void
+    set_time(const double t);
 
     const std::map<std::string, double> &
     get_constants() const

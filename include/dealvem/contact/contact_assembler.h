@@ -31,12 +31,16 @@ namespace dealvem
       unilateral
     };
     /// Tangential behaviour: frictionless, stick by a penalty, or stick by
-    /// Lagrange multipliers (exactly tied).
+    /// Lagrange multipliers (exactly tied); Coulomb friction with exact
+    /// stick by multipliers (coulomb) or regularised by the penalty
+    /// (coulomb_penalty), solved by FrictionSolver.
     enum class Tangential
     {
       frictionless,
       penalty,
-      multipliers
+      multipliers,
+      coulomb,
+      coulomb_penalty
     };
     Normal     normal     = Normal::unilateral;
     Tangential tangential = Tangential::penalty;
@@ -55,11 +59,49 @@ namespace dealvem
     double penalty_factor = 1e3;
     /// Active set: maximum number of iterations.
     unsigned int max_active_set_iterations = 50;
+    /// Coulomb friction coefficient of every interface without its own.
+    double friction_coefficient = 0;
+    /// Friction coefficient per interface (index ContactNodePair::interface);
+    /// entries beyond its size, and negative entries, use
+    /// friction_coefficient.
+    std::vector<double> friction_coefficients;
+
+    /// Whether the tangential model is Coulomb friction.
+    bool
+    is_coulomb() const
+    {
+      return tangential == Tangential::coulomb || tangential == Tangential::coulomb_penalty;
+    }
+
+    /// The friction coefficient of interface @p interface.
+    double
+    friction_coefficient_of(const unsigned int interface) const
+    {
+      return (interface < friction_coefficients.size() && friction_coefficients[interface] >= 0) ?
+               friction_coefficients[interface] :
+               friction_coefficient;
+    }
 
     static Normal
     parse_normal(const std::string &s);
     static Tangential
     parse_tangential(const std::string &s);
+  };
+
+
+
+  /**
+   * State of a contact node pair under Coulomb friction: open (no contact
+   * force), sticking (no incremental slip), or slipping in the direction
+   * $+t$ or $-t$ of the slave node relative to the master node (the
+   * friction force on the slave node then points the other way).
+   */
+  enum class PairState : unsigned char
+  {
+    open,
+    stick,
+    slip_positive,
+    slip_negative
   };
 
 
@@ -152,6 +194,39 @@ namespace dealvem
              const std::vector<bool>                 &active,
              dealii::SparseMatrix<double>            &matrix,
              dealii::Vector<double>                  &rhs) const;
+
+    /**
+     * Add the contact blocks of Coulomb friction (ContactSettings::coulomb
+     * or coulomb_penalty) for the pair states @p state. With the normal
+     * multiplier $\lambda_{n,i}$ and the tangential nodal force
+     * $\lambda_{t,i}$ (the slave node receives $-\lambda_{t,i} t_i$):
+     * - open: $\lambda_{n,i} = 0$, $\lambda_{t,i} = 0$;
+     * - stick: $g_i = 0$ and, with multipliers,
+     *   $(u_B - u_A)\cdot t_i = r_i$ (the relative tangential displacement
+     *   $r_i$ of the last converged load step: no incremental slip), or with
+     *   the penalty $\lambda_{t,i} = \varepsilon_t w_i ((u_B - u_A)\cdot t_i - r_i)$
+     *   ($r_i$ the plastic slip);
+     * - slip in the direction $\sigma_i = \pm 1$: $g_i = 0$ and
+     *   $\lambda_{t,i} + \mu\sigma_i\lambda_{n,i} = 0$, i.e. the friction
+     *   force $\mu|\lambda_{n,i}|$ against the slip. With multipliers this
+     *   is the row of $\lambda_{t,i}$; with the penalty, $\lambda_{t,i}$ is
+     *   replaced by $-\mu\sigma_i\lambda_{n,i}$ in the displacement rows
+     *   (the matrix is no longer symmetric in both cases).
+     * @p reference holds the $r_i$.
+     */
+    void
+    assemble_friction(const dealii::AffineConstraints<double> &constraints,
+                      const std::vector<PairState>            &state,
+                      const std::vector<double>               &reference,
+                      dealii::SparseMatrix<double>            &matrix,
+                      dealii::Vector<double>                  &rhs) const;
+
+    /// The friction coefficient of pair i.
+    double
+    friction_coefficient(const unsigned int i) const
+    {
+      return settings.friction_coefficient_of(pairs[i].interface);
+    }
 
     /// Gap $g_i = (u_B - u_A)\cdot n_i + g_{0,i}$ of each pair.
     std::vector<double>

@@ -47,6 +47,15 @@ namespace dealvem
     std::string
     free_motions(const std::vector<bool> &closed) const;
 
+    /**
+     * As above, but the tangential row of a closed pair counts only where
+     * @p tangential_held is true (friction: a sticking pair holds the
+     * tangential direction, a slipping one does not). Needs an object built
+     * with @p tangential_stick = true.
+     */
+    std::string
+    free_motions(const std::vector<bool> &closed, const std::vector<bool> &tangential_held) const;
+
     /// Whether every body is held with the closed pairs @p closed.
     bool
     holds(const std::vector<bool> &closed) const
