@@ -24,12 +24,13 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/elasticity/boundary_conditions.h>
-#include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/generators.h>
 #include <dealvem/postprocessing/error_norms.h>
@@ -38,6 +39,7 @@
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/linear_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/vem_values.h>
 
 #include <fstream>
 #include <iostream>
@@ -202,16 +204,60 @@ namespace Step1
 
   // @sect4{CantileverProblem::assemble_system}
   //
-  // The ElasticityAssembler loops over the polygons, builds the local
-  // stiffness $K_E = \Pi_*^T\tilde G\Pi_* + \gamma\tau(I-\Pi)^T(I-\Pi)$ with
-  // VirtualElement, the traction load on the edges with boundary id 1, and
-  // hands both to AffineConstraints::distribute_local_to_global.
+  // The loop of deal.II's step-8, on polygons. VEMValues evaluates the
+  // space on one cell: its "shape functions" are the projections
+  // $\Pi\varphi_i$ of the virtual basis functions, which are polynomials of
+  // degree $k$, so the consistency part
+  // @f[ (K_c)_{ij} = \int_E \lambda\,\mathrm{div}\,\Pi\varphi_i\,\mathrm{div}\,\Pi\varphi_j
+  //     + 2\mu\,\varepsilon(\Pi\varphi_i):\varepsilon(\Pi\varphi_j) @f]
+  // is integrated exactly by the cell's quadrature rule (degree $2k$).
+  // What step-8 does not have is the stabilization: $K_c$ vanishes on the
+  // part $(I-\Pi)$ of each function that the projection cannot see, and
+  // the term $\gamma\tau(I-\Pi)^T(I-\Pi)$ restores coercivity there, with
+  // $\tau$ the mean diagonal entry of $K_c$ so that it scales like $K_c$.
+  // The space hands out the material-free form $S=(I-\Pi)^T(I-\Pi)$;
+  // ElasticityOperator::stabilization_scaling() is the one place the rule
+  // for $\tau$ is written. (ElasticityOperator computes the same
+  // $K_c = \Pi_*^T(\lambda T+2\mu E)\Pi_*$ from the space's Gram matrices
+  // without quadrature; ElasticityAssembler uses it. tests/vem/vem_values
+  // checks that the two agree to round-off.)
+  //
+  // The traction is applied on the edges with boundary id 1, edge by edge
+  // as step-8 does on faces.
   void
   CantileverProblem::assemble_system()
   {
-    ElasticityAssembler<2> assembler(dof_handler, materials, 1.0);
-    assembler.add_traction(1, traction);
-    assembler.assemble(constraints, system_matrix, system_rhs);
+    system_matrix = 0;
+    system_rhs.reinit(dof_handler.n_dofs());
+    VEMValues<2> vem_values(dof_handler, dealii::update_gradients | dealii::update_JxW_values);
+    const double gamma = 1.0;
+    dealii::FullMatrix<double> cell_matrix;
+    dealii::Vector<double>     cell_rhs;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        vem_values.reinit(c);
+        const ElasticMaterial &material = materials.at(vem_values.material_id());
+        const double           lambda = material.lambda(), mu = material.mu();
+        const unsigned int     n = vem_values.dofs_per_cell();
+        cell_matrix.reinit(n, n);
+        cell_rhs.reinit(n);
+        for (unsigned int q = 0; q < vem_values.n_quadrature_points(); ++q)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              cell_matrix(i, j) += (lambda * vem_values.shape_divergence(i, q) * vem_values.shape_divergence(j, q) +
+                                    2 * mu * (vem_values.shape_symmetric_gradient(i, q) *
+                                              vem_values.shape_symmetric_gradient(j, q))) *
+                                   vem_values.JxW(q);
+        const double tau = ElasticityOperator<2>::stabilization_scaling(cell_matrix, gamma);
+        cell_matrix.add(tau, vem_values.get_element().get_stabilization_form());
+
+        for (unsigned int e = 0; e < vem_values.n_edges(); ++e)
+          if (vem_values.edge_boundary_id(e) == 1)
+            vem_values.add_edge_traction(e, traction, cell_rhs);
+
+        constraints.distribute_local_to_global(cell_matrix, cell_rhs, vem_values.get_dof_indices(),
+                                               system_matrix, system_rhs);
+      }
   }
 
   // @sect4{CantileverProblem::solve}
@@ -237,7 +283,7 @@ namespace Step1
   void
   CantileverProblem::compute_errors(const unsigned int cycle)
   {
-    const ErrorNorms e = dealvem::compute_errors(dof_handler, materials, 1.0, solution, exact);
+    const ErrorNorms e = dealvem::compute_errors(dof_handler, materials, solution, exact);
     table.add_value("cycle", cycle);
     table.add_value("cells", mesh.n_cells());
     table.add_value("dofs", dof_handler.n_dofs());
@@ -250,7 +296,7 @@ namespace Step1
   void
   CantileverProblem::output_results(const unsigned int cycle) const
   {
-    const StressRecovery<2> stresses(dof_handler, materials, 1.0, solution);
+    const StressRecovery<2> stresses(dof_handler, materials, solution);
     write_vtu_file("step-1-" + std::to_string(cycle) + ".vtu", dof_handler, solution, stresses);
     if (cycle == 1)
       {

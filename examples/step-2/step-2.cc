@@ -30,13 +30,13 @@
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/elasticity/boundary_conditions.h>
-#include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/mesh/generators.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
-#include <dealvem/vem/virtual_element.h>
+#include <dealvem/vem/vem_values.h>
 
 #include <iomanip>
 #include <iostream>
@@ -182,26 +182,20 @@ namespace Step2
   void
   ContactPatchTest::assemble_system()
   {
-    ElasticityAssembler<2>              assembler(dof_handler, materials);
+    VEMValues<2>                           vem_values(dof_handler);
+    ElasticityOperator<2>                  elasticity;
     dealii::Functions::ConstantFunction<2> pressure(p);
-    assembler.add_pressure(13, pressure);
-    dealii::Vector<double> loads;
-    assembler.assemble_load_vector(loads);
-
-    VirtualElement<2>                            element(degree);
-    std::vector<dealii::types::global_dof_index> indices;
+    dealii::Vector<double>                 cell_rhs;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
-        element.reinit(mesh.cell_vertices(c), assembler.get_material(c));
-        dof_handler.get_dof_indices(c, indices);
-        dealii::Vector<double> F(indices.size());
-        for (unsigned int i = 0; i < indices.size(); ++i)
-          F[i] = loads[indices[i]];
-        // each DoF's load is handed over once, with the first cell that has it
-        for (unsigned int i = 0; i < indices.size(); ++i)
-          loads[indices[i]] = 0;
-        constraints.distribute_local_to_global(element.get_stiffness_matrix(), F, indices, system_matrix,
-                                               system_rhs);
+        vem_values.reinit(c);
+        elasticity.reinit(vem_values.get_element(), materials.at(vem_values.material_id()));
+        cell_rhs.reinit(vem_values.dofs_per_cell());
+        for (unsigned int e = 0; e < vem_values.n_edges(); ++e)
+          if (vem_values.edge_boundary_id(e) == 13)
+            vem_values.add_edge_pressure(e, pressure, cell_rhs);
+        constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), cell_rhs,
+                                               vem_values.get_dof_indices(), system_matrix, system_rhs);
       }
   }
 
@@ -229,7 +223,7 @@ namespace Step2
     dealii::Vector<double> u(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
       u[i] = solution[i];
-    const StressRecovery<2> stresses(dof_handler, materials, 1.0, u);
+    const StressRecovery<2> stresses(dof_handler, materials, u);
     double                  stress_error = 0, pressure_error = 0;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {

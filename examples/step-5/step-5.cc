@@ -320,7 +320,7 @@ namespace Step5
   void
   EmbeddingProblem::compute_errors(const unsigned int cycle)
   {
-    const dealvem::ErrorNorms e = dealvem::compute_errors(vem_dof_handler, materials, 1.0, solution, exact);
+    const dealvem::ErrorNorms e = dealvem::compute_errors(vem_dof_handler, materials, solution, exact);
 
     const QGauss<2> quadrature(degree + 4);
     auto            error = [&](const DoFHandler<2> &dof_handler, const Vector<double> &field,

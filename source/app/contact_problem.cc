@@ -24,7 +24,8 @@
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
-#include <dealvem/vem/virtual_element.h>
+#include <dealvem/elasticity/elasticity_operator.h>
+#include <dealvem/vem/vem_values.h>
 
 
 #include <filesystem>
@@ -488,20 +489,19 @@ namespace dealvem
       bc.add_loads(assembler);
       system_matrix = 0;
       system_rhs.reinit(n + m);
-      VirtualElement<2>                            element(degree);
-      std::vector<dealii::types::global_dof_index> indices;
+      VEMValues<2>                                 vem_values(dof_handler);
+      ElasticityOperator<2>                        elasticity;
       dealii::Vector<double>                       F;
       dealii::Vector<double>                       loads;
       assembler.assemble_load_vector(loads);
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         {
-          element.reinit(mesh.cell_vertices(c), assembler.get_material(c), gamma);
-          dof_handler.get_dof_indices(c, indices);
-          F.reinit(indices.size());
-          // the load vector is assembled separately; distribute it with
-          // the first cell that touches each DoF
-          constraints.distribute_local_to_global(element.get_stiffness_matrix(), F, indices,
-                                                 system_matrix, system_rhs);
+          vem_values.reinit(c);
+          elasticity.reinit(vem_values.get_element(), assembler.get_material(c), gamma);
+          // the load vector is assembled separately (below)
+          F.reinit(vem_values.dofs_per_cell());
+          constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), F,
+                                                 vem_values.get_dof_indices(), system_matrix, system_rhs);
         }
       // loads: a "cell" of all DoFs with an empty matrix distributes the
       // load vector with the constraints
@@ -723,7 +723,7 @@ namespace dealvem
               write_interface_csv(step_prefix(step) + "-interface.csv", results.pairs);
             if (write_vtu)
               {
-                StressRecovery<2> step_stresses(dof_handler, materials, gamma, results.solution);
+                StressRecovery<2> step_stresses(dof_handler, materials, results.solution);
                 write_vtu_file(step_prefix(step) + ".vtu", dof_handler, results.solution, step_stresses);
                 // the time series so far, rewritten after every step
                 OutputFile    pvd_file(prefix + ".pvd");
@@ -766,7 +766,7 @@ namespace dealvem
           AssertThrow(parts.size() == 2,
                       dealii::ExcMessage("Parameter '" + name + "' needs two expressions 'ux, uy'."));
           const InputParsing::ParsedFunction exact(parts, bc.get_constants(), name);
-          results.errors[b] = compute_errors(dof_handler, materials, gamma, results.solution, exact,
+          results.errors[b] = compute_errors(dof_handler, materials, results.solution, exact,
                                              dealii::types::material_id(b));
           for (const double v : {results.errors[b].l2, results.errors[b].h1_seminorm, results.errors[b].energy})
             AssertThrow(std::isfinite(v),
@@ -775,7 +775,7 @@ namespace dealvem
                                            "somewhere in body " + std::to_string(b) + "."));
         }
 
-    StressRecovery<2> stresses(dof_handler, materials, gamma, results.solution);
+    StressRecovery<2> stresses(dof_handler, materials, results.solution);
     results.cell_stress.resize(mesh.n_cells());
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {

@@ -238,12 +238,12 @@ namespace dealvem
           solver.solve(matrix, solution, rhs);
           constraints.distribute(solution);
         }
-        StressRecovery<2> stresses(dof_handler, materials, gamma, solution);
+        StressRecovery<2> stresses(dof_handler, materials, solution);
         ErrorNorms        errors;
         if (exact)
           {
             dealii::TimerOutput::Scope t(timer, "errors");
-            errors = compute_errors(dof_handler, materials, gamma, solution, *exact);
+            errors = compute_errors(dof_handler, materials, solution, *exact);
           }
         const std::string vtu = output_prefix(output_folder, base_name, cycle, n_cycles) + ".vtu";
         if (write_vtu)

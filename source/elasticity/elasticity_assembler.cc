@@ -3,7 +3,8 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <dealvem/elasticity/elasticity_assembler.h>
-#include <dealvem/vem/virtual_element.h>
+#include <dealvem/elasticity/elasticity_operator.h>
+#include <dealvem/vem/vem_values.h>
 
 #include <cmath>
 #include <string>
@@ -95,29 +96,24 @@ namespace dealvem
 
   template <int dim>
   void
-  ElasticityAssembler<dim>::local_load(const unsigned int      c,
-                                       const void             *element_ptr,
-                                       dealii::Vector<double> &F) const
+  ElasticityAssembler<dim>::local_load(const VEMValues<dim> &vem_values, dealii::Vector<double> &F) const
   {
-    const auto &element = *static_cast<const VirtualElement<dim> *>(element_ptr);
-    const auto &mesh    = dof_handler.get_mesh();
-    const auto &cell    = mesh.cell(c);
-    F.reinit(element.n_dofs_per_cell(cell.vertices.size()));
+    F.reinit(vem_values.dofs_per_cell());
     if (body_force != nullptr)
-      element.body_force_vector(*body_force, F);
+      vem_values.body_force_vector(*body_force, F);
     if (tractions.empty() && pressures.empty())
       return;
-    for (unsigned int i = 0; i < cell.edges.size(); ++i)
+    for (unsigned int e = 0; e < vem_values.n_edges(); ++e)
       {
-        const auto &edge = mesh.edge(cell.edges[i]);
-        if (!edge.at_boundary())
+        const dealii::types::boundary_id id = vem_values.edge_boundary_id(e);
+        if (id == dealii::numbers::internal_face_boundary_id)
           continue;
         for (const auto &t : tractions)
-          if (t.first == edge.boundary_id)
-            element.add_edge_traction(i, *t.second, F);
+          if (t.first == id)
+            vem_values.add_edge_traction(e, *t.second, F);
         for (const auto &p : pressures)
-          if (p.first == edge.boundary_id)
-            element.add_edge_pressure(i, *p.second, F);
+          if (p.first == id)
+            vem_values.add_edge_pressure(e, *p.second, F);
       }
   }
 
@@ -129,28 +125,25 @@ namespace dealvem
                                      dealii::SparseMatrix<double>            &matrix,
                                      dealii::Vector<double>                  &rhs) const
   {
-    const auto &mesh = dof_handler.get_mesh();
-    matrix           = 0;
+    matrix = 0;
     rhs.reinit(dof_handler.n_dofs());
-    VirtualElement<dim>                          element(dof_handler.get_degree());
-    element.set_cell_similarity(cell_similarity);
-    std::vector<dealii::types::global_dof_index> indices;
-    std::vector<dealii::Point<dim>>              vertices;
-    dealii::Vector<double>                       F;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+    VEMValues<dim> vem_values(dof_handler);
+    vem_values.set_cell_similarity(cell_similarity);
+    ElasticityOperator<dim> elasticity;
+    dealii::Vector<double>  F;
+    for (unsigned int c = 0; c < dof_handler.get_mesh().n_cells(); ++c)
       {
-        mesh.cell_vertices(c, vertices);
-        element.reinit(vertices, get_material(c), gamma);
-        local_load(c, &element, F);
-        dof_handler.get_dof_indices(c, indices);
-        constraints.distribute_local_to_global(
-          element.get_stiffness_matrix(), F, indices, matrix, rhs);
+        vem_values.reinit(c);
+        elasticity.reinit(vem_values.get_element(), get_material(c), gamma);
+        local_load(vem_values, F);
+        constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), F,
+                                               vem_values.get_dof_indices(), matrix, rhs);
       }
     // nodal loads: a "cell" of their DoFs without matrix, so that loads on
     // constrained DoFs go to the DoFs they depend on
     if (!nodal_loads.empty())
       {
-        indices.clear();
+        std::vector<dealii::types::global_dof_index> indices;
         F.reinit(nodal_loads.size());
         for (unsigned int i = 0; i < nodal_loads.size(); ++i)
           {
@@ -167,25 +160,23 @@ namespace dealvem
   void
   ElasticityAssembler<dim>::assemble_load_vector(dealii::Vector<double> &rhs) const
   {
-    const auto &mesh = dof_handler.get_mesh();
     rhs.reinit(dof_handler.n_dofs());
-    VirtualElement<dim>                          element(dof_handler.get_degree());
-    element.set_cell_similarity(cell_similarity);
-    std::vector<dealii::types::global_dof_index> indices;
-    std::vector<dealii::Point<dim>>              vertices;
-    dealii::Vector<double>                       F;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+    VEMValues<dim> vem_values(dof_handler);
+    vem_values.set_cell_similarity(cell_similarity);
+    dealii::Vector<double> F;
+    for (unsigned int c = 0; c < dof_handler.get_mesh().n_cells(); ++c)
       {
-        mesh.cell_vertices(c, vertices);
-        element.reinit(vertices, get_material(c), gamma);
-        local_load(c, &element, F);
-        dof_handler.get_dof_indices(c, indices);
+        vem_values.reinit(c);
+        local_load(vem_values, F);
+        const auto &indices = vem_values.get_dof_indices();
         for (unsigned int i = 0; i < indices.size(); ++i)
           rhs[indices[i]] += F[i];
       }
     for (const auto &l : nodal_loads)
       rhs[l.first] += l.second;
   }
+
+
 
   template class ElasticityAssembler<2>;
 } // namespace dealvem

@@ -13,7 +13,6 @@ namespace dealvem
   ErrorNorms
   compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
                  const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-                 const double                                                 gamma,
                  const dealii::Vector<double>                                &solution,
                  const dealii::Function<dim>                                 &exact,
                  const dealii::types::material_id                             body)
@@ -30,7 +29,7 @@ namespace dealvem
         if (body != dealii::numbers::invalid_material_id && mesh.cell(c).material_id != body)
           continue;
         const auto &material = materials.at(mesh.cell(c).material_id);
-        element.reinit(mesh.cell_vertices(c), material, gamma);
+        element.reinit(mesh.cell_vertices(c));
         dof_handler.get_dof_values(c, solution, local);
         element.project(local, coef);
         const dealii::Quadrature<dim> q = element.get_geometry().quadrature(2 * k + 6);
@@ -71,6 +70,6 @@ namespace dealvem
 
   template ErrorNorms
   compute_errors(const VEMDoFHandler<2> &, const std::map<dealii::types::material_id, ElasticMaterial> &,
-                 const double, const dealii::Vector<double> &, const dealii::Function<2> &,
+                 const dealii::Vector<double> &, const dealii::Function<2> &,
                  const dealii::types::material_id);
 } // namespace dealvem

@@ -11,7 +11,6 @@
 #include <deal.II/grid/reference_cell.h>
 #include <deal.II/grid/tria.h>
 
-#include <dealvem/elasticity/material.h>
 #include <dealvem/postprocessing/fe_transfer.h>
 #include <dealvem/vem/virtual_element.h>
 
@@ -83,9 +82,7 @@ namespace dealvem
                                      "FESystem<2>(FE_DGQ<2>(k), 2), or interpolate_to_continuous()."));
 
       const auto &mesh = map.get_mesh();
-      // The projector does not depend on the material; any material serves.
       VirtualElement<dim>                          element(vem_dof_handler.get_degree());
-      const ElasticMaterial                        material;
       const dealii::Quadrature<dim>                support(fe.get_unit_support_points());
       dealii::FEValues<dim>                        fe_values(mapping, fe, support, dealii::update_quadrature_points);
       std::vector<dealii::types::global_dof_index> indices(fe.n_dofs_per_cell());
@@ -97,7 +94,7 @@ namespace dealvem
         {
           const unsigned int p = map.polygon_of(cell);
           mesh.cell_vertices(p, vertices);
-          element.reinit(vertices, material);
+          element.reinit(vertices);
           vem_dof_handler.get_dof_values(p, vem_solution, local);
           element.project(local, coefficients);
           fe_values.reinit(cell);

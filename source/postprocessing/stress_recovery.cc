@@ -11,7 +11,6 @@ namespace dealvem
   StressRecovery<dim>::StressRecovery(
     const VEMDoFHandler<dim>                                    &dof_handler,
     const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-    const double                                                 gamma,
     const dealii::Vector<double>                                &solution)
   {
     const auto        &mesh = dof_handler.get_mesh();
@@ -33,7 +32,7 @@ namespace dealvem
                                        std::to_string(mesh.cell(c).material_id) + " of cell " +
                                        std::to_string(c) + "."));
         const ElasticMaterial &material = it->second;
-        element.reinit(mesh.cell_vertices(c), material, gamma);
+        element.reinit(mesh.cell_vertices(c));
         dof_handler.get_dof_values(c, solution, local);
         element.project(local, coef);
         // the strain of Pi u is linear for k = 2: its mean is the value at

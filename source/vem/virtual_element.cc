@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include <atomic>
 #include <cmath>
 
 namespace dealvem
@@ -89,17 +90,15 @@ namespace dealvem
   struct VirtualElement<dim>::Workspace
   {
     Eigen::MatrixXd                   Gs; // equilibrated G
-    Eigen::MatrixXd                   Gt; // symmetric strain block of G
     Eigen::VectorXd                   row_scale, col_scale;
     Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-    std::vector<double>               rhs, t, q; // R B, Gt Pi_*, I - D Pi_*
+    std::vector<double>               rhs, q; // R B, I - D Pi_*
     std::vector<dealii::Point<dim>>   q_points;
     std::vector<double>               q_weights;
     dealii::Vector<double>            f_value, moments;
     // the polygon of the last full computation: vertices relative to the
-    // first one, material parameters and gamma
+    // first one
     std::vector<dealii::Tensor<1, dim>> shape;
-    double                              lambda = 0, mu = 0, gamma = 0;
     bool                                valid = false;
   };
 
@@ -178,6 +177,43 @@ namespace dealvem
 
 
   template <int dim>
+  std::string
+  VirtualElement<dim>::get_name() const
+  {
+    return "VEM<" + std::to_string(dim) + ">(" + std::to_string(degree) + ")";
+  }
+
+
+
+  template <int dim>
+  dealii::Tensor<1, dim>
+  VirtualElement<dim>::projected_shape_value(const unsigned int        i,
+                                             const dealii::Point<dim> &p) const
+  {
+    AssertIndexRange(i, n_dofs);
+    dealii::Tensor<1, dim> v;
+    for (unsigned int a = 0; a < n_polynomials(); ++a)
+      v += Pi_star(a, i) * polynomial_value(a, p);
+    return v;
+  }
+
+
+
+  template <int dim>
+  dealii::Tensor<2, dim>
+  VirtualElement<dim>::projected_shape_grad(const unsigned int        i,
+                                            const dealii::Point<dim> &p) const
+  {
+    AssertIndexRange(i, n_dofs);
+    dealii::Tensor<2, dim> g;
+    for (unsigned int a = 0; a < n_polynomials(); ++a)
+      g += Pi_star(a, i) * polynomial_gradient(a, p);
+    return g;
+  }
+
+
+
+  template <int dim>
   std::vector<unsigned int>
   VirtualElement<dim>::edge_nodes(const unsigned int edge) const
   {
@@ -204,13 +240,8 @@ namespace dealvem
 
   template <int dim>
   void
-  VirtualElement<dim>::reinit(const std::vector<dealii::Point<dim>> &vertices,
-                              const ElasticMaterial                 &material,
-                              const double                           gamma)
+  VirtualElement<dim>::reinit(const std::vector<dealii::Point<dim>> &vertices)
   {
-    AssertThrow(gamma > 0 && std::isfinite(gamma),
-                dealii::ExcMessage("The stabilization factor gamma must be positive, got " +
-                                   std::to_string(gamma) + "."));
     // Everything below writes into storage kept from the previous cell:
     // this function runs once per cell in every assembly loop.
     Workspace &ws = *workspace;
@@ -221,11 +252,9 @@ namespace dealvem
     const unsigned int          n_p = n_polynomials();
     const double                h = geo.diameter(), area = geo.area();
     const unsigned int          N = n_vertices;
-    const double                lambda = material.lambda(), mu = material.mu();
 
     // Cell similarity: a translate of the last polygon keeps all matrices.
-    reused = use_similarity && ws.valid && ws.shape.size() == N && ws.lambda == lambda &&
-             ws.mu == mu && ws.gamma == gamma;
+    reused = use_similarity && ws.valid && ws.shape.size() == N;
     if (reused)
       {
         const double tol2 = 1e-28 * h * h;
@@ -238,15 +267,14 @@ namespace dealvem
     ws.shape.resize(N);
     for (unsigned int i = 0; i < N; ++i)
       ws.shape[i] = vertices[i] - vertices[0];
-    ws.lambda = lambda;
-    ws.mu     = mu;
-    ws.gamma  = gamma;
 
     // Integrals of the scaled monomials, for the cell moments.
     std::array<double, 6> mono_int;
     mono_int.fill(0.);
     if (degree == 2)
       geo.integrate_scaled_monomials(mono_int);
+    else
+      mono_int[0] = area;
 
     // ---- D: D(i, alpha) = dof_i(p_alpha)
     D.reinit(n_dofs, n_p);
@@ -310,8 +338,9 @@ namespace dealvem
             // row 2: mean rotation h/(2|E|) int_dE v.t
             for (unsigned int c = 0; c < 2; ++c)
               B(2, 2 * node + c) += h / (2. * area) * w * t[c];
-            // rows >= 3: a(p_alpha, phi_i) = int_dE sigma(p_alpha) n . phi_i
-            // (+ the cell term below), by Gauss-Lobatto on the edge nodes
+            // rows >= 3: int_E eps(p_alpha) : eps(phi_i)
+            // = int_dE eps(p_alpha) n . phi_i (+ the cell term below), by
+            // Gauss-Lobatto on the edge nodes
             const dealii::Point<dim> s = geo.scaled(node_location(node));
             double                   grad_m[6][2];
             for (unsigned int m = 0; m < 6; ++m)
@@ -330,19 +359,16 @@ namespace dealvem
                         grad[c][0] += coef[alpha][c][m] * grad_m[m][0];
                         grad[c][1] += coef[alpha][c][m] * grad_m[m][1];
                       }
-                const double tr  = grad[0][0] + grad[1][1];
-                const double sxx = lambda * tr + 2. * mu * grad[0][0];
-                const double syy = lambda * tr + 2. * mu * grad[1][1];
-                const double sxy = mu * (grad[0][1] + grad[1][0]);
-                B(alpha, 2 * node) += w * (sxx * n[0] + sxy * n[1]);
-                B(alpha, 2 * node + 1) += w * (sxy * n[0] + syy * n[1]);
+                const double exy = 0.5 * (grad[0][1] + grad[1][0]);
+                B(alpha, 2 * node) += w * (grad[0][0] * n[0] + exy * n[1]);
+                B(alpha, 2 * node + 1) += w * (exy * n[0] + grad[1][1] * n[1]);
               }
           }
       }
     if (degree == 2)
       for (unsigned int alpha = 3; alpha < n_p; ++alpha)
         {
-          // div sigma(p) = (lambda + mu) grad(div p) + mu Laplace(p), constant
+          // div eps(p) = (grad(div p) + Laplace(p)) / 2, constant
           dealii::Tensor<1, dim> grad_div, laplace;
           for (unsigned int c = 0; c < 2; ++c)
             for (unsigned int m = 3; m < 6; ++m)
@@ -355,9 +381,9 @@ namespace dealvem
                   for (unsigned int j = 0; j < 2; ++j)
                     grad_div[j] += H[c][j];
                 }
-          const dealii::Tensor<1, dim> div_sigma = (lambda + mu) * grad_div + mu * laplace;
+          const dealii::Tensor<1, dim> div_eps = 0.5 * (grad_div + laplace);
           for (unsigned int c = 0; c < 2; ++c)
-            B(alpha, 2 * (2 * N) + c) -= area * div_sigma[c];
+            B(alpha, 2 * (2 * N) + c) -= area * div_eps[c];
         }
 
     // ---- G = B D
@@ -391,39 +417,57 @@ namespace dealvem
     Pm        = ws.lu.solve(RB);
     Pm.array().colwise() *= ws.col_scale.array();
 
-    // ---- consistency K_c = Pi_*^T Gtilde Pi_*, Gtilde = a(p_alpha, p_beta):
-    // the (symmetrized) strain block of G, zero on the rigid modes. (A
-    // product into the lower triangle only would halve the flops, but Eigen's
-    // triangular product loses two to three digits here on elongated cells.)
-    const unsigned int n_s = n_p - 3;
-    ws.Gt = 0.5 * (Gm.bottomRightCorner(n_s, n_s) + Gm.bottomRightCorner(n_s, n_s).transpose());
-    RowMap T       = view(ws.t, n_s, n_dofs);
-    T.noalias()    = ws.Gt * Pm.bottomRows(n_s);
-    K_c.reinit(n_dofs, n_dofs);
-    RowMap Kcm = view(K_c);
-    Kcm.noalias() = Pm.bottomRows(n_s).transpose() * T;
+    // ---- Gram matrices of the strain modes. E: the (symmetrized) strain
+    // block of G, which is int eps(p_alpha) : eps(p_beta) because the
+    // boundary rule of B is exact on polynomials. T: int div p_alpha div
+    // p_beta from the exact monomial integrals (div p has degree k - 1, so
+    // the products have degree <= 2).
+    E_gram.reinit(n_p, n_p);
+    T_gram.reinit(n_p, n_p);
+    for (unsigned int a = 3; a < n_p; ++a)
+      for (unsigned int b = 3; b < n_p; ++b)
+        E_gram(a, b) = 0.5 * (G(a, b) + G(b, a));
+    {
+      // div p_alpha = sum_m d[alpha][m] * (1, xi, eta)_m, in physical units
+      double d[12][3];
+      for (unsigned int a = 0; a < n_p; ++a)
+        {
+          d[a][0] = d[a][1] = d[a][2] = 0;
+          // d/dxi of component 0 plus d/deta of component 1, divided by h
+          const auto &cx = coef[a][0], &cy = coef[a][1];
+          d[a][0] = (cx[1] + cy[2]) / h;
+          d[a][1] = (2. * cx[3] + cy[4]) / h;
+          d[a][2] = (cx[4] + 2. * cy[5]) / h;
+        }
+      // products of (1, xi, eta) with each other as monomial indices
+      constexpr unsigned int product[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+      for (unsigned int a = 3; a < n_p; ++a)
+        for (unsigned int b = 3; b < n_p; ++b)
+          {
+            double v = 0;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                if (d[a][i] != 0. && d[b][j] != 0.)
+                  v += d[a][i] * d[b][j] * mono_int[product[i][j]];
+            T_gram(a, b) = v;
+          }
+    }
 
-    // ---- stabilization K_s = gamma tau (I - D Pi_*)^T (I - D Pi_*), tau the
-    // mean diagonal entry of K_c; again only the lower triangle.
-    stab_scaling = gamma * Kcm.diagonal().sum() / n_dofs;
+    // ---- stabilization form S = (I - D Pi_*)^T (I - D Pi_*), by a rank
+    // update of the lower triangle, then mirrored
     RowMap Q     = view(ws.q, n_dofs, n_dofs);
     Q.noalias()  = -Dm * Pm;
     Q.diagonal().array() += 1.;
-    K_s.reinit(n_dofs, n_dofs);
-    RowMap Ksm = view(K_s);
-    Ksm.selfadjointView<Eigen::Lower>().rankUpdate(Q.transpose(), stab_scaling);
-
-    // ---- symmetrize K_c, mirror the lower triangle of K_s, K = K_c + K_s
-    K.reinit(n_dofs, n_dofs);
+    S.reinit(n_dofs, n_dofs);
+    RowMap Sm = view(S);
+    Sm.selfadjointView<Eigen::Lower>().rankUpdate(Q.transpose(), 1.);
     for (unsigned int i = 0; i < n_dofs; ++i)
-      for (unsigned int j = 0; j <= i; ++j)
-        {
-          const double kc = 0.5 * (K_c(i, j) + K_c(j, i)), ks = K_s(i, j);
-          K_c(i, j)       = kc;
-          K_c(j, i) = kc;
-          K_s(j, i) = ks;
-          K(i, j) = K(j, i) = kc + ks;
-        }
+      for (unsigned int j = 0; j < i; ++j)
+        S(j, i) = S(i, j);
+    // unique over all objects, so that a cache keyed on it cannot confuse
+    // two spaces
+    static std::atomic<std::uint64_t> counter{0};
+    revision = ++counter;
     ws.valid = true;
   }
 

@@ -33,7 +33,8 @@
 #include <dealvem/mesh/generators.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
-#include <dealvem/vem/virtual_element.h>
+#include <dealvem/elasticity/elasticity_operator.h>
+#include <dealvem/vem/vem_values.h>
 
 #include <cmath>
 #include <map>
@@ -121,21 +122,16 @@ run(const unsigned int degree, const double tau, const double spring, const bool
   for (const unsigned int id : {1u, 11u})
     assembler.add_traction(id, right);
   assembler.add_traction(2, bottom);
-  dealii::Vector<double> loads;
-  assembler.assemble_load_vector(loads);
-  VirtualElement<2>                            element(degree);
-  std::vector<dealii::types::global_dof_index> indices;
+  VEMValues<2>          vem_values(dof_handler);
+  ElasticityOperator<2> elasticity;
   for (unsigned int c = 0; c < mesh.n_cells(); ++c)
     {
-      element.reinit(mesh.cell_vertices(c), assembler.get_material(c));
-      dof_handler.get_dof_indices(c, indices);
-      dealii::Vector<double> F(indices.size());
-      for (unsigned int i = 0; i < indices.size(); ++i)
-        {
-          F[i]              = loads[indices[i]];
-          loads[indices[i]] = 0;
-        }
-      constraints.distribute_local_to_global(element.get_stiffness_matrix(), F, indices, system_matrix, system_rhs);
+      vem_values.reinit(c);
+      elasticity.reinit(vem_values.get_element(), assembler.get_material(c));
+      dealii::Vector<double> F;
+      assembler.local_load(vem_values, F);
+      constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), F, vem_values.get_dof_indices(),
+                                             system_matrix, system_rhs);
     }
   if (spring > 0)
     {

@@ -68,7 +68,7 @@ solve_and_compare(const VEMDoFHandler<2>                  &dof_handler,
   solver.initialize(A);
   solver.vmult(x, b);
   constraints.distribute(x);
-  const StressRecovery<2> s(dof_handler, materials, 1.0, x);
+  const StressRecovery<2> s(dof_handler, materials, x);
   double                  err = 0;
   const auto             &mesh = dof_handler.get_mesh();
   for (unsigned int c = 0; c < mesh.n_cells(); ++c)

@@ -83,7 +83,7 @@ main()
           dealii::Vector<double>                       exact;
           for (unsigned int c = 0; c < mesh.n_cells(); ++c)
             {
-              element.reinit(mesh.cell_vertices(c), material);
+              element.reinit(mesh.cell_vertices(c));
               element.interpolate(u, exact);
               dof_handler.get_dof_indices(c, indices);
               for (unsigned int i = 0; i < indices.size(); ++i)

@@ -58,13 +58,13 @@ main()
       std::vector<dealii::types::global_dof_index> indices;
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         {
-          element.reinit(mesh.cell_vertices(c), material);
+          element.reinit(mesh.cell_vertices(c));
           element.interpolate(u, local);
           dof_handler.get_dof_indices(c, indices);
           for (unsigned int i = 0; i < indices.size(); ++i)
             x[indices[i]] = local[i];
         }
-      const StressRecovery<2> s(dof_handler, materials, 1.0, x);
+      const StressRecovery<2> s(dof_handler, materials, x);
       double                  err = 0;
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         err = std::max(err, (s.cell_stress(c) - sigma).norm() / sigma.norm());

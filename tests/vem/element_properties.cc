@@ -9,11 +9,15 @@
 //   exactly three zero eigenvalues (|lambda| <= 1e-10 lambda_max), and the
 //   kernel contains the rigid-body modes;
 // - the consistency part reproduces the energy of polynomials:
-//   D^T K D = Gtilde (K_E exact on [P_k]^2).
+//   D^T K D = a(p_alpha, p_beta), the elasticity form integrated by
+//   quadrature from the polynomials' gradients (K_E exact on [P_k]^2);
+// - cell similarity: the space reuses its matrices for translated polygons,
+//   the elasticity operator also when the material and gamma are the same.
 #include <deal.II/base/point.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <dealvem/mesh/generators.h>
+#include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/vem/virtual_element.h>
 
 #include <cmath>
@@ -65,10 +69,12 @@ check_polygon(const std::string &name, const std::vector<P> &vertices)
       {
         const ElasticMaterial material(210e3, 0.3, model);
         VirtualElement<2>     element(k);
-        element.reinit(vertices, material, 1.0);
+        element.reinit(vertices);
+        ElasticityOperator<2> elasticity;
+        elasticity.reinit(element, material, 1.0);
         const auto        &D  = element.get_D();
         const auto        &Ps = element.get_projector();
-        const auto        &K  = element.get_stiffness_matrix();
+        const auto        &K  = elasticity.get_stiffness_matrix();
         const unsigned int n  = K.m(), np = element.n_polynomials();
 
         // Pi_* D = I
@@ -104,8 +110,20 @@ check_polygon(const std::string &name, const std::vector<P> &vertices)
             lmin = std::min(lmin, eig[i]);
           }
 
-        // D^T K D equals a(p_alpha, p_beta) (zero on the rigid modes)
-        const auto                &G = element.get_G();
+        // D^T K D equals a(p_alpha, p_beta) (zero on the rigid modes),
+        // integrated here from the gradients of the polynomials
+        dealii::FullMatrix<double> a_pp(np, np);
+        {
+          const dealii::Quadrature<2> q = element.get_geometry().quadrature(2 * k);
+          for (unsigned int i = 0; i < q.size(); ++i)
+            for (unsigned int a = 0; a < np; ++a)
+              for (unsigned int b = 0; b < np; ++b)
+                {
+                  const auto ea = dealii::symmetrize(element.polynomial_gradient(a, q.point(i)));
+                  const auto eb = dealii::symmetrize(element.polynomial_gradient(b, q.point(i)));
+                  a_pp(a, b) += q.weight(i) * (material.stress(ea) * eb);
+                }
+        }
         dealii::FullMatrix<double> KD(n, np), DKD(np, np);
         K.mmult(KD, D);
         D.Tmmult(DKD, KD);
@@ -113,7 +131,7 @@ check_polygon(const std::string &name, const std::vector<P> &vertices)
         for (unsigned int a = 0; a < np; ++a)
           for (unsigned int b = 0; b < np; ++b)
             {
-              const double g = (a >= 3 && b >= 3) ? 0.5 * (G(a, b) + G(b, a)) : 0.;
+              const double g = a_pp(a, b);
               gmax           = std::max(gmax, std::abs(g));
               err_energy     = std::max(err_energy, std::abs(DKD(a, b) - g));
             }
@@ -154,22 +172,27 @@ check_cell_similarity()
     {
       const std::string tag = "cell similarity k=" + std::to_string(k) + ": ";
       VirtualElement<2> element(k), fresh(k);
+      ElasticityOperator<2> op, fresh_op;
       fresh.set_cell_similarity(false);
-      element.reinit(hexagon, material);
-      testing::check(!element.last_reinit_reused(), tag + "first polygon computed");
+      element.reinit(hexagon);
+      op.reinit(element, material);
+      testing::check(!element.last_reinit_reused() && !op.last_reinit_reused(), tag + "first polygon computed");
       const std::vector<P> moved = scaled(hexagon, 1.0, P(12.5, -3.25));
-      element.reinit(moved, material);
-      fresh.reinit(moved, material);
-      testing::check(element.last_reinit_reused(), tag + "translated polygon reuses the matrices");
+      element.reinit(moved);
+      op.reinit(element, material);
+      fresh.reinit(moved);
+      fresh_op.reinit(fresh, material);
+      testing::check(element.last_reinit_reused(), tag + "translated polygon reuses the space's matrices");
+      testing::check(op.last_reinit_reused(), tag + "... and the operator its matrices");
       testing::check(!fresh.last_reinit_reused(), tag + "disabled reuse computes");
-      testing::check_small(max_difference(element.get_stiffness_matrix(), fresh.get_stiffness_matrix()), 1e-13,
+      testing::check_small(max_difference(op.get_stiffness_matrix(), fresh_op.get_stiffness_matrix()), 1e-13,
                            tag + "reused K equals a fresh K");
       testing::check_small(max_difference(element.get_projector(), fresh.get_projector()), 1e-13,
                            tag + "reused Pi_* equals a fresh Pi_*");
       testing::check_small(element.get_geometry().centroid().distance(fresh.get_geometry().centroid()), 1e-14,
                            tag + "geometry moved with the polygon");
-      // anything else is recomputed: scaled, one vertex moved, other material,
-      // other gamma, other number of vertices
+      // anything else is recomputed: scaled, one vertex moved, other number
+      // of vertices
       const std::vector<std::pair<std::string, std::vector<P>>> changed = {
         {"scaled polygon", scaled(moved, 1.0 + 1e-9, P())},
         {"one vertex moved", [&] {
@@ -180,18 +203,38 @@ check_cell_similarity()
         {"other vertex count", regular_polygon(7, 0.7)}};
       for (const auto &c : changed)
         {
-          element.reinit(moved, material);
-          element.reinit(c.second, material);
-          fresh.reinit(c.second, material);
-          testing::check(!element.last_reinit_reused(), tag + c.first + " is recomputed");
-          testing::check_small(max_difference(element.get_stiffness_matrix(), fresh.get_stiffness_matrix()), 1e-14,
+          element.reinit(moved);
+          op.reinit(element, material);
+          element.reinit(c.second);
+          op.reinit(element, material);
+          fresh.reinit(c.second);
+          fresh_op.reinit(fresh, material);
+          testing::check(!element.last_reinit_reused() && !op.last_reinit_reused(),
+                         tag + c.first + " is recomputed");
+          testing::check_small(max_difference(op.get_stiffness_matrix(), fresh_op.get_stiffness_matrix()), 1e-14,
                                tag + c.first + ": K equals a fresh K");
         }
-      element.reinit(moved, material);
-      element.reinit(moved, other);
-      testing::check(!element.last_reinit_reused(), tag + "other material is recomputed");
-      element.reinit(moved, other, 2.0);
-      testing::check(!element.last_reinit_reused(), tag + "other gamma is recomputed");
+      // the space does not depend on the material: only the operator
+      // recomputes for another material or gamma
+      element.reinit(moved);
+      op.reinit(element, material);
+      const auto Pi = element.get_projector();
+      element.reinit(moved);
+      testing::check(element.last_reinit_reused(), tag + "same polygon again reuses the space");
+      op.reinit(element, other);
+      testing::check(!op.last_reinit_reused(), tag + "other material recomputes the operator");
+      op.reinit(element, other, 2.0);
+      testing::check(!op.last_reinit_reused(), tag + "other gamma recomputes the operator");
+      testing::check_small(std::abs(op.get_stabilization_scaling() /
+                                      ElasticityOperator<2>::stabilization_scaling(op.get_consistency_matrix(), 1.0) -
+                                    2.0),
+                           1e-14, tag + "gamma scales the stabilization");
+      // a second space at another polygon must not be mistaken for the first
+      VirtualElement<2> second(k);
+      second.reinit(regular_polygon(5, 0.3));
+      op.reinit(second, other, 2.0);
+      testing::check(!op.last_reinit_reused(), tag + "another space is not mistaken for the first");
+      testing::check_small(max_difference(element.get_projector(), Pi), 0., tag + "space unchanged");
     }
 }
 

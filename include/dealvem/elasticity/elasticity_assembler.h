@@ -19,6 +19,9 @@
 
 namespace dealvem
 {
+  template <int dim>
+  class VEMValues;
+
   /**
    * Assembles the global stiffness matrix and load vector of 2D linear
    * elasticity with the virtual element of VEMDoFHandler::get_degree().
@@ -89,6 +92,7 @@ namespace dealvem
 
     /// Reuse the element matrices of translated cells (default: on); see
     /// VirtualElement::reinit().
+    /// The matrices are those of ElasticityOperator.
     void
     set_cell_similarity(const bool enable)
     {
@@ -108,9 +112,16 @@ namespace dealvem
     void
     assemble_load_vector(dealii::Vector<double> &rhs) const;
 
-  private:
+    /**
+     * The local load vector of the cell @p vem_values was reinit()ed on:
+     * body force and the tractions and pressures on its boundary edges.
+     * Used by assemble() and by loops that assemble their own matrices
+     * (ContactProblem) so that loads are computed in one place.
+     */
     void
-    local_load(const unsigned int c, const void *element, dealii::Vector<double> &F) const;
+    local_load(const VEMValues<dim> &vem_values, dealii::Vector<double> &F) const;
+
+  private:
 
     const VEMDoFHandler<dim>                               &dof_handler;
     std::map<dealii::types::material_id, ElasticMaterial>   materials;

@@ -42,7 +42,6 @@ namespace dealvem
   ErrorNorms
   compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
                  const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-                 const double                                                 gamma,
                  const dealii::Vector<double>                                &solution,
                  const dealii::Function<dim>                                 &exact,
                  const dealii::types::material_id body = dealii::numbers::invalid_material_id);

@@ -32,7 +32,6 @@ namespace dealvem
   public:
     StressRecovery(const VEMDoFHandler<dim>                                    &dof_handler,
                    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-                   const double                                                 gamma,
                    const dealii::Vector<double>                                &solution);
 
     const dealii::SymmetricTensor<2, dim> &

@@ -12,17 +12,23 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <dealvem/elasticity/material.h>
 #include <dealvem/vem/polygon_geometry.h>
 
+#include <array>
+#include <cstdint>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace dealvem
 {
   /**
-   * The conforming virtual element of order $k\in\{1,2\}$ for 2D linear
-   * elasticity on one polygon $E$ with $N$ vertices.
+   * The conforming virtual element space of order $k\in\{1,2\}$ for
+   * vector fields (2 components) on one polygon $E$ with $N$ vertices. It
+   * plays the part of deal.II's FiniteElement and knows nothing of the
+   * equation solved with it: the bilinear forms live in the operators above
+   * it (ElasticityOperator for linear elasticity).
    *
    * <h3>Degrees of freedom</h3>
    * Per displacement component $c\in\{x,y\}$: the values at the $N$
@@ -31,7 +37,8 @@ namespace dealvem
    * the components: local DoF $2j+c$ is component $c$ of node $j$, where
    * nodes $0..N-1$ are the vertices, $N..2N-1$ the edge midpoints (node
    * $N+i$ on edge $i=[v_i,v_{i+1}]$) and $2N$ the cell moment. Hence
-   * $n_{dofs} = 2N$ for $k=1$ and $2(2N+1)$ for $k=2$.
+   * $n_{dofs} = 2N$ for $k=1$ and $2(2N+1)$ for $k=2$
+   * (system_to_component_index() gives the pair (component, node)).
    *
    * <h3>Polynomial basis</h3>
    * With the scaled coordinates $\xi=(x-\bar x)/h$, $\eta=(y-\bar y)/h$ the
@@ -41,41 +48,61 @@ namespace dealvem
    * $p_5=(\eta,\xi)$, and for $k=2$ $p_{6,7,8} = (\xi^2,0),(\xi\eta,0),(\eta^2,0)$,
    * $p_{9,10,11} = (0,\xi^2),(0,\xi\eta),(0,\eta^2)$.
    *
-   * <h3>Matrices</h3>
+   * <h3>The projector</h3>
+   * $\Pi^\nabla$ maps the space onto $[P_k]^2$ by
+   * $\int_E\varepsilon(\Pi^\nabla v):\varepsilon(p) = \int_E\varepsilon(v):\varepsilon(p)$
+   * for all $p\in[P_k]^2$, plus three conditions on the rigid-body modes.
+   * It is the elliptic projector of every isotropic elasticity form
+   * $a(u,v)=\int\lambda\,\mathrm{div}\,u\,\mathrm{div}\,v+2\mu\,\varepsilon(u):\varepsilon(v)$:
+   * $\varepsilon([P_k]^2)$ is the space of all symmetric tensor fields of
+   * degree $k-1$, which the isotropic law maps into itself, so the
+   * orthogonality in $a$ and in the strain product are the same condition.
+   * This is why the space needs no material.
    * - $D\in\mathbb{R}^{n_{dofs}\times n_p}$, $D_{i\alpha} = \mathrm{dof}_i(p_\alpha)$.
    * - $B\in\mathbb{R}^{n_p\times n_{dofs}}$: for the strain modes $\alpha\ge 3$,
-   *   $B_{\alpha i} = a_E(p_\alpha,\varphi_i) = \int_{\partial E}(\sigma(p_\alpha)n)\cdot\varphi_i
-   *   - \int_E \mathrm{div}\,\sigma(p_\alpha)\cdot\varphi_i$, where the edge
+   *   $B_{\alpha i} = \int_E\varepsilon(p_\alpha):\varepsilon(\varphi_i)
+   *   = \int_{\partial E}(\varepsilon(p_\alpha)n)\cdot\varphi_i
+   *   - \int_E \mathrm{div}\,\varepsilon(p_\alpha)\cdot\varphi_i$, where the edge
    *   integrals use the Gauss-Lobatto rule on the edge's nodes (trapezoidal
    *   for $k=1$, Simpson for $k=2$; exact because the integrand has degree
    *   $2k-1$) and the volume term, present for $k=2$ only, is $|E|$ times the
-   *   constant $\mathrm{div}\,\sigma(p_\alpha)$ times the cell-moment DoF.
-   *   The rigid-mode rows fix the projection on the kernel of $a_E$: rows 0
+   *   constant $\mathrm{div}\,\varepsilon(p_\alpha)$ times the cell-moment DoF.
+   *   The rigid-mode rows fix the projection on the kernel: rows 0
    *   and 1 are the cell moments ($k=2$) or the vertex means ($k=1$) of the
    *   two components; row 2 is the mean rotation
    *   $\frac{h}{2|E|}\int_{\partial E}\varphi_i\cdot t$ (the factor makes $G_{22}=1$).
    * - $G = BD$; the projector in the polynomial basis is
    *   $\Pi_* = G^{-1}B$ and in the DoF basis $\Pi = D\Pi_*$.
-   * - $\tilde G$: $G$ with the rigid-mode rows set to zero, so
-   *   $\tilde G_{\alpha\beta} = a_E(p_\alpha,p_\beta)$ (symmetrized).
-   * - Consistency $K_c = \Pi_*^T\tilde G\Pi_*$; stabilization
-   *   $K_s = \gamma\,\tau\,(I-\Pi)^T(I-\Pi)$ with $\tau = \mathrm{tr}(K_c)/n_{dofs}$;
-   *   stiffness $K_E = K_c + K_s$.
+   * - The Gram matrices of the basis, zero on the rigid modes:
+   *   $E_{\alpha\beta}=\int_E\varepsilon(p_\alpha):\varepsilon(p_\beta)$ (the
+   *   symmetrized strain block of $G$) and
+   *   $T_{\alpha\beta}=\int_E\mathrm{div}\,p_\alpha\,\mathrm{div}\,p_\beta$
+   *   (exact monomial integrals). An operator's consistency matrix is
+   *   $\Pi_*^T(\ldots)\Pi_*$ of a combination of them.
+   * - The stabilization form $S = (I-\Pi)^T(I-\Pi)$ (the "dofi-dofi"
+   *   stabilization with unit scaling); an operator scales it.
    *
    * The rows of $G$ and $B$ are scaled to unit size before $G$ is factored
    * (row scaling does not change $\Pi_*$), so cells of any size and aspect
    * ratio are handled to round-off.
    *
+   * <h3>The L2 projector</h3>
+   * The space is the "enhanced" one: the moments of $v$ against $[P_k]^2$
+   * are by definition those of $\Pi^\nabla v$ (for $k=2$ the constant
+   * moment is a degree of freedom and equals that of $\Pi^\nabla v$ through
+   * rows 0 and 1 of $B$). Hence the L2 projector onto $[P_k]^2$ is
+   * computable and equal to $\Pi^\nabla$: get_l2_projector() returns the
+   * same matrix, and the loads below use it.
+   *
    * <h3>Loads</h3>
-   * The body force term uses the projection (the "enhanced" VEM space, in
-   * which the moments of $v$ up to degree $k$ equal those of $\Pi v$):
-   * $F_i = \int_E f\cdot\Pi_*\varphi_i = \sum_\alpha (\Pi_*)_{\alpha i}\int_E f\cdot p_\alpha$.
+   * $F_i = \int_E f\cdot\Pi^0\varphi_i = \sum_\alpha (\Pi_*)_{\alpha i}\int_E f\cdot p_\alpha$.
    * It is exact for constant $f$ and keeps the $O(h^{k+1})$ L2 rate.
    *
    * See Beirão da Veiga, Brezzi, Marini, Russo, M3AS 24 (2014) ("The
-   * hitchhiker's guide to the virtual element method") and Beirão da Veiga,
-   * Brezzi, Marini, SINUM 51 (2013) for elasticity; the tutorial step-1
-   * defines the same matrices.
+   * hitchhiker's guide to the virtual element method"), Ahmad, Alsaedi,
+   * Brezzi, Marini, Russo, CAMWA 66 (2013) for the enhanced space and
+   * Beirão da Veiga, Brezzi, Marini, SINUM 51 (2013) for elasticity; the
+   * tutorial step-1 builds the same matrices.
    */
   template <int dim>
   class VirtualElement
@@ -92,6 +119,17 @@ namespace dealvem
       return degree;
     }
 
+    /// "VEM<2>(k)", in the style of FiniteElement::get_name().
+    std::string
+    get_name() const;
+
+    /// Number of vector components (2).
+    static constexpr unsigned int
+    n_components()
+    {
+      return 2;
+    }
+
     /// Number of vector polynomials $n_p$ (6 or 12).
     unsigned int
     n_polynomials() const
@@ -106,6 +144,13 @@ namespace dealvem
       return degree == 1 ? 2 * n_vertices : 2 * (2 * n_vertices + 1);
     }
 
+    /// Number of local DoFs of the polygon of the last reinit().
+    unsigned int
+    n_dofs_per_cell() const
+    {
+      return n_dofs;
+    }
+
     /// Number of nodes (vertices, edge midpoints, cell moment) of a polygon.
     unsigned int
     n_nodes(const unsigned int n_vertices) const
@@ -113,22 +158,27 @@ namespace dealvem
       return degree == 1 ? n_vertices : 2 * n_vertices + 1;
     }
 
+    /// (component, node) of local DoF @p i, as
+    /// FiniteElement::system_to_component_index() gives (component, index).
+    static std::pair<unsigned int, unsigned int>
+    system_to_component_index(const unsigned int i)
+    {
+      return {i % 2, i / 2};
+    }
+
     /**
-     * Compute everything for the polygon with the given counter-clockwise
-     * vertices, material and stabilization factor $\gamma$.
+     * Compute the space on the polygon with the given counter-clockwise
+     * vertices.
      *
      * All matrices depend only on the vertices relative to each other. When
      * the polygon is a translate of the one of the previous call (vertex
-     * differences equal to $10^{-14}h$), with the same material and
-     * $\gamma$, only the geometry is moved and the matrices are kept, as
-     * deal.II's FEValues does for translated cells (CellSimilarity). On
-     * structured meshes this makes assembly much cheaper; see
-     * set_cell_similarity() to switch it off.
+     * differences equal to $10^{-14}h$), only the geometry is moved and the
+     * matrices are kept, as deal.II's FEValues does for translated cells
+     * (CellSimilarity). On structured meshes this makes assembly much
+     * cheaper; see set_cell_similarity() to switch it off.
      */
     void
-    reinit(const std::vector<dealii::Point<dim>> &vertices,
-           const ElasticMaterial                 &material,
-           const double                           gamma = 1.0);
+    reinit(const std::vector<dealii::Point<dim>> &vertices);
 
     /// Enable (default) or disable the reuse of the matrices for translated
     /// polygons described at reinit().
@@ -140,6 +190,15 @@ namespace dealvem
     last_reinit_reused() const
     {
       return reused;
+    }
+
+    /// A number that changes whenever reinit() computes the matrices anew
+    /// (not when it reuses them), unique over all VirtualElement objects:
+    /// operators built on this space key their own caches on it.
+    std::uint64_t
+    matrices_revision() const
+    {
+      return revision;
     }
 
     const PolygonGeometry<dim> &
@@ -169,9 +228,18 @@ namespace dealvem
       return G;
     }
 
-    /// $\Pi_* = G^{-1}B$ (n_p x n_dofs): coefficients of the projection.
+    /// $\Pi_* = G^{-1}B$ (n_p x n_dofs): coefficients of $\Pi^\nabla$.
     const dealii::FullMatrix<double> &
     get_projector() const
+    {
+      return Pi_star;
+    }
+
+    /// The coefficients of the L2 projector $\Pi^0$ onto $[P_k]^2$: the
+    /// same matrix as get_projector() in this (enhanced) space; see the
+    /// class documentation.
+    const dealii::FullMatrix<double> &
+    get_l2_projector() const
     {
       return Pi_star;
     }
@@ -180,32 +248,28 @@ namespace dealvem
     dealii::FullMatrix<double>
     get_projector_dof_basis() const;
 
-    /// Consistency part $K_c$.
+    /// Strain Gram matrix $E_{\alpha\beta}=\int_E\varepsilon(p_\alpha):\varepsilon(p_\beta)$
+    /// (n_p x n_p, zero in the rows and columns of the rigid modes).
     const dealii::FullMatrix<double> &
-    get_consistency_matrix() const
+    get_strain_gram() const
     {
-      return K_c;
+      return E_gram;
     }
 
-    /// Stabilization part $K_s$.
+    /// Divergence Gram matrix $T_{\alpha\beta}=\int_E\mathrm{div}\,p_\alpha\,\mathrm{div}\,p_\beta$
+    /// (n_p x n_p, zero in the rows and columns of the rigid modes).
     const dealii::FullMatrix<double> &
-    get_stabilization_matrix() const
+    get_divergence_gram() const
     {
-      return K_s;
+      return T_gram;
     }
 
-    /// Element stiffness $K_E = K_c + K_s$ (symmetric).
+    /// The stabilization form $S = (I-\Pi)^T(I-\Pi)$ (n_dofs x n_dofs,
+    /// symmetric, zero on $[P_k]^2$); operators scale it.
     const dealii::FullMatrix<double> &
-    get_stiffness_matrix() const
+    get_stabilization_form() const
     {
-      return K;
-    }
-
-    /// The stabilization scaling $\gamma\tau$ used.
-    double
-    get_stabilization_scaling() const
-    {
-      return stab_scaling;
+      return S;
     }
 
     /// Value of the basis polynomial $p_\alpha$ at a physical point.
@@ -215,6 +279,15 @@ namespace dealvem
     /// Gradient $\nabla p_\alpha$ (row = component) at a physical point.
     dealii::Tensor<2, dim>
     polynomial_gradient(const unsigned int alpha, const dealii::Point<dim> &p) const;
+
+    /// $\Pi\varphi_i$ at a physical point: the projected shape function,
+    /// what FiniteElement::shape_value() is for a finite element.
+    dealii::Tensor<1, dim>
+    projected_shape_value(const unsigned int i, const dealii::Point<dim> &p) const;
+
+    /// $\nabla\Pi\varphi_i$ at a physical point (row = component).
+    dealii::Tensor<2, dim>
+    projected_shape_grad(const unsigned int i, const dealii::Point<dim> &p) const;
 
     /// Value of the local DoFs of a vector function (2 components):
     /// point values at vertices and midpoints, the cell moment by quadrature.
@@ -242,7 +315,7 @@ namespace dealvem
                       const dealii::Point<dim>     &p) const;
 
     /**
-     * Body-force load vector $F_i = \int_E f\cdot\Pi_*\varphi_i$, with a
+     * Body-force load vector $F_i = \int_E f\cdot\Pi^0\varphi_i$, with a
      * quadrature of degree k + @p extra_degree on the polygon.
      */
     void
@@ -288,10 +361,10 @@ namespace dealvem
     unsigned int                                n_vertices;
     unsigned int                                n_dofs;
     std::unique_ptr<PolygonGeometry<dim>>       geometry;
-    dealii::FullMatrix<double>                  D, B, G, Pi_star, K_c, K_s, K;
-    double                                      stab_scaling = 0;
+    dealii::FullMatrix<double>                  D, B, G, Pi_star, E_gram, T_gram, S;
     bool                                        use_similarity = true;
     bool                                        reused         = false;
+    std::uint64_t                               revision       = 0;
 
     /// Polynomial coefficients: coef[alpha][component][monomial], monomials
     /// 1, xi, eta, xi^2, xi eta, eta^2.

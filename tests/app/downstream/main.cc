@@ -8,6 +8,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
+#include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/mesh/generators.h>
 #include <dealvem/mesh/triangulation_map.h>
 #include <dealvem/postprocessing/fe_transfer.h>
@@ -25,9 +26,11 @@ main()
   dealvem::VEMDoFHandler<2> dof_handler(mesh);
   dof_handler.distribute_dofs(2);
   dealvem::VirtualElement<2> element(2);
-  element.reinit(mesh.cell_vertices(0), dealvem::ElasticMaterial(1000, 0.3));
+  element.reinit(mesh.cell_vertices(0));
+  dealvem::ElasticityOperator<2> elasticity;
+  elasticity.reinit(element, dealvem::ElasticMaterial(1000, 0.3));
   std::cout << "downstream: " << mesh.n_cells() << " cells, " << dof_handler.n_dofs() << " dofs, element matrix "
-            << element.get_stiffness_matrix().m() << "x" << element.get_stiffness_matrix().n() << std::endl;
+            << elasticity.get_stiffness_matrix().m() << "x" << elasticity.get_stiffness_matrix().n() << std::endl;
 
   // u = (x + 2y, 3x - y) at the VEM nodes, transferred to FE_DGQ(1)^2
   dealii::Triangulation<2> tria;

@@ -1,0 +1,209 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <dealvem/vem/vem_values.h>
+
+#include <string>
+
+namespace dealvem
+{
+  namespace
+  {
+    void
+    check_flag(const dealii::UpdateFlags flags, const dealii::UpdateFlags needed, const char *what)
+    {
+      AssertThrow((flags & needed) != 0,
+                  dealii::ExcMessage(std::string("VEMValues: ") + what +
+                                     " was not requested in the UpdateFlags given to the constructor."));
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  VEMValues<dim>::VEMValues(const VEMDoFHandler<dim> &dof_handler,
+                            const dealii::UpdateFlags flags,
+                            const unsigned int        quadrature_degree)
+    : dof_handler(dof_handler)
+    , flags(flags)
+    , quadrature_degree(quadrature_degree == 0 ? 2 * dof_handler.get_degree() : quadrature_degree)
+    , element(dof_handler.get_degree())
+  {
+    // values and gradients are evaluated at the quadrature points
+    if ((flags & (dealii::update_values | dealii::update_gradients)) != 0)
+      this->flags = this->flags | dealii::update_quadrature_points;
+  }
+
+
+
+  template <int dim>
+  void
+  VEMValues<dim>::reinit(const unsigned int c)
+  {
+    const auto &mesh = dof_handler.get_mesh();
+    AssertThrow(c < mesh.n_cells(),
+                dealii::ExcMessage("VEMValues::reinit(): cell " + std::to_string(c) +
+                                   " does not exist; mesh '" + mesh.name + "' has " +
+                                   std::to_string(mesh.n_cells()) + " cells."));
+    cell = c;
+    mesh.cell_vertices(c, vertices);
+    element.reinit(vertices);
+    dof_handler.get_dof_indices(c, dof_indices);
+    if ((flags & (dealii::update_quadrature_points | dealii::update_JxW_values)) == 0)
+      {
+        points.clear();
+        weights.clear();
+        return;
+      }
+    element.get_geometry().quadrature(quadrature_degree, points, weights);
+    const unsigned int n = element.n_dofs_per_cell(), n_q = points.size(),
+                       n_p = element.n_polynomials();
+    const auto &P = element.get_projector();
+    if ((flags & dealii::update_values) != 0)
+      {
+        values.assign(std::size_t(n_q) * n, dealii::Tensor<1, dim>());
+        for (unsigned int q = 0; q < n_q; ++q)
+          for (unsigned int a = 0; a < n_p; ++a)
+            {
+              const dealii::Tensor<1, dim> p = element.polynomial_value(a, points[q]);
+              for (unsigned int i = 0; i < n; ++i)
+                if (P(a, i) != 0.)
+                  values[std::size_t(q) * n + i] += P(a, i) * p;
+            }
+      }
+    if ((flags & dealii::update_gradients) != 0)
+      {
+        gradients.assign(std::size_t(n_q) * n, dealii::Tensor<2, dim>());
+        // the rigid translations have no gradient
+        for (unsigned int q = 0; q < n_q; ++q)
+          for (unsigned int a = 2; a < n_p; ++a)
+            {
+              const dealii::Tensor<2, dim> g = element.polynomial_gradient(a, points[q]);
+              for (unsigned int i = 0; i < n; ++i)
+                if (P(a, i) != 0.)
+                  gradients[std::size_t(q) * n + i] += P(a, i) * g;
+            }
+      }
+  }
+
+
+
+  template <int dim>
+  dealii::types::material_id
+  VEMValues<dim>::material_id() const
+  {
+    Assert(cell != dealii::numbers::invalid_unsigned_int, dealii::ExcMessage("call reinit() first"));
+    return dof_handler.get_mesh().cell(cell).material_id;
+  }
+
+
+
+  template <int dim>
+  const dealii::Point<dim> &
+  VEMValues<dim>::quadrature_point(const unsigned int q) const
+  {
+    check_flag(flags, dealii::update_quadrature_points, "update_quadrature_points");
+    AssertIndexRange(q, points.size());
+    return points[q];
+  }
+
+
+
+  template <int dim>
+  const std::vector<dealii::Point<dim>> &
+  VEMValues<dim>::get_quadrature_points() const
+  {
+    check_flag(flags, dealii::update_quadrature_points, "update_quadrature_points");
+    return points;
+  }
+
+
+
+  template <int dim>
+  double
+  VEMValues<dim>::JxW(const unsigned int q) const
+  {
+    check_flag(flags, dealii::update_JxW_values, "update_JxW_values");
+    AssertIndexRange(q, weights.size());
+    return weights[q];
+  }
+
+
+
+  template <int dim>
+  const dealii::Tensor<1, dim> &
+  VEMValues<dim>::shape_value(const unsigned int i, const unsigned int q) const
+  {
+    check_flag(flags, dealii::update_values, "update_values");
+    AssertIndexRange(i, dofs_per_cell());
+    AssertIndexRange(q, points.size());
+    return values[std::size_t(q) * dofs_per_cell() + i];
+  }
+
+
+
+  template <int dim>
+  const dealii::Tensor<2, dim> &
+  VEMValues<dim>::shape_grad(const unsigned int i, const unsigned int q) const
+  {
+    check_flag(flags, dealii::update_gradients, "update_gradients");
+    AssertIndexRange(i, dofs_per_cell());
+    AssertIndexRange(q, points.size());
+    return gradients[std::size_t(q) * dofs_per_cell() + i];
+  }
+
+
+
+  template <int dim>
+  void
+  VEMValues<dim>::get_function_values(const dealii::Vector<double>        &u,
+                                      std::vector<dealii::Tensor<1, dim>> &v) const
+  {
+    check_flag(flags, dealii::update_quadrature_points, "update_quadrature_points");
+    dof_handler.get_dof_values(cell, u, local);
+    element.project(local, coefficients);
+    v.resize(points.size());
+    for (unsigned int q = 0; q < points.size(); ++q)
+      v[q] = element.projection_value(coefficients, points[q]);
+  }
+
+
+
+  template <int dim>
+  void
+  VEMValues<dim>::get_function_gradients(const dealii::Vector<double>        &u,
+                                         std::vector<dealii::Tensor<2, dim>> &g) const
+  {
+    check_flag(flags, dealii::update_quadrature_points, "update_quadrature_points");
+    dof_handler.get_dof_values(cell, u, local);
+    element.project(local, coefficients);
+    g.resize(points.size());
+    for (unsigned int q = 0; q < points.size(); ++q)
+      g[q] = element.projection_gradient(coefficients, points[q]);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  VEMValues<dim>::n_edges() const
+  {
+    return dof_handler.get_mesh().cell(cell).edges.size();
+  }
+
+
+
+  template <int dim>
+  dealii::types::boundary_id
+  VEMValues<dim>::edge_boundary_id(const unsigned int e) const
+  {
+    const auto &mesh = dof_handler.get_mesh();
+    const auto &c    = mesh.cell(cell);
+    AssertIndexRange(e, c.edges.size());
+    const auto &edge = mesh.edge(c.edges[e]);
+    return edge.at_boundary() ? edge.boundary_id : dealii::numbers::internal_face_boundary_id;
+  }
+
+  template class VEMValues<2>;
+} // namespace dealvem
