@@ -74,7 +74,9 @@ namespace Step2
     std::map<dealii::types::material_id, ElasticMaterial> materials;
     PolygonalMesh<2>                                      mesh;
     VEMDoFHandler<2>                                      dof_handler;
+    std::vector<NodeInsertion::Interface>                 interfaces;
     std::vector<ContactNodePair>                          pairs;
+    std::unique_ptr<ContactScales>                        scales;
     std::unique_ptr<ContactAssembler<2>>                  contact;
     ContactSettings                                       settings;
     dealii::AffineConstraints<double>                     constraints;
@@ -127,13 +129,13 @@ namespace Step2
   void
   ContactPatchTest::insert_nodes()
   {
-    const auto interface = NodeInsertion::insert(mesh, 3, 12, degree, NodeInsertion::Settings());
-    const auto &report   = interface.report;
+    interfaces           = {NodeInsertion::insert(mesh, 3, 12, degree, NodeInsertion::Settings())};
+    const auto &report   = interfaces[0].report;
     std::cout << "   node insertion: " << report.n_inserted_master << " nodes inserted on the master side, "
               << report.n_inserted_slave << " on the slave side, " << report.n_merged << " merged" << std::endl;
     dof_handler.reinit(mesh);
     dof_handler.distribute_dofs(degree);
-    pairs = interface.pairs;
+    pairs = interfaces[0].pairs;
     std::cout << "   " << pairs.size() << " node pairs, " << dof_handler.n_dofs() << " DoFs" << std::endl;
   }
 
@@ -148,12 +150,13 @@ namespace Step2
   {
     settings.normal     = ContactSettings::Normal::unilateral;
     settings.tangential = ContactSettings::Tangential::penalty;
-    // default rule: 1000 E / h with h the shortest interface sub-edge
-    double h = 1e300;
-    for (const auto &pr : pairs)
-      if (!pr.is_midpoint)
-        h = std::min(h, pr.weight * (degree == 1 ? 1. : 3.));
-    contact = std::make_unique<ContactAssembler<2>>(dof_handler, pairs, settings, 1e3 * 7000 / h);
+    // the library's one rule for the constants: E_min / h_min with h_min the
+    // shortest paired sub-edge; the penalty is settings.penalty_factor
+    // (1000) times it, the active-set constant c is it
+    scales  = std::make_unique<ContactScales>(std::vector<double>{materials.at(0).youngs_modulus(),
+                                                                  materials.at(1).youngs_modulus()},
+                                             interfaces);
+    contact = std::make_unique<ContactAssembler<2>>(dof_handler, pairs, settings, scales->penalty(settings));
 
     constraints.clear();
     dealii::Functions::ZeroFunction<2> zero(2);
@@ -208,7 +211,7 @@ namespace Step2
   ContactPatchTest::solve()
   {
     SaddlePointSolver       solver(SaddlePointSolver::Settings{});
-    ActiveSetSolver<2>      active_set(*contact, constraints, solver, settings, 7000.);
+    ActiveSetSolver<2>      active_set(*contact, constraints, solver, settings, scales->complementarity_constant());
     const auto              result = active_set.solve(system_matrix, system_rhs, work_matrix, solution);
     std::cout << "   active set: " << result.n_iterations << " iteration(s)" << std::endl;
   }

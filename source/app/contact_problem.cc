@@ -55,6 +55,15 @@ namespace dealvem
             << r.slip_increment << "," << r.shear << "\n";
       csv_file.commit();
     }
+
+    // The file name prefix of load step @p step.
+    std::string
+    step_prefix(const std::string &prefix, const unsigned int step)
+    {
+      std::ostringstream s;
+      s << prefix << "-step-" << std::setw(3) << std::setfill('0') << step;
+      return s.str();
+    }
   } // namespace
 
 
@@ -385,76 +394,151 @@ namespace dealvem
 
 
 
+  // The state of one cycle: everything built on the mesh of the cycle,
+  // declared in the order it is built, so that it is destroyed in the
+  // reverse order (the solvers before the assembler before the DoF
+  // handler before the mesh, which lives in Results).
+  struct ContactProblem::CycleData
+  {
+    dealii::TimerOutput timer{std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times};
+    std::map<dealii::types::material_id, ElasticMaterial> materials;
+    std::vector<dealii::Point<2>>                         original_vertices;
+    VEMDoFHandler<2>                                      dof_handler;
+    std::vector<ContactNodePair>                          pairs;
+    double                                                complementarity = 0;
+    std::unique_ptr<ContactAssembler<2>>                  contact;
+    dealii::AffineConstraints<double>                     constraints;
+    std::unique_ptr<RigidBodySupport>                     support;
+    unsigned int                                          n = 0, m = 0;
+    dealii::SparsityPattern                               sparsity;
+    dealii::SparseMatrix<double>                          system_matrix, work_matrix;
+    dealii::Vector<double>                                system_rhs, x;
+    std::unique_ptr<SaddlePointSolver>                    solver;
+    std::unique_ptr<ActiveSetSolver<2>>                   active_set;
+    std::unique_ptr<FrictionSolver<2>>                    friction_solver;
+    std::vector<PairState>                                state;
+    std::vector<double>                                   reference;
+    typename ActiveSetSolver<2>::Result                   as;
+    typename FrictionSolver<2>::Result                    fr;
+    std::unique_ptr<StressRecovery<2>>                    stresses;
+    std::string                                           prefix;
+  };
+
+  ContactProblem::ContactProblem()  = default;
+  ContactProblem::~ContactProblem() = default;
+
+
+
   void
   ContactProblem::run_cycle(const unsigned int cycle)
   {
-    dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    // the previous cycle's objects refer to the previous mesh: release
+    // them before the mesh goes
+    data.reset();
     results = Results();
-    PolygonalMesh<2> &mesh = results.mesh;
-    std::map<dealii::types::material_id, ElasticMaterial> materials;
-    {
-      dealii::TimerOutput::Scope t(timer, "mesh");
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        {
-          PolygonalMesh<2> body_mesh;
-          bodies[b].mesh.create_mesh(body_mesh, cycle, prm_directory);
-          for (unsigned int c = 0; c < body_mesh.n_cells(); ++c)
-            body_mesh.set_material_id(c, b);
-          if (b == 0)
-            mesh = body_mesh;
-          else
-            mesh.append(body_mesh);
-          materials.emplace(b, ElasticMaterial(bodies[b].E, bodies[b].nu, model));
-        }
-      mesh.name = "bodies";
-    }
-    std::vector<dealii::Point<2>> original_vertices = mesh.get_vertices();
-    std::vector<NodeInsertion::Interface> &interfaces = results.interfaces;
-    {
-      dealii::TimerOutput::Scope t(timer, "node insertion");
-      for (unsigned int i = 0; i < contact_pairs.size(); ++i)
-        interfaces.push_back(NodeInsertion::insert(mesh, contact_pairs[i].first, contact_pairs[i].second,
-                                                   degree, insertion_settings, i));
-      // a later interface may have moved a vertex shared with an earlier one
-      for (auto &itf : interfaces)
-        NodeInsertion::update_geometry(mesh, itf);
-    }
-    VEMDoFHandler<2> dof_handler(mesh);
-    dof_handler.distribute_dofs(degree);
-    std::vector<ContactNodePair> pairs;
+    data    = std::make_unique<CycleData>();
+    data->prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
+
+    make_meshes(cycle);
+    insert_nodes();
+    setup_system();
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double time = final_time * step / n_steps;
+        assemble_system(time);
+        solve(step, time);
+        process_step(step, time);
+      }
+    postprocess();
+    output_results();
+  }
+
+
+
+  // The bodies' meshes, one material id per body, appended into one mesh.
+  void
+  ContactProblem::make_meshes(const unsigned int cycle)
+  {
+    dealii::TimerOutput::Scope t(data->timer, "mesh");
+    PolygonalMesh<2>          &mesh = results.mesh;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        PolygonalMesh<2> body_mesh;
+        bodies[b].mesh.create_mesh(body_mesh, cycle, prm_directory);
+        for (unsigned int c = 0; c < body_mesh.n_cells(); ++c)
+          body_mesh.set_material_id(c, b);
+        if (b == 0)
+          mesh = body_mesh;
+        else
+          mesh.append(body_mesh);
+        data->materials.emplace(b, ElasticMaterial(bodies[b].E, bodies[b].nu, model));
+      }
+    mesh.name               = "bodies";
+    data->original_vertices = mesh.get_vertices();
+  }
+
+
+
+  // Node insertion on every contact pair of boundary ids, then the node
+  // pairs of all interfaces in one list.
+  void
+  ContactProblem::insert_nodes()
+  {
+    dealii::TimerOutput::Scope t(data->timer, "node insertion");
+    PolygonalMesh<2>          &mesh       = results.mesh;
+    auto                      &interfaces = results.interfaces;
+    for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+      interfaces.push_back(NodeInsertion::insert(mesh, contact_pairs[i].first, contact_pairs[i].second, degree,
+                                                 insertion_settings, i));
+    // a later interface may have moved a vertex shared with an earlier one
+    for (auto &itf : interfaces)
+      NodeInsertion::update_geometry(mesh, itf);
     for (const auto &itf : interfaces)
       {
         results.insertion_reports.push_back(itf.report);
-        pairs.insert(pairs.end(), itf.pairs.begin(), itf.pairs.end());
+        data->pairs.insert(data->pairs.end(), itf.pairs.begin(), itf.pairs.end());
       }
-
-    // penalty rule and active-set constant: E_min / h_min on the interface,
-    // h_min the shortest paired sub-edge
-    double E_min = 1e300, h_min = 1e300;
-    for (const auto &m : materials)
-      E_min = std::min(E_min, m.second.youngs_modulus());
+    bool any_segment = false;
     for (const auto &itf : interfaces)
-      for (const auto &s : itf.segments)
-        h_min = std::min(h_min, s.length);
-    AssertThrow(!pairs.empty() && h_min < 1e300,
+      any_segment = any_segment || !itf.segments.empty();
+    AssertThrow(!data->pairs.empty() && any_segment,
                 dealii::ExcMessage("Contact: node insertion found no paired interface edge on any contact "
                                    "pair; check the 'Contact/Pairs' ids and the 'Search distance'."));
-    const double penalty = contact_settings.penalty > 0 ? contact_settings.penalty :
-                                                          contact_settings.penalty_factor * E_min / h_min;
-    results.penalty = penalty;
-    ContactAssembler<2> contact(dof_handler, pairs, contact_settings, penalty);
+  }
 
-    dealii::AffineConstraints<double> constraints;
-    bc.check_boundary_ids(mesh);
+
+
+  // DoFs; the contact scales (one rule, ContactScales); the contact
+  // assembler; the displacement constraints at the first load step,
+  // checked with the contact pairs to hold every body; the sparsity
+  // pattern of the saddle-point system; the solvers.
+  void
+  ContactProblem::setup_system()
+  {
+    CycleData &d = *data;
+    d.dof_handler.reinit(results.mesh);
+    d.dof_handler.distribute_dofs(degree);
+
+    std::vector<double> moduli;
+    for (const auto &m : d.materials)
+      moduli.push_back(m.second.youngs_modulus());
+    const ContactScales scales(moduli, results.interfaces);
+    d.complementarity = scales.complementarity_constant();
+    results.penalty   = scales.penalty(contact_settings);
+    d.contact = std::make_unique<ContactAssembler<2>>(d.dof_handler, d.pairs, contact_settings, results.penalty);
+
+    bc.check_boundary_ids(results.mesh);
     bc.set_time(final_time / n_steps);
-    bc.apply_constraints(dof_handler, constraints);
-    constraints.close();
+    d.constraints.clear();
+    bc.apply_constraints(d.dof_handler, d.constraints);
+    d.constraints.close();
     // every body must be held by the constraints and the contact pairs
     // together (with every pair closed); the active set checks its sets too
-    RigidBodySupport support(dof_handler, constraints, contact,
-                             contact_settings.tangential != ContactSettings::Tangential::frictionless);
+    d.support = std::make_unique<RigidBodySupport>(d.dof_handler, d.constraints, *d.contact,
+                                                   contact_settings.tangential !=
+                                                     ContactSettings::Tangential::frictionless);
     {
-      const std::string free = support.free_motions(std::vector<bool>(contact.n_pairs(), true));
+      const std::string free = d.support->free_motions(std::vector<bool>(d.contact->n_pairs(), true));
       AssertThrow(free.empty(),
                   dealii::ExcMessage("Unsupported body / rigid-body mode: the constraints and contact pairs "
                                      "leave these rigid-body motions free: " + free +
@@ -462,295 +546,306 @@ namespace dealvem
                                      "each body must be held against sliding along the interface)."));
     }
 
-    const unsigned int n = dof_handler.n_dofs(), m = contact.n_multipliers();
-    dealii::SparsityPattern      sparsity;
-    dealii::SparseMatrix<double> system_matrix, work_matrix;
-    dealii::Vector<double>       system_rhs;
+    d.n = d.dof_handler.n_dofs();
+    d.m = d.contact->n_multipliers();
     {
-      dealii::TimerOutput::Scope     t(timer, "assembly");
-      dealii::DynamicSparsityPattern dsp(n + m);
-      dof_handler.make_sparsity_pattern(dsp);
-      contact.add_sparsity(dsp);
-      constraints.condense(dsp);
-      sparsity.copy_from(dsp);
-      system_matrix.reinit(sparsity);
-      work_matrix.reinit(sparsity);
+      dealii::TimerOutput::Scope     t(d.timer, "assembly");
+      dealii::DynamicSparsityPattern dsp(d.n + d.m);
+      d.dof_handler.make_sparsity_pattern(dsp);
+      d.contact->add_sparsity(dsp);
+      d.constraints.condense(dsp);
+      d.sparsity.copy_from(dsp);
+      d.system_matrix.reinit(d.sparsity);
+      d.work_matrix.reinit(d.sparsity);
     }
-    // The elasticity part at the time t of a load step, assembled directly
-    // into the big system; the constraints are rebuilt because their
-    // values may depend on t.
-    const auto assemble_system = [&](const double time) {
-      dealii::TimerOutput::Scope t(timer, "assembly");
-      bc.set_time(time);
-      constraints.clear();
-      bc.apply_constraints(dof_handler, constraints);
-      constraints.close();
-      ElasticityAssembler<2> assembler(dof_handler, materials, gamma);
-      bc.add_loads(assembler);
-      system_matrix = 0;
-      system_rhs.reinit(n + m);
-      VEMValues<2>                                 vem_values(dof_handler);
-      ElasticityOperator<2>                        elasticity;
-      dealii::Vector<double>                       F;
-      dealii::Vector<double>                       loads;
-      assembler.assemble_load_vector(loads);
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        {
-          vem_values.reinit(c);
-          elasticity.reinit(vem_values.get_element(), assembler.get_material(c), gamma);
-          // the load vector is assembled separately (below)
-          F.reinit(vem_values.dofs_per_cell());
-          constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), F,
-                                                 vem_values.get_dof_indices(), system_matrix, system_rhs);
-        }
-      // loads: a "cell" of all DoFs with an empty matrix distributes the
-      // load vector with the constraints
-      {
-        std::vector<dealii::types::global_dof_index> all(n);
-        for (unsigned int i = 0; i < n; ++i)
-          all[i] = i;
-        dealii::Vector<double> tmp(n + m);
-        constraints.distribute_local_to_global(loads, all, tmp);
-        system_rhs += tmp;
-      }
-      // applied load per body
-      std::vector<unsigned int> node_body(dof_handler.n_nodes(), 0), nodes;
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        {
-          dof_handler.get_node_indices(c, nodes);
-          for (const auto nd : nodes)
-            node_body[nd] = mesh.cell(c).material_id;
-        }
-      results.applied_load_per_body.assign(bodies.size(), dealii::Tensor<1, 2>());
-      for (unsigned int i = 0; i < n; ++i)
-        results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
-    };
 
     SaddlePointSolver::Settings settings;
     settings.type               = SaddlePointSolver::parse_type(solver_type);
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
-    SaddlePointSolver solver(settings);
+    d.solver                    = std::make_unique<SaddlePointSolver>(settings);
     if (settings.type == SaddlePointSolver::Type::gmres_amg)
-      solver.set_near_null_space(dof_handler.rigid_body_modes());
-    ActiveSetSolver<2>     active_set(contact, constraints, solver, contact_settings, E_min / h_min);
-    active_set.set_support(&support);
-    const bool friction = contact_settings.is_coulomb();
-    std::unique_ptr<FrictionSolver<2>> friction_solver;
-    std::vector<PairState>             state;
-    std::vector<double>                reference(pairs.size(), 0.);
-    if (friction)
+      d.solver->set_near_null_space(d.dof_handler.rigid_body_modes());
+    d.active_set = std::make_unique<ActiveSetSolver<2>>(*d.contact, d.constraints, *d.solver, contact_settings,
+                                                        d.complementarity);
+    d.active_set->set_support(d.support.get());
+    d.reference.assign(d.pairs.size(), 0.);
+    if (contact_settings.is_coulomb())
       {
-        friction_solver =
-          std::make_unique<FrictionSolver<2>>(contact, constraints, solver, contact_settings, E_min / h_min);
-        friction_solver->set_support(&support);
-        state = friction_solver->initial_state();
+        d.friction_solver = std::make_unique<FrictionSolver<2>>(*d.contact, d.constraints, *d.solver,
+                                                                contact_settings, d.complementarity);
+        d.friction_solver->set_support(d.support.get());
+        d.state = d.friction_solver->initial_state();
       }
-    dealii::Vector<double> x;
-    typename ActiveSetSolver<2>::Result as;
-    typename FrictionSolver<2>::Result  fr;
-    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
-    const auto        step_prefix = [&](const unsigned int step) {
-      std::ostringstream s;
-      s << prefix << "-step-" << std::setw(3) << std::setfill('0') << step;
-      return s.str();
-    };
-    const bool write_steps = (n_steps > 1);
+  }
 
-    for (unsigned int step = 1; step <= n_steps; ++step)
+
+
+  // The elasticity part at the time t of a load step, assembled directly
+  // into the big system cell by cell (VEMValues, ElasticityOperator and the
+  // assembler's local loads); the constraints are rebuilt because their
+  // values may depend on t. The contact blocks are added by the active-set
+  // or friction solver in each of its iterations.
+  void
+  ContactProblem::assemble_system(const double time)
+  {
+    CycleData                 &d = *data;
+    dealii::TimerOutput::Scope t(d.timer, "assembly");
+    bc.set_time(time);
+    d.constraints.clear();
+    bc.apply_constraints(d.dof_handler, d.constraints);
+    d.constraints.close();
+    ElasticityAssembler<2> assembler(d.dof_handler, d.materials, gamma);
+    bc.add_loads(assembler);
+    // the first n unknowns of the saddle-point system are the displacements
+    d.system_rhs.reinit(d.n + d.m);
+    assembler.assemble(d.constraints, d.system_matrix, d.system_rhs);
+
+    // the applied load per body, from the unconstrained load vector
+    dealii::Vector<double> loads;
+    assembler.assemble_load_vector(loads);
+    std::vector<unsigned int> node_body(d.dof_handler.n_nodes(), 0), nodes;
+    for (unsigned int c = 0; c < results.mesh.n_cells(); ++c)
       {
-        const double time = final_time * step / n_steps;
-        try
-          {
-            assemble_system(time);
-            dealii::TimerOutput::Scope t(timer, "solve");
-            if (friction)
-              {
-                fr    = friction_solver->solve(system_matrix, system_rhs, work_matrix, x, state, reference);
-                state = fr.state;
-                reference = fr.reference;
-                as        = typename ActiveSetSolver<2>::Result();
-                as.n_iterations      = fr.n_iterations;
-                as.linear_iterations = fr.linear_iterations;
-                for (const auto &h : fr.history)
-                  as.n_active_history.push_back(h[1] + h[2]);
-                for (const auto s : fr.state)
-                  as.active.push_back(s != PairState::open);
-              }
-            else
-              as = active_set.solve(system_matrix, system_rhs, work_matrix, x);
-          }
-        catch (...)
-          {
-            if (n_steps > 1)
-              {
-                std::cout << "  load step " << step << " of " << n_steps << " (t = " << time
-                          << ") failed; the results of the " << step - 1 << " converged step(s) are kept";
-                if (write_steps && (write_vtu || write_csv))
-                  std::cout << " (" << prefix << "-step-*, " << prefix << ".pvd)";
-                std::cout << "." << std::endl;
-                if (write_json)
-                  {
-                    JsonSummary json;
-                    json.set("program", "dealvem");
-                    json.set("problem", "contact");
-                    json.set("load_steps.requested", double(n_steps));
-                    json.set("load_steps.converged", double(step - 1));
-                    json.set("load_steps.failed_step", double(step));
-                    json.set("load_steps.failed_time", time);
-                    for (const auto &sr : results.steps)
-                      {
-                        const std::string k = "steps." + std::to_string(sr.step) + ".";
-                        json.set(k + "time", sr.time);
-                        json.set(k + "iterations", double(sr.iterations));
-                        json.set(k + "dissipated_energy", sr.dissipated_energy);
-                      }
-                    json.write(prefix + ".json");
-                  }
-              }
-            throw;
-          }
+        d.dof_handler.get_node_indices(c, nodes);
+        for (const auto nd : nodes)
+          node_body[nd] = results.mesh.cell(c).material_id;
+      }
+    results.applied_load_per_body.assign(bodies.size(), dealii::Tensor<1, 2>());
+    for (unsigned int i = 0; i < d.n; ++i)
+      results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
+  }
 
-        results.solution.reinit(n);
-        for (unsigned int i = 0; i < n; ++i)
-          results.solution[i] = x[i];
-        results.n_dofs                = n;
-        results.n_multipliers         = m;
-        results.active_set_iterations = as.n_iterations;
-        results.active_set_history    = as.n_active_history;
-        results.linear_iterations     = as.linear_iterations;
-        results.solver                = solver.description();
 
-        // interface results
-        const auto gaps  = contact.gaps(x);
-        const auto slips = contact.slips(x);
-        const auto ft    = friction ? std::vector<double>() : contact.tangential_forces(x);
-        // consistent pressure per interface: M_Gamma p = -lambda
-        // the tangential nodal force on the slave node, along t
-        std::vector<double> tangential_force(pairs.size(), 0.);
-        for (unsigned int i = 0; i < pairs.size(); ++i)
-          tangential_force[i] = (friction ? -fr.tangential_multiplier[i] : ft[i]);
-        // the same recovery for the tangential traction
-        std::vector<double> recovered, recovered_shear;
-        {
-          unsigned int offset = 0;
-          for (const auto &itf : interfaces)
-            {
-              std::vector<double> force(itf.pairs.size()), force_t(itf.pairs.size());
-              std::vector<bool>   closed(itf.pairs.size());
-              for (unsigned int j = 0; j < force.size(); ++j)
-                {
-                  force[j]   = -x[n + offset + j];
-                  force_t[j] = tangential_force[offset + j];
-                  closed[j]  = as.active[offset + j];
-                }
-              const auto p = ContactPressure::recover(itf, force, closed);
-              recovered.insert(recovered.end(), p.begin(), p.end());
-              const auto q = ContactPressure::recover(itf, force_t, closed);
-              recovered_shear.insert(recovered_shear.end(), q.begin(), q.end());
-              offset += itf.pairs.size();
-            }
-        }
-        results.pairs.clear();
-        results.total_contact_force = dealii::Tensor<1, 2>();
-        StepResult step_result;
-        step_result.step       = step;
-        step_result.time       = time;
-        step_result.iterations = as.n_iterations;
-        for (unsigned int i = 0; i < pairs.size(); ++i)
-          {
-            const auto &p = pairs[i];
-            PairResult  r;
-            r.interface       = p.interface;
-            r.location        = p.slave_location;
-            r.midpoint        = p.is_midpoint;
-            r.active          = as.active[i];
-            r.weight          = p.weight;
-            r.gap             = gaps[i];
-            r.multiplier      = x[n + i];
-            r.lumped_pressure = -x[n + i] / p.weight;
-            r.pressure        = recovered[i];
-            r.at_open_end     = p.at_open_end;
-            r.slip            = slips[i];
-            r.tangent         = p.tangent;
-            r.shear           = recovered_shear[i];
-            r.tangential_traction = (as.active[i] ? tangential_force[i] / p.weight : 0.);
-            if (friction)
-              {
-                r.slip_increment      = fr.slip_increment[i];
-                r.status              = (state[i] == PairState::open ? "open" :
-                                         state[i] == PairState::stick ? "stick" :
-                                                                        "slip");
-              }
-            else
-              r.status = (as.active[i] ? "closed" : "open");
-            step_result.n_open += (!r.active);
-            step_result.n_stick += (r.active && r.status != "slip");
-            step_result.n_slip += (r.status == "slip");
-            results.pairs.push_back(r);
-            results.total_contact_force +=
-              (-x[n + i]) * p.normal + r.tangential_traction * p.weight * p.tangent;
-          }
-        step_result.dissipated_energy   = (friction ? fr.dissipated_energy : 0.);
-        step_result.total_contact_force = results.total_contact_force;
-        step_result.pairs               = results.pairs;
-        results.dissipated_energy += step_result.dissipated_energy;
-        results.steps.push_back(step_result);
 
-        if (n_steps > 1 || friction)
+  // One load step: the active-set method (frictionless, tied or stick by
+  // penalty) or the semismooth Newton method of Coulomb friction. When a
+  // step of several fails, the converged steps' results are kept (their
+  // files and a JSON summary saying where it stopped) and the error is
+  // passed on.
+  void
+  ContactProblem::solve(const unsigned int step, const double time)
+  {
+    CycleData &d = *data;
+    try
+      {
+        dealii::TimerOutput::Scope t(d.timer, "solve");
+        if (d.friction_solver)
           {
-            std::cout << "  load step " << step << " of " << n_steps << ", t = " << time << ": "
-                      << as.n_iterations << (friction ? " Newton" : " active-set") << " iteration(s), "
-                      << step_result.n_open << " open / " << step_result.n_stick
-                      << (friction ? " stick / " : " closed") ;
-            if (friction)
-              {
-                std::cout << step_result.n_slip << " slip, dissipated energy " << step_result.dissipated_energy;
-                if (fr.history.size() > 1)
-                  {
-                    // the states each iteration solved with
-                    std::cout << " (open/stick/slip per iteration:";
-                    for (const auto &h : fr.history)
-                      std::cout << " " << h[0] << "/" << h[1] << "/" << h[2];
-                    std::cout << ")";
-                  }
-              }
-            std::cout << std::endl;
+            d.fr        = d.friction_solver->solve(d.system_matrix, d.system_rhs, d.work_matrix, d.x, d.state,
+                                            d.reference);
+            d.state     = d.fr.state;
+            d.reference = d.fr.reference;
+            d.as        = typename ActiveSetSolver<2>::Result();
+            d.as.n_iterations      = d.fr.n_iterations;
+            d.as.linear_iterations = d.fr.linear_iterations;
+            for (const auto &h : d.fr.history)
+              d.as.n_active_history.push_back(h[1] + h[2]);
+            for (const auto s : d.fr.state)
+              d.as.active.push_back(s != PairState::open);
           }
-        if (write_steps)
+        else
+          d.as = d.active_set->solve(d.system_matrix, d.system_rhs, d.work_matrix, d.x);
+      }
+    catch (...)
+      {
+        if (n_steps > 1)
           {
-            if (write_csv)
-              write_interface_csv(step_prefix(step) + "-interface.csv", results.pairs);
-            if (write_vtu)
+            std::cout << "  load step " << step << " of " << n_steps << " (t = " << time
+                      << ") failed; the results of the " << step - 1 << " converged step(s) are kept";
+            if (write_vtu || write_csv)
+              std::cout << " (" << d.prefix << "-step-*, " << d.prefix << ".pvd)";
+            std::cout << "." << std::endl;
+            if (write_json)
               {
-                StressRecovery<2> step_stresses(dof_handler, materials, results.solution);
-                write_vtu_file(step_prefix(step) + ".vtu", dof_handler, results.solution, step_stresses);
-                // the time series so far, rewritten after every step
-                OutputFile    pvd_file(prefix + ".pvd");
-                std::ostream &pvd = pvd_file.stream();
-                pvd << "<?xml version=\"1.0\"?>\n"
-                    << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                    << "  <Collection>\n";
+                JsonSummary json;
+                json.set("program", "dealvem");
+                json.set("problem", "contact");
+                json.set("load_steps.requested", double(n_steps));
+                json.set("load_steps.converged", double(step - 1));
+                json.set("load_steps.failed_step", double(step));
+                json.set("load_steps.failed_time", time);
                 for (const auto &sr : results.steps)
-                  pvd << "    <DataSet timestep=\"" << std::setprecision(17) << sr.time
-                      << "\" group=\"\" part=\"0\" file=\""
-                      << std::filesystem::path(step_prefix(sr.step) + ".vtu").filename().string() << "\"/>\n";
-                pvd << "  </Collection>\n</VTKFile>\n";
-                pvd_file.commit();
+                  {
+                    const std::string k = "steps." + std::to_string(sr.step) + ".";
+                    json.set(k + "time", sr.time);
+                    json.set(k + "iterations", double(sr.iterations));
+                    json.set(k + "dissipated_energy", sr.dissipated_energy);
+                  }
+                json.write(d.prefix + ".json");
               }
           }
+        throw;
       }
+  }
 
+
+
+  // The interface results of a load step: gaps, slips, multipliers,
+  // recovered pressure and shear per node pair, the step's counts, its
+  // progress line and (with several steps) its files.
+  void
+  ContactProblem::process_step(const unsigned int step, const double time)
+  {
+    CycleData  &d          = *data;
+    const auto &n          = d.n;
+    const auto &x          = d.x;
+    const auto &as         = d.as;
+    const auto &fr         = d.fr;
+    const auto &state      = d.state;
+    const auto &pairs      = d.pairs;
+    const auto &contact    = *d.contact;
+    const auto &interfaces = results.interfaces;
+    const bool  friction   = (d.friction_solver != nullptr);
+    results.solution.reinit(n);
+    for (unsigned int i = 0; i < n; ++i)
+      results.solution[i] = x[i];
+    results.n_dofs                = n;
+    results.n_multipliers         = d.m;
+    results.active_set_iterations = as.n_iterations;
+    results.active_set_history    = as.n_active_history;
+    results.linear_iterations     = as.linear_iterations;
+    results.solver                = d.solver->description();
+
+    // interface results
+    const auto gaps  = contact.gaps(x);
+    const auto slips = contact.slips(x);
+    const auto ft    = friction ? std::vector<double>() : contact.tangential_forces(x);
+    // consistent pressure per interface: M_Gamma p = -lambda
+    // the tangential nodal force on the slave node, along t
+    std::vector<double> tangential_force(pairs.size(), 0.);
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      tangential_force[i] = (friction ? -fr.tangential_multiplier[i] : ft[i]);
+    // the same recovery for the tangential traction
+    std::vector<double> recovered, recovered_shear;
+    {
+      unsigned int offset = 0;
+      for (const auto &itf : interfaces)
+        {
+          std::vector<double> force(itf.pairs.size()), force_t(itf.pairs.size());
+          std::vector<bool>   closed(itf.pairs.size());
+          for (unsigned int j = 0; j < force.size(); ++j)
+            {
+              force[j]   = -x[n + offset + j];
+              force_t[j] = tangential_force[offset + j];
+              closed[j]  = as.active[offset + j];
+            }
+          const auto p = ContactPressure::recover(itf, force, closed);
+          recovered.insert(recovered.end(), p.begin(), p.end());
+          const auto q = ContactPressure::recover(itf, force_t, closed);
+          recovered_shear.insert(recovered_shear.end(), q.begin(), q.end());
+          offset += itf.pairs.size();
+        }
+    }
+    results.pairs.clear();
+    results.total_contact_force = dealii::Tensor<1, 2>();
+    StepResult step_result;
+    step_result.step       = step;
+    step_result.time       = time;
+    step_result.iterations = as.n_iterations;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto &p = pairs[i];
+        PairResult  r;
+        r.interface       = p.interface;
+        r.location        = p.slave_location;
+        r.midpoint        = p.is_midpoint;
+        r.active          = as.active[i];
+        r.weight          = p.weight;
+        r.gap             = gaps[i];
+        r.multiplier      = x[n + i];
+        r.lumped_pressure = -x[n + i] / p.weight;
+        r.pressure        = recovered[i];
+        r.at_open_end     = p.at_open_end;
+        r.slip            = slips[i];
+        r.tangent         = p.tangent;
+        r.shear           = recovered_shear[i];
+        r.tangential_traction = (as.active[i] ? tangential_force[i] / p.weight : 0.);
+        if (friction)
+          {
+            r.slip_increment      = fr.slip_increment[i];
+            r.status              = (state[i] == PairState::open ? "open" :
+                                     state[i] == PairState::stick ? "stick" :
+                                                                    "slip");
+          }
+        else
+          r.status = (as.active[i] ? "closed" : "open");
+        step_result.n_open += (!r.active);
+        step_result.n_stick += (r.active && r.status != "slip");
+        step_result.n_slip += (r.status == "slip");
+        results.pairs.push_back(r);
+        results.total_contact_force +=
+          (-x[n + i]) * p.normal + r.tangential_traction * p.weight * p.tangent;
+      }
+    step_result.dissipated_energy   = (friction ? fr.dissipated_energy : 0.);
+    step_result.total_contact_force = results.total_contact_force;
+    step_result.pairs               = results.pairs;
+    results.dissipated_energy += step_result.dissipated_energy;
+    results.steps.push_back(step_result);
+
+    if (n_steps > 1 || friction)
+      {
+        std::cout << "  load step " << step << " of " << n_steps << ", t = " << time << ": "
+                  << as.n_iterations << (friction ? " Newton" : " active-set") << " iteration(s), "
+                  << step_result.n_open << " open / " << step_result.n_stick
+                  << (friction ? " stick / " : " closed") ;
+        if (friction)
+          {
+            std::cout << step_result.n_slip << " slip, dissipated energy " << step_result.dissipated_energy;
+            if (fr.history.size() > 1)
+              {
+                // the states each iteration solved with
+                std::cout << " (open/stick/slip per iteration:";
+                for (const auto &h : fr.history)
+                  std::cout << " " << h[0] << "/" << h[1] << "/" << h[2];
+                std::cout << ")";
+              }
+          }
+        std::cout << std::endl;
+      }
+    if (n_steps > 1)
+      {
+        if (write_csv)
+          write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
+        if (write_vtu)
+          {
+            StressRecovery<2> step_stresses(d.dof_handler, d.materials, results.solution);
+            write_vtu_file(step_prefix(d.prefix, step) + ".vtu", d.dof_handler, results.solution, step_stresses);
+            // the time series so far, rewritten after every step
+            OutputFile    pvd_file(d.prefix + ".pvd");
+            std::ostream &pvd = pvd_file.stream();
+            pvd << "<?xml version=\"1.0\"?>\n"
+                << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+                << "  <Collection>\n";
+            for (const auto &sr : results.steps)
+              pvd << "    <DataSet timestep=\"" << std::setprecision(17) << sr.time
+                  << "\" group=\"\" part=\"0\" file=\""
+                  << std::filesystem::path(step_prefix(d.prefix, sr.step) + ".vtu").filename().string() << "\"/>\n";
+            pvd << "  </Collection>\n</VTKFile>\n";
+            pvd_file.commit();
+          }
+      }
+  }
+
+
+
+  // After the last step: cells and DoFs per body, the errors against the
+  // exact solutions, the stresses.
+  void
+  ContactProblem::postprocess()
+  {
+    CycleData        &d    = *data;
+    PolygonalMesh<2> &mesh = results.mesh;
     // per body: cells, DoFs, and errors against the exact solution
     results.cells_per_body.assign(bodies.size(), 0);
     results.dofs_per_body.assign(bodies.size(), 0);
     results.errors.assign(bodies.size(), ErrorNorms());
     {
-      std::vector<unsigned int> node_body(dof_handler.n_nodes(), 0), nodes;
+      std::vector<unsigned int> node_body(d.dof_handler.n_nodes(), 0), nodes;
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         {
           ++results.cells_per_body[mesh.cell(c).material_id];
-          dof_handler.get_node_indices(c, nodes);
+          d.dof_handler.get_node_indices(c, nodes);
           for (const auto nd : nodes)
             node_body[nd] = mesh.cell(c).material_id;
         }
@@ -766,7 +861,7 @@ namespace dealvem
           AssertThrow(parts.size() == 2,
                       dealii::ExcMessage("Parameter '" + name + "' needs two expressions 'ux, uy'."));
           const InputParsing::ParsedFunction exact(parts, bc.get_constants(), name);
-          results.errors[b] = compute_errors(dof_handler, materials, results.solution, exact,
+          results.errors[b] = compute_errors(d.dof_handler, d.materials, results.solution, exact,
                                              dealii::types::material_id(b));
           for (const double v : {results.errors[b].l2, results.errors[b].h1_seminorm, results.errors[b].energy})
             AssertThrow(std::isfinite(v),
@@ -775,7 +870,8 @@ namespace dealvem
                                            "somewhere in body " + std::to_string(b) + "."));
         }
 
-    StressRecovery<2> stresses(dof_handler, materials, results.solution);
+    d.stresses = std::make_unique<StressRecovery<2>>(d.dof_handler, d.materials, results.solution);
+    const auto &stresses = *d.stresses;
     results.cell_stress.resize(mesh.n_cells());
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
@@ -783,10 +879,31 @@ namespace dealvem
         results.cell_stress[c] = {{s[0][0], s[1][1], s[0][1]}};
       }
 
-    for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
+    for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
       results.timings[s.first] = s.second;
 
-    // ---- output
+  }
+
+
+
+  // The report on the terminal, and the files: interface CSV, VTU,
+  // pictures, JSON summary.
+  void
+  ContactProblem::output_results()
+  {
+    CycleData  &d          = *data;
+    const auto &mesh       = results.mesh;
+    const auto &interfaces = results.interfaces;
+    const auto &pairs      = d.pairs;
+    const auto &contact    = *d.contact;
+    const auto &as         = d.as;
+    const auto &n          = d.n;
+    const auto &m          = d.m;
+    const auto &prefix     = d.prefix;
+    const auto &stresses   = *d.stresses;
+    const bool  friction   = (d.friction_solver != nullptr);
+    const bool  write_steps = (n_steps > 1);
+    const double penalty  = results.penalty;
     unsigned int n_inserted = 0;
     for (const auto &r : results.insertion_reports)
       n_inserted += r.n_inserted_master + r.n_inserted_slave;
@@ -854,7 +971,7 @@ namespace dealvem
     if (as.n_closed_for_support > 0)
       std::cout << " (the first set closes the " << as.n_closed_for_support
                 << " pair(s) of smallest initial gap, so that every body is held)";
-    std::cout << std::endl << "  solver: " << solver.description();
+    std::cout << std::endl << "  solver: " << d.solver->description();
     if (as.linear_iterations > as.n_iterations)
       std::cout << ", " << as.linear_iterations << " linear iterations in all";
     std::cout << std::endl;
@@ -889,7 +1006,7 @@ namespace dealvem
       }
     if (write_vtu)
       {
-        write_vtu_file(prefix + ".vtu", dof_handler, results.solution, stresses);
+        write_vtu_file(prefix + ".vtu", d.dof_handler, results.solution, stresses);
         std::cout << "  ParaView file (all bodies, field body_id): " << prefix << ".vtu" << std::endl;
         if (write_steps)
           std::cout << "  load steps: " << prefix << "-step-NNN.vtu, -interface.csv; time series " << prefix
@@ -898,7 +1015,7 @@ namespace dealvem
     if (write_pictures)
       {
         std::vector<bool> inserted(mesh.n_vertices(), false);
-        for (unsigned int v = original_vertices.size(); v < mesh.n_vertices(); ++v)
+        for (unsigned int v = d.original_vertices.size(); v < mesh.n_vertices(); ++v)
           inserted[v] = true;
         std::vector<dealii::Tensor<1, 2>> displacement(mesh.n_vertices());
         double umax = 0, size = 0;
@@ -944,7 +1061,7 @@ namespace dealvem
         json.set("dofs", double(n));
         json.set("multipliers", double(m));
         json.set("order", double(degree));
-        json.set("solver", solver.description());
+        json.set("solver", d.solver->description());
         json.set("contact.node_pairs", double(pairs.size()));
         json.set("contact.inserted_nodes", double(n_inserted));
         json.set("contact.active_set_iterations", double(as.n_iterations));
@@ -1008,7 +1125,7 @@ namespace dealvem
           }
         json.set("contact.total_force_x", results.total_contact_force[0]);
         json.set("contact.total_force_y", results.total_contact_force[1]);
-        for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
+        for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
           json.set("timings." + s.first, s.second);
         json.write(prefix + ".json");
         std::cout << "  summary: " << prefix << ".json" << std::endl;

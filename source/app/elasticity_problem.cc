@@ -157,25 +157,159 @@ namespace dealvem
 
 
 
+  // One cycle: the mesh of the cycle; its cells must carry the material id
+  // the parameter file defines, its boundary the ids the conditions name.
+  void
+  ElasticityProblem::make_mesh(const unsigned int cycle)
+  {
+    dealii::TimerOutput::Scope t(*timer, "mesh");
+    mesh.clear();
+    mesh_parameters.create_mesh(mesh, cycle, prm_directory);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      AssertThrow(materials.count(mesh.cell(c).material_id),
+                  dealii::ExcMessage("Cell " + std::to_string(c) + " of mesh '" + mesh.name +
+                                     "' has material id " + std::to_string(mesh.cell(c).material_id) +
+                                     " but the parameter file defines a material for id " +
+                                     std::to_string(mesh_parameters.material_id) + " only."));
+    bc.check_boundary_ids(mesh);
+  }
+
+
+
+  // DoFs, the constraints of the Dirichlet, roller and point conditions
+  // (checked to hold the body), and the sparsity pattern with the
+  // constraints' entries, as in step-8.
+  void
+  ElasticityProblem::setup_system()
+  {
+    dealii::TimerOutput::Scope t(*timer, "setup");
+    dof_handler.reinit(mesh);
+    dof_handler.distribute_dofs(degree);
+    constraints.clear();
+    bc.apply_constraints(dof_handler, constraints);
+    constraints.close();
+    BoundaryConditions::check_rigid_body_support(dof_handler, constraints);
+    dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    dof_handler.make_sparsity_pattern(dsp, constraints);
+    system_matrix.clear();
+    sparsity_pattern.copy_from(dsp);
+    system_matrix.reinit(sparsity_pattern);
+    solution.reinit(dof_handler.n_dofs());
+  }
+
+
+
+  void
+  ElasticityProblem::assemble_system()
+  {
+    dealii::TimerOutput::Scope t(*timer, "assembly");
+    ElasticityAssembler<2>     assembler(dof_handler, materials, gamma);
+    bc.add_loads(assembler);
+    assembler.assemble(constraints, system_matrix, system_rhs);
+  }
+
+
+
+  void
+  ElasticityProblem::solve()
+  {
+    dealii::TimerOutput::Scope t(*timer, "solve");
+    LinearSolver::Settings     settings;
+    settings.type               = LinearSolver::parse_type(solver_type);
+    settings.relative_tolerance = solver_tolerance;
+    settings.max_iterations     = solver_max_iterations;
+    LinearSolver solver(settings);
+    if (settings.type == LinearSolver::Type::cg_amg)
+      solver.set_near_null_space(dof_handler.rigid_body_modes());
+    solver.solve(system_matrix, solution, system_rhs);
+    constraints.distribute(solution);
+    solver_description = solver.description();
+    solver_iterations  = solver.last_iterations();
+  }
+
+
+
+  // Stresses, errors against the exact solution (if given), the VTU file,
+  // a line of the convergence table and of the JSON summary; the summary
+  // is rewritten after every cycle, so that a later failure keeps it.
+  void
+  ElasticityProblem::output_results(const unsigned int cycle)
+  {
+    const StressRecovery<2> stresses(dof_handler, materials, solution);
+    ErrorNorms              errors;
+    if (exact)
+      {
+        dealii::TimerOutput::Scope t(*timer, "errors");
+        errors = compute_errors(dof_handler, materials, solution, *exact);
+      }
+    const std::string vtu = output_prefix(output_folder, base_name, cycle, n_cycles) + ".vtu";
+    if (write_vtu)
+      {
+        dealii::TimerOutput::Scope t(*timer, "output");
+        write_vtu_file(vtu, dof_handler, solution, stresses);
+      }
+
+    const auto [hmin, hmax] = mesh.cell_diameter_range();
+    double max_vm           = 0;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      max_vm = std::max(max_vm, stresses.cell_von_mises(c));
+    std::cout << "Cycle " << cycle << ": " << mesh.n_cells() << " cells, " << dof_handler.n_dofs()
+              << " DoFs, h = " << hmax << ", solver " << solver_description;
+    if (solver_iterations > 1)
+      std::cout << " (" << solver_iterations << " iterations)";
+    std::cout << ", max von Mises " << max_vm << std::endl;
+
+    table.add_value("cycle", cycle);
+    table.add_value("cells", mesh.n_cells());
+    table.add_value("dofs", dof_handler.n_dofs());
+    table.add_value("h", hmax);
+    const std::string key = "cycles." + std::to_string(cycle) + ".";
+    json.set(key + "cells", double(mesh.n_cells()));
+    json.set(key + "dofs", double(dof_handler.n_dofs()));
+    json.set(key + "h_max", hmax);
+    json.set(key + "h_min", hmin);
+    json.set(key + "max_von_mises", max_vm);
+    json.set(key + "solver_iterations", double(solver_iterations));
+    if (write_vtu)
+      json.set(key + "vtu", vtu);
+    for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
+      json.set(key + "timings." + s.first, s.second);
+    if (exact)
+      {
+        table.add_value("L2", errors.l2);
+        table.add_value("H1", errors.h1_seminorm);
+        table.add_value("energy", errors.energy);
+        json.set(key + "errors.L2", errors.l2);
+        json.set(key + "errors.H1_seminorm", errors.h1_seminorm);
+        json.set(key + "errors.energy", errors.energy);
+        last_errors = {errors.l2, errors.h1_seminorm, errors.energy};
+      }
+    last_n_dofs = dof_handler.n_dofs();
+    last_timings.clear();
+    for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
+      last_timings[s.first] = s.second;
+    if (write_json)
+      json.write(output_folder + "/" + base_name + ".json");
+  }
+
+
+
   void
   ElasticityProblem::run()
   {
     check_output_names(output_folder, base_name);
     create_output_folder(output_folder);
-    const ElasticMaterial                                 material(youngs_modulus, poissons_ratio, model);
-    const std::map<dealii::types::material_id, ElasticMaterial> materials = {
-      {dealii::types::material_id(mesh_parameters.material_id), material}};
-
-    std::unique_ptr<InputParsing::ParsedFunction> exact;
+    materials = {{dealii::types::material_id(mesh_parameters.material_id),
+                  ElasticMaterial(youngs_modulus, poissons_ratio, model)}};
+    exact.reset();
     if (!InputParsing::trim(exact_displacement).empty())
-      exact = std::make_unique<InputParsing::ParsedFunction>(
-        InputParsing::split(exact_displacement, ','), bc.get_constants(),
-        "Exact solution/Displacement");
+      exact = std::make_unique<InputParsing::ParsedFunction>(InputParsing::split(exact_displacement, ','),
+                                                             bc.get_constants(), "Exact solution/Displacement");
     AssertThrow(!exact || exact->n_components == 2,
                 dealii::ExcMessage("Parameter 'Exact solution/Displacement' needs two expressions 'ux, uy'."));
 
-    dealii::ConvergenceTable table;
-    JsonSummary              json;
+    table = dealii::ConvergenceTable();
+    json  = JsonSummary();
     json.set("program", "dealvem");
     json.set("mesh.type", mesh_parameters.description());
     json.set("material.E", youngs_modulus);
@@ -187,140 +321,30 @@ namespace dealvem
 
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
       {
-        dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never,
-                                  dealii::TimerOutput::wall_times);
-        PolygonalMesh<2> mesh;
-        {
-          dealii::TimerOutput::Scope t(timer, "mesh");
-          mesh_parameters.create_mesh(mesh, cycle, prm_directory);
-          for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-            AssertThrow(materials.count(mesh.cell(c).material_id),
-                        dealii::ExcMessage("Cell " + std::to_string(c) + " of mesh '" + mesh.name +
-                                           "' has material id " +
-                                           std::to_string(mesh.cell(c).material_id) +
-                                           " but the parameter file defines a material for id " +
-                                           std::to_string(mesh_parameters.material_id) + " only."));
-          bc.check_boundary_ids(mesh);
-        }
-
-        VEMDoFHandler<2>                   dof_handler(mesh);
-        dealii::AffineConstraints<double>  constraints;
-        dealii::SparsityPattern            sparsity;
-        dealii::SparseMatrix<double>       matrix;
-        dealii::Vector<double>             rhs, solution;
-        {
-          dealii::TimerOutput::Scope t(timer, "setup");
-          dof_handler.distribute_dofs(degree);
-          bc.apply_constraints(dof_handler, constraints);
-          constraints.close();
-          BoundaryConditions::check_rigid_body_support(dof_handler, constraints);
-          dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
-          dof_handler.make_sparsity_pattern(dsp, constraints);
-          sparsity.copy_from(dsp);
-          matrix.reinit(sparsity);
-        }
-        {
-          dealii::TimerOutput::Scope t(timer, "assembly");
-          ElasticityAssembler<2>     assembler(dof_handler, materials, gamma);
-          bc.add_loads(assembler);
-          assembler.assemble(constraints, matrix, rhs);
-        }
-        LinearSolver::Settings settings;
-        settings.type               = LinearSolver::parse_type(solver_type);
-        settings.relative_tolerance = solver_tolerance;
-        settings.max_iterations     = solver_max_iterations;
-        LinearSolver solver(settings);
-        {
-          dealii::TimerOutput::Scope t(timer, "solve");
-          solution.reinit(dof_handler.n_dofs());
-          if (settings.type == LinearSolver::Type::cg_amg)
-            solver.set_near_null_space(dof_handler.rigid_body_modes());
-          solver.solve(matrix, solution, rhs);
-          constraints.distribute(solution);
-        }
-        StressRecovery<2> stresses(dof_handler, materials, solution);
-        ErrorNorms        errors;
-        if (exact)
-          {
-            dealii::TimerOutput::Scope t(timer, "errors");
-            errors = compute_errors(dof_handler, materials, solution, *exact);
-          }
-        const std::string vtu = output_prefix(output_folder, base_name, cycle, n_cycles) + ".vtu";
-        if (write_vtu)
-          {
-            dealii::TimerOutput::Scope t(timer, "output");
-            write_vtu_file(vtu, dof_handler, solution, stresses);
-          }
-
-        const auto   [hmin, hmax] = mesh.cell_diameter_range();
-        double       max_vm       = 0;
-        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-          max_vm = std::max(max_vm, stresses.cell_von_mises(c));
-        std::cout << "Cycle " << cycle << ": " << mesh.n_cells() << " cells, "
-                  << dof_handler.n_dofs() << " DoFs, h = " << hmax << ", solver "
-                  << solver.description();
-        if (solver.last_iterations() > 1)
-          std::cout << " (" << solver.last_iterations() << " iterations)";
-        std::cout << ", max von Mises " << max_vm << std::endl;
-
-        table.add_value("cycle", cycle);
-        table.add_value("cells", mesh.n_cells());
-        table.add_value("dofs", dof_handler.n_dofs());
-        table.add_value("h", hmax);
-        const std::string key = "cycles." + std::to_string(cycle) + ".";
-        json.set(key + "cells", double(mesh.n_cells()));
-        json.set(key + "dofs", double(dof_handler.n_dofs()));
-        json.set(key + "h_max", hmax);
-        json.set(key + "h_min", hmin);
-        json.set(key + "max_von_mises", max_vm);
-        json.set(key + "solver_iterations", double(solver.last_iterations()));
-        if (write_vtu)
-          json.set(key + "vtu", vtu);
-        for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
-          json.set(key + "timings." + s.first, s.second);
-        if (exact)
-          {
-            table.add_value("L2", errors.l2);
-            table.add_value("H1", errors.h1_seminorm);
-            table.add_value("energy", errors.energy);
-            json.set(key + "errors.L2", errors.l2);
-            json.set(key + "errors.H1_seminorm", errors.h1_seminorm);
-            json.set(key + "errors.energy", errors.energy);
-            last_errors = {errors.l2, errors.h1_seminorm, errors.energy};
-          }
-        last_n_dofs = dof_handler.n_dofs();
-        last_timings.clear();
-        for (const auto &s : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
-          last_timings[s.first] = s.second;
-        // the summary of the cycles so far: a later failure keeps it
-        if (write_json)
-          json.write(output_folder + "/" + base_name + ".json");
+        timer = std::make_unique<dealii::TimerOutput>(std::cout, dealii::TimerOutput::never,
+                                                      dealii::TimerOutput::wall_times);
+        make_mesh(cycle);
+        setup_system();
+        assemble_system();
+        solve();
+        output_results(cycle);
       }
 
     if (exact)
       {
-        table.set_scientific("L2", true);
-        table.set_scientific("H1", true);
-        table.set_scientific("energy", true);
-        table.set_scientific("h", true);
-        table.set_precision("L2", 3);
-        table.set_precision("H1", 3);
-        table.set_precision("energy", 3);
-        table.set_precision("h", 3);
-        if (n_cycles > 1)
+        for (const std::string c : {"L2", "H1", "energy", "h"})
           {
-            table.evaluate_convergence_rates("L2", "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
-            table.evaluate_convergence_rates("H1", "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
-            table.evaluate_convergence_rates("energy", "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
+            table.set_scientific(c, true);
+            table.set_precision(c, 3);
           }
+        if (n_cycles > 1)
+          for (const std::string c : {"L2", "H1", "energy"})
+            table.evaluate_convergence_rates(c, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
         std::cout << std::endl;
         table.write_text(std::cout, dealii::TableHandler::org_mode_table);
       }
     if (write_json)
-      {
-        const std::string file = output_folder + "/" + base_name + ".json";
-        std::cout << "Summary written to " << file << std::endl;
-      }
+      std::cout << "Summary written to " << output_folder + "/" + base_name + ".json" << std::endl;
     if (write_vtu)
       std::cout << "ParaView files: " << output_folder << "/" << base_name
                 << (n_cycles > 1 ? "-cycle*.vtu" : ".vtu") << std::endl;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -396,4 +397,22 @@ namespace dealvem
   }
 
   template class ContactAssembler<2>;
+
+
+
+  ContactScales::ContactScales(const std::vector<double>                   &youngs_moduli,
+                               const std::vector<NodeInsertion::Interface> &interfaces)
+  {
+    AssertThrow(!youngs_moduli.empty(), dealii::ExcMessage("ContactScales: no Young's modulus given."));
+    E_min = *std::min_element(youngs_moduli.begin(), youngs_moduli.end());
+    AssertThrow(E_min > 0 && std::isfinite(E_min),
+                dealii::ExcMessage("ContactScales: the Young's moduli must be positive and finite."));
+    h_min = std::numeric_limits<double>::infinity();
+    for (const auto &itf : interfaces)
+      for (const auto &s : itf.segments)
+        h_min = std::min(h_min, s.length);
+    AssertThrow(h_min > 0 && std::isfinite(h_min),
+                dealii::ExcMessage("ContactScales: node insertion paired no interface edge, so the contact "
+                                   "scale E_min / h_min is undefined."));
+  }
 } // namespace dealvem

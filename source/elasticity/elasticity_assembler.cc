@@ -125,8 +125,15 @@ namespace dealvem
                                      dealii::SparseMatrix<double>            &matrix,
                                      dealii::Vector<double>                  &rhs) const
   {
+    const auto n = dof_handler.n_dofs();
+    AssertThrow(matrix.m() >= n && matrix.n() >= n,
+                dealii::ExcMessage("ElasticityAssembler::assemble(): the matrix has " + std::to_string(matrix.m()) +
+                                   " rows, fewer than the " + std::to_string(n) + " DoFs."));
     matrix = 0;
-    rhs.reinit(dof_handler.n_dofs());
+    if (rhs.size() < n)
+      rhs.reinit(n);
+    else
+      rhs = 0;
     VEMValues<dim> vem_values(dof_handler);
     vem_values.set_cell_similarity(cell_similarity);
     ElasticityOperator<dim> elasticity;

@@ -19,6 +19,7 @@
 #include <dealvem/postprocessing/error_norms.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,9 @@ namespace dealvem
   public:
     static constexpr unsigned int max_bodies = 4;
 
+    ContactProblem();
+    ~ContactProblem();
+
     /// Declare the sections of the extra bodies and of contact (the
     /// common sections come from ElasticityProblem::declare_parameters()).
     static void
@@ -67,7 +71,9 @@ namespace dealvem
     void
     run();
 
-    /// One cycle: meshes refined @p cycle times.
+    /// One cycle: meshes refined @p cycle times; make_meshes(), insert_nodes(),
+    /// setup_system(), then per load step assemble_system(), solve() and
+    /// process_step(), then postprocess() and output_results().
     void
     run_cycle(const unsigned int cycle);
 
@@ -164,6 +170,24 @@ namespace dealvem
     }
 
   private:
+    /// The steps of one cycle, in the order run_cycle() calls them.
+    void
+    make_meshes(const unsigned int cycle);
+    void
+    insert_nodes();
+    void
+    setup_system();
+    void
+    assemble_system(const double time);
+    void
+    solve(const unsigned int step, const double time);
+    void
+    process_step(const unsigned int step, const double time);
+    void
+    postprocess();
+    void
+    output_results();
+
     struct Body
     {
       MeshParameters mesh;
@@ -191,6 +215,11 @@ namespace dealvem
     double                     final_time = 1;
     Results                    results;
     std::vector<std::vector<ErrorNorms>> convergence;
+    /// The DoF handler, assembler, matrices and solvers of the current
+    /// cycle (defined in the .cc file); declared after @p results so that it
+    /// is destroyed before the mesh it refers to.
+    struct CycleData;
+    std::unique_ptr<CycleData> data;
   };
 } // namespace dealvem
 

@@ -5,13 +5,24 @@
 #ifndef dealvem_app_elasticity_problem_h
 #define dealvem_app_elasticity_problem_h
 
+#include <deal.II/base/convergence_table.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
 
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/elasticity/material.h>
+#include <dealvem/mesh/polygonal_mesh.h>
+#include <dealvem/postprocessing/error_norms.h>
+#include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/vem/vem_dof_handler.h>
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,8 +34,11 @@ namespace dealvem
    * conditions and loads by boundary id, body force, optional exact
    * solution with a convergence study, solver, and output (VTU, JSON).
    *
-   * Data flow of run(): mesh -> DoFs -> constraints -> assembly -> solve
-   * -> stresses and errors -> output, once per refinement cycle.
+   * Data flow of run(), once per refinement cycle, in the functions of a
+   * deal.II tutorial: make_mesh() -> setup_system() (DoFs, constraints,
+   * sparsity) -> assemble_system() (ElasticityAssembler: VEMValues and
+   * ElasticityOperator per cell) -> solve() -> output_results() (stresses,
+   * errors, VTU, convergence table, JSON).
    */
   class ElasticityProblem
   {
@@ -53,6 +67,17 @@ namespace dealvem
     std::map<std::string, double> last_timings;
 
   private:
+    void
+    make_mesh(const unsigned int cycle);
+    void
+    setup_system();
+    void
+    assemble_system();
+    void
+    solve();
+    void
+    output_results(const unsigned int cycle);
+
     MeshParameters         mesh_parameters;
     double                 youngs_modulus = 1000, poissons_ratio = 0.3;
     ElasticMaterial::Model model = ElasticMaterial::Model::plane_strain;
@@ -67,6 +92,21 @@ namespace dealvem
     std::string  output_folder = "output", base_name = "solution";
     bool         write_vtu = true, write_json = true;
     std::string  prm_directory;
+
+    // the state of a run
+    std::map<dealii::types::material_id, ElasticMaterial> materials;
+    std::unique_ptr<dealii::Function<2>>                  exact;
+    std::unique_ptr<dealii::TimerOutput>                  timer;
+    PolygonalMesh<2>                                      mesh;
+    VEMDoFHandler<2>                                      dof_handler;
+    dealii::AffineConstraints<double>                     constraints;
+    dealii::SparsityPattern                               sparsity_pattern;
+    dealii::SparseMatrix<double>                          system_matrix;
+    dealii::Vector<double>                                system_rhs, solution;
+    std::string                                           solver_description;
+    unsigned int                                          solver_iterations = 0;
+    dealii::ConvergenceTable                              table;
+    JsonSummary                                           json;
   };
 } // namespace dealvem
 

@@ -91,6 +91,45 @@ namespace dealvem
 
 
   /**
+   * The two constants a contact problem derives from its bodies and its
+   * interfaces, by one rule that ContactProblem and the tutorials share:
+   * the scale $E_{min}/h_{min}$, with $E_{min}$ the smallest Young's
+   * modulus of the bodies in contact and $h_{min}$ the shortest paired
+   * sub-edge of the interfaces after node insertion (the stiffness of the
+   * stiffest single connection, up to a constant).
+   * - complementarity_constant(): $c = E_{min}/h_{min}$ in the
+   *   complementarity functions of the active-set and semismooth Newton
+   *   methods, $\lambda - \max(0,\lambda - c\,g)$: it puts gaps and
+   *   multipliers (nodal forces) on one scale.
+   * - penalty(): the stick penalty per unit length, ContactSettings::penalty
+   *   when it is set (> 0), otherwise
+   *   ContactSettings::penalty_factor $\cdot E_{min}/h_{min}$.
+   */
+  struct ContactScales
+  {
+    /// Throws unless @p youngs_moduli is non-empty and positive and some
+    /// interface has a paired sub-edge.
+    ContactScales(const std::vector<double>                   &youngs_moduli,
+                  const std::vector<NodeInsertion::Interface> &interfaces);
+
+    double E_min = 0, h_min = 0;
+
+    double
+    complementarity_constant() const
+    {
+      return E_min / h_min;
+    }
+
+    double
+    penalty(const ContactSettings &settings) const
+    {
+      return settings.penalty > 0 ? settings.penalty : settings.penalty_factor * E_min / h_min;
+    }
+  };
+
+
+
+  /**
    * State of a contact node pair under Coulomb friction: open (no contact
    * force), sticking (no incremental slip), or slipping in the direction
    * $+t$ or $-t$ of the slave node relative to the master node (the

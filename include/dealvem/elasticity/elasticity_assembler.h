@@ -101,7 +101,10 @@ namespace dealvem
 
     /// Assemble the matrix and the right-hand side. @p matrix must have a
     /// sparsity pattern from VEMDoFHandler::make_sparsity_pattern (with the
-    /// constraints' entries added, as for deal.II).
+    /// constraints' entries added, as for deal.II). Both are zeroed first;
+    /// they may be larger than n_dofs() (a saddle-point system whose first
+    /// n_dofs() unknowns are the displacements, as ContactProblem's), and
+    /// @p rhs is resized to n_dofs() when it is smaller.
     void
     assemble(const dealii::AffineConstraints<double> &constraints,
              dealii::SparseMatrix<double>            &matrix,
