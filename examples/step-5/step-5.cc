@@ -52,7 +52,7 @@
 // the maps between the two), the VEM DoFs, assembly, solver, error norms
 // and the transfer back.
 #include <dealvem/elasticity/boundary_conditions.h>
-#include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/generators.h>
 #include <dealvem/mesh/triangulation_map.h>
@@ -60,6 +60,7 @@
 #include <dealvem/postprocessing/fe_transfer.h>
 #include <dealvem/solvers/linear_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/vem_values.h>
 
 #include <cmath>
 #include <fstream>
@@ -264,15 +265,26 @@ namespace Step5
 
   // @sect4{EmbeddingProblem::assemble_system}
   //
-  // Stiffness $K_E = K_c + K_s$ and the body-force load
-  // $F_i = \int_E f\cdot\Pi_*\varphi_i$ per polygon, condensed with the
-  // constraints (see step-1).
+  // The loop of step-8 over the polygons: VEMValues evaluates the space on
+  // the polygon, ElasticityOperator gives the stiffness $K_E = K_c + K_s$
+  // (step-1 builds the same matrix by quadrature), the space the body-force
+  // load $F_i = \int_E f\cdot\Pi^0\varphi_i$; AffineConstraints condenses.
   void
   EmbeddingProblem::assemble_system()
   {
-    dealvem::ElasticityAssembler<2> assembler(vem_dof_handler, materials, 1.0);
-    assembler.set_body_force(body_force);
-    assembler.assemble(constraints, system_matrix, system_rhs);
+    system_matrix = 0;
+    system_rhs.reinit(vem_dof_handler.n_dofs());
+    dealvem::VEMValues<2>          vem_values(vem_dof_handler);
+    dealvem::ElasticityOperator<2> elasticity;
+    Vector<double>                 cell_rhs;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        vem_values.reinit(c);
+        elasticity.reinit(vem_values.get_element(), materials.at(vem_values.material_id()));
+        vem_values.body_force_vector(body_force, cell_rhs);
+        constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), cell_rhs,
+                                               vem_values.get_dof_indices(), system_matrix, system_rhs);
+      }
   }
 
   // @sect4{EmbeddingProblem::solve}
