@@ -804,26 +804,34 @@ namespace dealvem
         std::cout << std::endl;
       }
     if (n_steps > 1)
+      output_step(step);
+  }
+
+
+  // The files of load step @p step: the interface CSV, the VTU file and the
+  // .pvd time series of the steps so far (rewritten after every step).
+  void
+  ContactProblem::output_step(const unsigned int step) const
+  {
+    const CycleData &d = *data;
+    if (write_csv)
+      write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
+    if (write_vtu)
       {
-        if (write_csv)
-          write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
-        if (write_vtu)
-          {
-            StressRecovery<2> step_stresses(d.dof_handler, d.materials, results.solution);
-            write_vtu_file(step_prefix(d.prefix, step) + ".vtu", d.dof_handler, results.solution, step_stresses);
-            // the time series so far, rewritten after every step
-            OutputFile    pvd_file(d.prefix + ".pvd");
-            std::ostream &pvd = pvd_file.stream();
-            pvd << "<?xml version=\"1.0\"?>\n"
-                << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                << "  <Collection>\n";
-            for (const auto &sr : results.steps)
-              pvd << "    <DataSet timestep=\"" << std::setprecision(17) << sr.time
-                  << "\" group=\"\" part=\"0\" file=\""
-                  << std::filesystem::path(step_prefix(d.prefix, sr.step) + ".vtu").filename().string() << "\"/>\n";
-            pvd << "  </Collection>\n</VTKFile>\n";
-            pvd_file.commit();
-          }
+        StressRecovery<2> step_stresses(d.dof_handler, d.materials, results.solution);
+        write_vtu_file(step_prefix(d.prefix, step) + ".vtu", d.dof_handler, results.solution, step_stresses);
+        // the time series so far, rewritten after every step
+        OutputFile    pvd_file(d.prefix + ".pvd");
+        std::ostream &pvd = pvd_file.stream();
+        pvd << "<?xml version=\"1.0\"?>\n"
+            << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            << "  <Collection>\n";
+        for (const auto &sr : results.steps)
+          pvd << "    <DataSet timestep=\"" << std::setprecision(17) << sr.time
+              << "\" group=\"\" part=\"0\" file=\""
+              << std::filesystem::path(step_prefix(d.prefix, sr.step) + ".vtu").filename().string() << "\"/>\n";
+        pvd << "  </Collection>\n</VTKFile>\n";
+        pvd_file.commit();
       }
   }
 
@@ -836,6 +844,10 @@ namespace dealvem
   {
     CycleData        &d    = *data;
     PolygonalMesh<2> &mesh = results.mesh;
+    results.n_dropped_constraints = d.contact->get_dropped_constraints().size();
+    results.n_open_end_warnings   = 0;
+    for (const auto &r : results.pairs)
+      results.n_open_end_warnings += (r.active && r.at_open_end);
     // per body: cells, DoFs, and errors against the exact solution
     results.cells_per_body.assign(bodies.size(), 0);
     results.dofs_per_body.assign(bodies.size(), 0);
@@ -886,12 +898,39 @@ namespace dealvem
 
 
 
-  // The report on the terminal, and the files: interface CSV, VTU,
+  // The report on the terminal and the files: interface CSV, VTU,
   // pictures, JSON summary.
   void
   ContactProblem::output_results()
   {
-    CycleData  &d          = *data;
+    print_report();
+    if (write_csv)
+      {
+        write_interface_csv(data->prefix + "-interface.csv", results.pairs);
+        std::cout << "  interface results: " << data->prefix << "-interface.csv" << std::endl;
+      }
+    if (write_vtu)
+      {
+        write_vtu_file(data->prefix + ".vtu", data->dof_handler, results.solution, *data->stresses);
+        std::cout << "  ParaView file (all bodies, field body_id): " << data->prefix << ".vtu" << std::endl;
+        if (n_steps > 1)
+          std::cout << "  load steps: " << data->prefix << "-step-NNN.vtu, -interface.csv; time series " << data->prefix
+                    << ".pvd" << std::endl;
+      }
+    if (write_pictures)
+      write_pictures_files();
+    if (write_json)
+      write_json_summary();
+  }
+
+
+
+  // What the run found, on the terminal: sizes, node insertion (with its
+  // warnings), the active set, the solver, pressures, stresses, forces.
+  void
+  ContactProblem::print_report() const
+  {
+    const CycleData &d     = *data;
     const auto &mesh       = results.mesh;
     const auto &interfaces = results.interfaces;
     const auto &pairs      = d.pairs;
@@ -899,11 +938,6 @@ namespace dealvem
     const auto &as         = d.as;
     const auto &n          = d.n;
     const auto &m          = d.m;
-    const auto &prefix     = d.prefix;
-    const auto &stresses   = *d.stresses;
-    const bool  friction   = (d.friction_solver != nullptr);
-    const bool  write_steps = (n_steps > 1);
-    const double penalty  = results.penalty;
     unsigned int n_inserted = 0;
     for (const auto &r : results.insertion_reports)
       n_inserted += r.n_inserted_master + r.n_inserted_slave;
@@ -952,7 +986,6 @@ namespace dealvem
                 << d.location[0] << ", " << d.location[1]
                 << ") is already imposed by the displacement constraints (value " << d.imposed_value
                 << "); its multiplier is dropped." << std::endl;
-    results.n_dropped_constraints = contact.get_dropped_constraints().size();
     for (const auto &r : results.pairs)
       if (r.active && r.at_open_end)
         {
@@ -962,7 +995,6 @@ namespace dealvem
                        "go on: the contact zone may be cut off. Enlarge the contact parts (boundary ids) "
                        "or the 'Search distance'."
                     << std::endl;
-          ++results.n_open_end_warnings;
         }
     std::cout
               << "  active set: " << as.n_iterations << " iteration(s), active pairs per iteration:";
@@ -999,136 +1031,158 @@ namespace dealvem
     std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
               << ", " << results.total_contact_force[1] << ")" << std::endl;
 
-    if (write_csv)
-      {
-        write_interface_csv(prefix + "-interface.csv", results.pairs);
-        std::cout << "  interface results: " << prefix << "-interface.csv" << std::endl;
-      }
-    if (write_vtu)
-      {
-        write_vtu_file(prefix + ".vtu", d.dof_handler, results.solution, stresses);
-        std::cout << "  ParaView file (all bodies, field body_id): " << prefix << ".vtu" << std::endl;
-        if (write_steps)
-          std::cout << "  load steps: " << prefix << "-step-NNN.vtu, -interface.csv; time series " << prefix
-                    << ".pvd" << std::endl;
-      }
-    if (write_pictures)
-      {
-        std::vector<bool> inserted(mesh.n_vertices(), false);
-        for (unsigned int v = d.original_vertices.size(); v < mesh.n_vertices(); ++v)
-          inserted[v] = true;
-        std::vector<dealii::Tensor<1, 2>> displacement(mesh.n_vertices());
-        double umax = 0, size = 0;
-        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-          {
-            displacement[v][0] = results.solution[2 * v];
-            displacement[v][1] = results.solution[2 * v + 1];
-            umax               = std::max(umax, displacement[v].norm());
-            size = std::max(size, mesh.vertex(v).distance(mesh.vertex(0)));
-          }
-        const double scale = (umax > 0 ? 0.05 * size / umax : 1.);
-        std::vector<double> syy(mesh.n_cells());
-        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-          syy[c] = results.cell_stress[c][1];
-        std::ostringstream title;
-        title << "sigma_yy on the deformed bodies (displacement x " << std::setprecision(3) << scale
-              << "), inserted nodes marked";
-        SVGPlots::write_mesh(prefix + "-stress.svg", mesh, displacement, scale, syy, "sigma_yy",
-                             inserted, title.str());
-        std::vector<SVGPlots::Series> series;
-        for (unsigned int i = 0; i < contact_pairs.size(); ++i)
-          {
-            SVGPlots::Series s;
-            s.name = "interface " + std::to_string(i) + " (" + std::to_string(contact_pairs[i].first) +
-                     ":" + std::to_string(contact_pairs[i].second) + ")";
-            for (const auto &r : results.pairs)
-              if (r.interface == i)
-                s.points.emplace_back(r.location[0], r.pressure);
-            std::sort(s.points.begin(), s.points.end());
-            series.push_back(s);
-          }
-        SVGPlots::write_line_plot(prefix + "-pressure.svg", series, "x", "contact pressure",
-                                  "Contact pressure along the interface");
-        std::cout << "  pictures: " << prefix << "-stress.svg, " << prefix << "-pressure.svg" << std::endl;
-      }
-    if (write_json)
-      {
-        JsonSummary json;
-        json.set("program", "dealvem");
-        json.set("problem", "contact");
-        json.set("bodies", double(bodies.size()));
-        json.set("cells", double(mesh.n_cells()));
-        json.set("dofs", double(n));
-        json.set("multipliers", double(m));
-        json.set("order", double(degree));
-        json.set("solver", d.solver->description());
-        json.set("contact.node_pairs", double(pairs.size()));
-        json.set("contact.inserted_nodes", double(n_inserted));
-        json.set("contact.active_set_iterations", double(as.n_iterations));
-        json.set("contact.linear_iterations", double(as.linear_iterations));
-        json.set("contact.penalty", penalty);
-        unsigned int n_active = 0;
-        for (const auto &r : results.pairs)
-          n_active += r.active;
-        json.set("contact.active_pairs", double(n_active));
-        if (pmax >= pmin)
-          {
-            json.set("contact.pressure_min", pmin);
-            json.set("contact.pressure_max", pmax);
-          }
-        json.set("contact.open_end_warnings", double(results.n_open_end_warnings));
-        {
-          unsigned int n_unpaired = 0, n_closed = 0, n_merged = 0, n_unresolved = 0;
-          double       max_closed = 0;
-          for (const auto &r : results.insertion_reports)
-            {
-              n_unpaired += r.unpaired.size();
-              n_unresolved += r.unresolved_gaps.size();
-              n_closed += r.n_closed_gaps;
-              n_merged += r.n_merged;
-              max_closed = std::max(max_closed, r.max_closed_gap);
-            }
-          json.set("contact.unpaired_nodes", double(n_unpaired));
-          json.set("contact.unresolved_gaps", double(n_unresolved));
-          json.set("contact.merged_pairs", double(n_merged));
-          json.set("contact.closed_gaps", double(n_closed));
-          json.set("contact.max_closed_gap", max_closed);
-        }
-        for (unsigned int b = 0; b < bodies.size(); ++b)
-          if (!InputParsing::trim(bodies[b].exact).empty())
-            {
-              const auto       &e = results.errors[b];
-              const std::string k = "errors.body" + std::to_string(b) + ".";
-              json.set(k + "L2", e.l2 / std::max(e.l2_exact, 1e-300));
-              json.set(k + "H1", e.h1_seminorm / std::max(e.h1_exact, 1e-300));
-              json.set(k + "energy", e.energy / std::max(e.energy_exact, 1e-300));
-            }
-        if (friction || n_steps > 1)
-          {
-            json.set("contact.tangential", friction ? "coulomb" : "stick or frictionless");
-            json.set("load_steps.requested", double(n_steps));
-            json.set("load_steps.converged", double(results.steps.size()));
-            json.set("load_steps.final_time", final_time);
-            json.set("contact.dissipated_energy", results.dissipated_energy);
-            for (const auto &sr : results.steps)
-              {
-                const std::string k = "steps." + std::to_string(sr.step) + ".";
-                json.set(k + "time", sr.time);
-                json.set(k + "iterations", double(sr.iterations));
-                json.set(k + "open", double(sr.n_open));
-                json.set(k + "stick", double(sr.n_stick));
-                json.set(k + "slip", double(sr.n_slip));
-                json.set(k + "dissipated_energy", sr.dissipated_energy);
-                json.set(k + "force_x", sr.total_contact_force[0]);
-                json.set(k + "force_y", sr.total_contact_force[1]);
-              }
-          }
-        json.set("contact.total_force_x", results.total_contact_force[0]);
-        json.set("contact.total_force_y", results.total_contact_force[1]);
-        for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
-          json.set("timings." + s.first, s.second);
-        json.write(prefix + ".json");
-        std::cout << "  summary: " << prefix << ".json" << std::endl;
-      }
   }
+
+
+
+  // The deformed bodies coloured by sigma_yy (inserted nodes marked) and
+  // the contact pressure along each interface, as SVG.
+  void
+  ContactProblem::write_pictures_files() const
+  {
+    const CycleData &d     = *data;
+    const auto &mesh       = results.mesh;
+    const auto &prefix     = d.prefix;
+    std::vector<bool> inserted(mesh.n_vertices(), false);
+    for (unsigned int v = d.original_vertices.size(); v < mesh.n_vertices(); ++v)
+      inserted[v] = true;
+    std::vector<dealii::Tensor<1, 2>> displacement(mesh.n_vertices());
+    double umax = 0, size = 0;
+    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+      {
+        displacement[v][0] = results.solution[2 * v];
+        displacement[v][1] = results.solution[2 * v + 1];
+        umax               = std::max(umax, displacement[v].norm());
+        size = std::max(size, mesh.vertex(v).distance(mesh.vertex(0)));
+      }
+    const double scale = (umax > 0 ? 0.05 * size / umax : 1.);
+    std::vector<double> syy(mesh.n_cells());
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      syy[c] = results.cell_stress[c][1];
+    std::ostringstream title;
+    title << "sigma_yy on the deformed bodies (displacement x " << std::setprecision(3) << scale
+          << "), inserted nodes marked";
+    SVGPlots::write_mesh(prefix + "-stress.svg", mesh, displacement, scale, syy, "sigma_yy",
+                         inserted, title.str());
+    std::vector<SVGPlots::Series> series;
+    for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+      {
+        SVGPlots::Series s;
+        s.name = "interface " + std::to_string(i) + " (" + std::to_string(contact_pairs[i].first) +
+                 ":" + std::to_string(contact_pairs[i].second) + ")";
+        for (const auto &r : results.pairs)
+          if (r.interface == i)
+            s.points.emplace_back(r.location[0], r.pressure);
+        std::sort(s.points.begin(), s.points.end());
+        series.push_back(s);
+      }
+    SVGPlots::write_line_plot(prefix + "-pressure.svg", series, "x", "contact pressure",
+                              "Contact pressure along the interface");
+    std::cout << "  pictures: " << prefix << "-stress.svg, " << prefix << "-pressure.svg" << std::endl;
+  }
+
+
+
+  // The JSON summary of the run (sizes, contact counts, pressures, errors,
+  // load steps, timings).
+  void
+  ContactProblem::write_json_summary() const
+  {
+    const CycleData &d     = *data;
+    const auto &mesh       = results.mesh;
+    const auto &pairs      = d.pairs;
+    const auto &as         = d.as;
+    const auto &n          = d.n;
+    const auto &m          = d.m;
+    const auto &prefix     = d.prefix;
+    const bool  friction   = (d.friction_solver != nullptr);
+    const double penalty  = results.penalty;
+    unsigned int n_inserted = 0;
+    for (const auto &r : results.insertion_reports)
+      n_inserted += r.n_inserted_master + r.n_inserted_slave;
+    double pmin = 1e300, pmax = -1e300;
+    for (const auto &r : results.pairs)
+      if (r.active)
+        {
+          pmin = std::min(pmin, r.pressure);
+          pmax = std::max(pmax, r.pressure);
+        }
+    JsonSummary json;
+    json.set("program", "dealvem");
+    json.set("problem", "contact");
+    json.set("bodies", double(bodies.size()));
+    json.set("cells", double(mesh.n_cells()));
+    json.set("dofs", double(n));
+    json.set("multipliers", double(m));
+    json.set("order", double(degree));
+    json.set("solver", d.solver->description());
+    json.set("contact.node_pairs", double(pairs.size()));
+    json.set("contact.inserted_nodes", double(n_inserted));
+    json.set("contact.active_set_iterations", double(as.n_iterations));
+    json.set("contact.linear_iterations", double(as.linear_iterations));
+    json.set("contact.penalty", penalty);
+    unsigned int n_active = 0;
+    for (const auto &r : results.pairs)
+      n_active += r.active;
+    json.set("contact.active_pairs", double(n_active));
+    if (pmax >= pmin)
+      {
+        json.set("contact.pressure_min", pmin);
+        json.set("contact.pressure_max", pmax);
+      }
+    json.set("contact.open_end_warnings", double(results.n_open_end_warnings));
+    {
+      unsigned int n_unpaired = 0, n_closed = 0, n_merged = 0, n_unresolved = 0;
+      double       max_closed = 0;
+      for (const auto &r : results.insertion_reports)
+        {
+          n_unpaired += r.unpaired.size();
+          n_unresolved += r.unresolved_gaps.size();
+          n_closed += r.n_closed_gaps;
+          n_merged += r.n_merged;
+          max_closed = std::max(max_closed, r.max_closed_gap);
+        }
+      json.set("contact.unpaired_nodes", double(n_unpaired));
+      json.set("contact.unresolved_gaps", double(n_unresolved));
+      json.set("contact.merged_pairs", double(n_merged));
+      json.set("contact.closed_gaps", double(n_closed));
+      json.set("contact.max_closed_gap", max_closed);
+    }
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (!InputParsing::trim(bodies[b].exact).empty())
+        {
+          const auto       &e = results.errors[b];
+          const std::string k = "errors.body" + std::to_string(b) + ".";
+          json.set(k + "L2", e.l2 / std::max(e.l2_exact, 1e-300));
+          json.set(k + "H1", e.h1_seminorm / std::max(e.h1_exact, 1e-300));
+          json.set(k + "energy", e.energy / std::max(e.energy_exact, 1e-300));
+        }
+    if (friction || n_steps > 1)
+      {
+        json.set("contact.tangential", friction ? "coulomb" : "stick or frictionless");
+        json.set("load_steps.requested", double(n_steps));
+        json.set("load_steps.converged", double(results.steps.size()));
+        json.set("load_steps.final_time", final_time);
+        json.set("contact.dissipated_energy", results.dissipated_energy);
+        for (const auto &sr : results.steps)
+          {
+            const std::string k = "steps." + std::to_string(sr.step) + ".";
+            json.set(k + "time", sr.time);
+            json.set(k + "iterations", double(sr.iterations));
+            json.set(k + "open", double(sr.n_open));
+            json.set(k + "stick", double(sr.n_stick));
+            json.set(k + "slip", double(sr.n_slip));
+            json.set(k + "dissipated_energy", sr.dissipated_energy);
+            json.set(k + "force_x", sr.total_contact_force[0]);
+            json.set(k + "force_y", sr.total_contact_force[1]);
+          }
+      }
+    json.set("contact.total_force_x", results.total_contact_force[0]);
+    json.set("contact.total_force_y", results.total_contact_force[1]);
+    for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
+      json.set("timings." + s.first, s.second);
+    json.write(prefix + ".json");
+    std::cout << "  summary: " << prefix << ".json" << std::endl;
+  }
+
 } // namespace dealvem

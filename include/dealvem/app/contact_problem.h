@@ -184,9 +184,17 @@ namespace dealvem
     void
     process_step(const unsigned int step, const double time);
     void
+    output_step(const unsigned int step) const;
+    void
     postprocess();
     void
     output_results();
+    void
+    print_report() const;
+    void
+    write_pictures_files() const;
+    void
+    write_json_summary() const;
 
     struct Body
     {
