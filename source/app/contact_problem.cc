@@ -531,7 +531,7 @@ namespace dealvem
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
     SaddlePointSolver solver(settings);
-    if (settings.type == SaddlePointSolver::Type::gmres_amg)
+    if (settings.type != SaddlePointSolver::Type::umfpack && settings.type != SaddlePointSolver::Type::klu)
       solver.set_near_null_space(dof_handler.rigid_body_modes());
     ActiveSetSolver<2>     active_set(contact, constraints, solver, contact_settings, E_min / h_min);
     active_set.set_support(&support);
