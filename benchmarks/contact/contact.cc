@@ -9,11 +9,14 @@
 // (matching mesh, n' x 2n' quads with n' chosen for about the same number
 // of DoFs) with the same load and supports and the same solver.
 //
-//   benchmark_contact --n N --solver UMFPACK|KLU|GMRES-AMG
+//   benchmark_contact --n N --solver UMFPACK|KLU|GMRES-AMG|"CG-AMG constraints"
+//                     [--tangential penalty|multipliers] [--penalty-factor F]
 //
 // prints "RESULT contact n dofs multipliers t_mesh t_insertion t_assembly
-// t_solve" and "RESULT onebody n dofs - t_mesh 0 t_assembly t_solve"
-// (wall seconds). benchmarks/run_benchmarks.sh runs the sizes and writes
+// t_solve", "TOTAL contact n t_total cg_iterations active_set_iterations"
+// (the whole contact run, mesh to output) and "RESULT onebody n dofs -
+// t_mesh 0 t_assembly t_solve" (wall seconds; the one-body run maps
+// GMRES-AMG and CG-AMG constraints to CG-AMG). benchmarks/run_benchmarks.sh runs the sizes and writes
 // doc/benchmarks.md.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -21,6 +24,7 @@
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/app/elasticity_problem.h>
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -33,6 +37,8 @@ main(int argc, char **argv)
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       unsigned int                             n      = 30;
       std::string                              solver = "UMFPACK";
+      std::string                              tangential = "penalty";
+      std::string                              penalty_factor = "1000";
       for (int i = 1; i + 1 < argc; i += 2)
         {
           const std::string a = argv[i];
@@ -40,6 +46,10 @@ main(int argc, char **argv)
             n = std::stoul(argv[i + 1]);
           else if (a == "--solver")
             solver = argv[i + 1];
+          else if (a == "--tangential")
+            tangential = argv[i + 1];
+          else if (a == "--penalty-factor")
+            penalty_factor = argv[i + 1];
         }
       const std::string common =
         "subsection Material\n  set Young's modulus = 7000\n  set Poisson's ratio = 0.3\nend\n"
@@ -56,7 +66,8 @@ main(int argc, char **argv)
             << "    set Lower left corner = 0, 1\n    set Upper right corner = 1, 2\n    set Subdivisions = " << m
             << ", " << m << "\n    set Boundary id offset = 10\n  end\n"
             << "  subsection Material\n    set Young's modulus = 7000\n  end\nend\n"
-            << "subsection Contact\n  set Pairs = 3 : 12\nend\n"
+            << "subsection Contact\n  set Pairs = 3 : 12\n  set Tangential = " << tangential
+            << "\n  set Penalty factor = " << penalty_factor << "\nend\n"
             << "subsection Boundary conditions and loads\n  set Dirichlet = 2 : y : 0\n"
             << "  set Point constraints = 0, 0 : x : 0\n  set Pressure = 13 : 10\nend\n"
             << common;
@@ -64,13 +75,17 @@ main(int argc, char **argv)
         dealvem::ElasticityProblem::declare_parameters(ph);
         dealvem::ContactProblem::declare_parameters(ph);
         ph.parse_input_from_string(prm.str());
+        const auto              start = std::chrono::steady_clock::now();
         dealvem::ContactProblem problem;
         problem.parse_parameters(ph);
         problem.run();
+        const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const auto &r = problem.get_results();
         auto        t = r.timings;
         std::cout << "RESULT contact " << n << " " << r.n_dofs << " " << r.n_multipliers << " " << t["mesh"] << " "
                   << t["node insertion"] << " " << t["assembly"] << " " << t["solve"] << std::endl;
+        std::cout << "TOTAL contact " << n << " " << total << " " << r.linear_iterations << " "
+                  << r.active_set_iterations << std::endl;
       }
       {
         const unsigned int n1 = std::max(1u, unsigned(std::lround(std::sqrt((n * n + m * m) / 2.))));

@@ -564,7 +564,7 @@ namespace dealvem
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
     d.solver                    = std::make_unique<SaddlePointSolver>(settings);
-    if (settings.type == SaddlePointSolver::Type::gmres_amg)
+    if (settings.type != SaddlePointSolver::Type::umfpack && settings.type != SaddlePointSolver::Type::klu)
       d.solver->set_near_null_space(d.dof_handler.rigid_body_modes());
     d.active_set = std::make_unique<ActiveSetSolver<2>>(*d.contact, d.constraints, *d.solver, contact_settings,
                                                         d.complementarity);

@@ -66,13 +66,17 @@ namespace dealvem
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    prm.declare_entry("Type", "UMFPACK", Selection("UMFPACK|KLU|CG-AMG|GMRES-AMG"),
+    prm.declare_entry("Type", "UMFPACK", Selection("UMFPACK|KLU|CG-AMG|GMRES-AMG|CG-AMG constraints"),
                       "UMFPACK: SuiteSparse direct; KLU: Trilinos Amesos KLU direct; CG-AMG: "
                       "Trilinos CG preconditioned by ML algebraic multigrid with the rigid-body "
                       "modes as near-null space. Contact problems: UMFPACK and KLU factor the whole "
                       "saddle-point matrix, and CG-AMG or GMRES-AMG both mean GMRES with a block "
                       "preconditioner (AMG on the displacement block, exact approximate Schur "
-                      "complement); one body: GMRES-AMG means CG-AMG.");
+                      "complement); 'CG-AMG constraints' writes every active contact constraint as "
+                      "an affine constraint on one slave DoF, condenses the stiffness matrix and "
+                      "solves it by CG-AMG at one-body cost, multipliers recovered from the "
+                      "residual (not with Coulomb friction); one body: GMRES-AMG and CG-AMG "
+                      "constraints mean CG-AMG.");
     prm.declare_entry("Relative tolerance", "1e-12", Double(1e-16, 1),
                       "Relative residual tolerance of the iterative solver, 0 < tolerance < 1.");
     prm.declare_entry("Maximum iterations", "10000", Integer(1), "Iteration limit of the iterative solver.");
@@ -134,7 +138,7 @@ namespace dealvem
 
     prm.enter_subsection("Solver");
     solver_type           = prm.get("Type");
-    if (solver_type == "GMRES-AMG")
+    if (solver_type == "GMRES-AMG" || solver_type == "CG-AMG constraints")
       solver_type = "CG-AMG";
     solver_tolerance      = prm.get_double("Relative tolerance");
     solver_max_iterations = prm.get_integer("Maximum iterations");

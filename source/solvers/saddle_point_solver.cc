@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <dealvem/solvers/contact_constraints.h>
 #include <dealvem/solvers/linear_solver.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
@@ -19,6 +20,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 namespace dealvem
 {
@@ -32,8 +34,10 @@ namespace dealvem
       return Type::klu;
     if (n == "GMRES-AMG")
       return Type::gmres_amg;
+    if (n == "CG-AMG CONSTRAINTS")
+      return Type::cg_amg_constraints;
     AssertThrow(false, dealii::ExcMessage("Unknown saddle-point solver '" + name +
-                                          "': expected UMFPACK, KLU or GMRES-AMG."));
+                                          "': expected UMFPACK, KLU, GMRES-AMG or CG-AMG constraints."));
     return Type::umfpack;
   }
 
@@ -48,6 +52,8 @@ namespace dealvem
           return "UMFPACK";
         case Type::klu:
           return "KLU";
+        case Type::cg_amg_constraints:
+          return "CG-AMG constraints";
         default:
           return "GMRES-AMG";
       }
@@ -74,6 +80,9 @@ namespace dealvem
   {
     if (settings.type == Type::gmres_amg)
       return "GMRES + block preconditioner (ML AMG on K + rho B^T B, exact approximate Schur complement)";
+    if (settings.type == Type::cg_amg_constraints)
+      return "CG + ML AMG on the stiffness condensed by the active contact constraints (one slave DoF per "
+             "constraint, multipliers from the residual)";
     return type_name(settings.type) + " (direct, whole saddle-point matrix)";
   }
 
@@ -214,7 +223,35 @@ namespace dealvem
   {
     AssertDimension(A.m(), b.size());
     x.reinit(b.size());
-    if (settings.type != Type::gmres_amg)
+    n_dropped = 0;
+    if (settings.type == Type::cg_amg_constraints)
+      {
+        // a length scale for the consistency test of redundant constraints:
+        // the coordinates in the rotation mode
+        double length = 0;
+        if (modes.size() == 3)
+          for (const double v : modes[2])
+            length = std::max(length, std::abs(v));
+        ContactConstraints contact;
+        contact.reinit(A, n_displacements, b, length);
+        n_dropped = contact.get_dependent_rows().size();
+        dealii::SparsityPattern      sparsity;
+        dealii::SparseMatrix<double> K;
+        dealii::Vector<double>       f, u;
+        contact.condense(A, b, sparsity, K, f);
+        LinearSolver::Settings linear;
+        linear.type               = LinearSolver::Type::cg_amg;
+        linear.relative_tolerance = settings.relative_tolerance;
+        linear.max_iterations     = settings.max_iterations;
+        LinearSolver cg(linear);
+        cg.set_near_null_space(modes);
+        cg.solve(K, u, f);
+        iterations = cg.last_iterations();
+        for (unsigned int i = 0; i < n_displacements; ++i)
+          x[i] = u[i];
+        contact.distribute_and_recover_multipliers(A, b, x);
+      }
+    else if (settings.type != Type::gmres_amg)
       {
         internal::solve_direct(A, x, b, settings.type == Type::klu);
         iterations = 1;

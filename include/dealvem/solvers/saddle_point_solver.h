@@ -31,6 +31,16 @@ namespace dealvem
    *   makes the block definite even when a body is held only by contact),
    *   and $\hat S = D - B\,\mathrm{diag}(K_\rho)^{-1}B^T$ is factored
    *   exactly (it is small: one row per multiplier).
+   * - CG-AMG constraints: no saddle point at all. Each active constraint
+   *   row of $B$ becomes an AffineConstraints line on one slave DoF
+   *   (ContactConstraints: pivoted elimination, redundant rows dropped when
+   *   consistent and an error when not), $K$ and the right-hand side are
+   *   condensed as deal.II's step-41/42 impose their active sets, the
+   *   symmetric positive definite result is solved by LinearSolver's CG +
+   *   ML AMG (rigid-body near-null space), and the multipliers are
+   *   recovered from the residual $f - Ku$ on the slave DoFs. Needs
+   *   symmetric contact rows: the slip rows of Coulomb friction are
+   *   refused with a message.
    */
   class SaddlePointSolver
   {
@@ -39,7 +49,8 @@ namespace dealvem
     {
       umfpack,
       klu,
-      gmres_amg
+      gmres_amg,
+      cg_amg_constraints
     };
 
     struct Settings
@@ -49,7 +60,8 @@ namespace dealvem
       unsigned int max_iterations     = 2000;
     };
 
-    /// "UMFPACK", "KLU", "GMRES-AMG" (case-insensitive); throws otherwise.
+    /// "UMFPACK", "KLU", "GMRES-AMG", "CG-AMG constraints"
+    /// (case-insensitive); throws otherwise.
     static Type
     parse_type(const std::string &name);
 
@@ -69,6 +81,20 @@ namespace dealvem
           dealii::Vector<double>             &x,
           const dealii::Vector<double>       &b);
 
+    Type
+    get_type() const
+    {
+      return settings.type;
+    }
+
+    /// CG-AMG constraints: constraint rows of the last solve dropped as
+    /// redundant (consistent and linearly dependent on others).
+    unsigned int
+    last_dropped_constraints() const
+    {
+      return n_dropped;
+    }
+
     /// Iterations of the last solve (1 for direct solvers).
     unsigned int
     last_iterations() const
@@ -83,6 +109,7 @@ namespace dealvem
     Settings                         settings;
     std::vector<std::vector<double>> modes;
     unsigned int                     iterations = 0;
+    unsigned int                     n_dropped  = 0;
   };
 } // namespace dealvem
 

@@ -1,0 +1,149 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_solvers_contact_constraints_h
+#define dealvem_solvers_contact_constraints_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * The active contact constraints of a saddle-point system
+   * @f[ \begin{pmatrix} K & B^T \\ B & D \end{pmatrix}
+   *     \begin{pmatrix} u \\ \lambda \end{pmatrix} =
+   *     \begin{pmatrix} f \\ g \end{pmatrix} @f]
+   * (the layout of SaddlePointSolver) written as affine constraints on
+   * displacement DoFs, so that the contact problem becomes a symmetric
+   * positive definite problem in the remaining DoFs, as deal.II's step-41
+   * and step-42 impose their active sets.
+   *
+   * The multiplier rows are classified from the matrix:
+   * - <b>constraint rows</b>: a non-zero row of $B$ and a zero row of $D$;
+   *   the equation $B_r u = g_r$ is enforced and the column of $B^T$ must be
+   *   the row of $B$ (symmetric coupling);
+   * - <b>inactive rows</b>: a zero row of $B$ and only a diagonal entry in
+   *   $D$: $\lambda_r = g_r / D_{rr}$ (zero for the contact assembler's
+   *   $\lambda = 0$ rows);
+   * - anything else (a row of $D$ with off-diagonal entries, or a column
+   *   of $B^T$ that differs from the row of $B$, as the slip rows of
+   *   Coulomb friction give) is not a set of linear constraints of a
+   *   symmetric problem: reinit() throws, naming the row.
+   *
+   * <b>Choice of the slave DoFs.</b> The constraint rows are taken in order
+   * and reduced by the constraints found so far (Gauss-Jordan: every line
+   * is kept in terms of DoFs that are not slaves). In the reduced row the
+   * eligible entry of largest magnitude (partial pivoting) gives the slave
+   * DoF; eligible are DoFs that are not yet slaves and whose row of $K$ has
+   * an off-diagonal entry (a DoF condensed by a Dirichlet or roller
+   * constraint has a zero column in $B$ and a decoupled row in $K$). So the
+   * slaves are distinct, not fixed by the displacement constraints, and the
+   * slave block of $B$ is triangular up to permutation with pivots that are
+   * the largest of their reduced rows.
+   *
+   * <b>Redundant constraints.</b> A reduced row whose largest entry is at
+   * most @p dependency_tolerance times the largest entry of the original
+   * row is linearly dependent on the rows before it (e.g. two contact pairs
+   * on one node whose partners are both fixed). If its reduced right-hand
+   * side vanishes (relative to the values that entered it, and to
+   * 1e-12 times the length scale) the row is dropped from the constraints
+   * and listed by get_dependent_rows(); its multiplier, like all
+   * multipliers, comes from the minimum-norm solution of
+   * $B_{\cdot S}^T\lambda = r_S$. Otherwise the constraints contradict each
+   * other and reinit() throws, naming the row, the rows it depends on and
+   * the two values.
+   *
+   * <b>Multipliers.</b> After the condensed solve, the residual
+   * $r = f - K u$ lies in the range of $B^T$, and its restriction to the
+   * slave DoFs determines $\lambda$: recover_multipliers() solves
+   * $B_{\cdot S}^T \lambda = r_S$ (a square system with UMFPACK when no row
+   * was dropped, the minimum-norm solution through
+   * $B_{\cdot S}^T B_{\cdot S}$ otherwise).
+   */
+  class ContactConstraints
+  {
+  public:
+    /**
+     * Read the multiplier rows of @p A (first @p n_displacements unknowns
+     * are displacements) and @p b and build the constraints. @p length_scale
+     * (a typical coordinate of the model, 0 if unknown) sets the absolute
+     * floor of the consistency test of redundant constraints.
+     */
+    void
+    reinit(const dealii::SparseMatrix<double> &A,
+           const unsigned int                  n_displacements,
+           const dealii::Vector<double>       &b,
+           const double                        length_scale,
+           const double                        dependency_tolerance = 1e-10);
+
+    /// The slave lines (closed; every line in terms of non-slave DoFs).
+    const dealii::AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+
+    /**
+     * Condense the displacement block $K$ of @p A and the displacement part
+     * of @p b (with the forces of the inactive multipliers moved to the
+     * right-hand side) into @p K_condensed (pattern in @p sparsity) and
+     * @p f_condensed. The slave rows become decoupled diagonal rows.
+     */
+    void
+    condense(const dealii::SparseMatrix<double> &A,
+             const dealii::Vector<double>       &b,
+             dealii::SparsityPattern            &sparsity,
+             dealii::SparseMatrix<double>       &K_condensed,
+             dealii::Vector<double>             &f_condensed) const;
+
+    /**
+     * Complete @p x (size of @p b): on entry its first n_displacements
+     * entries hold the displacements of the condensed solve (slave values
+     * are overwritten from the constraints); on return the multipliers
+     * follow.
+     */
+    void
+    distribute_and_recover_multipliers(const dealii::SparseMatrix<double> &A,
+                                       const dealii::Vector<double>       &b,
+                                       dealii::Vector<double>             &x) const;
+
+    unsigned int
+    n_constraint_rows() const
+    {
+      return constraint_rows.size();
+    }
+
+    /// Multiplier rows (0-based) dropped as linearly dependent.
+    const std::vector<unsigned int> &
+    get_dependent_rows() const
+    {
+      return dependent_rows;
+    }
+
+    /// The slave DoF of each enforced (not dropped) constraint row.
+    const std::vector<std::pair<unsigned int, unsigned int>> &
+    get_slaves() const
+    {
+      return slaves;
+    }
+
+  private:
+    unsigned int                                     n = 0;
+    unsigned int                                     m = 0;
+    dealii::AffineConstraints<double>                constraints;
+    std::vector<unsigned int>                        constraint_rows;
+    std::vector<unsigned int>                        dependent_rows;
+    /// (multiplier row, slave DoF)
+    std::vector<std::pair<unsigned int, unsigned int>> slaves;
+    /// Inactive rows and their multiplier values.
+    std::vector<std::pair<unsigned int, double>>      inactive;
+  };
+} // namespace dealvem
+
+#endif

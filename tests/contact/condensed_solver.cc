@@ -1,0 +1,182 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// The contact solver 'CG-AMG constraints' (active contact constraints
+// written as affine constraints on slave DoFs, stiffness condensed, CG + ML
+// AMG, multipliers from the residual) against the UMFPACK factorization of
+// the saddle-point matrix, through ContactProblem with the same input:
+//   - displacements: |u - u_ref| / |u_ref| <= 1e-8;
+//   - multipliers: max_i |lambda_i - lambda_ref,i| / max_i |lambda_ref,i|
+//     <= 1e-8, and the tangential nodal forces (multipliers or penalty
+//     forces) to 1e-8 of the largest normal or tangential force;
+//   - the same number of active-set iterations, the same active pairs per
+//     iteration and the same final active set.
+// Cases:
+//   a) the flat contact patch test of examples/step-2 (3x3 quads below, 12
+//      Voronoi cells above), k = 1, 2, tied and unilateral, stick by penalty
+//      and by multipliers. The upper block has no support of its own: it is
+//      held only through contact. Also: uniform stress sigma_yy = -p to
+//      1e-10 p with the condensed solver;
+//   b) a curved interface y = 1 + 0.15 sin(pi x) meshed independently
+//      (quads 7x5 against 40 Voronoi cells), k = 1, 2, tied and unilateral
+//      with tangential multipliers; uniform stress to 1e-10 p;
+//   c) rollers u_x = 0 on the left sides of both blocks (tests/contact/
+//      redundant_constraints.cc): the tangential constraint of the pair at
+//      the interface end (0, 1) is redundant and dropped; k = 1, 2, tied and
+//      unilateral; uniform stress to 1e-10 p;
+//   d) a Hertz-like case: the upper block's bottom is the parabola
+//      y = 1 + 0.008 (x - 1/2)^2 on a flat block, pressed by p = 10 on top,
+//      unilateral, stick by penalty, held sideways only by contact; the
+//      active set grows over several iterations (k = 1, 2); and the tipping
+//      block of tests/contact/active_set.cc (pressure on x < 0.3 only),
+//      where part of the interface lifts off.
+//   e) Coulomb friction refuses the condensed solver with a message.
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <sstream>
+
+#include "../contact_common.h"
+#include "../tests.h"
+
+namespace
+{
+  const double p = 10.;
+
+  std::string
+  output_section()
+  {
+    return "subsection Output\n  set Write VTU = false\n  set Write JSON = false\n"
+           "  set Write pictures = false\n  set Write CSV = false\nend\n";
+  }
+
+  std::string
+  solver_section(const std::string &type)
+  {
+    return "subsection Solver\n  set Type = " + type + "\n  set Relative tolerance = 1e-12\nend\n";
+  }
+
+  /// Run @p prm with UMFPACK and with CG-AMG constraints and compare.
+  dealvem::ContactProblem::Results
+  compare(const std::string &prm, const std::string &tag, const bool uniform_stress)
+  {
+    const auto ref = testing::run_contact(prm + solver_section("UMFPACK"));
+    const auto r   = testing::run_contact(prm + solver_section("CG-AMG constraints"));
+    dealii::Vector<double> d = r.solution;
+    d -= ref.solution;
+    testing::check_small(d.l2_norm() / ref.solution.l2_norm(), 1e-8, tag + ": |u - u_UMFPACK| / |u_UMFPACK|");
+    double dl = 0, l = 0, dt = 0, t = 0;
+    bool   same_active = (r.pairs.size() == ref.pairs.size());
+    for (unsigned int i = 0; same_active && i < r.pairs.size(); ++i)
+      {
+        dl = std::max(dl, std::abs(r.pairs[i].multiplier - ref.pairs[i].multiplier));
+        l  = std::max(l, std::abs(ref.pairs[i].multiplier));
+        dt = std::max(dt, std::abs(r.pairs[i].tangential_traction - ref.pairs[i].tangential_traction) *
+                            ref.pairs[i].weight);
+        t  = std::max(t, std::abs(ref.pairs[i].tangential_traction) * ref.pairs[i].weight);
+        same_active = same_active && (r.pairs[i].active == ref.pairs[i].active);
+      }
+    testing::check_small(dl / l, 1e-8, tag + ": max |lambda - lambda_UMFPACK| / max |lambda_UMFPACK|");
+    // (relative to the larger of the tangential and normal forces: in the
+    // flat patch test the tangential forces vanish up to round-off)
+    testing::check_small(dt / std::max(t, l), 1e-8,
+                         tag + ": max |tangential force difference| / max |force_UMFPACK|");
+    unsigned int n_active = 0;
+    for (const auto &pr : r.pairs)
+      n_active += pr.active;
+    std::ostringstream h;
+    for (const auto a : r.active_set_history)
+      h << " " << a;
+    testing::check(same_active && r.active_set_history == ref.active_set_history &&
+                     r.active_set_iterations == ref.active_set_iterations,
+                   tag + ": same active-set iterations (" + std::to_string(r.active_set_iterations) +
+                     ", active pairs per iteration:" + h.str() + ") and final set (" +
+                     std::to_string(n_active) + " of " + std::to_string(r.pairs.size()) + ") as UMFPACK");
+    std::cout << "      " << r.solver << ": " << r.linear_iterations << " CG iterations in "
+              << r.active_set_iterations << " solve(s)" << std::endl;
+    if (uniform_stress)
+      {
+        double e = 0;
+        for (const auto &s : r.cell_stress)
+          e = std::max({e, std::abs(s[0]), std::abs(s[1] + p), std::abs(s[2])});
+        testing::check_small(e / p, 1e-10, tag + ": max |sigma - sigma_exact| / p");
+      }
+    return r;
+  }
+
+  std::string
+  two_blocks(const std::string &lower, const std::string &upper, const unsigned int k, const std::string &normal,
+             const std::string &tangential, const std::string &supports, const std::string &load)
+  {
+    std::ostringstream s;
+    s << "set Number of bodies = 2\n"
+      << lower << "subsection Material\n  set Young's modulus = 7000\n  set Poisson's ratio = 0.3\nend\n"
+      << "subsection Body 1\n"
+      << upper << "subsection Material\n  set Young's modulus = 7000\n  set Poisson's ratio = 0.3\nend\nend\n"
+      << "subsection Discretization\n  set Order = " << k << "\nend\n"
+      << "subsection Contact\n  set Pairs = 3 : 12\n  set Normal = " << normal
+      << "\n  set Tangential = " << tangential << "\nend\n"
+      << "subsection Boundary conditions and loads\n" << supports << "  set Pressure = 13 : " << load << "\nend\n"
+      << output_section();
+    return s.str();
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string flat_supports = "  set Dirichlet = 2 : y : 0\n  set Point constraints = 0, 0 : x : 0\n";
+  for (const unsigned int k : {1u, 2u})
+    {
+      const std::string ks = "k = " + std::to_string(k);
+      // a) flat patch test
+      for (const std::string normal : {"tied", "unilateral"})
+        for (const std::string tangential : {"penalty", "multipliers"})
+          compare(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
+                             testing::block_mesh("voronoi", 0, 1, 1, 2, 3, 4, 10), k, normal, tangential,
+                             flat_supports, "10"),
+                  "a) patch test, " + ks + ", " + normal + ", stick by " + tangential, true);
+      // b) curved interface
+      for (const std::string normal : {"tied", "unilateral"})
+        compare(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 7, 5, 0, 3) +
+                             "subsection Mesh\n  set Transformation = x, y*(1 + 0.15*sin(pi*x))\nend\n",
+                           testing::block_mesh("voronoi", 0, 1, 1, 2, 8, 5, 10, 7) +
+                             "subsection Mesh\n  set Transformation = x, y + (2 - y)*(0.15*sin(pi*x))\nend\n",
+                           k, normal, "multipliers", flat_supports, "10"),
+                "b) curved interface, " + ks + ", " + normal + " + tangential multipliers", true);
+      // c) rollers and a redundant constraint at the interface end
+      for (const std::string normal : {"tied", "unilateral"})
+        compare(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
+                           testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), k, normal,
+                           "multipliers", "  set Dirichlet = 2 : y : 0\n  set Roller = 0, 10\n", "10"),
+                "c) rollers on both left sides, " + ks + ", " + normal, true);
+      // d) active sets that change over the iterations
+      const auto r =
+        compare(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 10, 4, 0),
+                           testing::block_mesh("structured quads", 0, 1, 1, 2, 13, 5, 10) +
+                             "subsection Mesh\n  set Transformation = x, y + (2 - y)*0.008*(x - 0.5)^2\nend\n",
+                           k, "unilateral", "penalty", flat_supports, "10"),
+                "d) parabola on a flat block, " + ks, false);
+      testing::check(r.active_set_iterations >= 3, "d) parabola, " + ks + ": the active set changes (" +
+                                                     std::to_string(r.active_set_iterations) + " iterations)");
+      compare(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 4, 4, 0),
+                         testing::block_mesh("structured quads", 0, 1, 1, 2, 7, 7, 10), k, "unilateral", "penalty",
+                         "  set Dirichlet = 2 : xy : 0, 0\n", "10 * (x < 0.3)"),
+              "d) tipping block, " + ks, false);
+    }
+  // e) Coulomb friction
+  testing::check_throws(
+    [&] {
+      testing::run_contact(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
+                                      testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), 1, "unilateral",
+                                      "coulomb", flat_supports, "10") +
+                           "subsection Contact\n  set Friction coefficient = 0.3\nend\n" +
+                           solver_section("CG-AMG constraints"));
+    },
+    "Coulomb friction cannot use the 'CG-AMG constraints' contact solver", "e) Coulomb friction is refused");
+  return testing::finish();
+}

@@ -1,0 +1,202 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// SaddlePointSolver 'CG-AMG constraints' on small hand-made saddle-point
+// systems [[K, B^T], [B, D]] (K the 20x20 matrix tridiag(-1, 2.5, -1), DoF 5
+// decoupled as a Dirichlet DoF condensed by AffineConstraints leaves it):
+//   rows 0: u0 - u10 = 0.1, 1: u3 + 0.5 u12 = -0.2, 2: inactive (D = 1),
+//   3: u0 + u1 - u11 = 0.05 (shares u0 with row 0: Gauss-Jordan),
+//   4: 2 u0 - 2 u10 = 0.2 (twice row 0: redundant, consistent).
+// a) without row 4 the solver agrees with UMFPACK on the saddle point to
+//    1e-10 (u and lambda); the constraints hold to 1e-12;
+// b) with row 4, u is the same (1e-10), the row is reported as dropped, and
+//    the multipliers are the minimum-norm split of row 0's force:
+//    lambda_0 = mu_0 / 5, lambda_4 = 2 mu_0 / 5 (1e-10), the others as in a);
+// c) row 4 with right-hand side 0.3: "Inconsistent redundant contact
+//    constraints" naming rows 4 and 0;
+// d) a force column that differs from its constraint row (as Coulomb slip
+//    rows give) and a D row with an off-diagonal entry: refused, naming the
+//    row; an unknown solver name lists the new type.
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <dealvem/solvers/saddle_point_solver.h>
+
+#include <map>
+
+#include "../tests.h"
+
+using namespace dealvem;
+
+namespace
+{
+  const unsigned int n = 20;
+
+  struct System
+  {
+    dealii::SparsityPattern      sp;
+    dealii::SparseMatrix<double> A;
+    dealii::Vector<double>       b;
+  };
+
+  /// rows: (coefficients, rhs); empty coefficients = inactive row.
+  /// @p bt_change / @p d_coupling spoil the structure for d).
+  void
+  build(System &s, const std::vector<std::pair<std::map<unsigned int, double>, double>> &rows,
+        const bool bt_change = false, const bool d_coupling = false)
+  {
+    const unsigned int             m = rows.size();
+    dealii::DynamicSparsityPattern dsp(n + m);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = (i > 0 ? i - 1 : 0); j < std::min(n, i + 2); ++j)
+        dsp.add(i, j);
+    for (unsigned int r = 0; r < m; ++r)
+      {
+        dsp.add(n + r, n + r);
+        for (const auto &e : rows[r].first)
+          {
+            dsp.add(n + r, e.first);
+            dsp.add(e.first, n + r);
+          }
+      }
+    dsp.add(n, n + 1);
+    s.sp.copy_from(dsp);
+    s.A.reinit(s.sp);
+    s.b.reinit(n + m);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        if (i == 5)
+          {
+            s.A.set(i, i, 2.5); // a condensed Dirichlet DoF: decoupled
+            continue;
+          }
+        s.A.set(i, i, 2.5);
+        if (i > 0 && i - 1 != 5)
+          s.A.set(i, i - 1, -1.);
+        if (i + 1 < n && i + 1 != 5)
+          s.A.set(i, i + 1, -1.);
+        s.b[i] = std::sin(1. + i);
+      }
+    for (unsigned int r = 0; r < m; ++r)
+      {
+        if (rows[r].first.empty())
+          s.A.set(n + r, n + r, 1.);
+        for (const auto &e : rows[r].first)
+          {
+            s.A.set(n + r, e.first, e.second);
+            s.A.set(e.first, n + r, e.second * (bt_change && r == 1 ? 1.5 : 1.));
+          }
+        s.b[n + r] = rows[r].second;
+      }
+    if (d_coupling)
+      s.A.set(n, n + 1, 0.3);
+  }
+
+  dealii::Vector<double>
+  solve(const System &s, const SaddlePointSolver::Type type)
+  {
+    SaddlePointSolver::Settings settings;
+    settings.type               = type;
+    settings.relative_tolerance = 1e-13;
+    SaddlePointSolver      solver(settings);
+    dealii::Vector<double> x;
+    solver.solve(s.A, n, x, s.b);
+    std::cout << "      " << SaddlePointSolver::type_name(type) << ": " << solver.last_iterations()
+              << " iteration(s), " << solver.last_dropped_constraints() << " dropped" << std::endl;
+    return x;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  using Rows = std::vector<std::pair<std::map<unsigned int, double>, double>>;
+  const Rows base = {{{{0, 1.}, {10, -1.}}, 0.1},
+                     {{{3, 1.}, {12, 0.5}}, -0.2},
+                     {{}, 0.},
+                     {{{0, 1.}, {1, 1.}, {11, -1.}}, 0.05}};
+  Rows with_redundant = base;
+  with_redundant.push_back({{{0, 2.}, {10, -2.}}, 0.2});
+
+  // a)
+  System s;
+  build(s, base);
+  const auto ref = solve(s, SaddlePointSolver::Type::umfpack);
+  const auto x   = solve(s, SaddlePointSolver::Type::cg_amg_constraints);
+  double     du = 0, u = 0, dl = 0, l = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    if (i != 5)
+      {
+        du = std::max(du, std::abs(x[i] - ref[i]));
+        u  = std::max(u, std::abs(ref[i]));
+      }
+  for (unsigned int r = 0; r < base.size(); ++r)
+    {
+      dl = std::max(dl, std::abs(x[n + r] - ref[n + r]));
+      l  = std::max(l, std::abs(ref[n + r]));
+    }
+  testing::check_small(du / u, 1e-10, "a) u against UMFPACK (max norm, relative)");
+  testing::check_small(dl / l, 1e-10, "a) lambda against UMFPACK (max norm, relative)");
+  testing::check_small(x[n + 2], 0, "a) inactive row: lambda = 0");
+  double violation = 0;
+  for (const auto &row : base)
+    {
+      double v = -row.second;
+      for (const auto &e : row.first)
+        v += e.second * x[e.first];
+      violation = std::max(violation, std::abs(v));
+    }
+  testing::check_small(violation, 1e-12, "a) constraints B u = g");
+
+  // b)
+  System s2;
+  build(s2, with_redundant);
+  SaddlePointSolver::Settings settings;
+  settings.type               = SaddlePointSolver::Type::cg_amg_constraints;
+  settings.relative_tolerance = 1e-13;
+  SaddlePointSolver      solver(settings);
+  dealii::Vector<double> x2;
+  solver.solve(s2.A, n, x2, s2.b);
+  testing::check(solver.last_dropped_constraints() == 1, "b) one redundant constraint dropped");
+  du = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    if (i != 5)
+      du = std::max(du, std::abs(x2[i] - ref[i]));
+  testing::check_small(du / u, 1e-10, "b) u with the redundant row, against a)");
+  testing::check_small(std::abs(x2[n + 0] - ref[n] / 5) / l, 1e-10, "b) lambda_0 = mu_0 / 5");
+  testing::check_small(std::abs(x2[n + 4] - 2 * ref[n] / 5) / l, 1e-10, "b) lambda_4 = 2 mu_0 / 5");
+  testing::check_small((std::abs(x2[n + 1] - ref[n + 1]) + std::abs(x2[n + 3] - ref[n + 3])) / l, 1e-10,
+                       "b) lambda_1, lambda_3 as in a)");
+
+  // c)
+  Rows inconsistent = with_redundant;
+  inconsistent[4].second = 0.3;
+  System s3;
+  build(s3, inconsistent);
+  testing::check_throws([&] { solve(s3, SaddlePointSolver::Type::cg_amg_constraints); },
+                        "Inconsistent redundant contact constraints: multiplier row 4 is a linear combination of "
+                        "the constraint rows {0}",
+                        "c) inconsistent redundant constraints");
+
+  // d)
+  System s4, s5;
+  build(s4, base, true, false);
+  build(s5, base, false, true);
+  testing::check_throws([&] { solve(s4, SaddlePointSolver::Type::cg_amg_constraints); },
+                        "the force column of multiplier row 1 (unknown 21) is not the constraint row",
+                        "d) non-symmetric coupling refused");
+  testing::check_throws([&] { solve(s5, SaddlePointSolver::Type::cg_amg_constraints); },
+                        "multiplier row 0 (unknown 20) couples multipliers with each other",
+                        "d) coupled multipliers refused");
+  testing::check_throws([] { SaddlePointSolver::parse_type("foo"); },
+                        "expected UMFPACK, KLU, GMRES-AMG or CG-AMG constraints", "d) unknown solver name");
+  testing::check(SaddlePointSolver::parse_type("cg-amg CONSTRAINTS") ==
+                   SaddlePointSolver::Type::cg_amg_constraints,
+                 "d) 'CG-AMG constraints' parsed case-insensitively");
+  return testing::finish();
+}
