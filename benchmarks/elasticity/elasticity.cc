@@ -23,8 +23,10 @@
 // FE_Q(2) is always solved with the default ML settings.
 //
 // prints one line "RESULT case cells dofs t_mesh t_dofs t_assembly t_solve
-// iterations peak_MB t_precond_setup precond" (wall seconds; t_solve
-// includes t_precond_setup and, for pmg, building the prolongation; peak
+// iterations peak_MB t_precond_setup precond t_prolongation nnz_per_row"
+// (wall seconds;
+// t_solve includes t_precond_setup and, for pmg, t_prolongation, building
+// the prolongation from the DoF handler; peak
 // memory of the process from getrusage). benchmarks/run_benchmarks.sh runs
 // every case and size in its own process and writes doc/benchmarks.md.
 #include <deal.II/base/mpi.h>
@@ -76,7 +78,8 @@ namespace
   struct Times
   {
     unsigned int cells = 0, dofs = 0, iterations = 0;
-    double       mesh = 0, setup = 0, assembly = 0, solve = 0, precond_setup = 0;
+    double       mesh = 0, setup = 0, assembly = 0, solve = 0, precond_setup = 0, prolongation = 0;
+    double       nonzeros_per_row = 0;
   };
 
   struct Options
@@ -94,7 +97,8 @@ namespace
                          Vector<double>                   &b,
                          std::vector<std::vector<double>> &modes,
                          SparsityPattern                  &sp_P,
-                         SparseMatrix<double>             &P)
+                         SparseMatrix<double>             &P,
+                         const bool                        with_P)
   {
     DynamicSparsityPattern dsp(sp.n_rows());
     for (unsigned int i = 0; i < sp.n_rows(); ++i)
@@ -122,7 +126,7 @@ namespace
           m_new[new_index[i]] = m[i];
         m = m_new;
       }
-    if (P.m() > 0)
+    if (with_P)
       {
         DynamicSparsityPattern dsp_P(P.m(), P.n());
         for (unsigned int i = 0; i < P.m(); ++i)
@@ -193,26 +197,29 @@ namespace
     dealvem::LinearSolver::Settings settings = options.solver;
     settings.type                            = dealvem::LinearSolver::Type::cg_amg;
     settings.relative_tolerance              = 1e-8;
-    dealvem::LinearSolver            solver(settings);
     std::vector<std::vector<double>> modes = dof_handler.rigid_body_modes(), coarse_modes;
     SparsityPattern                  sp_P;
     SparseMatrix<double>             P;
-    if (settings.preconditioner == dealvem::LinearSolver::Preconditioner::p_multigrid)
+    const bool pmg = settings.preconditioner == dealvem::LinearSolver::Preconditioner::p_multigrid;
+    if (pmg)
       dealvem::PMultigrid::make_prolongation(dof_handler, sp_P, P, coarse_modes);
+    t.prolongation = timer.wall_time();
     if (options.renumber)
       {
         // not timed: a numbering the DoF handler would produce directly
         timer.stop();
-        renumber_cuthill_mckee(sp, A, b, modes, sp_P, P);
+        renumber_cuthill_mckee(sp, A, b, modes, sp_P, P, pmg);
         timer.start();
       }
-    if (P.m() > 0)
+    dealvem::LinearSolver solver(settings);
+    if (pmg)
       solver.set_coarse_space(P, coarse_modes);
     solver.set_near_null_space(modes);
     solver.solve(A, x, b);
     t.solve         = timer.wall_time();
     t.precond_setup = solver.last_setup_time();
     t.iterations    = solver.last_iterations();
+    t.nonzeros_per_row = double(sp.n_nonzero_elements()) / sp.n_rows();
     t.cells         = mesh.n_cells();
     t.dofs       = dof_handler.n_dofs();
     return t;
@@ -306,6 +313,7 @@ namespace
     t.solve         = timer.wall_time();
     t.precond_setup = solver.last_setup_time();
     t.iterations    = solver.last_iterations();
+    t.nonzeros_per_row = double(sp.n_nonzero_elements()) / sp.n_rows();
     t.cells         = tria.n_active_cells();
     t.dofs       = dof_handler.n_dofs();
     return t;
@@ -367,7 +375,7 @@ main(int argc, char **argv)
         (which == "feq" ? run_feq(dofs) : run_vem(which == "voronoi", which != "quads-full", dofs, options));
       std::cout << "RESULT " << which << " " << t.cells << " " << t.dofs << " " << t.mesh << " " << t.setup << " "
                 << t.assembly << " " << t.solve << " " << t.iterations << " " << peak_memory_mb() << " "
-                << t.precond_setup << " " << precond << std::endl;
+                << t.precond_setup << " " << precond << " " << t.prolongation << " " << t.nonzeros_per_row << std::endl;
     }
   catch (std::exception &e)
     {

@@ -153,11 +153,12 @@ main(int argc, char **argv)
         testing::check(solver.effective_preconditioner() == LinearSolver::Preconditioner::p_multigrid,
                        "automatic means p-multigrid once a coarse space is given");
     }
-  // Regression guard. Measured on this problem to the relative tolerance
-  // 1e-12: 46 iterations with the p-multigrid (Chebyshev degree 3), 104
-  // with plain AMG. The bound leaves about 30 % for changes in the ML or
-  // Voronoi versions; a larger count means the preconditioner got worse.
-  testing::check(iterations[1] <= 60, "p-multigrid iterations <= 60 (measured 46): " +
+  // Regression guard. Measured on this problem (deterministic: fixed Voronoi
+  // seed, ML is deterministic) to the relative tolerance 1e-12: 26 CG
+  // iterations with the p-multigrid (Chebyshev degree 3), 73 with plain
+  // AMG. The bound 34 leaves 30 % for other ML/CGAL versions and round-off;
+  // more means the preconditioner got worse (plain AMG is far above it).
+  testing::check(iterations[1] <= 34, "p-multigrid iterations <= 34 (measured 26): " +
                                         std::to_string(iterations[1]));
   testing::check(iterations[1] < iterations[0], "p-multigrid needs fewer iterations than plain AMG");
 
