@@ -7,14 +7,28 @@
 // DoFs, on the unit square: left side clamped, body force (0, -1).
 //
 //   benchmark_elasticity --case voronoi|quads|quads-full|feq --dofs N
+//                        [--precond amg|pmg] [--smoother NAME] [--sweeps n]
+//                        [--threshold t] [--uncoupled 0|1] [--elliptic 0|1]
+//                        [--rotation 0|1] [--degree d] [--range r]
+//                        [--renumber none|cm]
 //
 // "quads" reuses the element matrices of translated cells (the default, as
 // deal.II's FEValues does for FE_Q); "quads-full" computes every element.
+// --precond chooses CG's preconditioner for VEM (default amg: ML on the whole
+// matrix; pmg: LinearSolver's two-level p-multigrid with ML on the Galerkin
+// k = 1 level); --smoother, --sweeps, --threshold, --uncoupled, --elliptic,
+// --rotation set the ML parameters (of the whole matrix or of the coarse
+// level), --degree and --range the Chebyshev smoother of the p-multigrid;
+// --renumber cm renumbers the VEM system by Cuthill-McKee before the solve.
+// FE_Q(2) is always solved with the default ML settings.
 //
 // prints one line "RESULT case cells dofs t_mesh t_dofs t_assembly t_solve
-// iterations peak_MB" (wall seconds; peak memory of the process from
-// getrusage). benchmarks/run_benchmarks.sh runs every case and size in its
-// own process and writes doc/benchmarks.md.
+// iterations peak_MB t_precond_setup precond t_prolongation nnz_per_row"
+// (wall seconds;
+// t_solve includes t_precond_setup and, for pmg, t_prolongation, building
+// the prolongation from the DoF handler; peak
+// memory of the process from getrusage). benchmarks/run_benchmarks.sh runs
+// every case and size in its own process and writes doc/benchmarks.md.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
@@ -30,6 +44,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -37,6 +52,7 @@
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/mesh/generators.h>
 #include <dealvem/solvers/linear_solver.h>
+#include <dealvem/solvers/p_multigrid.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <sys/resource.h>
@@ -62,11 +78,80 @@ namespace
   struct Times
   {
     unsigned int cells = 0, dofs = 0, iterations = 0;
-    double       mesh = 0, setup = 0, assembly = 0, solve = 0;
+    double       mesh = 0, setup = 0, assembly = 0, solve = 0, precond_setup = 0, prolongation = 0;
+    double       nonzeros_per_row = 0;
   };
 
+  struct Options
+  {
+    dealvem::LinearSolver::Settings solver;
+    bool                            renumber = false;
+  };
+
+  // Cuthill-McKee renumbering of the condensed system (matrix, right-hand
+  // side, near-null space and the rows of P), to see whether locality
+  // changes the solve time.
+  void
+  renumber_cuthill_mckee(SparsityPattern                  &sp,
+                         SparseMatrix<double>             &A,
+                         Vector<double>                   &b,
+                         std::vector<std::vector<double>> &modes,
+                         SparsityPattern                  &sp_P,
+                         SparseMatrix<double>             &P,
+                         const bool                        with_P)
+  {
+    DynamicSparsityPattern dsp(sp.n_rows());
+    for (unsigned int i = 0; i < sp.n_rows(); ++i)
+      for (auto it = sp.begin(i); it != sp.end(i); ++it)
+        dsp.add(i, it->column());
+    std::vector<types::global_dof_index> new_index(sp.n_rows());
+    SparsityTools::reorder_Cuthill_McKee(dsp, new_index);
+    DynamicSparsityPattern dsp_new(sp.n_rows());
+    for (unsigned int i = 0; i < sp.n_rows(); ++i)
+      for (auto it = sp.begin(i); it != sp.end(i); ++it)
+        dsp_new.add(new_index[i], new_index[it->column()]);
+    SparsityPattern sp_new;
+    sp_new.copy_from(dsp_new);
+    SparseMatrix<double> A_new(sp_new);
+    for (unsigned int i = 0; i < sp.n_rows(); ++i)
+      for (auto it = A.begin(i); it != A.end(i); ++it)
+        A_new.set(new_index[i], new_index[it->column()], it->value());
+    Vector<double> b_new(b.size());
+    for (unsigned int i = 0; i < b.size(); ++i)
+      b_new[new_index[i]] = b[i];
+    for (auto &m : modes)
+      {
+        std::vector<double> m_new(m.size());
+        for (unsigned int i = 0; i < m.size(); ++i)
+          m_new[new_index[i]] = m[i];
+        m = m_new;
+      }
+    if (with_P)
+      {
+        DynamicSparsityPattern dsp_P(P.m(), P.n());
+        for (unsigned int i = 0; i < P.m(); ++i)
+          for (auto it = P.begin(i); it != P.end(i); ++it)
+            dsp_P.add(new_index[i], it->column());
+        SparsityPattern sp_P_new;
+        sp_P_new.copy_from(dsp_P);
+        SparseMatrix<double> P_new(sp_P_new);
+        for (unsigned int i = 0; i < P.m(); ++i)
+          for (auto it = P.begin(i); it != P.end(i); ++it)
+            P_new.set(new_index[i], it->column(), it->value());
+        P.clear();
+        sp_P.copy_from(sp_P_new);
+        P.reinit(sp_P);
+        P.copy_from(P_new);
+      }
+    A.clear();
+    sp.copy_from(sp_new);
+    A.reinit(sp);
+    A.copy_from(A_new);
+    b = b_new;
+  }
+
   Times
-  run_vem(const bool voronoi, const bool cell_similarity, const unsigned int target_dofs)
+  run_vem(const bool voronoi, const bool cell_similarity, const unsigned int target_dofs, const Options &options)
   {
     Times                     t;
     Timer                     timer;
@@ -109,15 +194,33 @@ namespace
     t.assembly = timer.wall_time();
 
     timer.restart();
-    dealvem::LinearSolver::Settings settings;
-    settings.type               = dealvem::LinearSolver::Type::cg_amg;
-    settings.relative_tolerance = 1e-8;
+    dealvem::LinearSolver::Settings settings = options.solver;
+    settings.type                            = dealvem::LinearSolver::Type::cg_amg;
+    settings.relative_tolerance              = 1e-8;
+    std::vector<std::vector<double>> modes = dof_handler.rigid_body_modes(), coarse_modes;
+    SparsityPattern                  sp_P;
+    SparseMatrix<double>             P;
+    const bool pmg = settings.preconditioner == dealvem::LinearSolver::Preconditioner::p_multigrid;
+    if (pmg)
+      dealvem::PMultigrid::make_prolongation(dof_handler, sp_P, P, coarse_modes);
+    t.prolongation = timer.wall_time();
+    if (options.renumber)
+      {
+        // not timed: a numbering the DoF handler would produce directly
+        timer.stop();
+        renumber_cuthill_mckee(sp, A, b, modes, sp_P, P, pmg);
+        timer.start();
+      }
     dealvem::LinearSolver solver(settings);
-    solver.set_near_null_space(dof_handler.rigid_body_modes());
+    if (pmg)
+      solver.set_coarse_space(P, coarse_modes);
+    solver.set_near_null_space(modes);
     solver.solve(A, x, b);
-    t.solve      = timer.wall_time();
-    t.iterations = solver.last_iterations();
-    t.cells      = mesh.n_cells();
+    t.solve         = timer.wall_time();
+    t.precond_setup = solver.last_setup_time();
+    t.iterations    = solver.last_iterations();
+    t.nonzeros_per_row = double(sp.n_nonzero_elements()) / sp.n_rows();
+    t.cells         = mesh.n_cells();
     t.dofs       = dof_handler.n_dofs();
     return t;
   }
@@ -207,9 +310,11 @@ namespace
     dealvem::LinearSolver solver(settings);
     solver.set_near_null_space(modes);
     solver.solve(A, x, b);
-    t.solve      = timer.wall_time();
-    t.iterations = solver.last_iterations();
-    t.cells      = tria.n_active_cells();
+    t.solve         = timer.wall_time();
+    t.precond_setup = solver.last_setup_time();
+    t.iterations    = solver.last_iterations();
+    t.nonzeros_per_row = double(sp.n_nonzero_elements()) / sp.n_rows();
+    t.cells         = tria.n_active_cells();
     t.dofs       = dof_handler.n_dofs();
     return t;
   }
@@ -221,24 +326,56 @@ main(int argc, char **argv)
   try
     {
       Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      std::string                      which = "voronoi";
+      std::string                      which = "voronoi", precond = "amg";
       unsigned int                     dofs  = 10000;
+      Options                          options;
+      options.solver.preconditioner = dealvem::LinearSolver::Preconditioner::amg;
       for (int i = 1; i + 1 < argc; i += 2)
         {
-          const std::string a = argv[i];
+          const std::string a = argv[i], v = argv[i + 1];
           if (a == "--case")
-            which = argv[i + 1];
+            which = v;
           else if (a == "--dofs")
-            dofs = std::stoul(argv[i + 1]);
+            dofs = std::stoul(v);
+          else if (a == "--precond")
+            {
+              AssertThrow(v == "amg" || v == "pmg", ExcMessage("--precond must be amg or pmg"));
+              precond                       = v;
+              options.solver.preconditioner = (v == "amg" ? dealvem::LinearSolver::Preconditioner::amg :
+                                                            dealvem::LinearSolver::Preconditioner::p_multigrid);
+            }
+          else if (a == "--smoother")
+            options.solver.amg.smoother_type = v;
+          else if (a == "--sweeps")
+            options.solver.amg.smoother_sweeps = std::stoul(v);
+          else if (a == "--threshold")
+            options.solver.amg.aggregation_threshold = std::stod(v);
+          else if (a == "--uncoupled")
+            options.solver.amg.uncoupled_aggregation = (v == "1");
+          else if (a == "--elliptic")
+            options.solver.amg.elliptic = (v == "1");
+          else if (a == "--rotation")
+            options.solver.amg.use_rotation = (v == "1");
+          else if (a == "--degree")
+            options.solver.smoother_degree = std::stoul(v);
+          else if (a == "--range")
+            options.solver.smoothing_range = std::stod(v);
+          else if (a == "--renumber")
+            {
+              AssertThrow(v == "none" || v == "cm", ExcMessage("--renumber must be none or cm"));
+              options.renumber = (v == "cm");
+            }
           else
             AssertThrow(false, ExcMessage("unknown option " + a));
         }
       AssertThrow(which == "voronoi" || which == "quads" || which == "quads-full" || which == "feq",
                   ExcMessage("--case must be voronoi, quads, quads-full or feq"));
+      AssertThrow(which != "feq" || precond == "amg", ExcMessage("FE_Q(2) is solved with AMG only"));
       const Times t =
-        (which == "feq" ? run_feq(dofs) : run_vem(which == "voronoi", which != "quads-full", dofs));
+        (which == "feq" ? run_feq(dofs) : run_vem(which == "voronoi", which != "quads-full", dofs, options));
       std::cout << "RESULT " << which << " " << t.cells << " " << t.dofs << " " << t.mesh << " " << t.setup << " "
-                << t.assembly << " " << t.solve << " " << t.iterations << " " << peak_memory_mb() << std::endl;
+                << t.assembly << " " << t.solve << " " << t.iterations << " " << peak_memory_mb() << " "
+                << t.precond_setup << " " << precond << " " << t.prolongation << " " << t.nonzeros_per_row << std::endl;
     }
   catch (std::exception &e)
     {

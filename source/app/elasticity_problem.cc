@@ -21,6 +21,7 @@
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/linear_solver.h>
+#include <dealvem/solvers/p_multigrid.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <filesystem>
@@ -69,7 +70,10 @@ namespace dealvem
     prm.declare_entry("Type", "UMFPACK", Selection("UMFPACK|KLU|CG-AMG|GMRES-AMG|CG-AMG constraints"),
                       "UMFPACK: SuiteSparse direct; KLU: Trilinos Amesos KLU direct; CG-AMG: "
                       "Trilinos CG preconditioned by ML algebraic multigrid with the rigid-body "
-                      "modes as near-null space. Contact problems: UMFPACK and KLU factor the whole "
+                      "modes as near-null space; for k = 2 the default preconditioner of CG is a "
+                      "two-level p-multigrid (Chebyshev smoothing on k = 2, the ML AMG on the "
+                      "Galerkin k = 1 level of the same polygons), which needs less than half "
+                      "the iterations of AMG alone. Contact problems: UMFPACK and KLU factor the whole "
                       "saddle-point matrix, and CG-AMG or GMRES-AMG both mean GMRES with a block "
                       "preconditioner (AMG on the displacement block, exact approximate Schur "
                       "complement); 'CG-AMG constraints' writes every active contact constraint as "
@@ -223,8 +227,18 @@ namespace dealvem
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
     LinearSolver solver(settings);
+    // k = 2 with CG: the k = 1 space on the same polygons as the coarse
+    // level (p-multigrid)
+    dealii::SparsityPattern          prolongation_sparsity;
+    dealii::SparseMatrix<double>     prolongation;
+    std::vector<std::vector<double>> coarse_modes;
     if (settings.type == LinearSolver::Type::cg_amg)
       solver.set_near_null_space(dof_handler.rigid_body_modes());
+    if (settings.type == LinearSolver::Type::cg_amg && degree == 2)
+      {
+        PMultigrid::make_prolongation(dof_handler, prolongation_sparsity, prolongation, coarse_modes);
+        solver.set_coarse_space(prolongation, coarse_modes);
+      }
     solver.solve(system_matrix, solution, system_rhs);
     constraints.distribute(solution);
     solver_description = solver.description();

@@ -2,6 +2,9 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
@@ -16,6 +19,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <memory>
 
 namespace dealvem
 {
@@ -27,15 +31,38 @@ namespace dealvem
                       const unsigned int                      n,
                       std::vector<double>                    &storage)
     {
+      set_ml_parameters(list_ptr, modes, n, storage, LinearSolver::AMGSettings());
+    }
+
+
+
+    void
+    set_ml_parameters(void                                   *list_ptr,
+                      const std::vector<std::vector<double>> &modes,
+                      const unsigned int                      n,
+                      std::vector<double>                    &storage,
+                      const LinearSolver::AMGSettings        &amg)
+    {
+      AssertThrow(amg.smoother_sweeps >= 1, dealii::ExcMessage("AMG: at least one smoother sweep is needed."));
+      AssertThrow(amg.aggregation_threshold >= 0 && amg.aggregation_threshold < 1,
+                  dealii::ExcMessage("AMG: the aggregation threshold must lie in [0, 1)."));
       Teuchos::ParameterList &list = *static_cast<Teuchos::ParameterList *>(list_ptr);
-      ML_Epetra::SetDefaults("SA", list);
+      ML_Epetra::SetDefaults(amg.elliptic ? "SA" : "NSSA", list);
       list.set("ML output", 0);
-      list.set("smoother: type", "Chebyshev");
-      list.set("smoother: sweeps", 2);
-      list.set("aggregation: threshold", 1e-4);
+      list.set("smoother: type", amg.smoother_type);
+      list.set("smoother: sweeps", int(amg.smoother_sweeps));
+      list.set("aggregation: threshold", amg.aggregation_threshold);
+      if (amg.uncoupled_aggregation)
+        list.set("aggregation: type", "Uncoupled");
       list.set("coarse: type", "Amesos-KLU");
       list.set("coarse: max size", 2000);
-      if (modes.size() == 3)
+      if (modes.size() == 3 && !amg.use_rotation)
+        {
+          // the two translations, as ML's own constant modes for 2 PDEs
+          list.set("PDE equations", 2);
+          storage.clear();
+        }
+      else if (modes.size() == 3)
         {
           storage.resize(3 * n);
           for (unsigned int k = 0; k < 3; ++k)
@@ -84,6 +111,134 @@ namespace dealvem
 
 
 
+  namespace
+  {
+    /**
+     * The symmetric two-level V-cycle of LinearSolver's p-multigrid: x = S b,
+     * then x += P C^{-1} P^T (b - A x), then x += S (b - A x), with S the
+     * Chebyshev smoother and C^{-1} one ML V-cycle on C = P^T A P. Per
+     * application: 2 (degree - 1) products with A in the smoother, one for
+     * the first residual, one with AP for the second.
+     */
+    class TwoLevelPreconditioner
+    {
+    public:
+      using Smoother = dealii::PreconditionChebyshev<dealii::TrilinosWrappers::SparseMatrix,
+                                                     dealii::Vector<double>,
+                                                     dealii::DiagonalMatrix<dealii::Vector<double>>>;
+
+      TwoLevelPreconditioner(const dealii::SparseMatrix<double>           &A,
+                             const dealii::TrilinosWrappers::SparseMatrix &At,
+                             const dealii::SparseMatrix<double>           &P,
+                             const std::vector<std::vector<double>>       &coarse_modes,
+                             const LinearSolver::Settings                 &settings)
+        : A(At)
+      {
+        AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
+                                                       " rows but the matrix " + std::to_string(A.m()) + "."));
+        AssertThrow(settings.smoother_degree >= 1 && settings.smoothing_range > 1,
+                    dealii::ExcMessage("p-multigrid: the smoother degree must be >= 1 and the smoothing "
+                                       "range > 1."));
+        // DoFs whose rows carry no coupling: constrained and condensed.
+        std::vector<bool> decoupled(A.m(), true);
+        for (unsigned int i = 0; i < A.m(); ++i)
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            if (it->column() != i && it->value() != 0.)
+              {
+                decoupled[i] = false;
+                break;
+              }
+        // Coarse functions vanish on such DoFs, except at a coarse DoF that
+        // is a copy of one (a vertex value): it stays as its own decoupled
+        // coarse DoF, so that P keeps full column rank.
+        dealii::SparseMatrix<double> Pc(P.get_sparsity_pattern());
+        Pc.copy_from(P);
+        std::vector<bool> coarse_decoupled(P.n(), false);
+        for (unsigned int i = 0; i < P.m(); ++i)
+          if (decoupled[i])
+            {
+              unsigned int n_nonzero = 0, column = 0;
+              double       value     = 0;
+              for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+                if (it->value() != 0.)
+                  {
+                    ++n_nonzero;
+                    column = it->column();
+                    value  = it->value();
+                  }
+              if (n_nonzero == 1 && value == 1.)
+                coarse_decoupled[column] = true;
+              else
+                for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+                  it->value() = 0;
+            }
+        for (unsigned int i = 0; i < P.m(); ++i)
+          if (!decoupled[i])
+            for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+              if (coarse_decoupled[it->column()])
+                it->value() = 0;
+        Pt.reinit(Pc, 0.);
+
+        // Galerkin coarse operator P^T A P
+        At.mmult(AP, Pt);
+        Pt.Tmmult(coarse_matrix, AP);
+        internal::set_ml_parameters(&list, coarse_modes, P.n(), storage, settings.amg);
+        coarse_amg.initialize(coarse_matrix.trilinos_matrix(), list);
+
+        // Chebyshev smoother around the inverse diagonal
+        typename Smoother::AdditionalData data;
+        data.degree          = settings.smoother_degree;
+        data.smoothing_range = settings.smoothing_range;
+        data.eig_cg_n_iterations = 12;
+        data.preconditioner  = std::make_shared<dealii::DiagonalMatrix<dealii::Vector<double>>>();
+        dealii::Vector<double> &inverse_diagonal = data.preconditioner->get_vector();
+        inverse_diagonal.reinit(A.m());
+        for (unsigned int i = 0; i < A.m(); ++i)
+          {
+            const double d = A.diag_element(i);
+            AssertThrow(d > 0, dealii::ExcMessage("p-multigrid: the diagonal entry " + std::to_string(i) +
+                                                  " is not positive (" + std::to_string(d) +
+                                                  "): the matrix is not positive definite."));
+            inverse_diagonal[i] = 1. / d;
+          }
+        smoother.initialize(At, data);
+        r.reinit(A.m());
+        e.reinit(A.m());
+        rc.reinit(P.n());
+        ec.reinit(P.n());
+      }
+
+      void
+      vmult(dealii::Vector<double> &x, const dealii::Vector<double> &b) const
+      {
+        smoother.vmult(x, b);
+        A.vmult(r, x);
+        r.sadd(-1., 1., b);
+        Pt.Tvmult(rc, r);
+        coarse_amg.vmult(ec, rc);
+        Pt.vmult(e, ec);
+        x += e;
+        // the new residual r - A P ec, with the product AP kept from the
+        // setup (about half the nonzeros of A: coarse columns only)
+        AP.vmult(e, ec);
+        r -= e;
+        smoother.vmult(e, r);
+        x += e;
+      }
+
+    private:
+      const dealii::TrilinosWrappers::SparseMatrix &A;
+      dealii::TrilinosWrappers::SparseMatrix        Pt, AP, coarse_matrix;
+      Teuchos::ParameterList                        list;
+      std::vector<double>                           storage;
+      dealii::TrilinosWrappers::PreconditionAMG     coarse_amg;
+      Smoother                                      smoother;
+      mutable dealii::Vector<double>                r, e, rc, ec;
+    };
+  } // namespace
+
+
+
   LinearSolver::Type
   LinearSolver::parse_type(const std::string &name)
   {
@@ -109,9 +264,61 @@ namespace dealvem
 
 
 
+  LinearSolver::Preconditioner
+  LinearSolver::parse_preconditioner(const std::string &name)
+  {
+    const std::string n = internal::upper_case(name);
+    if (n == "AUTOMATIC")
+      return Preconditioner::automatic;
+    if (n == "AMG")
+      return Preconditioner::amg;
+    if (n == "P-MULTIGRID")
+      return Preconditioner::p_multigrid;
+    AssertThrow(false, dealii::ExcMessage("Unknown preconditioner '" + name +
+                                          "': expected automatic, AMG or p-multigrid."));
+    return Preconditioner::automatic;
+  }
+
+
+
+  std::string
+  LinearSolver::preconditioner_name(const Preconditioner p)
+  {
+    return p == Preconditioner::automatic ? "automatic" : (p == Preconditioner::amg ? "AMG" : "p-multigrid");
+  }
+
+
+
   LinearSolver::LinearSolver(const Settings &settings)
     : settings(settings)
   {}
+
+
+
+  void
+  LinearSolver::set_coarse_space(const dealii::SparseMatrix<double>     &P,
+                                 const std::vector<std::vector<double>> &m)
+  {
+    for (const auto &mode : m)
+      AssertThrow(mode.size() == P.n(), dealii::ExcMessage("set_coarse_space: a coarse mode has " +
+                                                           std::to_string(mode.size()) + " entries, P has " +
+                                                           std::to_string(P.n()) + " columns."));
+    prolongation = &P;
+    coarse_modes = m;
+  }
+
+
+
+  LinearSolver::Preconditioner
+  LinearSolver::effective_preconditioner() const
+  {
+    if (settings.preconditioner == Preconditioner::automatic)
+      return prolongation ? Preconditioner::p_multigrid : Preconditioner::amg;
+    AssertThrow(settings.preconditioner != Preconditioner::p_multigrid || prolongation,
+                dealii::ExcMessage("The p-multigrid preconditioner needs the coarse space: call "
+                                   "LinearSolver::set_coarse_space() (e.g. with PMultigrid::make_prolongation())."));
+    return settings.preconditioner;
+  }
 
 
 
@@ -133,7 +340,11 @@ namespace dealvem
         case Type::klu:
           return "KLU (Trilinos Amesos, direct)";
         default:
-          return "CG + ML AMG (" + std::to_string(modes.size() == 3 ? 3 : 2) + " near-null-space vectors)";
+          if (effective_preconditioner() == Preconditioner::p_multigrid)
+            return "CG + two-level p-multigrid (Chebyshev(" + std::to_string(settings.smoother_degree) +
+                   ") on k = 2, ML AMG on the Galerkin k = 1 level)";
+          return "CG + ML AMG (" + std::to_string(modes.size() == 3 && settings.amg.use_rotation ? 3 : 2) +
+                 " near-null-space vectors)";
       }
   }
 
@@ -149,25 +360,42 @@ namespace dealvem
       {
         internal::solve_direct(A, x, b, settings.type == Type::klu);
         iterations = 1;
+        setup_time = 0;
       }
     else
       {
+        dealii::Timer timer;
+        // everything the iteration needs, built before it (setup_time)
         dealii::TrilinosWrappers::SparseMatrix At;
         At.reinit(A);
-        Teuchos::ParameterList list;
-        std::vector<double>    storage;
-        internal::set_ml_parameters(&list, modes, A.m(), storage);
+        // the near-null space in storage is read by ML: it must outlive amg
+        Teuchos::ParameterList                    list;
+        std::vector<double>                       storage;
         dealii::TrilinosWrappers::PreconditionAMG amg;
-        amg.initialize(At.trilinos_matrix(), list);
+        std::unique_ptr<TwoLevelPreconditioner>   two_level;
+        const bool pmg = effective_preconditioner() == Preconditioner::p_multigrid;
+        if (pmg)
+          two_level = std::make_unique<TwoLevelPreconditioner>(A, At, *prolongation, coarse_modes, settings);
+        else
+          {
+            internal::set_ml_parameters(&list, modes, A.m(), storage, settings.amg);
+            amg.initialize(At.trilinos_matrix(), list);
+          }
+        setup_time = timer.wall_time();
+
         dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * b.l2_norm());
         dealii::SolverCG<dealii::Vector<double>> cg(control);
         try
           {
-            cg.solve(At, x, b, amg);
+            if (pmg)
+              cg.solve(At, x, b, *two_level);
+            else
+              cg.solve(At, x, b, amg);
           }
         catch (const dealii::SolverControl::NoConvergence &e)
           {
-            AssertThrow(false, dealii::ExcMessage("CG-AMG did not converge: residual " +
+            AssertThrow(false, dealii::ExcMessage(std::string(pmg ? "CG with p-multigrid" : "CG-AMG") +
+                                                  " did not converge: residual " +
                                                   std::to_string(e.last_residual) + " after " +
                                                   std::to_string(e.last_step) + " iterations (target " +
                                                   std::to_string(control.tolerance()) + ")."));

@@ -5,6 +5,7 @@
 #ifndef dealvem_solvers_linear_solver_h
 #define dealvem_solvers_linear_solver_h
 
+#include <deal.II/base/smartpointer.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -21,7 +22,33 @@ namespace dealvem
    * - CG-AMG: deal.II's SolverCG on the matrix copied into Trilinos,
    *   preconditioned by one ML smoothed-aggregation V-cycle whose
    *   near-null space is the three rigid-body modes
-   *   (set_near_null_space(), e.g. VEMDoFHandler::rigid_body_modes()).
+   *   (set_near_null_space(), e.g. VEMDoFHandler::rigid_body_modes()),
+   *   or by the two-level p-multigrid described below.
+   *
+   * <h3>Preconditioners of CG</h3>
+   * - Preconditioner::amg: one ML V-cycle on the whole matrix (AMGSettings).
+   * - Preconditioner::p_multigrid: a symmetric two-level V-cycle for order-2
+   *   virtual elements. The coarse level is the k = 1 space on the same
+   *   polygons, given by set_coarse_space() as a prolongation P (e.g.
+   *   PMultigrid::make_prolongation()) and its rigid-body modes; the coarse
+   *   operator is the Galerkin product P^T A P (so constraints condensed
+   *   into A are respected, see below), approximately inverted by one ML
+   *   V-cycle with the coarse modes as near-null space. On the fine level a
+   *   Chebyshev smoother of degree Settings::smoother_degree with the
+   *   diagonal (Jacobi) as inner preconditioner runs before and after the
+   *   coarse correction. Pre- and post-smoother are the same symmetric
+   *   polynomial, so the cycle is symmetric positive definite and CG
+   *   applies. Rows of A without off-diagonal entries (DoFs constrained by
+   *   AffineConstraints::distribute_local_to_global) are left to the
+   *   smoother: the coarse functions vanish there, except that a
+   *   constrained vertex DoF keeps its own decoupled coarse DoF.
+   * - Preconditioner::automatic (the default): p_multigrid when a coarse
+   *   space has been given, amg otherwise. So "CG-AMG" on an order-2 problem
+   *   whose caller provides the k = 1 space (ElasticityProblem does) runs
+   *   CG with the p-multigrid, which needs 2.5-3.5x fewer CG iterations
+   *   than plain AMG on VEM k = 2 and no more than FE_Q(2) with AMG
+   *   (doc/benchmarks.md); a matrix with only a near-null space (a
+   *   condensed contact system, say) gets plain AMG.
    *
    * The Trilinos solvers need MPI to be initialized
    * (dealii::Utilities::MPI::MPI_InitFinalize in main()).
@@ -36,11 +63,49 @@ namespace dealvem
       cg_amg
     };
 
+    enum class Preconditioner
+    {
+      automatic,
+      amg,
+      p_multigrid
+    };
+
+    /// ML parameters (smoothed aggregation) of the AMG V-cycles.
+    struct AMGSettings
+    {
+      /// ML smoother: "Chebyshev" or "symmetric Gauss-Seidel" (any ML name).
+      std::string  smoother_type = "Chebyshev";
+      /// ML "smoother: sweeps": the polynomial degree for Chebyshev.
+      unsigned int smoother_sweeps = 2;
+      /// ML "aggregation: threshold": drop weak couplings when aggregating.
+      double       aggregation_threshold = 1e-4;
+      /// ML "aggregation: type" Uncoupled instead of the default
+      /// Uncoupled-MIS (what deal.II's higher_order_elements flag sets).
+      bool         uncoupled_aggregation = false;
+      /// Smoothed aggregation ("SA" defaults); false: "NSSA" defaults
+      /// (deal.II's elliptic = false).
+      bool         elliptic = true;
+      /// Use the rotation too when three near-null-space modes are given;
+      /// false: the two translations only (constant modes).
+      bool         use_rotation = true;
+    };
+
     struct Settings
     {
-      Type         type               = Type::umfpack;
-      double       relative_tolerance = 1e-12;
-      unsigned int max_iterations     = 10000;
+      Type           type               = Type::umfpack;
+      double         relative_tolerance = 1e-12;
+      unsigned int   max_iterations     = 10000;
+      /// Preconditioner of CG (ignored by the direct solvers).
+      Preconditioner preconditioner = Preconditioner::automatic;
+      /// The AMG (of the whole matrix, or of the coarse level of the
+      /// p-multigrid).
+      AMGSettings    amg;
+      /// p-multigrid: degree of the Chebyshev smoother on the fine level
+      /// (matrix-vector products per smoothing step).
+      unsigned int   smoother_degree = 3;
+      /// p-multigrid: the smoother damps the eigenvalues in
+      /// [lambda_max / smoothing_range, lambda_max] of D^{-1} A.
+      double         smoothing_range = 15.;
     };
 
     /// "UMFPACK", "KLU", "CG-AMG" (case-insensitive); throws otherwise.
@@ -50,11 +115,29 @@ namespace dealvem
     static std::string
     type_name(const Type t);
 
+    /// "automatic", "AMG", "p-multigrid" (case-insensitive); throws otherwise.
+    static Preconditioner
+    parse_preconditioner(const std::string &name);
+
+    static std::string
+    preconditioner_name(const Preconditioner p);
+
     explicit LinearSolver(const Settings &settings);
 
     /// Rigid-body modes (3 vectors of the system size) for the AMG.
     void
     set_near_null_space(const std::vector<std::vector<double>> &modes);
+
+    /**
+     * The coarse level of the p-multigrid: the prolongation @p P (rows: the
+     * system's DoFs, columns: the coarse DoFs) and the near-null space of
+     * the coarse level (e.g. the three rigid-body modes of the k = 1 space).
+     * @p P is referenced, not copied: it must live until the last solve.
+     * Throws unless every coarse mode has P.n() entries.
+     */
+    void
+    set_coarse_space(const dealii::SparseMatrix<double>     &P,
+                     const std::vector<std::vector<double>> &coarse_modes);
 
     /// Solve A x = b (throws with the residual if CG does not converge).
     void
@@ -69,13 +152,29 @@ namespace dealvem
       return iterations;
     }
 
+    /// Wall seconds of the last solve spent in setting up the
+    /// preconditioner or factorization (copies into Trilinos, P^T A P, AMG
+    /// hierarchy, eigenvalue estimate); the rest was the iteration.
+    double
+    last_setup_time() const
+    {
+      return setup_time;
+    }
+
+    /// The preconditioner the next CG solve uses (automatic resolved).
+    Preconditioner
+    effective_preconditioner() const;
+
     std::string
     description() const;
 
   private:
-    Settings                         settings;
-    std::vector<std::vector<double>> modes;
-    unsigned int                     iterations = 0;
+    Settings                                                          settings;
+    std::vector<std::vector<double>>                                  modes;
+    dealii::SmartPointer<const dealii::SparseMatrix<double>, LinearSolver> prolongation;
+    std::vector<std::vector<double>>                                  coarse_modes;
+    unsigned int                                                      iterations = 0;
+    double                                                            setup_time = 0;
   };
 
   namespace internal
@@ -89,6 +188,14 @@ namespace dealvem
                       const std::vector<std::vector<double>> &modes,
                       const unsigned int                      n,
                       std::vector<double>                    &storage);
+
+    /// The same with the choices of @p amg.
+    void
+    set_ml_parameters(void                                   *teuchos_parameter_list,
+                      const std::vector<std::vector<double>> &modes,
+                      const unsigned int                      n,
+                      std::vector<double>                    &storage,
+                      const LinearSolver::AMGSettings        &amg);
 
     /// Factor @p A and solve A x = b directly: UMFPACK, or Trilinos Amesos
     /// KLU if @p use_klu.
