@@ -8,6 +8,10 @@
 //                                study) or several bodies in contact
 //   dealvem --print-parameters   print every parameter with its default
 //                                value and documentation
+//   mpirun -np N dealvem input.prm
+//                                one body: the distributed path (METIS
+//                                partition, Trilinos matrices, .pvtu);
+//                                contact problems run on one process so far
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -21,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <system_error>
 #include <typeinfo>
@@ -112,20 +117,37 @@ namespace
   void
   print_error(const std::string &text)
   {
-    std::cerr << std::endl
-              << "----------------------------------------------------" << std::endl
-              << "dealvem: error:" << std::endl
-              << text << std::endl
-              << "----------------------------------------------------" << std::endl;
+    // with several MPI processes every process that fails reports, naming
+    // itself (a failure on one process only would otherwise go unexplained)
+    int initialized = 0, finalized = 0, rank = 0, size = 1;
+    MPI_Initialized(&initialized);
+    MPI_Finalized(&finalized);
+    if (initialized && !finalized)
+      {
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        MPI_Comm_size(MPI_COMM_WORLD, &size);
+      }
+    // one write, so that the reports of several processes do not interleave
+    std::ostringstream message;
+    message << std::endl
+            << "----------------------------------------------------" << std::endl
+            << "dealvem: error"
+            << (size > 1 ? " (MPI process " + std::to_string(rank) + " of " + std::to_string(size) + ")" : "")
+            << ":" << std::endl
+            << text << std::endl
+            << "----------------------------------------------------" << std::endl;
+    std::cerr << message.str() << std::flush;
   }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
+  // outside the try block, so that MPI is still up while an error is
+  // reported (and finalised after it)
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       dealii::ParameterHandler                 prm;
       dealvem::ElasticityProblem::declare_parameters(prm);
       dealvem::ContactProblem::declare_parameters(prm);
@@ -164,6 +186,10 @@ main(int argc, char **argv)
       const std::string directory = fs::path(arg).parent_path().string();
       if (dealvem::ContactProblem::n_bodies(prm) > 1)
         {
+          AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
+                      dealii::ExcMessage("Contact problems run on one MPI process so far: run '" + arg +
+                                         "' without mpirun (or with -np 1). Single-body elasticity "
+                                         "problems run on several processes."));
           dealvem::ContactProblem problem;
           problem.parse_parameters(prm, directory);
           problem.run();

@@ -3,11 +3,14 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <deal.II/base/convergence_table.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/app/elasticity_problem.h>
@@ -22,14 +25,29 @@
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/linear_solver.h>
 #include <dealvem/solvers/p_multigrid.h>
+#include <dealvem/solvers/parallel_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
+#include <algorithm>
 
 namespace dealvem
 {
+  ElasticityProblem::ElasticityProblem(const MPI_Comm comm, const Parallelism parallelism)
+    : mpi_communicator(comm)
+    , this_process(dealii::Utilities::MPI::this_mpi_process(comm))
+    , n_processes(dealii::Utilities::MPI::n_mpi_processes(comm))
+    , pcout(std::cout, this_process == 0)
+  {
+    distributed = parallelism == Parallelism::distributed ||
+                  (parallelism == Parallelism::automatic && n_processes > 1);
+  }
+
+
+
   void
   ElasticityProblem::declare_parameters(dealii::ParameterHandler &prm)
   {
@@ -180,6 +198,24 @@ namespace dealvem
                                      " but the parameter file defines a material for id " +
                                      std::to_string(mesh_parameters.material_id) + " only."));
     bc.check_boundary_ids(mesh);
+    if (distributed && n_processes > 1)
+      {
+        // every process built the mesh itself: check that they agree
+        // (a generator that depended on the process would give a wrong
+        // partition and assembly without any other error)
+        double sum = 0;
+        for (const auto &v : mesh.get_vertices())
+          sum += v[0] + 1.61803398875 * v[1];
+        const std::vector<double> key = {double(mesh.n_cells()), double(mesh.n_vertices()), sum};
+        std::vector<double>       lo(3), hi(3);
+        int ierr = MPI_Allreduce(key.data(), lo.data(), 3, MPI_DOUBLE, MPI_MIN, mpi_communicator);
+        AssertThrowMPI(ierr);
+        ierr = MPI_Allreduce(key.data(), hi.data(), 3, MPI_DOUBLE, MPI_MAX, mpi_communicator);
+        AssertThrowMPI(ierr);
+        AssertThrow(lo == hi, dealii::ExcMessage("The MPI processes built different meshes for '" + mesh.name +
+                                                 "' (cells, vertices or coordinates differ); the replicated "
+                                                 "mesh must be the same on every process."));
+      }
   }
 
 
@@ -247,35 +283,157 @@ namespace dealvem
 
 
 
+  // The distributed path, as step-40: the partition of the cells, the owned
+  // and relevant DoFs, the constraints (on the replicated DoF numbering,
+  // every process holds all lines: they are few, boundary DoFs only), and
+  // the sparsity pattern of the owned cells with the rows of other
+  // processes sent to them.
+  void
+  ElasticityProblem::setup_distributed_system()
+  {
+    dealii::TimerOutput::Scope t(*timer, "setup");
+    dof_handler.reinit(mesh);
+    dof_handler.distribute_dofs(degree);
+    partition.reinit(dof_handler, mpi_communicator);
+    constraints.clear();
+    bc.apply_constraints(dof_handler, constraints);
+    constraints.close();
+    BoundaryConditions::check_rigid_body_support(dof_handler, constraints);
+    locally_owned_dofs    = partition.locally_owned_dofs();
+    locally_relevant_dofs = partition.locally_relevant_dofs(constraints);
+    dealii::DynamicSparsityPattern dsp(locally_relevant_dofs);
+    partition.make_sparsity_pattern(dsp, constraints);
+    dealii::SparsityTools::distribute_sparsity_pattern(dsp, locally_owned_dofs, mpi_communicator,
+                                                       locally_relevant_dofs);
+    distributed_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, mpi_communicator);
+    distributed_rhs.reinit(locally_owned_dofs, mpi_communicator);
+    distributed_solution.reinit(locally_owned_dofs, mpi_communicator);
+  }
+
+
+
+  void
+  ElasticityProblem::assemble_distributed_system()
+  {
+    dealii::TimerOutput::Scope t(*timer, "assembly");
+    ElasticityAssembler<2>     assembler(dof_handler, materials, gamma);
+    bc.add_loads(assembler);
+    assembler.assemble(constraints, partition.locally_owned_cells(), distributed_matrix, distributed_rhs);
+  }
+
+
+
+  // Solve, set the constrained DoFs, and copy what this process's cells and
+  // their ghost layer need into the serial vector `solution` (zero at the
+  // other DoFs) for the stresses, errors and the output piece.
+  void
+  ElasticityProblem::solve_distributed()
+  {
+    {
+      dealii::TimerOutput::Scope t(*timer, "solve");
+      LinearSolver::Settings     settings;
+      settings.type               = LinearSolver::parse_type(solver_type);
+      settings.relative_tolerance = solver_tolerance;
+      settings.max_iterations     = solver_max_iterations;
+      ParallelLinearSolver solver(settings);
+      if (settings.type == LinearSolver::Type::cg_amg)
+        solver.set_near_null_space(dof_handler.rigid_body_modes(), locally_owned_dofs);
+      solver.solve(distributed_matrix, distributed_solution, distributed_rhs);
+      constraints.distribute(distributed_solution);
+      solver_description = solver.description();
+      solver_iterations  = solver.last_iterations();
+    }
+    dealii::TimerOutput::Scope t(*timer, "ghost exchange");
+    std::vector<unsigned int>  cells = partition.locally_owned_cells();
+    cells.insert(cells.end(), partition.ghost_cells().begin(), partition.ghost_cells().end());
+    const dealii::IndexSet                needed = partition.dofs_of_cells(cells);
+    dealii::TrilinosWrappers::MPI::Vector ghosted(locally_owned_dofs, needed, mpi_communicator);
+    ghosted = distributed_solution;
+    solution.reinit(dof_handler.n_dofs());
+    for (const auto i : needed)
+      solution[i] = ghosted(i);
+  }
+
+
+
   // Stresses, errors against the exact solution (if given), the VTU file,
   // a line of the convergence table and of the JSON summary; the summary
   // is rewritten after every cycle, so that a later failure keeps it.
   void
   ElasticityProblem::output_results(const unsigned int cycle)
   {
-    const StressRecovery<2> stresses(dof_handler, materials, solution);
+    // the cells this process computes: all, or (distributed) its own, with
+    // the ghost layer for the nodal stress averages
+    std::vector<unsigned int> stress_cells;
+    if (distributed)
+      {
+        std::set_union(partition.locally_owned_cells().begin(), partition.locally_owned_cells().end(),
+                       partition.ghost_cells().begin(), partition.ghost_cells().end(),
+                       std::back_inserter(stress_cells));
+      }
+    const StressRecovery<2> stresses = distributed ? StressRecovery<2>(dof_handler, materials, solution, stress_cells) :
+                                                     StressRecovery<2>(dof_handler, materials, solution);
     ErrorNorms              errors;
     if (exact)
       {
         dealii::TimerOutput::Scope t(*timer, "errors");
-        errors = compute_errors(dof_handler, materials, solution, *exact);
+        if (distributed)
+          errors = sum_over_processes(compute_errors(dof_handler, materials, solution, *exact,
+                                                     partition.locally_owned_cells()),
+                                      mpi_communicator);
+        else
+          errors = compute_errors(dof_handler, materials, solution, *exact);
       }
-    const std::string vtu = output_prefix(output_folder, base_name, cycle, n_cycles) + ".vtu";
+    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
+    const std::string vtu    = prefix + (distributed ? ".pvtu" : ".vtu");
     if (write_vtu)
       {
         dealii::TimerOutput::Scope t(*timer, "output");
-        write_vtu_file(vtu, dof_handler, solution, stresses);
+        if (distributed)
+          {
+            // one piece per process, named <prefix>.<process>.vtu, and the
+            // record that joins them (process 0)
+            const std::string stem = std::filesystem::path(prefix).filename().string();
+            write_vtu_piece(prefix + "." + std::to_string(this_process) + ".vtu", dof_handler, solution, stresses,
+                            partition.locally_owned_cells(), this_process);
+            if (this_process == 0)
+              {
+                std::vector<std::string> pieces;
+                for (unsigned int p = 0; p < n_processes; ++p)
+                  pieces.push_back(stem + "." + std::to_string(p) + ".vtu");
+                write_pvtu_record(vtu, pieces);
+              }
+          }
+        else
+          write_vtu_file(vtu, dof_handler, solution, stresses);
       }
 
     const auto [hmin, hmax] = mesh.cell_diameter_range();
     double max_vm           = 0;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      max_vm = std::max(max_vm, stresses.cell_von_mises(c));
-    std::cout << "Cycle " << cycle << ": " << mesh.n_cells() << " cells, " << dof_handler.n_dofs()
-              << " DoFs, h = " << hmax << ", solver " << solver_description;
+    if (distributed)
+      {
+        for (const unsigned int c : partition.locally_owned_cells())
+          max_vm = std::max(max_vm, stresses.cell_von_mises(c));
+        max_vm = dealii::Utilities::MPI::max(max_vm, mpi_communicator);
+      }
+    else
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        max_vm = std::max(max_vm, stresses.cell_von_mises(c));
+    pcout << "Cycle " << cycle << ": " << mesh.n_cells() << " cells, " << dof_handler.n_dofs()
+          << " DoFs, h = " << hmax << ", solver " << solver_description;
     if (solver_iterations > 1)
-      std::cout << " (" << solver_iterations << " iterations)";
-    std::cout << ", max von Mises " << max_vm << std::endl;
+      pcout << " (" << solver_iterations << " iterations)";
+    pcout << ", max von Mises " << max_vm << std::endl;
+    if (distributed)
+      {
+        const auto per_part = partition.cells_per_part();
+        const auto owned    = dealii::Utilities::MPI::all_gather(mpi_communicator, locally_owned_dofs.n_elements());
+        pcout << "  partition (METIS on the cell graph): cells per process "
+              << *std::min_element(per_part.begin(), per_part.end()) << " to "
+              << *std::max_element(per_part.begin(), per_part.end()) << ", owned DoFs per process "
+              << *std::min_element(owned.begin(), owned.end()) << " to " << *std::max_element(owned.begin(), owned.end())
+              << ", " << partition.n_cut_edges() << " edges between processes" << std::endl;
+      }
 
     table.add_value("cycle", cycle);
     table.add_value("cells", mesh.n_cells());
@@ -288,6 +446,7 @@ namespace dealvem
     json.set(key + "h_min", hmin);
     json.set(key + "max_von_mises", max_vm);
     json.set(key + "solver_iterations", double(solver_iterations));
+    json.set(key + "mpi_processes", double(distributed ? n_processes : 1));
     if (write_vtu)
       json.set(key + "vtu", vtu);
     for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
@@ -306,7 +465,21 @@ namespace dealvem
     last_timings.clear();
     for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
       last_timings[s.first] = s.second;
-    if (write_json)
+    if (gather_solution)
+      {
+        if (distributed)
+          {
+            dealii::TrilinosWrappers::MPI::Vector all(locally_owned_dofs, dealii::complete_index_set(dof_handler.n_dofs()),
+                                                      mpi_communicator);
+            all = distributed_solution;
+            last_solution.reinit(dof_handler.n_dofs());
+            for (dealii::types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+              last_solution[i] = all(i);
+          }
+        else
+          last_solution = solution;
+      }
+    if (write_json && this_process == 0)
       json.write(output_folder + "/" + base_name + ".json");
   }
 
@@ -316,7 +489,13 @@ namespace dealvem
   ElasticityProblem::run()
   {
     check_output_names(output_folder, base_name);
-    create_output_folder(output_folder);
+    if (this_process == 0 || !distributed)
+      create_output_folder(output_folder);
+    if (distributed)
+      {
+        const int ierr = MPI_Barrier(mpi_communicator);
+        AssertThrowMPI(ierr);
+      }
     materials = {{dealii::types::material_id(mesh_parameters.material_id),
                   ElasticMaterial(youngs_modulus, poissons_ratio, model)}};
     exact.reset();
@@ -342,9 +521,18 @@ namespace dealvem
         timer = std::make_unique<dealii::TimerOutput>(std::cout, dealii::TimerOutput::never,
                                                       dealii::TimerOutput::wall_times);
         make_mesh(cycle);
-        setup_system();
-        assemble_system();
-        solve();
+        if (distributed)
+          {
+            setup_distributed_system();
+            assemble_distributed_system();
+            solve_distributed();
+          }
+        else
+          {
+            setup_system();
+            assemble_system();
+            solve();
+          }
         output_results(cycle);
       }
 
@@ -358,13 +546,36 @@ namespace dealvem
         if (n_cycles > 1)
           for (const std::string c : {"L2", "H1", "energy"})
             table.evaluate_convergence_rates(c, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
-        std::cout << std::endl;
-        table.write_text(std::cout, dealii::TableHandler::org_mode_table);
+        pcout << std::endl;
+        if (this_process == 0)
+          table.write_text(std::cout, dealii::TableHandler::org_mode_table);
       }
+
+    // peak resident memory of each process (the replicated mesh makes it
+    // grow with the whole problem; see doc/benchmarks.md)
+    dealii::Utilities::System::MemoryStats stats;
+    dealii::Utilities::System::get_memory_stats(stats);
+    const auto peaks = distributed ? dealii::Utilities::MPI::all_gather(mpi_communicator, stats.VmHWM) :
+                                     std::vector<unsigned long int>{stats.VmHWM};
+    peak_memory_per_process.clear();
+    for (const auto kB : peaks)
+      peak_memory_per_process.push_back(kB / 1024.);
+    pcout << "Peak memory (VmHWM) per process:";
+    for (unsigned int p = 0; p < peak_memory_per_process.size(); ++p)
+      {
+        pcout << (p > 0 ? "," : "") << " " << std::fixed << std::setprecision(1) << peak_memory_per_process[p]
+              << " MB";
+        json.set("memory.peak_MB_process_" + std::to_string(p), peak_memory_per_process[p]);
+      }
+    pcout << std::defaultfloat << std::setprecision(6) << std::endl;
+    if (write_json && this_process == 0)
+      json.write(output_folder + "/" + base_name + ".json");
+
     if (write_json)
-      std::cout << "Summary written to " << output_folder + "/" + base_name + ".json" << std::endl;
+      pcout << "Summary written to " << output_folder + "/" + base_name + ".json" << std::endl;
     if (write_vtu)
-      std::cout << "ParaView files: " << output_folder << "/" << base_name
-                << (n_cycles > 1 ? "-cycle*.vtu" : ".vtu") << std::endl;
+      pcout << "ParaView files: " << output_folder << "/" << base_name
+            << (n_cycles > 1 ? "-cycle*" : "") << (distributed ? ".pvtu (one .vtu piece per process)" : ".vtu")
+            << std::endl;
   }
 } // namespace dealvem

@@ -2,6 +2,10 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/vem/vem_values.h>
@@ -134,12 +138,51 @@ namespace dealvem
       rhs.reinit(n);
     else
       rhs = 0;
+    assemble_cells(constraints, nullptr, true, matrix, rhs);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityAssembler<dim>::assemble(const dealii::AffineConstraints<double> &constraints,
+                                     const std::vector<unsigned int>         &cells,
+                                     dealii::TrilinosWrappers::SparseMatrix  &matrix,
+                                     dealii::TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    const auto n = dof_handler.n_dofs();
+    AssertThrow(matrix.m() == n && rhs.size() == n,
+                dealii::ExcMessage("ElasticityAssembler::assemble(): the distributed matrix has " +
+                                   std::to_string(matrix.m()) + " rows and the vector " +
+                                   std::to_string(rhs.size()) + " entries, but there are " + std::to_string(n) +
+                                   " DoFs."));
+    matrix = 0;
+    rhs    = 0;
+    const bool first_process = dealii::Utilities::MPI::this_mpi_process(rhs.get_mpi_communicator()) == 0;
+    assemble_cells(constraints, &cells, first_process, matrix, rhs);
+    matrix.compress(dealii::VectorOperation::add);
+    rhs.compress(dealii::VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  template <typename MatrixType, typename VectorType>
+  void
+  ElasticityAssembler<dim>::assemble_cells(const dealii::AffineConstraints<double> &constraints,
+                                           const std::vector<unsigned int>         *cells,
+                                           const bool                               with_nodal_loads,
+                                           MatrixType                              &matrix,
+                                           VectorType                              &rhs) const
+  {
     VEMValues<dim> vem_values(dof_handler);
     vem_values.set_cell_similarity(cell_similarity);
     ElasticityOperator<dim> elasticity;
     dealii::Vector<double>  F;
-    for (unsigned int c = 0; c < dof_handler.get_mesh().n_cells(); ++c)
+    const unsigned int      n_cells = cells ? cells->size() : dof_handler.get_mesh().n_cells();
+    for (unsigned int i = 0; i < n_cells; ++i)
       {
+        const unsigned int c = cells ? (*cells)[i] : i;
         vem_values.reinit(c);
         elasticity.reinit(vem_values.get_element(), get_material(c), gamma);
         local_load(vem_values, F);
@@ -148,7 +191,7 @@ namespace dealvem
       }
     // nodal loads: a "cell" of their DoFs without matrix, so that loads on
     // constrained DoFs go to the DoFs they depend on
-    if (!nodal_loads.empty())
+    if (with_nodal_loads && !nodal_loads.empty())
       {
         std::vector<dealii::types::global_dof_index> indices;
         F.reinit(nodal_loads.size());

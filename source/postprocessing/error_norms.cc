@@ -2,6 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/vem/virtual_element.h>
 
@@ -9,13 +10,18 @@
 
 namespace dealvem
 {
-  template <int dim>
-  ErrorNorms
-  compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
-                 const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-                 const dealii::Vector<double>                                &solution,
-                 const dealii::Function<dim>                                 &exact,
-                 const dealii::types::material_id                             body)
+  namespace
+  {
+    // the error integrals over the cells of @p cells (all if nullptr) of
+    // material id @p body (any if invalid_material_id)
+    template <int dim>
+    ErrorNorms
+    errors_on_cells(const VEMDoFHandler<dim>                                    &dof_handler,
+                    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                    const dealii::Vector<double>                                &solution,
+                    const dealii::Function<dim>                                 &exact,
+                    const dealii::types::material_id                             body,
+                    const std::vector<unsigned int>                             *cells)
   {
     AssertThrow(exact.n_components == 2, dealii::ExcMessage("The exact displacement needs 2 components."));
     const auto        &mesh = dof_handler.get_mesh();
@@ -24,8 +30,10 @@ namespace dealvem
     dealii::Vector<double>                       local, coef, u(2);
     std::vector<dealii::Tensor<1, dim>>          grad(2);
     double l2 = 0, h1 = 0, en = 0, l2e = 0, h1e = 0, ene = 0;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+    const unsigned int n_cells = cells ? cells->size() : mesh.n_cells();
+    for (unsigned int cell = 0; cell < n_cells; ++cell)
       {
+        const unsigned int c = cells ? (*cells)[cell] : cell;
         if (body != dealii::numbers::invalid_material_id && mesh.cell(c).material_id != body)
           continue;
         const auto &material = materials.at(mesh.cell(c).material_id);
@@ -67,9 +75,61 @@ namespace dealvem
     r.energy_exact = std::sqrt(std::max(ene, 0.));
     return r;
   }
+  } // namespace
+
+
+
+  template <int dim>
+  ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
+                 const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                 const dealii::Vector<double>                                &solution,
+                 const dealii::Function<dim>                                 &exact,
+                 const dealii::types::material_id                             body)
+  {
+    return errors_on_cells(dof_handler, materials, solution, exact, body, nullptr);
+  }
+
+
+
+  template <int dim>
+  ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
+                 const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                 const dealii::Vector<double>                                &solution,
+                 const dealii::Function<dim>                                 &exact,
+                 const std::vector<unsigned int>                             &cells)
+  {
+    return errors_on_cells(dof_handler, materials, solution, exact, dealii::numbers::invalid_material_id,
+                           &cells);
+  }
+
+
+
+  ErrorNorms
+  sum_over_processes(const ErrorNorms &local, const MPI_Comm comm)
+  {
+    const std::vector<double> squares = {local.l2 * local.l2,         local.h1_seminorm * local.h1_seminorm,
+                                         local.energy * local.energy, local.l2_exact * local.l2_exact,
+                                         local.h1_exact * local.h1_exact, local.energy_exact * local.energy_exact};
+    std::vector<double>       sums(squares.size());
+    const int ierr = MPI_Allreduce(squares.data(), sums.data(), squares.size(), MPI_DOUBLE, MPI_SUM, comm);
+    AssertThrowMPI(ierr);
+    ErrorNorms r;
+    r.l2           = std::sqrt(sums[0]);
+    r.h1_seminorm  = std::sqrt(sums[1]);
+    r.energy       = std::sqrt(sums[2]);
+    r.l2_exact     = std::sqrt(sums[3]);
+    r.h1_exact     = std::sqrt(sums[4]);
+    r.energy_exact = std::sqrt(sums[5]);
+    return r;
+  }
 
   template ErrorNorms
   compute_errors(const VEMDoFHandler<2> &, const std::map<dealii::types::material_id, ElasticMaterial> &,
                  const dealii::Vector<double> &, const dealii::Function<2> &,
                  const dealii::types::material_id);
+  template ErrorNorms
+  compute_errors(const VEMDoFHandler<2> &, const std::map<dealii::types::material_id, ElasticMaterial> &,
+                 const dealii::Vector<double> &, const dealii::Function<2> &, const std::vector<unsigned int> &);
 } // namespace dealvem

@@ -13,6 +13,30 @@ namespace dealvem
     const std::map<dealii::types::material_id, ElasticMaterial> &materials,
     const dealii::Vector<double>                                &solution)
   {
+    compute(dof_handler, materials, solution, nullptr);
+  }
+
+
+
+  template <int dim>
+  StressRecovery<dim>::StressRecovery(
+    const VEMDoFHandler<dim>                                    &dof_handler,
+    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+    const dealii::Vector<double>                                &solution,
+    const std::vector<unsigned int>                             &cells)
+  {
+    compute(dof_handler, materials, solution, &cells);
+  }
+
+
+
+  template <int dim>
+  void
+  StressRecovery<dim>::compute(const VEMDoFHandler<dim>                                    &dof_handler,
+                               const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                               const dealii::Vector<double>                                &solution,
+                               const std::vector<unsigned int>                             *cells)
+  {
     const auto        &mesh = dof_handler.get_mesh();
     const unsigned int k    = dof_handler.get_degree();
     strain.resize(mesh.n_cells());
@@ -24,9 +48,11 @@ namespace dealvem
     std::vector<unsigned int>                    count(mesh.n_vertices(), 0);
     VirtualElement<dim>                          element(k);
     dealii::Vector<double>                       local, coef;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+    const unsigned int n_cells = cells ? cells->size() : mesh.n_cells();
+    for (unsigned int i = 0; i < n_cells; ++i)
       {
-        const auto it = materials.find(mesh.cell(c).material_id);
+        const unsigned int c  = cells ? (*cells)[i] : i;
+        const auto         it = materials.find(mesh.cell(c).material_id);
         AssertThrow(it != materials.end(),
                     dealii::ExcMessage("StressRecovery: no material for material id " +
                                        std::to_string(mesh.cell(c).material_id) + " of cell " +

@@ -9,6 +9,122 @@
 
 namespace dealvem
 {
+  namespace
+  {
+    // The writer of write_vtu_file() and write_vtu_piece(): the cells
+    // @p cells (all if nullptr) with the vertices they use; the cell data
+    // "subdomain" if @p subdomain is not invalid_unsigned_int.
+    template <int dim>
+    void
+    write_cells(const std::string               &filename,
+                const VEMDoFHandler<dim>        &dof_handler,
+                const dealii::Vector<double>    &u,
+                const StressRecovery<dim>       &s,
+                const std::vector<unsigned int> *cell_list,
+                const unsigned int               subdomain)
+    {
+      const auto &mesh = dof_handler.get_mesh();
+      std::vector<unsigned int> cells;
+      if (cell_list)
+        cells = *cell_list;
+      else
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          cells.push_back(c);
+      // the vertices written and their local numbers; all of them for the
+      // whole mesh
+      std::vector<unsigned int> local(mesh.n_vertices(), dealii::numbers::invalid_unsigned_int);
+      std::vector<unsigned int> vertices;
+      if (cell_list)
+        {
+          for (const unsigned int c : cells)
+            for (const unsigned int v : mesh.cell(c).vertices)
+              local[v] = 0;
+          for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+            if (local[v] == 0)
+              {
+                local[v] = vertices.size();
+                vertices.push_back(v);
+              }
+        }
+      else
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          {
+            local[v] = v;
+            vertices.push_back(v);
+          }
+
+      OutputFile    file(filename);
+      std::ostream &out = file.stream();
+      out << std::setprecision(14);
+      out << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << vertices.size() << "\" NumberOfCells=\""
+          << cells.size() << "\">\n";
+      out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const unsigned int v : vertices)
+        out << mesh.get_vertices()[v][0] << " " << mesh.get_vertices()[v][1] << " 0\n";
+      out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+      for (const unsigned int c : cells)
+        {
+          for (const auto v : mesh.cell(c).vertices)
+            out << local[v] << " ";
+          out << "\n";
+        }
+      out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+      std::size_t offset = 0;
+      for (const unsigned int c : cells)
+        {
+          offset += mesh.cell(c).vertices.size();
+          out << offset << "\n";
+        }
+      out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+      for (unsigned int i = 0; i < cells.size(); ++i)
+        out << "7\n";
+      out << "</DataArray>\n</Cells>\n";
+
+      out << "<PointData Vectors=\"displacement\">\n"
+          << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const unsigned int v : vertices)
+        out << u[2 * v] << " " << u[2 * v + 1] << " 0\n";
+      out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const unsigned int v : vertices)
+        {
+          const auto &t = s.vertex_stress(v);
+          out << t[0][0] << " " << t[1][1] << " " << t[0][1] << "\n";
+        }
+      out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n";
+      for (const unsigned int v : vertices)
+        out << s.vertex_von_mises(v) << "\n";
+      out << "</DataArray>\n</PointData>\n";
+
+      out << "<CellData>\n<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const unsigned int c : cells)
+        {
+          const auto &t = s.cell_stress(c);
+          out << t[0][0] << " " << t[1][1] << " " << t[0][1] << "\n";
+        }
+      out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n";
+      for (const unsigned int c : cells)
+        out << s.cell_von_mises(c) << "\n";
+      out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"body_id\" format=\"ascii\">\n";
+      for (const unsigned int c : cells)
+        out << int(mesh.cell(c).material_id) << "\n";
+      out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"cell_id\" format=\"ascii\">\n";
+      for (const unsigned int c : cells)
+        out << c << "\n";
+      if (subdomain != dealii::numbers::invalid_unsigned_int)
+        {
+          out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"subdomain\" format=\"ascii\">\n";
+          for (unsigned int i = 0; i < cells.size(); ++i)
+            out << subdomain << "\n";
+        }
+      out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+      file.commit();
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   write_vtu_file(const std::string            &filename,
@@ -16,71 +132,56 @@ namespace dealvem
                  const dealii::Vector<double> &u,
                  const StressRecovery<dim>    &s)
   {
-    const auto   &mesh = dof_handler.get_mesh();
+    write_cells(filename, dof_handler, u, s, nullptr, dealii::numbers::invalid_unsigned_int);
+  }
+
+
+
+  template <int dim>
+  void
+  write_vtu_piece(const std::string               &filename,
+                  const VEMDoFHandler<dim>        &dof_handler,
+                  const dealii::Vector<double>    &u,
+                  const StressRecovery<dim>       &s,
+                  const std::vector<unsigned int> &cells,
+                  const unsigned int               subdomain)
+  {
+    write_cells(filename, dof_handler, u, s, &cells, subdomain);
+  }
+
+
+
+  void
+  write_pvtu_record(const std::string &filename, const std::vector<std::string> &pieces)
+  {
     OutputFile    file(filename);
     std::ostream &out = file.stream();
-    out << std::setprecision(14);
     out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-        << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.n_vertices() << "\" NumberOfCells=\""
-        << mesh.n_cells() << "\">\n";
-    out << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto &v : mesh.get_vertices())
-      out << v[0] << " " << v[1] << " 0\n";
-    out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (const auto &c : mesh.get_cells())
-      {
-        for (const auto v : c.vertices)
-          out << v << " ";
-        out << "\n";
-      }
-    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    std::size_t offset = 0;
-    for (const auto &c : mesh.get_cells())
-      {
-        offset += c.vertices.size();
-        out << offset << "\n";
-      }
-    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      out << "7\n";
-    out << "</DataArray>\n</Cells>\n";
-
-    out << "<PointData Vectors=\"displacement\">\n"
-        << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-      out << u[2 * v] << " " << u[2 * v + 1] << " 0\n";
-    out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-      {
-        const auto &t = s.vertex_stress(v);
-        out << t[0][0] << " " << t[1][1] << " " << t[0][1] << "\n";
-      }
-    out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n";
-    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-      out << s.vertex_von_mises(v) << "\n";
-    out << "</DataArray>\n</PointData>\n";
-
-    out << "<CellData>\n<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      {
-        const auto &t = s.cell_stress(c);
-        out << t[0][0] << " " << t[1][1] << " " << t[0][1] << "\n";
-      }
-    out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n";
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      out << s.cell_von_mises(c) << "\n";
-    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"body_id\" format=\"ascii\">\n";
-    for (const auto &c : mesh.get_cells())
-      out << int(c.material_id) << "\n";
-    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"cell_id\" format=\"ascii\">\n";
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      out << c << "\n";
-    out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+        << "<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+        << "<PUnstructuredGrid GhostLevel=\"0\">\n"
+        << "<PPointData Vectors=\"displacement\">\n"
+        << "<PDataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\"/>\n"
+        << "<PDataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\"/>\n"
+        << "<PDataArray type=\"Float64\" Name=\"von_mises\"/>\n"
+        << "</PPointData>\n<PCellData>\n"
+        << "<PDataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\"/>\n"
+        << "<PDataArray type=\"Float64\" Name=\"von_mises\"/>\n"
+        << "<PDataArray type=\"Int32\" Name=\"body_id\"/>\n"
+        << "<PDataArray type=\"Int32\" Name=\"cell_id\"/>\n"
+        << "<PDataArray type=\"Int32\" Name=\"subdomain\"/>\n"
+        << "</PCellData>\n<PPoints>\n<PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n</PPoints>\n";
+    for (const auto &p : pieces)
+      out << "<Piece Source=\"" << p << "\"/>\n";
+    out << "</PUnstructuredGrid>\n</VTKFile>\n";
     file.commit();
   }
+
+
 
   template void
   write_vtu_file(const std::string &, const VEMDoFHandler<2> &, const dealii::Vector<double> &,
                  const StressRecovery<2> &);
+  template void
+  write_vtu_piece(const std::string &, const VEMDoFHandler<2> &, const dealii::Vector<double> &,
+                  const StressRecovery<2> &, const std::vector<unsigned int> &, const unsigned int);
 } // namespace dealvem

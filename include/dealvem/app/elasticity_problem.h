@@ -5,12 +5,17 @@
 #ifndef dealvem_app_elasticity_problem_h
 #define dealvem_app_elasticity_problem_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/convergence_table.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/app/mesh_parameters.h>
@@ -19,6 +24,7 @@
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/vem/partitioning.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <map>
@@ -39,10 +45,37 @@ namespace dealvem
    * sparsity) -> assemble_system() (ElasticityAssembler: VEMValues and
    * ElasticityOperator per cell) -> solve() -> output_results() (stresses,
    * errors, VTU, convergence table, JSON).
+   *
+   * <h3>MPI</h3>
+   * Run by `mpirun -np N dealvem input.prm` (N > 1), the problem takes the
+   * distributed path of step-40: every process builds the whole polygon
+   * mesh and DoF numbering (replicated), VEMPartition splits the cells by
+   * METIS, each process assembles its cells into a
+   * dealii::TrilinosWrappers::SparseMatrix and MPI::Vector
+   * (ElasticityAssembler's overload), ParallelLinearSolver solves (CG + ML
+   * AMG, or Amesos KLU for the direct types), and each process writes the
+   * .vtu piece of its cells; process 0 writes the .pvtu record, the JSON
+   * summary and the console output. Errors are summed over the processes,
+   * so the convergence table is the serial one. With one process the serial
+   * path runs, unless the constructor asks for the distributed one.
    */
   class ElasticityProblem
   {
   public:
+    /// Which path run() takes.
+    enum class Parallelism
+    {
+      /// distributed with more than one process in the communicator
+      automatic,
+      /// serial (dealii::SparseMatrix) on every process of the communicator
+      serial,
+      /// distributed, also on one process
+      distributed
+    };
+
+    explicit ElasticityProblem(const MPI_Comm    comm        = MPI_COMM_WORLD,
+                               const Parallelism parallelism = Parallelism::automatic);
+
     /// Declare every parameter (with its help string).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -62,6 +95,24 @@ namespace dealvem
     /// Number of DoFs of the last cycle.
     unsigned int last_n_dofs = 0;
 
+    /// If true, run() leaves the whole solution of the last cycle in
+    /// last_solution on every process (in the distributed path this
+    /// gathers all entries, which costs a vector of all DoFs per process).
+    bool gather_solution = false;
+
+    /// The solution of the last cycle (with gather_solution).
+    dealii::Vector<double> last_solution;
+
+    /// Peak resident memory (VmHWM) of each process at the end of run(), MB.
+    std::vector<double> peak_memory_per_process;
+
+    /// Whether run() takes the distributed path.
+    bool
+    is_distributed() const
+    {
+      return distributed;
+    }
+
     /// Wall times of the stages of the last cycle (mesh, setup, assembly,
     /// solve, ...).
     std::map<std::string, double> last_timings;
@@ -75,6 +126,13 @@ namespace dealvem
     assemble_system();
     void
     solve();
+    // the distributed path (MPI): same stages on the locally owned cells
+    void
+    setup_distributed_system();
+    void
+    assemble_distributed_system();
+    void
+    solve_distributed();
     void
     output_results(const unsigned int cycle);
 
@@ -93,6 +151,11 @@ namespace dealvem
     bool         write_vtu = true, write_json = true;
     std::string  prm_directory;
 
+    MPI_Comm                   mpi_communicator;
+    bool                       distributed = false;
+    unsigned int               this_process = 0, n_processes = 1;
+    dealii::ConditionalOStream pcout;
+
     // the state of a run
     std::map<dealii::types::material_id, ElasticMaterial> materials;
     std::unique_ptr<dealii::Function<2>>                  exact;
@@ -103,6 +166,11 @@ namespace dealvem
     dealii::SparsityPattern                               sparsity_pattern;
     dealii::SparseMatrix<double>                          system_matrix;
     dealii::Vector<double>                                system_rhs, solution;
+    // distributed path: partition, index sets, Trilinos objects
+    VEMPartition<2>                                       partition;
+    dealii::IndexSet                                      locally_owned_dofs, locally_relevant_dofs;
+    dealii::TrilinosWrappers::SparseMatrix                distributed_matrix;
+    dealii::TrilinosWrappers::MPI::Vector                 distributed_rhs, distributed_solution;
     std::string                                           solver_description;
     unsigned int                                          solver_iterations = 0;
     dealii::ConvergenceTable                              table;

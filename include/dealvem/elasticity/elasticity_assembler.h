@@ -17,6 +17,18 @@
 #include <map>
 #include <vector>
 
+namespace dealii
+{
+  namespace TrilinosWrappers
+  {
+    class SparseMatrix;
+    namespace MPI
+    {
+      class Vector;
+    }
+  } // namespace TrilinosWrappers
+} // namespace dealii
+
 namespace dealvem
 {
   template <int dim>
@@ -110,6 +122,23 @@ namespace dealvem
              dealii::SparseMatrix<double>            &matrix,
              dealii::Vector<double>                  &rhs) const;
 
+    /**
+     * The same for a matrix and vector distributed over MPI processes
+     * (step-40's assembly): only the cells @p cells (the locally owned ones,
+     * VEMPartition::locally_owned_cells()) are assembled, entries of rows
+     * owned by other processes are sent to them by
+     * compress(VectorOperation::add) at the end (collective). The matrix
+     * needs the distributed sparsity pattern of those cells with the
+     * constraints' entries; @p constraints must hold the lines of the DoFs
+     * of the cells. The nodal loads are added on process 0 only. The loop
+     * body is the serial one.
+     */
+    void
+    assemble(const dealii::AffineConstraints<double>   &constraints,
+             const std::vector<unsigned int>           &cells,
+             dealii::TrilinosWrappers::SparseMatrix    &matrix,
+             dealii::TrilinosWrappers::MPI::Vector     &rhs) const;
+
     /// Assemble only the (unconstrained) load vector: body force and
     /// boundary loads.
     void
@@ -125,6 +154,15 @@ namespace dealvem
     local_load(const VEMValues<dim> &vem_values, dealii::Vector<double> &F) const;
 
   private:
+    /// The one assembly loop: the cells @p cells (all if nullptr), the
+    /// nodal loads if @p with_nodal_loads.
+    template <typename MatrixType, typename VectorType>
+    void
+    assemble_cells(const dealii::AffineConstraints<double> &constraints,
+                   const std::vector<unsigned int>         *cells,
+                   const bool                               with_nodal_loads,
+                   MatrixType                              &matrix,
+                   VectorType                              &rhs) const;
 
     const VEMDoFHandler<dim>                               &dof_handler;
     std::map<dealii::types::material_id, ElasticMaterial>   materials;

@@ -6,6 +6,7 @@
 #define dealvem_postprocessing_error_norms_h
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/vector.h>
 
@@ -13,6 +14,7 @@
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <map>
+#include <vector>
 
 namespace dealvem
 {
@@ -45,6 +47,29 @@ namespace dealvem
                  const dealii::Vector<double>                                &solution,
                  const dealii::Function<dim>                                 &exact,
                  const dealii::types::material_id body = dealii::numbers::invalid_material_id);
+
+  /**
+   * The same over the cells @p cells only (for example the locally owned
+   * cells of an MPI process; @p solution needs the entries of their DoFs).
+   * The squares of the norms add over disjoint sets of cells:
+   * sum_over_processes() combines the results of all processes into the
+   * norms over the whole mesh.
+   */
+  template <int dim>
+  ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
+                 const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                 const dealii::Vector<double>                                &solution,
+                 const dealii::Function<dim>                                 &exact,
+                 const std::vector<unsigned int>                             &cells);
+
+  /**
+   * Combine error norms computed on disjoint sets of cells by the
+   * processes of @p comm (collective): each norm is the square root of the
+   * sum of the squares. Every process gets the result.
+   */
+  ErrorNorms
+  sum_over_processes(const ErrorNorms &local, const MPI_Comm comm);
 } // namespace dealvem
 
 #endif

@@ -34,6 +34,19 @@ namespace dealvem
                    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
                    const dealii::Vector<double>                                &solution);
 
+    /**
+     * The same on the cells @p cells only (increasing; for example the
+     * locally owned and ghost cells of an MPI process, VEMPartition): the
+     * values of other cells stay zero, and the nodal averages are taken
+     * over the given cells around each vertex, so they are complete at the
+     * vertices whose cells are all given. @p solution needs the entries of
+     * the DoFs of these cells only.
+     */
+    StressRecovery(const VEMDoFHandler<dim>                                    &dof_handler,
+                   const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+                   const dealii::Vector<double>                                &solution,
+                   const std::vector<unsigned int>                             &cells);
+
     const dealii::SymmetricTensor<2, dim> &
     cell_strain(const unsigned int c) const
     {
@@ -65,6 +78,12 @@ namespace dealvem
     }
 
   private:
+    void
+    compute(const VEMDoFHandler<dim>                                    &dof_handler,
+            const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+            const dealii::Vector<double>                                &solution,
+            const std::vector<unsigned int>                             *cells);
+
     std::vector<dealii::SymmetricTensor<2, dim>> strain, stress, nodal_stress;
     std::vector<double>                          von_mises, nodal_von_mises;
   };

@@ -11,6 +11,7 @@
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace dealvem
 {
@@ -30,6 +31,30 @@ namespace dealvem
                  const VEMDoFHandler<dim>     &dof_handler,
                  const dealii::Vector<double> &solution,
                  const StressRecovery<dim>    &stresses);
+
+  /**
+   * One piece of a parallel output: the cells @p cells (the locally owned
+   * cells of MPI process @p subdomain), the vertices they use (renumbered
+   * locally, in increasing global order) and the same fields as
+   * write_vtu_file(), plus the cell data "subdomain". @p solution and
+   * @p stresses need the values on these cells and their vertices only.
+   * write_pvtu_record() writes the file that joins the pieces.
+   */
+  template <int dim>
+  void
+  write_vtu_piece(const std::string               &filename,
+                  const VEMDoFHandler<dim>        &dof_handler,
+                  const dealii::Vector<double>    &solution,
+                  const StressRecovery<dim>       &stresses,
+                  const std::vector<unsigned int> &cells,
+                  const unsigned int               subdomain);
+
+  /**
+   * The .pvtu file that ParaView opens for the pieces @p pieces (file
+   * names relative to the .pvtu's folder) written by write_vtu_piece().
+   */
+  void
+  write_pvtu_record(const std::string &filename, const std::vector<std::string> &pieces);
 } // namespace dealvem
 
 #endif

@@ -1,0 +1,79 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_solvers_parallel_solver_h
+#define dealvem_solvers_parallel_solver_h
+
+#include <deal.II/base/index_set.h>
+
+#include <dealvem/solvers/linear_solver.h>
+
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  namespace TrilinosWrappers
+  {
+    class SparseMatrix;
+    namespace MPI
+    {
+      class Vector;
+    }
+  } // namespace TrilinosWrappers
+} // namespace dealii
+
+namespace dealvem
+{
+  /**
+   * The solvers of LinearSolver for a system distributed over MPI
+   * processes (a dealii::TrilinosWrappers::SparseMatrix and
+   * TrilinosWrappers::MPI vectors with the same row map, as in step-40):
+   * - CG-AMG: deal.II's SolverCG preconditioned by one ML
+   *   smoothed-aggregation V-cycle with the ML settings of LinearSolver
+   *   (internal::set_ml_parameters(), the one place they are written) and
+   *   the three rigid-body modes as near-null space;
+   * - UMFPACK and KLU: Trilinos Amesos KLU, which gathers the matrix on one
+   *   process and factors it there (a reference for small systems and for
+   *   comparing with the serial solve to round-off; it does not scale).
+   */
+  class ParallelLinearSolver
+  {
+  public:
+    explicit ParallelLinearSolver(const LinearSolver::Settings &settings);
+
+    /**
+     * The rigid-body modes as full DoF vectors (every process holds all
+     * entries, e.g. VEMDoFHandler::rigid_body_modes()); the entries of the
+     * locally owned DoFs @p owned are kept, in the order of the matrix's
+     * row map (increasing global index).
+     */
+    void
+    set_near_null_space(const std::vector<std::vector<double>> &modes, const dealii::IndexSet &owned);
+
+    /// Solve A x = b; x must have A's row map without ghosts. Collective.
+    void
+    solve(const dealii::TrilinosWrappers::SparseMatrix &A,
+          dealii::TrilinosWrappers::MPI::Vector        &x,
+          const dealii::TrilinosWrappers::MPI::Vector  &b);
+
+    /// CG iterations of the last solve (1 for the direct solver).
+    unsigned int
+    last_iterations() const
+    {
+      return iterations;
+    }
+
+    std::string
+    description() const;
+
+  private:
+    LinearSolver::Settings           settings;
+    std::vector<std::vector<double>> local_modes;
+    unsigned int                     iterations = 0;
+    unsigned int                     n_processes = 1;
+  };
+} // namespace dealvem
+
+#endif
