@@ -138,6 +138,20 @@ namespace
             << "----------------------------------------------------" << std::endl;
     std::cerr << message.str() << std::flush;
   }
+
+  // The exit after an error. With several MPI processes the others may be
+  // waiting in a collective call for the one that failed, so the whole job is
+  // aborted (after the message was written) instead of hanging; with one
+  // process the program returns 1.
+  int
+  failure_exit()
+  {
+    std::cout.flush();
+    std::cerr.flush();
+    if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
 } // namespace
 
 int
@@ -206,29 +220,29 @@ main(int argc, char **argv)
     {
       // std::exception and dealii::ExceptionBase (derived from it)
       print_error(exc.what());
-      return 1;
+      return failure_exit();
     }
   catch (const mu::ParserError &exc)
     {
       print_error("error of the expression parser (muparser): " + exc.GetMsg() +
                   (exc.GetExpr().empty() ? std::string() : " in the expression '" + exc.GetExpr() + "'"));
-      return 1;
+      return failure_exit();
     }
   catch (const std::string &text)
     {
       print_error(text);
-      return 1;
+      return failure_exit();
     }
   catch (const char *text)
     {
       print_error(text != nullptr ? text : "(no message)");
-      return 1;
+      return failure_exit();
     }
   catch (...)
     {
       print_error("the program stopped on an exception of a type it does not know, so there is no "
                   "message; this is a bug of dealvem, please report it with the parameter file.");
-      return 1;
+      return failure_exit();
     }
   return 0;
 }
