@@ -68,7 +68,7 @@ namespace dealvem
     prm.enter_subsection("Solver");
     prm.declare_entry("Type", "UMFPACK", Selection("UMFPACK|KLU|CG-AMG|GMRES-AMG"),
                       "UMFPACK: SuiteSparse direct; KLU: Trilinos Amesos KLU direct; CG-AMG: "
-                      "Trilinos CG preconditioned by ML algebraic multigrid with the rigid-body "
+                      "deal.II's SolverCG preconditioned by Trilinos ML algebraic multigrid with the rigid-body "
                       "modes as near-null space. Contact problems: UMFPACK and KLU factor the whole "
                       "saddle-point matrix, and CG-AMG or GMRES-AMG both mean GMRES with a block "
                       "preconditioner (AMG on the displacement block, exact approximate Schur "
