@@ -118,10 +118,11 @@ namespace dealvem
       {
         if (!finite(a) || !finite(b) || !std::isfinite(margin))
           return;
-        std::vector<std::pair<dealii::BoundingBox<2>, unsigned int>> hits;
+        // the buffers are kept from call to call (no allocation once warm);
+        // f must not query this tree again
+        hits.clear();
         tree.query(boost::geometry::index::intersects(box(a, b, margin)), std::back_inserter(hits));
-        std::vector<unsigned int> items;
-        items.reserve(hits.size());
+        items.clear();
         for (const auto &h : hits)
           items.push_back(h.second);
         std::sort(items.begin(), items.end());
@@ -144,6 +145,8 @@ namespace dealvem
       }
       std::vector<std::pair<dealii::BoundingBox<2>, unsigned int>> boxes;
       dealii::RTree<std::pair<dealii::BoundingBox<2>, unsigned int>> tree;
+      mutable std::vector<std::pair<dealii::BoundingBox<2>, unsigned int>> hits;
+      mutable std::vector<unsigned int>                                   items;
     };
   } // namespace
 
@@ -539,18 +542,27 @@ namespace dealvem
     // overlapping cells of one body: crossing edges, or a vertex strictly
     // inside another cell
     BoxTree edge_grid;
+    double  max_length = 0;
     for (unsigned int e = 0; e < edges.size(); ++e)
-      edge_grid.add(vertices[edges[e].vertices[0]], vertices[edges[e].vertices[1]], e);
+      {
+        const P &a = vertices[edges[e].vertices[0]], &b = vertices[edges[e].vertices[1]];
+        edge_grid.add(a, b, e);
+        max_length = std::max(max_length, a.distance(b));
+      }
     edge_grid.build();
     for (unsigned int e = 0; e < edges.size(); ++e)
       {
         const auto &E  = edges[e];
         const P    &a  = vertices[E.vertices[0]], &b = vertices[E.vertices[1]];
         const auto  m  = cells[E.cells[0]].material_id;
-        // crossing edges share a point; nearly collinear overlapping ones
-        // (within the tolerances of segments_overlap) lie close: half the
-        // edge length around it is far more than those tolerances
-        edge_grid.query_box(a, b, 0.5 * a.distance(b), [&](const unsigned int f) {
+        // crossing edges share a point. Edges that segments_overlap() takes
+        // for collinear have their ends within 1e-12 l^2 / |ab| of the line
+        // through a and b (l the longer of the two), and their projections
+        // overlap: they pass within that distance of the edge, so its box
+        // grown by 1e-11 max_length^2 / |ab| holds every candidate.
+        const double length = a.distance(b);
+        edge_grid.query_box(a, b, length > 0 ? 1e-11 * max_length * (max_length / length) : 0.,
+                            [&](const unsigned int f) {
           if (f <= e)
             return;
           const auto &F = edges[f];

@@ -140,8 +140,7 @@ main()
                          1e-14, "Traction 0, -10*t at t = 2 equals 0, -20");
     testing::check_small(relative_difference(solve(top + "0.01*t", dh, 0.5), solve(top + "0.005", dh)), 1e-14,
                          "Dirichlet 0.01*t at t = 0.5 equals 0.005");
-    testing::check_small(relative_difference(solve("set Function constants = p=10
-" + fixed_bottom +
+    testing::check_small(relative_difference(solve("set Function constants = p=10\n" + fixed_bottom +
                                                      "set Pressure = 3 : p*t",
                                                    dh, 0.25),
                                              solve(fixed_bottom + "set Pressure = 3 : 2.5", dh)),
