@@ -2,15 +2,11 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
-#include <deal.II/base/bounding_box.h>
-#include <deal.II/numerics/rtree.h>
-
 #include <dealvem/mesh/polygonal_mesh.h>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -89,64 +85,78 @@ namespace dealvem
       return std::min(s1, r1) - std::max(s0, r0) > 1e-10 * l;
     }
 
-    // Candidate search over boxes: deal.II's packed R-tree
-    // (boost::geometry::index). add() the boxes of the items, build(), then
-    // query_box() calls f for every item whose box meets the query box, in
-    // increasing item order. Boxes with a coordinate that is not finite are
-    // left out on both sides: no geometric test below can succeed with such
-    // a point (their comparisons are false), and validate() reports them.
-    class BoxTree
+    // A uniform bucket grid over a bounding box. Items outside the box (or
+    // with NaN coordinates) go to the nearest bucket, so any input gives a
+    // valid bucket index; a box that is empty, a single point or not finite
+    // gets a single bucket (correct, only slower).
+    struct Grid
     {
-    public:
-      void
-      add(const P &a, const P &b, const unsigned int item)
+      P            lo;
+      double       h  = 1;
+      unsigned int nx = 1, ny = 1;
+      std::vector<std::vector<unsigned int>> buckets;
+
+      Grid(const P &lo_, const P &hi, const unsigned int n_items)
+        : lo(lo_)
       {
-        if (finite(a) && finite(b))
-          boxes.emplace_back(box(a, b, 0), item);
-      }
-      void
-      build()
-      {
-        tree = dealii::pack_rtree(boxes);
-        boxes.clear();
-        boxes.shrink_to_fit();
-      }
-      // the query box of a and b, grown by margin on every side
-      template <typename F>
-      void
-      query_box(const P &a, const P &b, const double margin, F &&f) const
-      {
-        if (!finite(a) || !finite(b) || !std::isfinite(margin))
-          return;
-        // the buffers are kept from call to call (no allocation once warm);
-        // f must not query this tree again
-        hits.clear();
-        tree.query(boost::geometry::index::intersects(box(a, b, margin)), std::back_inserter(hits));
-        items.clear();
-        for (const auto &h : hits)
-          items.push_back(h.second);
-        std::sort(items.begin(), items.end());
-        for (const unsigned int item : items)
-          f(item);
+        const double w = hi[0] - lo[0], ht = hi[1] - lo[1];
+        const double extent = std::max(w, ht);
+        const bool   usable = std::isfinite(lo[0]) && std::isfinite(lo[1]) && std::isfinite(w) &&
+                            std::isfinite(ht) && w >= 0 && ht >= 0 && extent > 0;
+        if (usable)
+          {
+            // about one item per bucket, at most 2048 buckets along a side;
+            // sqrt of each factor avoids overflowing w * ht
+            const double n = std::max(1u, n_items);
+            h              = std::max(std::sqrt(w / n) * std::sqrt(ht), extent / 2048.);
+            if (h > 0 && std::isfinite(h))
+              {
+                nx = 1 + static_cast<unsigned int>(std::min(2048., std::floor(w / h)));
+                ny = 1 + static_cast<unsigned int>(std::min(2048., std::floor(ht / h)));
+              }
+            else
+              h = 1;
+          }
+        buckets.resize(std::size_t(nx) * ny);
       }
 
-    private:
-      static bool
-      finite(const P &p)
+      // bucket index of the scaled coordinate r in 0..n-1: clamped in double
+      // before the conversion (NaN and r <= 0 give 0)
+      static unsigned int
+      index(const double r, const unsigned int n)
       {
-        return std::isfinite(p[0]) && std::isfinite(p[1]);
+        if (!(r > 0))
+          return 0;
+        if (r >= double(n - 1))
+          return n - 1;
+        return static_cast<unsigned int>(r);
       }
-      static dealii::BoundingBox<2>
-      box(const P &a, const P &b, const double margin)
+      unsigned int
+      ix(const double x) const
       {
-        return dealii::BoundingBox<2>(
-          std::make_pair(P(std::min(a[0], b[0]) - margin, std::min(a[1], b[1]) - margin),
-                         P(std::max(a[0], b[0]) + margin, std::max(a[1], b[1]) + margin)));
+        return index((x - lo[0]) / h, nx);
       }
-      std::vector<std::pair<dealii::BoundingBox<2>, unsigned int>> boxes;
-      dealii::RTree<std::pair<dealii::BoundingBox<2>, unsigned int>> tree;
-      mutable std::vector<std::pair<dealii::BoundingBox<2>, unsigned int>> hits;
-      mutable std::vector<unsigned int>                                   items;
+      unsigned int
+      iy(const double y) const
+      {
+        return index((y - lo[1]) / h, ny);
+      }
+      void
+      insert_box(const P &a, const P &b, const unsigned int item)
+      {
+        for (unsigned int i = ix(std::min(a[0], b[0])); i <= ix(std::max(a[0], b[0])); ++i)
+          for (unsigned int j = iy(std::min(a[1], b[1])); j <= iy(std::max(a[1], b[1])); ++j)
+            buckets[std::size_t(j) * nx + i].push_back(item);
+      }
+      template <typename F>
+      void
+      query_box(const P &a, const P &b, F &&f) const
+      {
+        for (unsigned int i = ix(std::min(a[0], b[0])); i <= ix(std::max(a[0], b[0])); ++i)
+          for (unsigned int j = iy(std::min(a[1], b[1])); j <= iy(std::max(a[1], b[1])); ++j)
+            for (const auto item : buckets[std::size_t(j) * nx + i])
+              f(item);
+      }
     };
   } // namespace
 
@@ -301,11 +311,22 @@ namespace dealvem
       for (const auto v : c.vertices)
         if (std::find(vmat[v].begin(), vmat[v].end(), c.material_id) == vmat[v].end())
           vmat[v].push_back(c.material_id);
-    BoxTree grid;
+    P lo(1e300, 1e300), hi(-1e300, -1e300);
+    unsigned int n_used = 0;
     for (unsigned int v = 0; v < vertices.size(); ++v)
       if (!vmat[v].empty())
-        grid.add(vertices[v], vertices[v], v);
-    grid.build();
+        {
+          ++n_used;
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d] = std::min(lo[d], vertices[v][d]);
+              hi[d] = std::max(hi[d], vertices[v][d]);
+            }
+        }
+    Grid grid(lo, hi, n_used);
+    for (unsigned int v = 0; v < vertices.size(); ++v)
+      if (!vmat[v].empty())
+        grid.insert_box(vertices[v], vertices[v], v);
 
     for (auto &cell : cells)
       {
@@ -322,8 +343,9 @@ namespace dealvem
               continue;
             const dealii::Tensor<1, 2>        t  = (pb - pa) / L;
             std::vector<std::pair<double, unsigned int>> found;
-            // a vertex within tol L of the edge lies in its box grown by tol L
-            grid.query_box(pa, pb, tol * L, [&](const unsigned int v) {
+            P lo_e(std::min(pa[0], pb[0]) - tol * L, std::min(pa[1], pb[1]) - tol * L);
+            P hi_e(std::max(pa[0], pb[0]) + tol * L, std::max(pa[1], pb[1]) + tol * L);
+            grid.query_box(lo_e, hi_e, [&](const unsigned int v) {
               if (v == a || v == b ||
                   std::find(cell.vertices.begin(), cell.vertices.end(), v) != cell.vertices.end())
                 return;
@@ -467,6 +489,7 @@ namespace dealvem
   PolygonalMesh<dim>::validate() const
   {
     std::vector<double> diam(cells.size());
+    P                   lo(1e300, 1e300), hi(-1e300, -1e300);
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
         const auto        &loop = cells[c].vertices;
@@ -478,6 +501,11 @@ namespace dealvem
           {
             const P &p = vertices[loop[i]];
             check_coordinates(name, loop[i], p);
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                lo[d] = std::min(lo[d], p[d]);
+                hi[d] = std::max(hi[d], p[d]);
+              }
             for (unsigned int j = i + 1; j < n; ++j)
               h = std::max(h, p.distance(vertices[loop[j]]));
             area += cross(vertices[loop[0]], p, vertices[loop[(i + 1) % n]]);
@@ -541,30 +569,19 @@ namespace dealvem
 
     // overlapping cells of one body: crossing edges, or a vertex strictly
     // inside another cell
-    BoxTree edge_grid;
-    double  max_length = 0;
+    Grid edge_grid(lo, hi, edges.size());
     for (unsigned int e = 0; e < edges.size(); ++e)
-      {
-        const P &a = vertices[edges[e].vertices[0]], &b = vertices[edges[e].vertices[1]];
-        edge_grid.add(a, b, e);
-        max_length = std::max(max_length, a.distance(b));
-      }
-    edge_grid.build();
+      edge_grid.insert_box(vertices[edges[e].vertices[0]], vertices[edges[e].vertices[1]], e);
+    std::vector<unsigned int> stamp(edges.size(), dealii::numbers::invalid_unsigned_int);
     for (unsigned int e = 0; e < edges.size(); ++e)
       {
         const auto &E  = edges[e];
         const P    &a  = vertices[E.vertices[0]], &b = vertices[E.vertices[1]];
         const auto  m  = cells[E.cells[0]].material_id;
-        // crossing edges share a point. Edges that segments_overlap() takes
-        // for collinear have their ends within 1e-12 l^2 / |ab| of the line
-        // through a and b (l the longer of the two), and their projections
-        // overlap: they pass within that distance of the edge, so its box
-        // grown by 1e-11 max_length^2 / |ab| holds every candidate.
-        const double length = a.distance(b);
-        edge_grid.query_box(a, b, length > 0 ? 1e-11 * max_length * (max_length / length) : 0.,
-                            [&](const unsigned int f) {
-          if (f <= e)
+        edge_grid.query_box(a, b, [&](const unsigned int f) {
+          if (f <= e || stamp[f] == e)
             return;
+          stamp[f]     = e;
           const auto &F = edges[f];
           if (cells[F.cells[0]].material_id != m)
             return;
@@ -578,7 +595,7 @@ namespace dealvem
                                      point_string(a) + ")."));
         });
       }
-    BoxTree cell_grid;
+    Grid cell_grid(lo, hi, cells.size());
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
         P clo(1e300, 1e300), chi(-1e300, -1e300);
@@ -588,9 +605,8 @@ namespace dealvem
               clo[d] = std::min(clo[d], vertices[v][d]);
               chi[d] = std::max(chi[d], vertices[v][d]);
             }
-        cell_grid.add(clo, chi, c);
+        cell_grid.insert_box(clo, chi, c);
       }
-    cell_grid.build();
     std::vector<std::vector<unsigned int>> vertex_cells(vertices.size());
     for (unsigned int c = 0; c < cells.size(); ++c)
       for (const auto v : cells[c].vertices)
@@ -601,7 +617,7 @@ namespace dealvem
           continue;
         const P   &p = vertices[v];
         const auto m = cells[vertex_cells[v][0]].material_id;
-        cell_grid.query_box(p, p, 0., [&](const unsigned int c) {
+        cell_grid.query_box(p, p, [&](const unsigned int c) {
           if (cells[c].material_id != m)
             return;
           const auto &loop = cells[c].vertices;
