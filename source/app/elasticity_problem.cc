@@ -87,8 +87,8 @@ namespace dealvem
     prm.enter_subsection("Solver");
     prm.declare_entry("Type", "UMFPACK", Selection("UMFPACK|KLU|CG-AMG|GMRES-AMG|CG-AMG constraints"),
                       "UMFPACK: SuiteSparse direct; KLU: Trilinos Amesos KLU direct; CG-AMG: "
-                      "Trilinos CG preconditioned by ML algebraic multigrid with the rigid-body "
-                      "modes as near-null space; for k = 2 the default preconditioner of CG is a "
+                      "deal.II's SolverCG preconditioned by Trilinos ML algebraic multigrid with the "
+                      "rigid-body modes as near-null space; for k = 2 the default preconditioner of CG is a "
                       "two-level p-multigrid (Chebyshev smoothing on k = 2, the ML AMG on the "
                       "Galerkin k = 1 level of the same polygons), which needs less than half "
                       "the iterations of AMG alone. Contact problems: UMFPACK and KLU factor the whole "

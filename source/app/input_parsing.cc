@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
 #include <iomanip>
 #include <sstream>
 
@@ -133,7 +135,7 @@ namespace dealvem
         "cosh",  "tanh",  "asinh", "acosh", "atanh", "log2", "log10", "log",   "ln",   "exp",
         "sqrt",  "sign",  "rint",  "abs",  "min",  "max",   "sum",   "avg",   "ceil", "cot",
         "csc",   "floor", "sec",   "pow",  "erfc", "rand",  "rand_seed", "atan2", "fmod", "int",
-        "_pi",   "_e"};
+        "_pi",   "_e",    "pi",    "Pi"};
       for (const auto &c : constants)
         {
           const std::string &name = c.first;
@@ -302,45 +304,85 @@ namespace dealvem
 
 
 
+    namespace
+    {
+      // the number of components, refusing an empty list before the base
+      // class sees it (a Function needs at least one component)
+      unsigned int
+      n_expressions(const std::vector<std::string> &expressions, const std::string &parameter)
+      {
+        AssertThrow(!expressions.empty(),
+                    dealii::ExcMessage("Parameter '" + parameter + "': no expression given."));
+        return expressions.size();
+      }
+
+      // the message of whatever the parser threw
+      std::string
+      parser_error(const std::exception_ptr &e)
+      {
+        try
+          {
+            std::rethrow_exception(e);
+          }
+        catch (const std::exception &x)
+          {
+            return x.what();
+          }
+        catch (const mu::ParserError &x)
+          {
+            return x.GetMsg();
+          }
+        catch (...)
+          {
+          }
+        return "the expression parser failed";
+      }
+    } // namespace
+
+
+
     ParsedFunction::ParsedFunction(const std::vector<std::string>      &expressions,
                                    const std::map<std::string, double> &constants,
                                    const std::string                   &parameter)
-      : dealii::AutoDerivativeFunction<2>(1e-5, expressions.size(), 1.0)
+      : dealii::Functions::ParsedFunction<2>(n_expressions(expressions, parameter), 1e-5)
       , expressions(expressions)
       , parameter(parameter)
-      , parser(expressions.size(), 1.0)
     {
-      AssertThrow(!expressions.empty(),
-                  dealii::ExcMessage("Parameter '" + parameter + "': no expression given."));
       set_formula(FourthOrder);
-      std::string joined;
+      std::string joined, constant_list;
       for (const auto &x : expressions)
         joined += (joined.empty() ? "" : ", ") + x;
-      std::string error;
+      // the values as the parser reads them back: 17 significant digits
+      // give every double exactly
+      std::ostringstream c;
+      c << std::setprecision(17);
+      for (const auto &[name, v] : constants)
+        c << (c.tellp() > 0 ? ", " : "") << name << '=' << v;
+      std::exception_ptr error;
       try
         {
-          // t is the time variable of FunctionParser: get_time() of the parser
-          parser.initialize("x,y,t", expressions, constants, true);
+          // the section Functions::ParsedFunction reads; its variable names
+          // default to "x,y,t", which makes t the time of the parser
+          dealii::ParameterHandler prm;
+          declare_parameters(prm, expressions.size());
+          std::string expression_list;
+          for (const auto &x : expressions)
+            expression_list += (expression_list.empty() ? "" : "; ") + x;
+          prm.set("Function expression", expression_list);
+          prm.set("Function constants", c.str());
+          parse_parameters(prm);
+          set_time(1.0);
           // evaluate once (the value itself is not checked) so that unknown
           // names are reported here rather than in the middle of assembly
           dealii::Vector<double> v(expressions.size());
-          parser.vector_value(dealii::Point<2>(0.123, 0.456), v);
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-      catch (const mu::ParserError &e)
-        {
-          error = e.GetMsg();
+          dealii::Functions::ParsedFunction<2>::vector_value(dealii::Point<2>(0.123, 0.456), v);
         }
       catch (...)
         {
-          error = "the expression parser failed";
+          error = std::current_exception();
         }
-      AssertThrow(error.empty(),
-                  dealii::ExcMessage("Parameter '" + parameter + "': cannot parse the expression(s) '" +
-                                     joined + "': " + error));
+      AssertThrow(!error, dealii::ExcMessage("Parameter '" + parameter + "': cannot parse the expression(s) '" +
+                                             joined + "': " + (error ? parser_error(error) : std::string())));
     }
 
 
@@ -353,8 +395,7 @@ namespace dealvem
       std::ostringstream msg;
       msg << "Parameter '" << parameter << "': the expression '"
           << (component < expressions.size() ? expressions[component] : std::string("?")) << "' "
-          << what << " at the point (" << p[0] << ", " << p[1] << "), t = " << parser.get_time()
-          << ".";
+          << what << " at the point (" << p[0] << ", " << p[1] << "), t = " << get_time() << ".";
       AssertThrow(false, dealii::ExcMessage(msg.str()));
       std::abort(); // not reached
     }
@@ -364,31 +405,18 @@ namespace dealvem
     double
     ParsedFunction::value(const dealii::Point<2> &p, const unsigned int component) const
     {
-      double      v = 0;
-      std::string error;
+      double v = 0;
       try
         {
-          v = parser.value(p, component);
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-      catch (const mu::ParserError &e)
-        {
-          error = e.GetMsg();
+          v = dealii::Functions::ParsedFunction<2>::value(p, component);
         }
       catch (...)
         {
-          error = "the expression parser failed";
+          report(p, component, "cannot be evaluated (" + parser_error(std::current_exception()) + ")");
         }
-      if (!error.empty())
-        report(p, component, "cannot be evaluated (" + error + ")");
       if (!std::isfinite(v))
-        {
-          report(p, component,
-                 std::string("evaluates to ") + (std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf")));
-        }
+        report(p, component,
+               std::string("evaluates to ") + (std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf")));
       return v;
     }
 
@@ -403,15 +431,6 @@ namespace dealvem
                                      " values requested."));
       for (unsigned int c = 0; c < n_components; ++c)
         values[c] = value(p, c);
-    }
-
-
-
-    void
-    ParsedFunction::set_time(const double new_time)
-    {
-      dealii::AutoDerivativeFunction<2>::set_time(new_time);
-      parser.set_time(new_time);
     }
   } // namespace InputParsing
 } // namespace dealvem

@@ -2,12 +2,15 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/numerics/rtree.h>
 
 #include <dealvem/contact/node_insertion.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -108,6 +111,12 @@ namespace dealvem
       /// sampling of a curve turns that much); absent at chain ends and
       /// sharper corners.
       std::map<unsigned int, double>           kappa_gap;
+      /// The edges' bounding boxes grown by half the edge length on every
+      /// side (a hit of cast() lies at most merge_fraction < 1/2 edge lengths
+      /// beyond an end), with the index into edges: the candidate search of
+      /// project() and cast().
+      dealii::RTree<std::pair<dealii::BoundingBox<2>, unsigned int>> edge_tree;
+      Point lo, hi; ///< corners of the union of those boxes
 
       bool
       is_end(const unsigned int v) const
@@ -247,6 +256,25 @@ namespace dealvem
               side.kappa[chain[n - 1]] = side.kappa[chain[n - 2]];
             }
         }
+      std::vector<std::pair<dealii::BoundingBox<2>, unsigned int>> boxes;
+      side.lo = Point(std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
+      side.hi = -side.lo;
+      for (unsigned int i = 0; i < side.edges.size(); ++i)
+        {
+          const Point &a = mesh.vertex(side.edges[i][0]), &b = mesh.vertex(side.edges[i][1]);
+          const double r = 0.5 * a.distance(b);
+          Point        lo, hi;
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d]      = std::min(a[d], b[d]) - r;
+              hi[d]      = std::max(a[d], b[d]) + r;
+              side.lo[d] = std::min(side.lo[d], lo[d]);
+              side.hi[d] = std::max(side.hi[d], hi[d]);
+            }
+          boxes.emplace_back(dealii::BoundingBox<2>(std::make_pair(lo, hi)), i);
+        }
+      side.edge_tree = dealii::pack_rtree(boxes);
+
       side.edge_kappa.resize(side.edges.size());
       for (unsigned int i = 0; i < side.edges.size(); ++i)
         {
@@ -341,10 +369,36 @@ namespace dealvem
     project(const Mesh &mesh, const Side &side, const Point &p, const Vector &own_normal,
             const double merge_fraction)
     {
+      // distance from p to edge i, as the search below computes it
+      const auto distance_to = [&](const unsigned int i) {
+        const Point &a = mesh.vertex(side.edges[i][0]), &b = mesh.vertex(side.edges[i][1]);
+        const Vector d = b - a;
+        return p.distance(a + std::min(1., std::max(0., ((p - a) * d) / (d * d))) * d);
+      };
+      // Candidates: the edge of the box nearest to p is at some distance D;
+      // every edge at most D from p has its box within D of p, so the query
+      // of the square of half-width D (a little more, against round-off)
+      // returns every edge that can be the closest. In index order, the
+      // loop below then finds the same edge as a loop over all edges.
+      std::vector<std::pair<dealii::BoundingBox<2>, unsigned int>> hits;
+      side.edge_tree.query(boost::geometry::index::nearest(p, 1), std::back_inserter(hits));
+      std::vector<unsigned int> candidates;
+      if (!hits.empty())
+        {
+          const double r = distance_to(hits[0].second) * (1 + 1e-9) + 1e-12 * side.lo.distance(side.hi);
+          const dealii::BoundingBox<2> square(
+            std::make_pair(Point(p[0] - r, p[1] - r), Point(p[0] + r, p[1] + r)));
+          hits.clear();
+          side.edge_tree.query(boost::geometry::index::intersects(square), std::back_inserter(hits));
+          for (const auto &h : hits)
+            candidates.push_back(h.second);
+          std::sort(candidates.begin(), candidates.end());
+        }
+
       Projection best;
       double     best_distance = std::numeric_limits<double>::max();
       double     unclamped     = 0;
-      for (unsigned int i = 0; i < side.edges.size(); ++i)
+      for (const unsigned int i : candidates)
         {
           const Point &a = mesh.vertex(side.edges[i][0]), &b = mesh.vertex(side.edges[i][1]);
           const Vector d  = b - a;
@@ -380,10 +434,30 @@ namespace dealvem
     cast(const Mesh &mesh, const Side &side, const Point &p, const Vector &direction,
          const double merge_fraction)
     {
+      // Candidates: a hit lies on the line through p along direction, at
+      // most half an edge length beyond its edge, hence inside the edge's
+      // grown box, and within R of p; the boxes crossed by that piece of
+      // the line are all edges that can be hit. In index order, the loop
+      // below then finds the same edge as a loop over all edges.
+      std::vector<unsigned int> candidates;
+      {
+        double R = 0;
+        for (const double x : {side.lo[0], side.hi[0]})
+          for (const double y : {side.lo[1], side.hi[1]})
+            R = std::max(R, p.distance(Point(x, y)));
+        R = 2 * R + 1e-12 * side.lo.distance(side.hi);
+        const dealii::Segment<2> line(p - R * direction, p + R * direction);
+        std::vector<std::pair<dealii::BoundingBox<2>, unsigned int>> hits;
+        side.edge_tree.query(boost::geometry::index::intersects(line), std::back_inserter(hits));
+        for (const auto &h : hits)
+          candidates.push_back(h.second);
+        std::sort(candidates.begin(), candidates.end());
+      }
+
       Projection   best;
       double       best_distance = std::numeric_limits<double>::max();
       double       unclamped     = 0;
-      for (unsigned int i = 0; i < side.edges.size(); ++i)
+      for (const unsigned int i : candidates)
         {
           const Point &a = mesh.vertex(side.edges[i][0]), &b = mesh.vertex(side.edges[i][1]);
           const Vector d     = b - a;

@@ -5,11 +5,14 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
+#include <dealvem/config.h>
 #include <dealvem/mesh/generators.h>
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#ifdef DEALVEM_WITH_CGAL
+#  include <CGAL/Delaunay_triangulation_2.h>
+#  include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#  include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#endif
 
 #include <charconv>
 #include <cmath>
@@ -210,6 +213,15 @@ namespace dealvem
     {
       check_rectangle(p0, p1, 1, 1, "voronoi");
       AssertThrow(n_cells >= 1, dealii::ExcMessage("voronoi: at least one cell is needed."));
+#ifndef DEALVEM_WITH_CGAL
+      (void)mesh;
+      (void)n_lloyd_iterations;
+      (void)seed;
+      AssertThrow(false,
+                  dealii::ExcMessage("voronoi: dealvem was configured without CGAL; the Voronoi mesh generator "
+                                     "needs it (install CGAL, e.g. apt-get install libcgal-dev, and configure "
+                                     "dealvem again with -DDEALVEM_WITH_CGAL=ON), or choose another mesh type."));
+#else
       using K     = CGAL::Exact_predicates_inexact_constructions_kernel;
       using Vb    = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
       using Tds   = CGAL::Triangulation_data_structure_2<Vb>;
@@ -332,6 +344,7 @@ namespace dealvem
       finish_rectangle(mesh, p0, p1);
       AssertThrow(std::abs(mesh.total_area() - W * H) <= 1e-10 * W * H,
                   dealii::ExcMessage("voronoi: the cells do not cover the rectangle; internal error."));
+#endif
     }
 
 

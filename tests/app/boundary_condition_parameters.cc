@@ -9,7 +9,11 @@
 //   message naming the entry, the id and the ids of the mesh;
 // - t = 1 in the expressions: 'Traction = 3 : 0, -10*t' gives the same
 //   solution as '3 : 0, -10' (difference 0 up to 1e-14), likewise for the
-//   rigid resultant; ParsedFunction follows set_time();
+//   rigid resultant; ParsedFunction follows set_time(), and so do the loads
+//   and Dirichlet values of the section (Traction 10*t at t = 2, Dirichlet
+//   0.01*t at t = 0.5, Pressure p*t) while expressions without t stay put;
+//   pi and Pi are known, a constant of that name is refused, constants reach
+//   the parser to the last bit;
 // - expressions that are not finite where they are evaluated stop with the
 //   parameter, the expression and the point;
 // - a point constraint or rigid boundary colliding with an earlier entry
@@ -40,11 +44,13 @@ namespace
     return bc;
   }
 
-  // Solve the block problem given by the entries, k = 2.
+  // Solve the block problem given by the entries at the time t, k = 2.
   dealii::Vector<double>
-  solve(const std::string &entries, const VEMDoFHandler<2> &dh)
+  solve(const std::string &entries, const VEMDoFHandler<2> &dh, const double t = 1)
   {
     const auto bc = parse(entries);
+    if (t != 1)
+      bc->set_time(t);
     bc->check_boundary_ids(dh.get_mesh());
     dealii::AffineConstraints<double> cons;
     bc->apply_constraints(dh, cons);
@@ -119,6 +125,44 @@ main()
     f.set_time(3);
     testing::check_near(f.value(dealii::Point<2>(0.5, 0)), 6.5, 1e-15, "x + 2*t at x = 0.5 after set_time(3)");
     testing::check_near(f.gradient(dealii::Point<2>(0.5, 0))[0], 1., 1e-8, "its x-derivative");
+  }
+
+  // 4b. t through set_time(), as load steps use it: the loads are linear
+  // in the expressions' values, so 'Traction = 3 : 0, -10*t' at t = 2 gives
+  // the solution of '3 : 0, -20', a Dirichlet value 0.01*t at t = 0.5 the
+  // one of 0.005, and a constant times t the constant's product (to 1e-14
+  // relative: two solves of the same matrix). Expressions without t (the
+  // spelling before load steps) do not change with t.
+  {
+    const std::string top = "set Dirichlet = 2 : xy : 0, 0; 3 : y : ";
+    testing::check_small(relative_difference(solve(fixed_bottom + "set Traction = 3 : 0, -10*t", dh, 2),
+                                             solve(fixed_bottom + "set Traction = 3 : 0, -20", dh)),
+                         1e-14, "Traction 0, -10*t at t = 2 equals 0, -20");
+    testing::check_small(relative_difference(solve(top + "0.01*t", dh, 0.5), solve(top + "0.005", dh)), 1e-14,
+                         "Dirichlet 0.01*t at t = 0.5 equals 0.005");
+    testing::check_small(relative_difference(solve("set Function constants = p=10\n" + fixed_bottom +
+                                                     "set Pressure = 3 : p*t",
+                                                   dh, 0.25),
+                                             solve(fixed_bottom + "set Pressure = 3 : 2.5", dh)),
+                         1e-14, "Pressure p*t with p = 10 at t = 0.25 equals 2.5");
+    testing::check_small(relative_difference(solve(fixed_bottom + "set Traction = 3 : 0, -10", dh, 7),
+                                             solve(fixed_bottom + "set Traction = 3 : 0, -10", dh)),
+                         0, "Traction 0, -10 (no t) is the same at t = 7 and t = 1");
+    // the constants of Functions::ParsedFunction, and user constants
+    // that would shadow them are refused
+    // (muparser's own _pi carries about 13 digits only: 8e-13 below pi)
+    InputParsing::ParsedFunction g({"pi + 0*t", "Pi", "_pi"}, {}, "test");
+    testing::check(g.value(dealii::Point<2>(0, 0), 0) == M_PI && g.value(dealii::Point<2>(0, 0), 1) == M_PI,
+                   "pi and Pi are pi to the last bit");
+    testing::check_near(g.value(dealii::Point<2>(0, 0), 2), M_PI, 1e-12, "_pi is pi to 1e-12");
+    testing::check_throws([] { InputParsing::parse_constants("pi=3", "Function constants"); },
+                          "the name 'pi' is reserved", "a constant named pi is refused");
+    InputParsing::ParsedFunction h({"a*t", "b + y*t"}, {{"a", 0.1}, {"b", 1. / 3}}, "test");
+    h.set_time(4);
+    dealii::Vector<double> v(2);
+    h.vector_value(dealii::Point<2>(0, 2), v);
+    testing::check(v[0] == 0.1 * 4 && v[1] == 1. / 3 + 8,
+                   "constants reach the parser exactly: a*t = 0.4 and b + y*t = 1/3 + 8 at t = 4");
   }
 
   // 5. values that are not finite

@@ -1,3 +1,4 @@
+# needs: CGAL (main.cc makes a Voronoi mesh)
 # find_package(dealvem) from a separate CMake project, twice: against the
 # build tree (dealvem_DIR = the build directory) and against an install
 # tree made here with cmake --install (dealvem_DIR = <prefix>/lib/cmake/dealvem),

@@ -1,3 +1,4 @@
+# needs: CGAL (the patch test and rigid-top.prm have Voronoi meshes)
 # Runs the program `dealvem` as a user would:
 # - --print-parameters lists the sections;
 # - a good single-body file (tests/app/cantilever.prm: uniform tension, so

@@ -5,8 +5,7 @@
 #ifndef dealvem_app_input_parsing_h
 #define dealvem_app_input_parsing_h
 
-#include <deal.II/base/auto_derivative_function.h>
-#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parsed_function.h>
 
 #include <map>
 #include <memory>
@@ -75,7 +74,8 @@ namespace dealvem
      * Check the names of the function constants: each must be a valid
      * muparser name (a letter or '_' followed by letters, digits or '_'),
      * and must not be one of the variables x, y, t or a function or
-     * constant muparser already knows (sin, pi, ...). Throws naming
+     * constant the parser already knows (sin, _pi, and pi and Pi, which
+     * Functions::ParsedFunction defines, ...). Throws naming
      * @p parameter and the offending name.
      */
     void
@@ -133,9 +133,17 @@ namespace dealvem
 
     /**
      * A function of (x, y) and the time t given by muparser expressions, one
-     * per component, with derivatives by fourth-order difference quotients.
-     * The time starts at t = 1 (the value used by the static problems);
-     * set_time() changes it.
+     * per component: deal.II's Functions::ParsedFunction (variables "x,y,t",
+     * so every expression may use t; derivatives by fourth-order difference
+     * quotients with step 1e-5), set up from the expressions and constants
+     * directly instead of from a ParameterHandler section, with checks on
+     * top. The time starts at t = 1 (the value used by the static problems);
+     * set_time() (inherited) changes it for the parser and the difference
+     * quotients alike.
+     *
+     * The constants known to the expressions are @p constants, muparser's
+     * _pi and _e, and pi and Pi, which Functions::ParsedFunction defines
+     * (check_constant_names() therefore refuses them as user constants).
      *
      * The expressions are checked on construction; errors name @p parameter
      * and the expression. Every evaluation checks the result: a value that is
@@ -143,7 +151,7 @@ namespace dealvem
      * naming @p parameter, the expression, the point and the time, and so
      * does an error of the parser during evaluation.
      */
-    class ParsedFunction : public dealii::AutoDerivativeFunction<2>
+    class ParsedFunction : public dealii::Functions::ParsedFunction<2>
     {
     public:
       ParsedFunction(const std::vector<std::string>       &expressions,
@@ -155,10 +163,6 @@ namespace dealvem
 
       void
       vector_value(const dealii::Point<2> &p, dealii::Vector<double> &values) const override;
-
-      /// Set the time t of the expressions (of this object and its parser).
-      void
-      set_time(const double new_time) override;
 
       /// The parameter name used in error messages.
       const std::string &
@@ -180,9 +184,8 @@ namespace dealvem
       [[noreturn]] void
       report(const dealii::Point<2> &p, const unsigned int component, const std::string &what) const;
 
-      std::vector<std::string>           expressions;
-      std::string                        parameter;
-      dealii::FunctionParser<2>          parser;
+      std::vector<std::string> expressions;
+      std::string              parameter;
     };
   } // namespace InputParsing
 } // namespace dealvem

@@ -72,6 +72,10 @@ namespace dealvem
      * cells. The Voronoi diagram comes from CGAL's Delaunay triangulation
      * of the generators and their mirror images across the four sides, so
      * that the cells are clipped exactly by the rectangle.
+     *
+     * Only this generator needs CGAL: in a dealvem configured without it
+     * (DEALVEM_WITH_CGAL undefined in dealvem/config.h) it throws an
+     * ExcMessage saying so.
      */
     template <int dim>
     void
