@@ -56,6 +56,31 @@ namespace dealvem
       csv_file.commit();
     }
 
+    // The number of nodes node insertion added on all interfaces.
+    unsigned int
+    inserted_nodes(const std::vector<NodeInsertion::Report> &reports)
+    {
+      unsigned int n = 0;
+      for (const auto &r : reports)
+        n += r.n_inserted_master + r.n_inserted_slave;
+      return n;
+    }
+
+    // The smallest and largest recovered pressure of the active pairs
+    // (min > max when no pair is active).
+    std::pair<double, double>
+    pressure_range(const std::vector<ContactProblem::PairResult> &pairs)
+    {
+      double pmin = 1e300, pmax = -1e300;
+      for (const auto &r : pairs)
+        if (r.active)
+          {
+            pmin = std::min(pmin, r.pressure);
+            pmax = std::max(pmax, r.pressure);
+          }
+      return {pmin, pmax};
+    }
+
     // The file name prefix of load step @p step.
     std::string
     step_prefix(const std::string &prefix, const unsigned int step)
@@ -938,9 +963,7 @@ namespace dealvem
     const auto &as         = d.as;
     const auto &n          = d.n;
     const auto &m          = d.m;
-    unsigned int n_inserted = 0;
-    for (const auto &r : results.insertion_reports)
-      n_inserted += r.n_inserted_master + r.n_inserted_slave;
+    const unsigned int n_inserted = inserted_nodes(results.insertion_reports);
     std::cout << "Contact problem: " << bodies.size() << " bodies, " << mesh.n_cells() << " cells, "
               << n << " DoFs, " << m << " multipliers" << std::endl
               << "  node insertion: " << n_inserted << " nodes inserted, " << pairs.size()
@@ -1007,13 +1030,7 @@ namespace dealvem
     if (as.linear_iterations > as.n_iterations)
       std::cout << ", " << as.linear_iterations << " linear iterations in all";
     std::cout << std::endl;
-    double pmin = 1e300, pmax = -1e300;
-    for (const auto &r : results.pairs)
-      if (r.active)
-        {
-          pmin = std::min(pmin, r.pressure);
-          pmax = std::max(pmax, r.pressure);
-        }
+    const auto [pmin, pmax] = pressure_range(results.pairs);
     if (pmax >= pmin)
       std::cout << "  contact pressure on active pairs: min " << pmin << ", max " << pmax << std::endl;
     {
@@ -1097,16 +1114,8 @@ namespace dealvem
     const auto &prefix     = d.prefix;
     const bool  friction   = (d.friction_solver != nullptr);
     const double penalty  = results.penalty;
-    unsigned int n_inserted = 0;
-    for (const auto &r : results.insertion_reports)
-      n_inserted += r.n_inserted_master + r.n_inserted_slave;
-    double pmin = 1e300, pmax = -1e300;
-    for (const auto &r : results.pairs)
-      if (r.active)
-        {
-          pmin = std::min(pmin, r.pressure);
-          pmax = std::max(pmax, r.pressure);
-        }
+    const unsigned int n_inserted = inserted_nodes(results.insertion_reports);
+    const auto [pmin, pmax] = pressure_range(results.pairs);
     JsonSummary json;
     json.set("program", "dealvem");
     json.set("problem", "contact");
