@@ -2,7 +2,12 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <deal.II/lac/block_linear_operator.h>
+#include <deal.II/lac/block_sparse_matrix.h>
+#include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/block_vector.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/linear_operator.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
@@ -90,126 +95,122 @@ namespace dealvem
 
   namespace
   {
-    // Block lower-triangular preconditioner of the saddle-point matrix.
+    // The saddle-point matrix [K B^T; B D] as deal.II's 2 x 2 block matrix,
+    // the first block the displacements, the second the multipliers.
+    void
+    split_into_blocks(const dealii::SparseMatrix<double> &A,
+                      const unsigned int                  n,
+                      dealii::BlockSparsityPattern       &pattern,
+                      dealii::BlockSparseMatrix<double>  &blocks)
+    {
+      const unsigned int                  m = A.m() - n;
+      dealii::BlockDynamicSparsityPattern dsp(std::vector<dealii::types::global_dof_index>{n, m},
+                                              std::vector<dealii::types::global_dof_index>{n, m});
+      for (unsigned int i = 0; i < A.m(); ++i)
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          dsp.add(i, it->column());
+      pattern.copy_from(dsp);
+      blocks.reinit(pattern);
+      for (unsigned int i = 0; i < A.m(); ++i)
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          blocks.set(i, it->column(), it->value());
+    }
+
+
+
+    // C = first + factor * second, on the union of the two patterns.
+    void
+    add_matrices(const dealii::SparseMatrix<double> &first,
+                 const dealii::SparseMatrix<double> &second,
+                 const double                        factor,
+                 dealii::SparsityPattern            &pattern,
+                 dealii::SparseMatrix<double>       &C)
+    {
+      dealii::DynamicSparsityPattern dsp(first.m(), first.n());
+      for (const auto *M : {&first, &second})
+        for (unsigned int i = 0; i < M->m(); ++i)
+          for (auto it = M->begin(i); it != M->end(i); ++it)
+            dsp.add(i, it->column());
+      for (unsigned int i = 0; i < first.m(); ++i)
+        dsp.add(i, i);
+      pattern.copy_from(dsp);
+      C.reinit(pattern);
+      for (unsigned int i = 0; i < first.m(); ++i)
+        {
+          for (auto it = first.begin(i); it != first.end(i); ++it)
+            C.add(i, it->column(), it->value());
+          for (auto it = second.begin(i); it != second.end(i); ++it)
+            C.add(i, it->column(), factor * it->value());
+        }
+    }
+
+
+
+    // Block lower-triangular preconditioner of the saddle-point matrix,
+    //   P^{-1} = [K_rho, 0; B, S]^{-1},
+    // with K_rho = K + rho B^T B approximated by one ML AMG cycle and
+    // S = D - B diag(K_rho)^{-1} B^T factorised by UMFPACK. The blocks come
+    // from the BlockSparseMatrix, the products from SparseMatrix::mmult, and
+    // the forward substitution is deal.II's block_forward_substitution.
     class BlockPreconditioner
     {
     public:
-      BlockPreconditioner(const dealii::SparseMatrix<double>     &A,
-                          const unsigned int                      n,
-                          const std::vector<std::vector<double>> &modes)
-        : n(n)
-        , m(A.m() - n)
+      BlockPreconditioner(const dealii::BlockSparseMatrix<double> &A,
+                          const std::vector<std::vector<double>>  &modes)
       {
-        // split A into K (n x n), B (m x n) and D (m x m)
-        dealii::DynamicSparsityPattern dsp_k(n, n), dsp_b(m, n), dsp_s(m, m);
-        for (unsigned int i = 0; i < A.m(); ++i)
-          for (auto it = A.begin(i); it != A.end(i); ++it)
-            {
-              const unsigned int j = it->column();
-              if (i < n && j < n)
-                dsp_k.add(i, j);
-              else if (i >= n && j < n)
-                dsp_b.add(i - n, j);
-            }
-        // K_rho = K + rho B^T B: add the pattern of B^T B
-        std::vector<std::vector<unsigned int>> b_rows(m);
-        for (unsigned int i = n; i < A.m(); ++i)
-          for (auto it = A.begin(i); it != A.end(i); ++it)
-            if (it->column() < n && it->value() != 0.)
-              b_rows[i - n].push_back(it->column());
-        for (const auto &r : b_rows)
-          for (const auto a : r)
-            for (const auto b : r)
-              dsp_k.add(a, b);
-        sp_k.copy_from(dsp_k);
-        sp_b.copy_from(dsp_b);
-        K.reinit(sp_k);
-        Bm.reinit(sp_b);
-        double       diag_sum = 0;
-        unsigned int n_diag   = 0;
-        for (unsigned int i = 0; i < A.m(); ++i)
-          for (auto it = A.begin(i); it != A.end(i); ++it)
-            {
-              const unsigned int j = it->column();
-              if (i < n && j < n)
-                {
-                  K.set(i, j, it->value());
-                  if (i == j)
-                    {
-                      diag_sum += std::abs(it->value());
-                      ++n_diag;
-                    }
-                }
-              else if (i >= n && j < n)
-                Bm.set(i - n, j, it->value());
-            }
-        const double rho = (n_diag > 0 ? diag_sum / n_diag : 1.);
-        for (unsigned int r = 0; r < m; ++r)
-          for (auto it1 = Bm.begin(r); it1 != Bm.end(r); ++it1)
-            for (auto it2 = Bm.begin(r); it2 != Bm.end(r); ++it2)
-              K.add(it1->column(), it2->column(), rho * it1->value() * it2->value());
+        const auto &K  = A.block(0, 0);
+        const auto &Bt = A.block(0, 1);
+        const auto &B  = A.block(1, 0);
+        const auto &D  = A.block(1, 1);
 
-        // S = D - B diag(K_rho)^{-1} B^T
-        for (unsigned int r = 0; r < m; ++r)
-          dsp_s.add(r, r);
-        // column lists of B for S's pattern
-        std::vector<std::vector<std::pair<unsigned int, double>>> cols(n);
-        for (unsigned int r = 0; r < m; ++r)
-          for (auto it = Bm.begin(r); it != Bm.end(r); ++it)
-            if (it->value() != 0.)
-              cols[it->column()].emplace_back(r, it->value());
-        for (const auto &c : cols)
-          for (const auto &a : c)
-            for (const auto &b : c)
-              dsp_s.add(a.first, b.first);
-        sp_s.copy_from(dsp_s);
-        S.reinit(sp_s);
-        for (unsigned int i = n; i < A.m(); ++i)
-          for (auto it = A.begin(i); it != A.end(i); ++it)
-            if (it->column() >= n)
-              S.add(i - n, it->column() - n, it->value());
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            const double d = K.diag_element(j);
-            for (const auto &a : cols[j])
-              for (const auto &b : cols[j])
-                S.add(a.first, b.first, -a.second * b.second / d);
-          }
+        // rho: the mean absolute diagonal of K, so that both terms of K_rho
+        // have the same scale
+        double rho = 0;
+        for (unsigned int i = 0; i < K.m(); ++i)
+          rho += std::abs(K.diag_element(i));
+        rho = (K.m() > 0 && rho > 0 ? rho / K.m() : 1.);
+
+        dealii::SparsityPattern      sp_btb, sp_bdb;
+        dealii::SparseMatrix<double> BtB, BDB;
+        // mmult rebuilds the pattern the product matrix is attached to
+        BtB.reinit(sp_btb);
+        BDB.reinit(sp_bdb);
+        Bt.mmult(BtB, B, dealii::Vector<double>(), true);
+        add_matrices(K, BtB, rho, sp_k, K_rho);
+
+        dealii::Vector<double> inverse_diagonal(K_rho.m());
+        for (unsigned int i = 0; i < K_rho.m(); ++i)
+          inverse_diagonal[i] = 1. / K_rho.diag_element(i);
+        B.mmult(BDB, Bt, inverse_diagonal, true);
+        add_matrices(D, BDB, -1., sp_s, S);
         S_inverse.initialize(S);
 
         // AMG on K_rho with the rigid-body modes
-        K_trilinos.reinit(K);
+        K_trilinos.reinit(K_rho);
         Teuchos::ParameterList list;
-        internal::set_ml_parameters(&list, modes, n, null_space);
+        internal::set_ml_parameters(&list, modes, K_rho.m(), null_space);
         amg.initialize(K_trilinos.trilinos_matrix(), list);
       }
 
-      void
-      vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const
+      // The preconditioner as a LinearOperator on block vectors.
+      dealii::LinearOperator<dealii::BlockVector<double>>
+      linear_operator(const dealii::BlockSparseMatrix<double> &A) const
       {
-        dealii::Vector<double> ru(n), zu(n), rl(m), zl(m), bz(m);
-        for (unsigned int i = 0; i < n; ++i)
-          ru[i] = src[i];
-        for (unsigned int i = 0; i < m; ++i)
-          rl[i] = src[n + i];
-        amg.vmult(zu, ru);
-        Bm.vmult(bz, zu);
-        rl -= bz;
-        S_inverse.vmult(zl, rl);
-        for (unsigned int i = 0; i < n; ++i)
-          dst[i] = zu[i];
-        for (unsigned int i = 0; i < m; ++i)
-          dst[n + i] = zl[i];
+        using Op                = dealii::LinearOperator<dealii::Vector<double>>;
+        const Op         K_inv = dealii::linear_operator<dealii::Vector<double>>(K_rho, amg);
+        const Op         S_inv = dealii::linear_operator<dealii::Vector<double>>(S, S_inverse);
+        const auto       diagonal =
+          dealii::block_diagonal_operator<2, dealii::BlockVector<double>>(std::array<Op, 2>{{K_inv, S_inv}});
+        return dealii::block_forward_substitution(dealii::block_operator(A), diagonal);
       }
 
     private:
-      const unsigned int                       n, m;
-      dealii::SparsityPattern                  sp_k, sp_b, sp_s;
-      dealii::SparseMatrix<double>             K, Bm, S;
-      dealii::SparseDirectUMFPACK              S_inverse;
-      dealii::TrilinosWrappers::SparseMatrix   K_trilinos;
+      dealii::SparsityPattern                   sp_k, sp_s;
+      dealii::SparseMatrix<double>              K_rho, S;
+      dealii::SparseDirectUMFPACK               S_inverse;
+      dealii::TrilinosWrappers::SparseMatrix    K_trilinos;
       dealii::TrilinosWrappers::PreconditionAMG amg;
-      std::vector<double>                      null_space;
+      std::vector<double>                       null_space;
     };
   } // namespace
 
@@ -258,14 +259,22 @@ namespace dealvem
       }
     else
       {
-        BlockPreconditioner preconditioner(A, n_displacements, modes);
+        dealii::BlockSparsityPattern      pattern;
+        dealii::BlockSparseMatrix<double> blocks;
+        split_into_blocks(A, n_displacements, pattern, blocks);
+        const BlockPreconditioner preconditioner(blocks, modes);
+        const std::vector<dealii::types::global_dof_index> sizes{n_displacements,
+                                                                 A.m() - n_displacements};
+        dealii::BlockVector<double>                        xb(sizes), bb(sizes);
+        for (unsigned int i = 0; i < b.size(); ++i)
+          bb[i] = b[i];
         dealii::SolverControl control(settings.max_iterations,
                                       settings.relative_tolerance * b.l2_norm());
-        dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(200, true);
-        dealii::SolverGMRES<dealii::Vector<double>> gmres(control, data);
+        dealii::SolverGMRES<dealii::BlockVector<double>>::AdditionalData data(200, true);
+        dealii::SolverGMRES<dealii::BlockVector<double>> gmres(control, data);
         try
           {
-            gmres.solve(A, x, b, preconditioner);
+            gmres.solve(blocks, xb, bb, preconditioner.linear_operator(blocks));
           }
         catch (const dealii::SolverControl::NoConvergence &e)
           {
@@ -276,6 +285,8 @@ namespace dealvem
                                            std::to_string(control.tolerance()) + ")."));
           }
         iterations = control.last_step();
+        for (unsigned int i = 0; i < x.size(); ++i)
+          x[i] = xb[i];
       }
     for (unsigned int i = 0; i < x.size(); ++i)
       AssertThrow(std::isfinite(x[i]),

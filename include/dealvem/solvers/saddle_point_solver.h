@@ -30,7 +30,9 @@ namespace dealvem
    *   $K_\rho = K + \rho B^TB$ ($\rho$ = mean diagonal of $K$; augmentation
    *   makes the block definite even when a body is held only by contact),
    *   and $\hat S = D - B\,\mathrm{diag}(K_\rho)^{-1}B^T$ is factored
-   *   exactly (it is small: one row per multiplier).
+   *   exactly (it is small: one row per multiplier). The system is solved as
+   *   a 2 x 2 BlockSparseMatrix, and P^{-1} is deal.II's
+   *   block_forward_substitution over the two inverses as LinearOperators.
    * - CG-AMG constraints: no saddle point at all. Each active constraint
    *   row of $B$ becomes an AffineConstraints line on one slave DoF
    *   (ContactConstraints: pivoted elimination, redundant rows dropped when
