@@ -200,10 +200,6 @@ main(int argc, char **argv)
       const std::string directory = fs::path(arg).parent_path().string();
       if (dealvem::ContactProblem::n_bodies(prm) > 1)
         {
-          AssertThrow(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1,
-                      dealii::ExcMessage("Contact problems run on one MPI process so far: run '" + arg +
-                                         "' without mpirun (or with -np 1). Single-body elasticity "
-                                         "problems run on several processes."));
           dealvem::ContactProblem problem;
           problem.parse_parameters(prm, directory);
           problem.run();

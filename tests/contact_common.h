@@ -16,14 +16,19 @@
 namespace testing
 {
   /// Parse @p prm_text (after the declarations of the program) and run.
+  /// By default the serial path on each process (MPI_COMM_SELF), so that
+  /// a test run under mpirun computes its reference on every process.
   inline dealvem::ContactProblem::Results
-  run_contact(const std::string &prm_text)
+  run_contact(const std::string                          &prm_text,
+              const MPI_Comm                              comm        = MPI_COMM_SELF,
+              const dealvem::ElasticityProblem::Parallelism parallelism =
+                dealvem::ElasticityProblem::Parallelism::automatic)
   {
     dealii::ParameterHandler prm;
     dealvem::ElasticityProblem::declare_parameters(prm);
     dealvem::ContactProblem::declare_parameters(prm);
     prm.parse_input_from_string(prm_text);
-    dealvem::ContactProblem problem;
+    dealvem::ContactProblem problem(comm, parallelism);
     problem.parse_parameters(prm);
     problem.run();
     return problem.get_results();

@@ -13,6 +13,7 @@
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/contact/active_set_solver.h>
 #include <dealvem/contact/contact_pressure.h>
+#include <dealvem/contact/distributed_contact_solver.h>
 #include <dealvem/contact/friction_solver.h>
 #include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
@@ -23,11 +24,13 @@
 #include <dealvem/postprocessing/svg_plots.h>
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/saddle_point_solver.h>
+#include <dealvem/vem/partitioning.h>
 #include <dealvem/vem/vem_dof_handler.h>
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/vem/vem_values.h>
 
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -374,7 +377,45 @@ namespace dealvem
   void
   ContactProblem::run()
   {
-    std::filesystem::create_directories(output_folder);
+    // with several MPI processes every process computes the same
+    // postprocessing from the gathered solution; process 0 alone prints and
+    // writes (the flags and std::cout are restored on the way out, also
+    // after an error)
+    struct Silence
+    {
+      struct NullBuffer : std::streambuf
+      {
+        int
+        overflow(const int c) override
+        {
+          return c;
+        }
+      };
+      NullBuffer              sink;
+      std::streambuf         *old = nullptr;
+      ContactProblem         &p;
+      std::array<bool, 4>     flags;
+      Silence(ContactProblem &p)
+        : p(p)
+        , flags{{p.write_vtu, p.write_csv, p.write_json, p.write_pictures}}
+      {
+        if (p.root)
+          return;
+        old = std::cout.rdbuf(&sink);
+        p.write_vtu = p.write_csv = p.write_json = p.write_pictures = false;
+      }
+      ~Silence()
+      {
+        if (old != nullptr)
+          std::cout.rdbuf(old);
+        p.write_vtu      = flags[0];
+        p.write_csv      = flags[1];
+        p.write_json     = flags[2];
+        p.write_pictures = flags[3];
+      }
+    } silence(*this);
+    if (root)
+      std::filesystem::create_directories(output_folder);
     convergence.clear();
     bool any_exact = false;
     for (const auto &b : bodies)
@@ -434,6 +475,11 @@ namespace dealvem
     std::unique_ptr<ContactAssembler<2>>                  contact;
     dealii::AffineConstraints<double>                     constraints;
     std::unique_ptr<RigidBodySupport>                     support;
+    // the distributed path: partition, the elasticity part of the step,
+    // and the solver (also held as `solver`)
+    std::unique_ptr<VEMPartition<2>>                      partition;
+    std::unique_ptr<ElasticityAssembler<2>>               assembler;
+    DistributedContactSolver                             *distributed_solver = nullptr;
     unsigned int                                          n = 0, m = 0;
     dealii::SparsityPattern                               sparsity;
     dealii::SparseMatrix<double>                          system_matrix, work_matrix;
@@ -449,7 +495,19 @@ namespace dealvem
     std::string                                           prefix;
   };
 
-  ContactProblem::ContactProblem()  = default;
+  ContactProblem::ContactProblem(const MPI_Comm comm, const ElasticityProblem::Parallelism parallelism)
+    : mpi_communicator(comm)
+    // (a program that never initialised MPI runs serially)
+    , n_processes(dealii::Utilities::MPI::job_supports_mpi() ? dealii::Utilities::MPI::n_mpi_processes(comm) : 1)
+    , distributed(parallelism == ElasticityProblem::Parallelism::distributed ||
+                  (parallelism == ElasticityProblem::Parallelism::automatic && n_processes > 1))
+    , root(!dealii::Utilities::MPI::job_supports_mpi() || dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+  {
+    AssertThrow(!distributed || dealii::Utilities::MPI::job_supports_mpi(),
+                dealii::ExcMessage("ContactProblem: the distributed path needs MPI to be initialised "
+                                   "(dealii::Utilities::MPI::MPI_InitFinalize in main())."));
+  }
+
   ContactProblem::~ContactProblem() = default;
 
 
@@ -576,7 +634,10 @@ namespace dealvem
     {
       dealii::TimerOutput::Scope     t(d.timer, "assembly");
       dealii::DynamicSparsityPattern dsp(d.n + d.m);
-      d.dof_handler.make_sparsity_pattern(dsp);
+      // distributed: the stiffness is assembled per process by the solver,
+      // this matrix holds only the contact blocks
+      if (!distributed)
+        d.dof_handler.make_sparsity_pattern(dsp);
       d.contact->add_sparsity(dsp);
       d.constraints.condense(dsp);
       d.sparsity.copy_from(dsp);
@@ -588,7 +649,21 @@ namespace dealvem
     settings.type               = SaddlePointSolver::parse_type(solver_type);
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
-    d.solver                    = std::make_unique<SaddlePointSolver>(settings);
+    if (distributed)
+      {
+        AssertThrow(!contact_settings.is_coulomb(),
+                    dealii::ExcMessage("Contact/Tangential = coulomb runs only on the serial path so far (its slip rows "
+                                       "are not symmetric constraints, and the distributed contact solve "
+                                       "condenses the contact constraints): run on one MPI process."));
+        d.partition = std::make_unique<VEMPartition<2>>();
+        d.partition->reinit(d.dof_handler, mpi_communicator);
+        auto solver = std::make_unique<DistributedContactSolver>(settings, *d.partition, d.constraints,
+                                                                 mpi_communicator);
+        d.distributed_solver = solver.get();
+        d.solver             = std::move(solver);
+      }
+    else
+      d.solver = std::make_unique<SaddlePointSolver>(settings);
     if (settings.type != SaddlePointSolver::Type::umfpack && settings.type != SaddlePointSolver::Type::klu)
       d.solver->set_near_null_space(d.dof_handler.rigid_body_modes());
     d.active_set = std::make_unique<ActiveSetSolver<2>>(*d.contact, d.constraints, *d.solver, contact_settings,
@@ -620,11 +695,19 @@ namespace dealvem
     d.constraints.clear();
     bc.apply_constraints(d.dof_handler, d.constraints);
     d.constraints.close();
-    ElasticityAssembler<2> assembler(d.dof_handler, d.materials, gamma);
+    d.assembler = std::make_unique<ElasticityAssembler<2>>(d.dof_handler, d.materials, gamma);
+    ElasticityAssembler<2> &assembler = *d.assembler;
     bc.add_loads(assembler);
     // the first n unknowns of the saddle-point system are the displacements
     d.system_rhs.reinit(d.n + d.m);
-    assembler.assemble(d.constraints, d.system_matrix, d.system_rhs);
+    if (d.distributed_solver != nullptr)
+      {
+        // each process assembles its cells in the solver, per active set
+        d.system_matrix = 0;
+        d.distributed_solver->set_assembler(assembler);
+      }
+    else
+      assembler.assemble(d.constraints, d.system_matrix, d.system_rhs);
 
     // the applied load per body, from the unconstrained load vector
     dealii::Vector<double> loads;
@@ -731,6 +814,9 @@ namespace dealvem
     results.active_set_history    = as.n_active_history;
     results.linear_iterations     = as.linear_iterations;
     results.solver                = d.solver->description();
+    results.n_processes           = n_processes;
+    if (d.distributed_solver != nullptr)
+      results.n_rows_across_processes = d.distributed_solver->last_rows_across_processes();
 
     // interface results
     const auto gaps  = contact.gaps(x);
@@ -1030,6 +1116,14 @@ namespace dealvem
     if (as.linear_iterations > as.n_iterations)
       std::cout << ", " << as.linear_iterations << " linear iterations in all";
     std::cout << std::endl;
+    if (distributed)
+      std::cout << "  MPI: " << n_processes << " processes, cells per process:" << [&] {
+        std::string list;
+        for (const auto c : d.partition->cells_per_part())
+          list += " " + std::to_string(c);
+        return list;
+      }() << "; " << results.n_rows_across_processes
+                << " contact constraint row(s) couple DoFs of different processes" << std::endl;
     const auto [pmin, pmax] = pressure_range(results.pairs);
     if (pmax >= pmin)
       std::cout << "  contact pressure on active pairs: min " << pmin << ", max " << pmax << std::endl;
@@ -1125,6 +1219,8 @@ namespace dealvem
     json.set("multipliers", double(m));
     json.set("order", double(degree));
     json.set("solver", d.solver->description());
+    json.set("mpi.processes", double(n_processes));
+    json.set("contact.rows_across_processes", double(results.n_rows_across_processes));
     json.set("contact.node_pairs", double(pairs.size()));
     json.set("contact.inserted_nodes", double(n_inserted));
     json.set("contact.active_set_iterations", double(as.n_iterations));

@@ -208,6 +208,40 @@ namespace dealvem
 
   template <int dim>
   void
+  ElasticityAssembler<dim>::add_residual(const std::vector<unsigned int> &cells,
+                                         const dealii::Vector<double>    &u,
+                                         const bool                       with_nodal_loads,
+                                         dealii::Vector<double>          &r) const
+  {
+    AssertThrow(u.size() == dof_handler.n_dofs() && r.size() == dof_handler.n_dofs(),
+                dealii::ExcMessage("ElasticityAssembler::add_residual(): the vectors must have n_dofs() entries."));
+    VEMValues<dim> vem_values(dof_handler);
+    vem_values.set_cell_similarity(cell_similarity);
+    ElasticityOperator<dim> elasticity;
+    dealii::Vector<double>  F, u_c, Ku;
+    for (const unsigned int c : cells)
+      {
+        vem_values.reinit(c);
+        elasticity.reinit(vem_values.get_element(), get_material(c), gamma);
+        local_load(vem_values, F);
+        const auto &indices = vem_values.get_dof_indices();
+        u_c.reinit(indices.size());
+        Ku.reinit(indices.size());
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          u_c[i] = u[indices[i]];
+        elasticity.get_stiffness_matrix().vmult(Ku, u_c);
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          r[indices[i]] += F[i] - Ku[i];
+      }
+    if (with_nodal_loads)
+      for (const auto &l : nodal_loads)
+        r[l.first] += l.second;
+  }
+
+
+
+  template <int dim>
+  void
   ElasticityAssembler<dim>::assemble_load_vector(dealii::Vector<double> &rhs) const
   {
     rhs.reinit(dof_handler.n_dofs());

@@ -46,7 +46,8 @@ namespace dealvem
                              const unsigned int                  n_displacements,
                              const dealii::Vector<double>       &b,
                              const double                        length_scale,
-                             const double                        dependency_tolerance)
+                             const double                        dependency_tolerance,
+                             const dealii::AffineConstraints<double> *displacement_constraints)
   {
     AssertThrow(A.m() == A.n() && A.m() == b.size() && n_displacements <= A.m(),
                 dealii::ExcMessage("ContactConstraints: the saddle-point matrix must be square, of the size of "
@@ -120,6 +121,8 @@ namespace dealvem
     // a DoF can be a slave if its row of K couples to other DoFs (DoFs
     // condensed by the displacement constraints have decoupled rows)
     const auto eligible = [&](const unsigned int j) {
+      if (displacement_constraints != nullptr)
+        return !displacement_constraints->is_constrained(j);
       for (auto it = A.begin(j); it != A.end(j); ++it)
         if (it->column() < n && it->column() != j && it->value() != 0.)
           return true;

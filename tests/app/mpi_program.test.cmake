@@ -5,9 +5,9 @@
 #   agree to 1e-10 relative, and so do the DoF counts;
 # - np = 2 writes <base>-cycle<c>.pvtu naming the pieces .0.vtu and .1.vtu,
 #   both written, and the console output once (one "Summary written" line);
-# - a contact problem (examples/step-2/patch-test.prm) with np = 2 stops
-#   with "Contact problems run on one MPI process so far" and a non-zero
-#   exit code.
+# - a contact problem (tests/app/mpi-contact.prm) with np = 1 (serial) and
+#   np = 2 (distributed, contact pairs cut by the partition): the same
+#   active sets, and pressures and contact force to 1e-10 relative.
 execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE)
 set(mpi_flags --oversubscribe)
 if(uid STREQUAL "0")
@@ -126,10 +126,36 @@ foreach(cycle 0 1)
 endforeach()
 message(STATUS "PASS np = 1 and np = 2 agree; .pvtu and pieces written")
 
-run_case(contact_np2 2 FALSE contact ${SOURCE_DIR}/examples/step-2/patch-test.prm)
-string(REGEX REPLACE "[ \t\r\n]+" " " flat "${LAST_OUTPUT}")
-string(FIND "${flat}" "Contact problems run on one MPI process so far" pos)
-if(pos EQUAL -1)
-  message(FATAL_ERROR "FAIL contact np2: no clear message\n${LAST_OUTPUT}")
+# contact: tests/app/mpi-contact.prm (parabola on a flat block, the active
+# set changes over six iterations) with np = 1 (serial, UMFPACK on the
+# saddle point) and np = 2 (distributed: the condensed system factored by
+# Amesos KLU); the partition must cut contact constraints
+file(REMOVE_RECURSE ${WORK_DIR}/contact1 ${WORK_DIR}/contact2)
+run_case(contact_np1 1 TRUE contact1 ${TEST_DIR}/mpi-contact.prm)
+run_case(contact_np2 2 TRUE contact2 ${TEST_DIR}/mpi-contact.prm)
+string(REGEX MATCHALL "summary: " lines "${LAST_OUTPUT}")
+list(LENGTH lines n_lines)
+if(NOT n_lines EQUAL 1)
+  message(FATAL_ERROR "FAIL contact np2: 'summary:' printed ${n_lines} times (process 0 alone prints)\n${LAST_OUTPUT}")
 endif()
-message(STATUS "PASS contact with np = 2 stops with a clear message")
+file(READ ${WORK_DIR}/contact1/contact.json json1)
+file(READ ${WORK_DIR}/contact2/contact.json json2)
+string(JSON p2 GET "${json2}" mpi processes)
+string(JSON cut GET "${json2}" contact rows_across_processes)
+if(NOT p2 EQUAL 2 OR NOT cut GREATER 0)
+  message(FATAL_ERROR "FAIL contact np2: ${p2} processes, ${cut} contact rows cut by the partition")
+endif()
+message(STATUS "PASS contact np2: ${cut} contact constraint rows couple DoFs of the two processes")
+foreach(key active_set_iterations active_pairs node_pairs)
+  string(JSON a GET "${json1}" contact ${key})
+  string(JSON b GET "${json2}" contact ${key})
+  if(NOT a EQUAL b)
+    message(FATAL_ERROR "FAIL contact ${key}: ${a} on np = 1, ${b} on np = 2")
+  endif()
+endforeach()
+foreach(key pressure_min pressure_max total_force_y)
+  string(JSON a GET "${json1}" contact ${key})
+  string(JSON b GET "${json2}" contact ${key})
+  check_relative(${a} ${b} 10 "contact ${key}, np = 1 against np = 2")
+endforeach()
+message(STATUS "PASS contact with np = 1 and np = 2 agree")

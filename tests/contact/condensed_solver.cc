@@ -57,15 +57,18 @@ namespace
     return "subsection Solver\n  set Type = " + type + "\n  set Relative tolerance = 1e-12\nend\n";
   }
 
-  /// Run @p prm with UMFPACK and with CG-AMG constraints and compare.
-  dealvem::ContactProblem::Results
-  compare(const std::string &prm, const std::string &tag, const bool uniform_stress)
+  unsigned int total_rows_across = 0;
+
+  /// Compare the result @p r of @p solver with the UMFPACK reference @p ref:
+  /// displacements, multipliers, tangential forces to @p tol, and the same
+  /// active-set history.
+  void
+  agree(const dealvem::ContactProblem::Results &r, const dealvem::ContactProblem::Results &ref, const double tol,
+        const std::string &tag)
   {
-    const auto ref = testing::run_contact(prm + solver_section("UMFPACK"));
-    const auto r   = testing::run_contact(prm + solver_section("CG-AMG constraints"));
     dealii::Vector<double> d = r.solution;
     d -= ref.solution;
-    testing::check_small(d.l2_norm() / ref.solution.l2_norm(), 1e-8, tag + ": |u - u_UMFPACK| / |u_UMFPACK|");
+    testing::check_small(d.l2_norm() / ref.solution.l2_norm(), tol, tag + ": |u - u_UMFPACK| / |u_UMFPACK|");
     double dl = 0, l = 0, dt = 0, t = 0;
     bool   same_active = (r.pairs.size() == ref.pairs.size());
     for (unsigned int i = 0; same_active && i < r.pairs.size(); ++i)
@@ -77,11 +80,10 @@ namespace
         t  = std::max(t, std::abs(ref.pairs[i].tangential_traction) * ref.pairs[i].weight);
         same_active = same_active && (r.pairs[i].active == ref.pairs[i].active);
       }
-    testing::check_small(dl / l, 1e-8, tag + ": max |lambda - lambda_UMFPACK| / max |lambda_UMFPACK|");
+    testing::check_small(dl / l, tol, tag + ": max |lambda - lambda_UMFPACK| / max |lambda_UMFPACK|");
     // (relative to the larger of the tangential and normal forces: in the
     // flat patch test the tangential forces vanish up to round-off)
-    testing::check_small(dt / std::max(t, l), 1e-8,
-                         tag + ": max |tangential force difference| / max |force_UMFPACK|");
+    testing::check_small(dt / std::max(t, l), tol, tag + ": max |tangential force difference| / max |force_UMFPACK|");
     unsigned int n_active = 0;
     for (const auto &pr : r.pairs)
       n_active += pr.active;
@@ -93,8 +95,32 @@ namespace
                    tag + ": same active-set iterations (" + std::to_string(r.active_set_iterations) +
                      ", active pairs per iteration:" + h.str() + ") and final set (" +
                      std::to_string(n_active) + " of " + std::to_string(r.pairs.size()) + ") as UMFPACK");
-    std::cout << "      " << r.solver << ": " << r.linear_iterations << " CG iterations in "
+    std::cout << "      " << r.solver << ": " << r.linear_iterations << " linear iterations in "
               << r.active_set_iterations << " solve(s)" << std::endl;
+  }
+
+  /// Run @p prm with UMFPACK (serial, the reference), with CG-AMG
+  /// constraints (serial, 1e-8), and distributed over the processes of
+  /// MPI_COMM_WORLD (also on one process) with the condensed system
+  /// factored by KLU and solved by CG + AMG (1e-10).
+  dealvem::ContactProblem::Results
+  compare(const std::string &prm, const std::string &tag, const bool uniform_stress)
+  {
+    using Parallelism = dealvem::ElasticityProblem::Parallelism;
+    const auto ref    = testing::run_contact(prm + solver_section("UMFPACK"));
+    const auto r      = testing::run_contact(prm + solver_section("CG-AMG constraints"));
+    agree(r, ref, 1e-8, tag);
+    const unsigned int np = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const std::string  on = " [distributed, " + std::to_string(np) + " process(es), ";
+    for (const std::string type : {"KLU", "CG-AMG constraints"})
+      {
+        const auto rd =
+          testing::run_contact(prm + solver_section(type), MPI_COMM_WORLD, Parallelism::distributed);
+        agree(rd, ref, 1e-10, tag + on + type + "]");
+        total_rows_across += rd.n_rows_across_processes;
+        std::cout << "      contact constraint rows cut by the partition: " << rd.n_rows_across_processes
+                  << std::endl;
+      }
     if (uniform_stress)
       {
         double e = 0;
@@ -178,5 +204,20 @@ main(int argc, char **argv)
                            solver_section("CG-AMG constraints"));
     },
     "Coulomb friction cannot use the 'CG-AMG constraints' contact solver", "e) Coulomb friction is refused");
+  testing::check_throws(
+    [&] {
+      testing::run_contact(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
+                                      testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), 1, "unilateral",
+                                      "coulomb", flat_supports, "10") +
+                             "subsection Contact\n  set Friction coefficient = 0.3\nend\n" +
+                             solver_section("UMFPACK"),
+                           MPI_COMM_WORLD, dealvem::ElasticityProblem::Parallelism::distributed);
+    },
+    "coulomb runs only on the serial path", "e) Coulomb friction on the distributed path");
+  // under mpirun: the partition cuts contact constraints (pairs whose two
+  // nodes are owned by different processes)
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    testing::check(total_rows_across > 0, "contact constraint rows cut by the partition over all cases: " +
+                                            std::to_string(total_rows_across));
   return testing::finish();
 }

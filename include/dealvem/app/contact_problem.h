@@ -5,11 +5,13 @@
 #ifndef dealvem_app_contact_problem_h
 #define dealvem_app_contact_problem_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
+#include <dealvem/app/elasticity_problem.h>
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/contact/contact_assembler.h>
@@ -45,13 +47,30 @@ namespace dealvem
    * on each contact pair -> DoFs -> constraints -> assembly of K and f ->
    * contact blocks -> active-set loop of saddle-point solves -> stresses,
    * contact pressures -> VTU, CSV, JSON, SVG pictures.
+   *
+   * <h3>MPI</h3>
+   * With more than one process in the communicator (`mpirun -np N
+   * dealvem contact.prm`), every process builds the whole mesh, the node
+   * pairs and the contact blocks (replicated, as ElasticityProblem's
+   * distributed path), the cells are partitioned by METIS (VEMPartition),
+   * and each active-set iteration is solved by DistributedContactSolver:
+   * the active constraints become AffineConstraints lines, the condensed
+   * stiffness of each process's cells goes into a Trilinos matrix, and CG +
+   * ML AMG (or Amesos KLU for UMFPACK/KLU) solves it. The displacements and
+   * multipliers are then known on every process, so the stresses and
+   * pressures are computed as in the serial path and process 0 alone prints
+   * and writes the files. Coulomb friction and GMRES-AMG are refused with
+   * more than one process.
    */
   class ContactProblem
   {
   public:
     static constexpr unsigned int max_bodies = 4;
 
-    ContactProblem();
+    /// The distributed path runs when @p comm has more than one process
+    /// (Parallelism::automatic), or always (distributed), or never (serial).
+    explicit ContactProblem(const MPI_Comm                       comm        = MPI_COMM_WORLD,
+                            const ElasticityProblem::Parallelism parallelism = ElasticityProblem::Parallelism::automatic);
     ~ContactProblem();
 
     /// Declare the sections of the extra bodies and of contact (the
@@ -154,6 +173,9 @@ namespace dealvem
       std::vector<StepResult>      steps;
       /// Sum of the dissipated energy of the steps.
       double                       dissipated_energy = 0;
+      /// MPI processes of the run, and the contact constraint rows of the
+      /// last solve whose DoFs are owned by more than one of them.
+      unsigned int                 n_processes = 1, n_rows_across_processes = 0;
     };
 
     const Results &
@@ -223,6 +245,11 @@ namespace dealvem
     double                     final_time = 1;
     Results                    results;
     std::vector<std::vector<ErrorNorms>> convergence;
+    MPI_Comm                   mpi_communicator;
+    unsigned int               n_processes = 1;
+    bool                       distributed = false;
+    /// Process 0 prints and writes files; the others compute silently.
+    bool                       root = true;
     /// The DoF handler, assembler, matrices and solvers of the current
     /// cycle (defined in the .cc file); declared after @p results so that it
     /// is destroyed before the mesh it refers to.

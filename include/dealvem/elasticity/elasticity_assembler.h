@@ -139,6 +139,20 @@ namespace dealvem
              dealii::TrilinosWrappers::SparseMatrix    &matrix,
              dealii::TrilinosWrappers::MPI::Vector     &rhs) const;
 
+    /**
+     * Add the unconstrained residual f_c - K_c u_c of the cells @p cells
+     * (and the nodal loads if @p with_nodal_loads) to @p r (size n_dofs()).
+     * Where no constraint line touches a DoF and @p u satisfies the
+     * constraints, this is the residual of the condensed system; the
+     * distributed contact solve uses it to recover the multipliers from the
+     * cells around the slave DoFs only.
+     */
+    void
+    add_residual(const std::vector<unsigned int> &cells,
+                 const dealii::Vector<double>    &u,
+                 const bool                       with_nodal_loads,
+                 dealii::Vector<double>          &r) const;
+
     /// Assemble only the (unconstrained) load vector: body force and
     /// boundary loads.
     void

@@ -74,13 +74,20 @@ namespace dealvem
      * are displacements) and @p b and build the constraints. @p length_scale
      * (a typical coordinate of the model, 0 if unknown) sets the absolute
      * floor of the consistency test of redundant constraints.
+     *
+     * Without @p displacement_constraints a DoF may be a slave if its row
+     * of $K$ in @p A couples to other DoFs. With them, @p A need not hold
+     * $K$ at all (the distributed contact solve passes only the contact
+     * blocks and assembles $K$ on the processes' cells): a DoF may be a
+     * slave if those constraints do not constrain it.
      */
     void
-    reinit(const dealii::SparseMatrix<double> &A,
-           const unsigned int                  n_displacements,
-           const dealii::Vector<double>       &b,
-           const double                        length_scale,
-           const double                        dependency_tolerance = 1e-10);
+    reinit(const dealii::SparseMatrix<double>      &A,
+           const unsigned int                       n_displacements,
+           const dealii::Vector<double>            &b,
+           const double                             length_scale,
+           const double                             dependency_tolerance    = 1e-10,
+           const dealii::AffineConstraints<double> *displacement_constraints = nullptr);
 
     /// The slave lines (closed; every line in terms of non-slave DoFs).
     const dealii::AffineConstraints<double> &
@@ -131,6 +138,14 @@ namespace dealvem
     get_slaves() const
     {
       return slaves;
+    }
+
+    /// The multiplier rows without displacement entries and their values
+    /// (g_r / D_rr; zero for the contact assembler's inactive pairs).
+    const std::vector<std::pair<unsigned int, double>> &
+    get_inactive_rows() const
+    {
+      return inactive;
     }
 
   private:

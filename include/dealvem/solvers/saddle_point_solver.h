@@ -72,12 +72,14 @@ namespace dealvem
 
     explicit SaddlePointSolver(const Settings &settings);
 
+    virtual ~SaddlePointSolver() = default;
+
     /// Near-null space (rigid-body modes, size n_displacements each) for AMG.
     void
     set_near_null_space(const std::vector<std::vector<double>> &modes);
 
-    /// Solve A x = b.
-    void
+    /// Solve A x = b. (DistributedContactSolver overrides it.)
+    virtual void
     solve(const dealii::SparseMatrix<double> &A,
           const unsigned int                  n_displacements,
           dealii::Vector<double>             &x,
@@ -104,10 +106,10 @@ namespace dealvem
       return iterations;
     }
 
-    std::string
+    virtual std::string
     description() const;
 
-  private:
+  protected:
     Settings                         settings;
     std::vector<std::vector<double>> modes;
     unsigned int                     iterations = 0;

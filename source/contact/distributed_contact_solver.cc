@@ -1,0 +1,276 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <dealvem/contact/distributed_contact_solver.h>
+#include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/solvers/contact_constraints.h>
+#include <dealvem/solvers/parallel_solver.h>
+#include <dealvem/vem/partitioning.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace dealvem
+{
+  DistributedContactSolver::DistributedContactSolver(const Settings                          &settings,
+                                                     const VEMPartition<2>                   &partition,
+                                                     const dealii::AffineConstraints<double> &displacement_constraints,
+                                                     const MPI_Comm                           comm)
+    : SaddlePointSolver(settings)
+    , partition(partition)
+    , displacement_constraints(displacement_constraints)
+    , comm(comm)
+  {
+    AssertThrow(settings.type != Type::gmres_amg,
+                dealii::ExcMessage("Solver/Type = GMRES-AMG iterates on the whole saddle-point system, which is "
+                                   "not distributed: with more than one MPI process, contact is solved as "
+                                   "constraints. Use 'CG-AMG constraints' (or UMFPACK / KLU, which factor the "
+                                   "condensed system by Amesos KLU)."));
+  }
+
+
+
+  void
+  DistributedContactSolver::set_assembler(const ElasticityAssembler<2> &a)
+  {
+    assembler = &a;
+  }
+
+
+
+  std::string
+  DistributedContactSolver::description() const
+  {
+    const unsigned int np = dealii::Utilities::MPI::n_mpi_processes(comm);
+    return std::string(settings.type == Type::cg_amg_constraints ? "CG + ML AMG" : "Amesos KLU (direct)") +
+           " on the stiffness condensed by the active contact constraints, distributed over " +
+           std::to_string(np) + " MPI process" + (np > 1 ? "es" : "") +
+           " (one slave DoF per constraint, multipliers from the residual)";
+  }
+
+
+
+  void
+  DistributedContactSolver::solve(const dealii::SparseMatrix<double> &A,
+                                  const unsigned int                  n,
+                                  dealii::Vector<double>             &x,
+                                  const dealii::Vector<double>       &b)
+  {
+    AssertThrow(assembler != nullptr,
+                dealii::ExcMessage("DistributedContactSolver: set_assembler() was not called."));
+    AssertDimension(A.m(), b.size());
+    const unsigned int m = A.m() - n;
+    x.reinit(b.size());
+
+    // 1. the active constraints as slave lines, merged with the
+    //    displacement constraints
+    double length = 0;
+    if (modes.size() == 3)
+      for (const double v : modes[2])
+        length = std::max(length, std::abs(v));
+    ContactConstraints contact;
+    contact.reinit(A, n, b, length, 1e-10, &displacement_constraints);
+    n_dropped = contact.get_dependent_rows().size();
+    dealii::AffineConstraints<double> all;
+    for (const auto *c : {&displacement_constraints, &contact.get_constraints()})
+      for (const auto &line : c->get_lines())
+        {
+          all.add_line(line.index);
+          all.add_entries(line.index, line.entries);
+          all.set_inhomogeneity(line.index, line.inhomogeneity);
+        }
+    all.close();
+
+    // the multiplier rows cut by the partition
+    n_rows_across = 0;
+    for (unsigned int r = 0; r < m; ++r)
+      {
+        unsigned int owner = dealii::numbers::invalid_unsigned_int;
+        bool         cut   = false;
+        for (auto it = A.begin(n + r); it != A.end(n + r); ++it)
+          if (it->column() < n && it->value() != 0.)
+            {
+              const unsigned int o = partition.node_owner(it->column() / 2);
+              cut                  = cut || (owner != dealii::numbers::invalid_unsigned_int && o != owner);
+              owner                = o;
+            }
+        n_rows_across += cut;
+      }
+
+    // known (inactive) multipliers: their forces go to the right-hand side
+    std::vector<double> known(m, 0.);
+    std::vector<bool>   is_known(m, false);
+    for (const auto &in : contact.get_inactive_rows())
+      {
+        known[in.first]    = in.second;
+        is_known[in.first] = true;
+      }
+
+    // 2. the rows of the contact blocks' displacement part (springs,
+    //    right-hand side) that this process adds: those of its owned DoFs
+    //    that the displacement constraints leave free
+    const dealii::IndexSet                                    &owned = partition.locally_owned_dofs();
+    std::vector<std::vector<dealii::types::global_dof_index>> row_dofs;
+    std::vector<std::vector<double>>                          row_values;
+    std::vector<double>                                       row_rhs;
+    dealii::IndexSet                                          relevant = partition.locally_relevant_dofs(all);
+    for (const auto i : owned)
+      {
+        if (displacement_constraints.is_constrained(i))
+          continue;
+        std::vector<dealii::types::global_dof_index> dofs{i};
+        std::vector<double>                          values{0.};
+        double                                       rhs = b[i];
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          {
+            const auto j = it->column();
+            if (it->value() == 0.)
+              continue;
+            if (j >= n)
+              rhs -= it->value() * known[j - n];
+            else if (j == i)
+              values[0] = it->value();
+            else
+              {
+                dofs.push_back(j);
+                values.push_back(it->value());
+              }
+          }
+        if (dofs.size() == 1 && values[0] == 0. && rhs == 0.)
+          continue;
+        for (const auto d : dofs)
+          {
+            relevant.add_index(d);
+            if (all.is_constrained(d))
+              for (const auto &e : *all.get_constraint_entries(d))
+                relevant.add_index(e.first);
+          }
+        row_dofs.push_back(std::move(dofs));
+        row_values.push_back(std::move(values));
+        row_rhs.push_back(rhs);
+      }
+    relevant.compress();
+
+    dealii::DynamicSparsityPattern dsp(relevant);
+    partition.make_sparsity_pattern(dsp, all);
+    for (const auto &dofs : row_dofs)
+      all.add_entries_local_to_global(dofs, dsp, false);
+    dealii::SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+    dealii::TrilinosWrappers::SparseMatrix K;
+    K.reinit(owned, owned, dsp, comm);
+    dealii::TrilinosWrappers::MPI::Vector f(owned, comm), u(owned, comm);
+    assembler->assemble(all, partition.locally_owned_cells(), K, f);
+    for (unsigned int k = 0; k < row_dofs.size(); ++k)
+      {
+        // one row of a "cell" whose other rows are zero: condensation is
+        // linear in the local matrix, so row by row adds up to the whole
+        const unsigned int         s = row_dofs[k].size();
+        dealii::FullMatrix<double> local(s, s);
+        dealii::Vector<double>     local_rhs(s);
+        for (unsigned int j = 0; j < s; ++j)
+          local(0, j) = row_values[k][j];
+        local_rhs[0] = row_rhs[k];
+        all.distribute_local_to_global(local, local_rhs, row_dofs[k], K, f);
+      }
+    K.compress(dealii::VectorOperation::add);
+    f.compress(dealii::VectorOperation::add);
+
+    // 3. the condensed solve
+    LinearSolver::Settings linear;
+    linear.type = (settings.type == Type::cg_amg_constraints ? LinearSolver::Type::cg_amg : LinearSolver::Type::klu);
+    linear.relative_tolerance = settings.relative_tolerance;
+    linear.max_iterations     = settings.max_iterations;
+    ParallelLinearSolver solver(linear);
+    if (linear.type == LinearSolver::Type::cg_amg)
+      solver.set_near_null_space(modes, owned);
+    solver.solve(K, u, f);
+    iterations = solver.last_iterations();
+
+    // 4. the displacements on every process, then the multipliers
+    dealii::Vector<double> mine(n), full(n);
+    for (const auto i : owned)
+      mine[i] = u[i];
+    // one contribution per entry: the sum is exact
+    dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(mine.data(), n), comm,
+                                dealii::ArrayView<double>(full.data(), n));
+    all.distribute(full);
+
+    // the residual rows the multipliers need: the slaves, and the DoFs
+    // whose displacement constraint refers to a slave (their rows are
+    // condensed into the slave's)
+    std::vector<bool> is_slave(n, false);
+    for (const auto &sl : contact.get_slaves())
+      is_slave[sl.second] = true;
+    std::vector<unsigned int>                                                targets;
+    std::vector<int>                                                         target_of(n, -1);
+    std::map<unsigned int, std::vector<std::pair<unsigned int, double>>>     folded;
+    for (const auto &sl : contact.get_slaves())
+      {
+        target_of[sl.second] = targets.size();
+        targets.push_back(sl.second);
+      }
+    for (const auto &line : displacement_constraints.get_lines())
+      for (const auto &e : line.entries)
+        if (e.first < n && is_slave[e.first])
+          {
+            if (target_of[line.index] < 0)
+              {
+                target_of[line.index] = targets.size();
+                targets.push_back(line.index);
+              }
+            folded[e.first].emplace_back(line.index, e.second);
+          }
+    std::vector<unsigned int> cells;
+    std::vector<dealii::types::global_dof_index> dof_indices;
+    const auto &dof_handler = assembler->get_dof_handler();
+    for (const unsigned int c : partition.locally_owned_cells())
+      {
+        dof_handler.get_dof_indices(c, dof_indices);
+        for (const auto d : dof_indices)
+          if (target_of[d] >= 0)
+            {
+              cells.push_back(c);
+              break;
+            }
+      }
+    dealii::Vector<double> r(n);
+    assembler->add_residual(cells, full, dealii::Utilities::MPI::this_mpi_process(comm) == 0, r);
+    std::vector<double> local_r(targets.size());
+    for (unsigned int k = 0; k < targets.size(); ++k)
+      local_r[k] = r[targets[k]];
+    const auto          parts = dealii::Utilities::MPI::all_gather(comm, local_r);
+    std::vector<double> target_r(targets.size(), 0.);
+    for (const auto &p : parts) // in rank order on every process: the same bits
+      for (unsigned int k = 0; k < targets.size(); ++k)
+        target_r[k] += p[k];
+
+    dealii::Vector<double> b_with_elasticity(b);
+    for (const auto &sl : contact.get_slaves())
+      {
+        const unsigned int s = sl.second;
+        double             v = target_r[target_of[s]];
+        const auto fo = folded.find(s);
+        if (fo != folded.end())
+          for (const auto &e : fo->second)
+            v += e.second * target_r[target_of[e.first]];
+        b_with_elasticity[s] += v;
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      x[i] = full[i];
+    contact.distribute_and_recover_multipliers(A, b_with_elasticity, x);
+    for (unsigned int i = 0; i < x.size(); ++i)
+      AssertThrow(std::isfinite(x[i]),
+                  dealii::ExcMessage("The distributed contact solve produced a non-finite value: the condensed "
+                                     "system is singular (is every body supported?)."));
+  }
+} // namespace dealvem
