@@ -99,6 +99,10 @@ namespace dealvem
                       "solves it by CG-AMG at one-body cost, multipliers recovered from the "
                       "residual (not with Coulomb friction); one body: GMRES-AMG and CG-AMG "
                       "constraints mean CG-AMG.");
+    prm.declare_entry("Preconditioner", "automatic", Selection("automatic|AMG|p-multigrid"),
+                      "Preconditioner of CG for one body (serial and distributed): automatic (the "
+                      "p-multigrid for k = 2, ML AMG for k = 1), AMG (one ML V-cycle on the whole "
+                      "matrix) or p-multigrid (k = 2 only).");
     prm.declare_entry("Relative tolerance", "1e-12", Double(1e-16, 1),
                       "Relative residual tolerance of the iterative solver, 0 < tolerance < 1.");
     prm.declare_entry("Maximum iterations", "10000", Integer(1), "Iteration limit of the iterative solver.");
@@ -164,6 +168,10 @@ namespace dealvem
       solver_type = "CG-AMG";
     solver_tolerance      = prm.get_double("Relative tolerance");
     solver_max_iterations = prm.get_integer("Maximum iterations");
+    solver_preconditioner = prm.get("Preconditioner");
+    AssertThrow(solver_preconditioner != "p-multigrid" || degree == 2,
+                dealii::ExcMessage("Solver/Preconditioner = p-multigrid needs Discretization/Order = 2 (the "
+                                   "coarse level is the order-1 space on the same polygons)."));
     prm.leave_subsection();
     InputParsing::check_range(solver_tolerance, 0, 1, "Solver/Relative tolerance", true, true);
 
@@ -262,6 +270,7 @@ namespace dealvem
     settings.type               = LinearSolver::parse_type(solver_type);
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
+    settings.preconditioner     = LinearSolver::parse_preconditioner(solver_preconditioner);
     LinearSolver solver(settings);
     // k = 2 with CG: the k = 1 space on the same polygons as the coarse
     // level (p-multigrid)
@@ -335,9 +344,19 @@ namespace dealvem
       settings.type               = LinearSolver::parse_type(solver_type);
       settings.relative_tolerance = solver_tolerance;
       settings.max_iterations     = solver_max_iterations;
+      settings.preconditioner     = LinearSolver::parse_preconditioner(solver_preconditioner);
       ParallelLinearSolver solver(settings);
       if (settings.type == LinearSolver::Type::cg_amg)
         solver.set_near_null_space(dof_handler.rigid_body_modes(), locally_owned_dofs);
+      // k = 2 with CG: the p-multigrid, as on the serial path
+      dealii::SparsityPattern          prolongation_sparsity;
+      dealii::SparseMatrix<double>     prolongation;
+      std::vector<std::vector<double>> coarse_modes;
+      if (settings.type == LinearSolver::Type::cg_amg && degree == 2)
+        {
+          PMultigrid::make_prolongation(dof_handler, prolongation_sparsity, prolongation, coarse_modes);
+          solver.set_coarse_space(prolongation, coarse_modes);
+        }
       solver.solve(distributed_matrix, distributed_solution, distributed_rhs);
       constraints.distribute(distributed_solution);
       solver_description = solver.description();

@@ -14,6 +14,8 @@
 
 #include <dealvem/solvers/linear_solver.h>
 
+#include "two_level_cycle.h"
+
 #include <Teuchos_ParameterList.hpp>
 #include <ml_MultiLevelPreconditioner.h>
 
@@ -111,34 +113,63 @@ namespace dealvem
 
 
 
+  namespace internal
+  {
+    void
+    restrict_prolongation(const dealii::SparseMatrix<double> &P,
+                          const std::vector<bool>            &decoupled,
+                          dealii::SparseMatrix<double>       &Pc)
+    {
+      // Coarse functions vanish on decoupled DoFs (constrained and
+      // condensed), except at a coarse DoF that is a copy of one (a vertex
+      // value): it stays as its own decoupled coarse DoF, so that P keeps
+      // full column rank.
+      Pc.reinit(P.get_sparsity_pattern());
+      Pc.copy_from(P);
+      std::vector<bool> coarse_decoupled(P.n(), false);
+      for (unsigned int i = 0; i < P.m(); ++i)
+        if (decoupled[i])
+          {
+            unsigned int n_nonzero = 0, column = 0;
+            double       value     = 0;
+            for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+              if (it->value() != 0.)
+                {
+                  ++n_nonzero;
+                  column = it->column();
+                  value  = it->value();
+                }
+            if (n_nonzero == 1 && value == 1.)
+              coarse_decoupled[column] = true;
+            else
+              for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+                it->value() = 0;
+          }
+      for (unsigned int i = 0; i < P.m(); ++i)
+        if (!decoupled[i])
+          for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+            if (coarse_decoupled[it->column()])
+              it->value() = 0;
+    }
+  } // namespace internal
+
+
+
   namespace
   {
-    /**
-     * The symmetric two-level V-cycle of LinearSolver's p-multigrid: x = S b,
-     * then x += P C^{-1} P^T (b - A x), then x += S (b - A x), with S the
-     * Chebyshev smoother and C^{-1} one ML V-cycle on C = P^T A P. Per
-     * application: 2 (degree - 1) products with A in the smoother, one for
-     * the first residual, one with AP for the second.
-     */
+    /// LinearSolver's p-multigrid: the shared two-level cycle on the
+    /// serial matrix.
     class TwoLevelPreconditioner
     {
     public:
-      using Smoother = dealii::PreconditionChebyshev<dealii::TrilinosWrappers::SparseMatrix,
-                                                     dealii::Vector<double>,
-                                                     dealii::DiagonalMatrix<dealii::Vector<double>>>;
-
       TwoLevelPreconditioner(const dealii::SparseMatrix<double>           &A,
                              const dealii::TrilinosWrappers::SparseMatrix &At,
                              const dealii::SparseMatrix<double>           &P,
                              const std::vector<std::vector<double>>       &coarse_modes,
                              const LinearSolver::Settings                 &settings)
-        : A(At)
       {
         AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
                                                        " rows but the matrix " + std::to_string(A.m()) + "."));
-        AssertThrow(settings.smoother_degree >= 1 && settings.smoothing_range > 1,
-                    dealii::ExcMessage("p-multigrid: the smoother degree must be >= 1 and the smoothing "
-                                       "range > 1."));
         // DoFs whose rows carry no coupling: constrained and condensed.
         std::vector<bool> decoupled(A.m(), true);
         for (unsigned int i = 0; i < A.m(); ++i)
@@ -148,92 +179,22 @@ namespace dealvem
                 decoupled[i] = false;
                 break;
               }
-        // Coarse functions vanish on such DoFs, except at a coarse DoF that
-        // is a copy of one (a vertex value): it stays as its own decoupled
-        // coarse DoF, so that P keeps full column rank.
-        dealii::SparseMatrix<double> Pc(P.get_sparsity_pattern());
-        Pc.copy_from(P);
-        std::vector<bool> coarse_decoupled(P.n(), false);
-        for (unsigned int i = 0; i < P.m(); ++i)
-          if (decoupled[i])
-            {
-              unsigned int n_nonzero = 0, column = 0;
-              double       value     = 0;
-              for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
-                if (it->value() != 0.)
-                  {
-                    ++n_nonzero;
-                    column = it->column();
-                    value  = it->value();
-                  }
-              if (n_nonzero == 1 && value == 1.)
-                coarse_decoupled[column] = true;
-              else
-                for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
-                  it->value() = 0;
-            }
-        for (unsigned int i = 0; i < P.m(); ++i)
-          if (!decoupled[i])
-            for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
-              if (coarse_decoupled[it->column()])
-                it->value() = 0;
+        dealii::SparseMatrix<double> Pc;
+        internal::restrict_prolongation(P, decoupled, Pc);
         Pt.reinit(Pc, 0.);
-
-        // Galerkin coarse operator P^T A P
-        At.mmult(AP, Pt);
-        Pt.Tmmult(coarse_matrix, AP);
-        internal::set_ml_parameters(&list, coarse_modes, P.n(), storage, settings.amg);
-        coarse_amg.initialize(coarse_matrix.trilinos_matrix(), list);
-
-        // Chebyshev smoother around the inverse diagonal
-        typename Smoother::AdditionalData data;
-        data.degree          = settings.smoother_degree;
-        data.smoothing_range = settings.smoothing_range;
-        data.eig_cg_n_iterations = 12;
-        data.preconditioner  = std::make_shared<dealii::DiagonalMatrix<dealii::Vector<double>>>();
-        dealii::Vector<double> &inverse_diagonal = data.preconditioner->get_vector();
-        inverse_diagonal.reinit(A.m());
-        for (unsigned int i = 0; i < A.m(); ++i)
-          {
-            const double d = A.diag_element(i);
-            AssertThrow(d > 0, dealii::ExcMessage("p-multigrid: the diagonal entry " + std::to_string(i) +
-                                                  " is not positive (" + std::to_string(d) +
-                                                  "): the matrix is not positive definite."));
-            inverse_diagonal[i] = 1. / d;
-          }
-        smoother.initialize(At, data);
-        r.reinit(A.m());
-        e.reinit(A.m());
-        rc.reinit(P.n());
-        ec.reinit(P.n());
+        cycle = std::make_unique<internal::TwoLevelCycle<dealii::Vector<double>>>(At, Pt, coarse_modes, settings,
+                                                                                  MPI_COMM_SELF);
       }
 
       void
       vmult(dealii::Vector<double> &x, const dealii::Vector<double> &b) const
       {
-        smoother.vmult(x, b);
-        A.vmult(r, x);
-        r.sadd(-1., 1., b);
-        Pt.Tvmult(rc, r);
-        coarse_amg.vmult(ec, rc);
-        Pt.vmult(e, ec);
-        x += e;
-        // the new residual r - A P ec, with the product AP kept from the
-        // setup (about half the nonzeros of A: coarse columns only)
-        AP.vmult(e, ec);
-        r -= e;
-        smoother.vmult(e, r);
-        x += e;
+        cycle->vmult(x, b);
       }
 
     private:
-      const dealii::TrilinosWrappers::SparseMatrix &A;
-      dealii::TrilinosWrappers::SparseMatrix        Pt, AP, coarse_matrix;
-      Teuchos::ParameterList                        list;
-      std::vector<double>                           storage;
-      dealii::TrilinosWrappers::PreconditionAMG     coarse_amg;
-      Smoother                                      smoother;
-      mutable dealii::Vector<double>                r, e, rc, ec;
+      dealii::TrilinosWrappers::SparseMatrix                            Pt;
+      std::unique_ptr<internal::TwoLevelCycle<dealii::Vector<double>>> cycle;
     };
   } // namespace
 

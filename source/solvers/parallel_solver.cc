@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -12,6 +13,9 @@
 
 #include <dealvem/solvers/parallel_solver.h>
 
+#include "two_level_cycle.h"
+
+#include <Epetra_CrsMatrix.h>
 #include <Teuchos_ParameterList.hpp>
 
 #include <cmath>
@@ -45,12 +49,124 @@ namespace dealvem
 
 
 
+  void
+  ParallelLinearSolver::set_coarse_space(const dealii::SparseMatrix<double>     &P,
+                                         const std::vector<std::vector<double>> &m)
+  {
+    for (const auto &mode : m)
+      AssertThrow(mode.size() == P.n(), dealii::ExcMessage("set_coarse_space: a coarse mode has " +
+                                                           std::to_string(mode.size()) + " entries, P has " +
+                                                           std::to_string(P.n()) + " columns."));
+    prolongation = &P;
+    coarse_modes = m;
+  }
+
+
+
+  namespace
+  {
+    /// The p-multigrid of ParallelLinearSolver: the restricted prolongation
+    /// as a distributed Trilinos matrix (owned fine rows; coarse DoFs owned
+    /// with the fine vertex DoF they copy), then the shared two-level cycle.
+    class DistributedTwoLevel
+    {
+    public:
+      DistributedTwoLevel(const dealii::TrilinosWrappers::SparseMatrix &A,
+                          const dealii::SparseMatrix<double>           &P,
+                          const std::vector<std::vector<double>>       &coarse_modes,
+                          const LinearSolver::Settings                 &settings,
+                          const MPI_Comm                                comm)
+      {
+        AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
+                                                       " rows but the matrix " + std::to_string(A.m()) + "."));
+        const dealii::IndexSet owned = A.locally_owned_range_indices();
+        // decoupled rows (constrained DoFs), known to every process
+        std::vector<unsigned int> flags(A.m(), 0);
+        // (Epetra's row views: deal.II's row iterators step into the next
+        // row, which need not be owned with a non-contiguous partition)
+        const Epetra_CrsMatrix &M = A.trilinos_matrix();
+        for (int local = 0; local < M.NumMyRows(); ++local)
+          {
+            int     n_entries = 0;
+            double *values    = nullptr;
+            int    *columns   = nullptr;
+            M.ExtractMyRowView(local, n_entries, values, columns);
+            const auto i = static_cast<unsigned int>(M.GRID(local));
+            flags[i]     = 1;
+            for (int k = 0; k < n_entries; ++k)
+              if (static_cast<unsigned int>(M.GCID(columns[k])) != i && values[k] != 0.)
+                {
+                  flags[i] = 0;
+                  break;
+                }
+          }
+        dealii::Utilities::MPI::max(flags, comm, flags);
+        const std::vector<bool>      decoupled(flags.begin(), flags.end());
+        dealii::SparseMatrix<double> Pc;
+        internal::restrict_prolongation(P, decoupled, Pc);
+
+        // the coarse DoFs of this process: copies of its owned vertex DoFs
+        dealii::IndexSet owned_coarse(P.n());
+        for (const auto i : owned)
+          {
+            unsigned int n_entries = 0, column = 0;
+            double       value     = 0;
+            for (auto it = P.begin(i); it != P.end(i); ++it)
+              if (it->value() != 0.)
+                {
+                  ++n_entries;
+                  column = it->column();
+                  value  = it->value();
+                }
+            if (n_entries == 1 && value == 1.)
+              owned_coarse.add_index(column);
+          }
+        owned_coarse.compress();
+        AssertThrow(dealii::Utilities::MPI::sum(owned_coarse.n_elements(), comm) == P.n(),
+                    dealii::ExcMessage("p-multigrid: the coarse DoFs are not owned once each (is P a "
+                                       "prolongation from PMultigrid::make_prolongation()?)."));
+
+        dealii::DynamicSparsityPattern dsp(P.m(), P.n(), owned);
+        for (const auto i : owned)
+          for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+            dsp.add(i, it->column());
+        Pt.reinit(owned, owned_coarse, dsp, comm);
+        for (const auto i : owned)
+          for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+            Pt.set(i, it->column(), it->value());
+        Pt.compress(dealii::VectorOperation::insert);
+
+        std::vector<std::vector<double>> local(coarse_modes.size());
+        for (unsigned int k = 0; k < coarse_modes.size(); ++k)
+          for (const auto j : owned_coarse)
+            local[k].push_back(coarse_modes[k][j]);
+        cycle = std::make_unique<internal::TwoLevelCycle<dealii::TrilinosWrappers::MPI::Vector>>(A, Pt, local,
+                                                                                                  settings, comm);
+      }
+
+      void
+      vmult(dealii::TrilinosWrappers::MPI::Vector &x, const dealii::TrilinosWrappers::MPI::Vector &b) const
+      {
+        cycle->vmult(x, b);
+      }
+
+    private:
+      dealii::TrilinosWrappers::SparseMatrix                                          Pt;
+      std::unique_ptr<internal::TwoLevelCycle<dealii::TrilinosWrappers::MPI::Vector>> cycle;
+    };
+  } // namespace
+
+
+
   std::string
   ParallelLinearSolver::description() const
   {
     const std::string where = " on " + std::to_string(n_processes) + " MPI process" + (n_processes > 1 ? "es" : "");
     if (settings.type != LinearSolver::Type::cg_amg)
       return "KLU (Trilinos Amesos, direct, factored on one process)" + where;
+    if (used_p_multigrid)
+      return "CG + two-level p-multigrid (Chebyshev(" + std::to_string(settings.smoother_degree) +
+             ") on k = 2, ML AMG on the Galerkin k = 1 level)" + where;
     return "CG + ML AMG (" + std::to_string(local_modes.size() == 3 ? 3 : 2) + " near-null-space vectors)" + where;
   }
 
@@ -79,21 +195,36 @@ namespace dealvem
                     dealii::ExcMessage("ParallelLinearSolver: the near-null space has " +
                                        std::to_string(local_modes[0].size()) + " local entries, the matrix " +
                                        std::to_string(n_local) + " local rows."));
+        used_p_multigrid = prolongation != nullptr && settings.preconditioner != LinearSolver::Preconditioner::amg;
+        AssertThrow(settings.preconditioner != LinearSolver::Preconditioner::p_multigrid || prolongation != nullptr,
+                    dealii::ExcMessage("The p-multigrid preconditioner needs the coarse space: call "
+                                       "ParallelLinearSolver::set_coarse_space()."));
         // ML's settings: those of the serial CG-AMG (linear_solver.cc)
-        Teuchos::ParameterList list;
-        std::vector<double>    storage;
-        internal::set_ml_parameters(&list, local_modes, n_local, storage);
+        Teuchos::ParameterList                    list;
+        std::vector<double>                       storage;
         dealii::TrilinosWrappers::PreconditionAMG amg;
-        amg.initialize(A.trilinos_matrix(), list);
+        std::unique_ptr<DistributedTwoLevel>      two_level;
+        if (used_p_multigrid)
+          two_level = std::make_unique<DistributedTwoLevel>(A, *prolongation, coarse_modes, settings,
+                                                            b.get_mpi_communicator());
+        else
+          {
+            internal::set_ml_parameters(&list, local_modes, n_local, storage, settings.amg);
+            amg.initialize(A.trilinos_matrix(), list);
+          }
         dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * b.l2_norm());
         dealii::SolverCG<dealii::TrilinosWrappers::MPI::Vector> cg(control);
         try
           {
-            cg.solve(A, x, b, amg);
+            if (used_p_multigrid)
+              cg.solve(A, x, b, *two_level);
+            else
+              cg.solve(A, x, b, amg);
           }
         catch (const dealii::SolverControl::NoConvergence &e)
           {
-            AssertThrow(false, dealii::ExcMessage("CG-AMG did not converge: residual " +
+            AssertThrow(false, dealii::ExcMessage(std::string(used_p_multigrid ? "CG with p-multigrid" : "CG-AMG") +
+                                                  " did not converge: residual " +
                                                   std::to_string(e.last_residual) + " after " +
                                                   std::to_string(e.last_step) + " iterations (target " +
                                                   std::to_string(control.tolerance()) + ")."));

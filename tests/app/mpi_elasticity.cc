@@ -14,7 +14,8 @@
 //   serial UMFPACK displacements at all DoFs (gathered) to 1e-10 relative
 //   (max norm of the difference over the max norm of the solution), and the
 //   L2, H1 and energy errors (summed over the processes) to 1e-10 relative;
-// - the distributed CG + AMG solve (relative residual 1e-12) gives them to
+// - the distributed CG solve (k = 2: the p-multigrid of ParallelLinearSolver,
+//   as on the serial path; relative residual 1e-12) gives them to
 //   1e-10 as well (measured: 5e-14 for the displacements);
 // - the .pvtu record and one .vtu piece per process are written, and the
 //   pieces hold all cells once.

@@ -146,6 +146,7 @@ namespace dealvem
     std::string  solver_type = "UMFPACK";
     double       solver_tolerance = 1e-12;
     unsigned int solver_max_iterations = 10000;
+    std::string  solver_preconditioner = "automatic";
     unsigned int n_cycles = 1;
     std::string  output_folder = "output", base_name = "solution";
     bool         write_vtu = true, write_json = true;

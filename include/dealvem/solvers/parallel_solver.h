@@ -6,6 +6,7 @@
 #define dealvem_solvers_parallel_solver_h
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/lac/sparse_matrix.h>
 
 #include <dealvem/solvers/linear_solver.h>
 
@@ -52,6 +53,18 @@ namespace dealvem
     void
     set_near_null_space(const std::vector<std::vector<double>> &modes, const dealii::IndexSet &owned);
 
+    /**
+     * The coarse space of the two-level p-multigrid (as
+     * LinearSolver::set_coarse_space(): the whole prolongation and coarse
+     * modes on every process, e.g. from PMultigrid::make_prolongation()).
+     * Each process keeps the rows of its owned DoFs; a coarse DoF belongs to
+     * the process owning the fine DoF it is a copy of (its vertex value).
+     * With it, CG's preconditioner is the p-multigrid unless
+     * Settings::preconditioner says AMG. @p P must outlive solve().
+     */
+    void
+    set_coarse_space(const dealii::SparseMatrix<double> &P, const std::vector<std::vector<double>> &coarse_modes);
+
     /// Solve A x = b; x must have A's row map without ghosts. Collective.
     void
     solve(const dealii::TrilinosWrappers::SparseMatrix &A,
@@ -69,8 +82,11 @@ namespace dealvem
     description() const;
 
   private:
-    LinearSolver::Settings           settings;
-    std::vector<std::vector<double>> local_modes;
+    LinearSolver::Settings             settings;
+    std::vector<std::vector<double>>   local_modes;
+    const dealii::SparseMatrix<double> *prolongation = nullptr;
+    std::vector<std::vector<double>>   coarse_modes;
+    bool                               used_p_multigrid = false;
     unsigned int                     iterations = 0;
     unsigned int                     n_processes = 1;
   };

@@ -1,0 +1,185 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// The symmetric two-level V-cycle of the p-multigrid preconditioner, shared
+// by the serial LinearSolver (dealii::Vector) and ParallelLinearSolver
+// (TrilinosWrappers::MPI::Vector). Internal to the library (not installed).
+#ifndef dealvem_source_solvers_two_level_cycle_h
+#define dealvem_source_solvers_two_level_cycle_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/solvers/linear_solver.h>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  namespace internal
+  {
+    inline void
+    reinit_like(dealii::Vector<double> &v, const dealii::IndexSet &owned, const MPI_Comm)
+    {
+      v.reinit(owned.size());
+    }
+
+    inline void
+    reinit_like(dealii::TrilinosWrappers::MPI::Vector &v, const dealii::IndexSet &owned, const MPI_Comm comm)
+    {
+      v.reinit(owned, comm);
+    }
+
+    /// A copy of the prolongation @p P (into @p Pc, on P's pattern) whose
+    /// coarse functions vanish at the fine DoFs flagged @p decoupled
+    /// (constrained: their rows carry no coupling), except where such a DoF
+    /// is the copy of one coarse DoF (a vertex value), which then stays a
+    /// decoupled coarse DoF of its own, so that P keeps full column rank.
+    void
+    restrict_prolongation(const dealii::SparseMatrix<double> &P,
+                          const std::vector<bool>            &decoupled,
+                          dealii::SparseMatrix<double>       &Pc);
+
+    /// The inverse diagonal around which the Chebyshev smoother works:
+    /// deal.II's DiagonalMatrix for serial vectors (PreconditionChebyshev
+    /// has a fused update for it), a plain scaling for Trilinos vectors
+    /// (DiagonalMatrix's set-up there is written for serial vectors only).
+    template <typename VectorType>
+    class InverseDiagonal
+    {
+    public:
+      VectorType &
+      get_vector()
+      {
+        return diagonal;
+      }
+
+      void
+      vmult(VectorType &dst, const VectorType &src) const
+      {
+        dst = src;
+        dst.scale(diagonal);
+      }
+
+    private:
+      VectorType diagonal;
+    };
+
+    template <typename VectorType>
+    struct SmootherDiagonal
+    {
+      using type = InverseDiagonal<VectorType>;
+    };
+
+    template <>
+    struct SmootherDiagonal<dealii::Vector<double>>
+    {
+      using type = dealii::DiagonalMatrix<dealii::Vector<double>>;
+    };
+
+    /**
+     * x = S b, then x += P C^{-1} P^T (b - A x), then x += S (b - A x), with
+     * S the Chebyshev smoother around the inverse diagonal and C^{-1} one ML
+     * V-cycle on the Galerkin operator C = P^T A P. Per application:
+     * 2 (degree - 1) products with A in the smoother, one for the first
+     * residual, one with AP for the second.
+     *
+     * @p A and @p P are Trilinos matrices with the same row map; P's domain
+     * map is the coarse space's (on several processes, the coarse DoFs each
+     * process owns). @p local_coarse_modes are the coarse rigid-body modes
+     * at the locally owned coarse DoFs, in increasing global order.
+     */
+    template <typename VectorType>
+    class TwoLevelCycle
+    {
+    public:
+      using Diagonal = typename SmootherDiagonal<VectorType>::type;
+      using Smoother = dealii::PreconditionChebyshev<dealii::TrilinosWrappers::SparseMatrix, VectorType, Diagonal>;
+
+      TwoLevelCycle(const dealii::TrilinosWrappers::SparseMatrix &A,
+                    const dealii::TrilinosWrappers::SparseMatrix &P,
+                    const std::vector<std::vector<double>>       &local_coarse_modes,
+                    const LinearSolver::Settings                 &settings,
+                    const MPI_Comm                                comm)
+        : A(A)
+        , P(P)
+      {
+        AssertThrow(settings.smoother_degree >= 1 && settings.smoothing_range > 1,
+                    dealii::ExcMessage("p-multigrid: the smoother degree must be >= 1 and the smoothing "
+                                       "range > 1."));
+        const dealii::IndexSet fine   = A.locally_owned_range_indices();
+        const dealii::IndexSet coarse = P.locally_owned_domain_indices();
+
+        // Galerkin coarse operator P^T A P
+        A.mmult(AP, P);
+        P.Tmmult(coarse_matrix, AP);
+        set_ml_parameters(&list, local_coarse_modes, coarse.n_elements(), storage, settings.amg);
+        coarse_amg.initialize(coarse_matrix.trilinos_matrix(), list);
+
+        // Chebyshev smoother around the inverse diagonal
+        typename Smoother::AdditionalData data;
+        data.degree              = settings.smoother_degree;
+        data.smoothing_range     = settings.smoothing_range;
+        data.eig_cg_n_iterations = 12;
+        data.preconditioner      = std::make_shared<Diagonal>();
+        VectorType &inverse_diagonal = data.preconditioner->get_vector();
+        reinit_like(inverse_diagonal, fine, comm);
+        for (const auto i : fine)
+          {
+            const double d = A.diag_element(i);
+            AssertThrow(d > 0, dealii::ExcMessage("p-multigrid: the diagonal entry " + std::to_string(i) +
+                                                  " is not positive (" + std::to_string(d) +
+                                                  "): the matrix is not positive definite."));
+            inverse_diagonal(i) = 1. / d;
+          }
+        inverse_diagonal.compress(dealii::VectorOperation::insert);
+        smoother.initialize(A, data);
+        reinit_like(r, fine, comm);
+        reinit_like(e, fine, comm);
+        reinit_like(rc, coarse, comm);
+        reinit_like(ec, coarse, comm);
+      }
+
+      void
+      vmult(VectorType &x, const VectorType &b) const
+      {
+        smoother.vmult(x, b);
+        A.vmult(r, x);
+        r.sadd(-1., 1., b);
+        P.Tvmult(rc, r);
+        coarse_amg.vmult(ec, rc);
+        P.vmult(e, ec);
+        x += e;
+        // the new residual r - A P ec, with the product AP kept from the
+        // setup (about half the nonzeros of A: coarse columns only)
+        AP.vmult(e, ec);
+        r -= e;
+        smoother.vmult(e, r);
+        x += e;
+      }
+
+    private:
+      const dealii::TrilinosWrappers::SparseMatrix &A;
+      const dealii::TrilinosWrappers::SparseMatrix &P;
+      dealii::TrilinosWrappers::SparseMatrix        AP, coarse_matrix;
+      Teuchos::ParameterList                        list;
+      std::vector<double>                           storage;
+      dealii::TrilinosWrappers::PreconditionAMG     coarse_amg;
+      Smoother                                      smoother;
+      mutable VectorType                            r, e, rc, ec;
+    };
+  } // namespace internal
+} // namespace dealvem
+
+#endif
