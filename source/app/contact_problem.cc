@@ -1014,6 +1014,17 @@ namespace dealvem
   void
   ContactProblem::output_results()
   {
+    // peak resident memory of each process (collective on the distributed
+    // path; the mesh and contact data are replicated, see doc/benchmarks.md)
+    {
+      dealii::Utilities::System::MemoryStats stats;
+      dealii::Utilities::System::get_memory_stats(stats);
+      const auto peaks = distributed ? dealii::Utilities::MPI::all_gather(mpi_communicator, stats.VmHWM) :
+                                       std::vector<unsigned long int>{stats.VmHWM};
+      results.peak_memory_MB.clear();
+      for (const auto kB : peaks)
+        results.peak_memory_MB.push_back(kB / 1024.);
+    }
     print_report();
     if (write_csv)
       {
@@ -1220,6 +1231,8 @@ namespace dealvem
     json.set("order", double(degree));
     json.set("solver", d.solver->description());
     json.set("mpi.processes", double(n_processes));
+    for (unsigned int p = 0; p < results.peak_memory_MB.size(); ++p)
+      json.set("memory.peak_MB_process_" + std::to_string(p), results.peak_memory_MB[p]);
     json.set("contact.rows_across_processes", double(results.n_rows_across_processes));
     json.set("contact.node_pairs", double(pairs.size()));
     json.set("contact.inserted_nodes", double(n_inserted));

@@ -288,6 +288,7 @@ namespace dealvem
     constraints.distribute(solution);
     solver_description = solver.description();
     solver_iterations  = solver.last_iterations();
+    solver_setup_time  = solver.last_setup_time();
   }
 
 
@@ -361,6 +362,7 @@ namespace dealvem
       constraints.distribute(distributed_solution);
       solver_description = solver.description();
       solver_iterations  = solver.last_iterations();
+      solver_setup_time  = solver.last_setup_time();
     }
     dealii::TimerOutput::Scope t(*timer, "ghost exchange");
     std::vector<unsigned int>  cells = partition.locally_owned_cells();
@@ -465,6 +467,7 @@ namespace dealvem
     json.set(key + "h_min", hmin);
     json.set(key + "max_von_mises", max_vm);
     json.set(key + "solver_iterations", double(solver_iterations));
+    json.set(key + "solver_setup_seconds", solver_setup_time);
     json.set(key + "mpi_processes", double(distributed ? n_processes : 1));
     if (write_vtu)
       json.set(key + "vtu", vtu);

@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -185,6 +186,7 @@ namespace dealvem
         dealii::TrilinosWrappers::SolverDirect                 direct(control, data);
         direct.solve(A, x, b);
         iterations = 1;
+        setup_time = 0;
       }
     else
       {
@@ -195,6 +197,7 @@ namespace dealvem
                     dealii::ExcMessage("ParallelLinearSolver: the near-null space has " +
                                        std::to_string(local_modes[0].size()) + " local entries, the matrix " +
                                        std::to_string(n_local) + " local rows."));
+        dealii::Timer timer;
         used_p_multigrid = prolongation != nullptr && settings.preconditioner != LinearSolver::Preconditioner::amg;
         AssertThrow(settings.preconditioner != LinearSolver::Preconditioner::p_multigrid || prolongation != nullptr,
                     dealii::ExcMessage("The p-multigrid preconditioner needs the coarse space: call "
@@ -212,6 +215,7 @@ namespace dealvem
             internal::set_ml_parameters(&list, local_modes, n_local, storage, settings.amg);
             amg.initialize(A.trilinos_matrix(), list);
           }
+        setup_time = timer.wall_time();
         dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * b.l2_norm());
         dealii::SolverCG<dealii::TrilinosWrappers::MPI::Vector> cg(control);
         try

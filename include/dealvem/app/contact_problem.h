@@ -176,6 +176,9 @@ namespace dealvem
       /// MPI processes of the run, and the contact constraint rows of the
       /// last solve whose DoFs are owned by more than one of them.
       unsigned int                 n_processes = 1, n_rows_across_processes = 0;
+      /// Peak resident memory (VmHWM) of each process at the end of the
+      /// cycle, in MB.
+      std::vector<double>          peak_memory_MB;
     };
 
     const Results &

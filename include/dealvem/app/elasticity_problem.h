@@ -174,6 +174,8 @@ namespace dealvem
     dealii::TrilinosWrappers::MPI::Vector                 distributed_rhs, distributed_solution;
     std::string                                           solver_description;
     unsigned int                                          solver_iterations = 0;
+    /// Wall time of the preconditioner set-up within the solve.
+    double                                                solver_setup_time = 0;
     dealii::ConvergenceTable                              table;
     JsonSummary                                           json;
   };

@@ -78,6 +78,14 @@ namespace dealvem
       return iterations;
     }
 
+    /// Wall seconds of the last solve spent before the iteration: the AMG
+    /// or p-multigrid set-up (0 for the direct solver).
+    double
+    last_setup_time() const
+    {
+      return setup_time;
+    }
+
     std::string
     description() const;
 
@@ -88,6 +96,7 @@ namespace dealvem
     std::vector<std::vector<double>>   coarse_modes;
     bool                               used_p_multigrid = false;
     unsigned int                     iterations = 0;
+    double                           setup_time = 0;
     unsigned int                     n_processes = 1;
   };
 } // namespace dealvem
