@@ -70,6 +70,9 @@ namespace dealvem
         matrix.copy_from(system_matrix);
         rhs = system_rhs;
         contact.assemble(constraints, result.active, matrix, rhs);
+        // the condensed solver preconditions stick springs by tying them
+        if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
+          solver.set_stick_directions(contact.stick_penalty_rows(constraints, result.active));
         solver.solve(matrix, n, x, rhs);
         constraints.distribute(x);
         result.n_iterations = it;

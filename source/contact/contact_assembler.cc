@@ -246,6 +246,42 @@ namespace dealvem
 
 
   template <int dim>
+  std::vector<std::vector<std::pair<unsigned int, double>>>
+  ContactAssembler<dim>::stick_penalty_rows(const dealii::AffineConstraints<double> &constraints,
+                                            const std::vector<bool>                 &active) const
+  {
+    AssertDimension(active.size(), pairs.size());
+    std::vector<std::vector<std::pair<unsigned int, double>>> rows;
+    if (settings.tangential != ContactSettings::Tangential::penalty)
+      return rows;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (active[i])
+        {
+          const auto                     &p    = pairs[i];
+          const auto                      d    = pair_dofs(i);
+          const double                    ct[4] = {-p.tangent[0], -p.tangent[1], p.tangent[0], p.tangent[1]};
+          std::map<unsigned int, double>  row;
+          for (unsigned int j = 0; j < 4; ++j)
+            if (constraints.is_constrained(d[j]))
+              {
+                for (const auto &e : *constraints.get_constraint_entries(d[j]))
+                  row[e.first] += ct[j] * e.second;
+              }
+            else
+              row[d[j]] += ct[j];
+          std::vector<std::pair<unsigned int, double>> r;
+          for (const auto &e : row)
+            if (e.second != 0.)
+              r.emplace_back(e.first, e.second);
+          if (!r.empty())
+            rows.push_back(std::move(r));
+        }
+    return rows;
+  }
+
+
+
+  template <int dim>
   void
   ContactAssembler<dim>::assemble_friction(const dealii::AffineConstraints<double> &constraints,
                                            const std::vector<PairState>            &state,

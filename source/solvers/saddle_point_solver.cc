@@ -9,6 +9,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/linear_operator.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 
 namespace dealvem
 {
@@ -80,6 +82,14 @@ namespace dealvem
 
 
 
+  void
+  SaddlePointSolver::set_stick_directions(const std::vector<std::vector<std::pair<unsigned int, double>>> &rows)
+  {
+    stick_rows = rows;
+  }
+
+
+
   std::string
   SaddlePointSolver::description() const
   {
@@ -87,7 +97,8 @@ namespace dealvem
       return "GMRES + block preconditioner (ML AMG on K + rho B^T B, exact approximate Schur complement)";
     if (settings.type == Type::cg_amg_constraints)
       return "CG + ML AMG on the stiffness condensed by the active contact constraints (one slave DoF per "
-             "constraint, multipliers from the residual)";
+             "constraint, multipliers from the residual" +
+             std::string(used_stick_preconditioner ? "; stick springs preconditioned by tying them" : "") + ")";
     return type_name(settings.type) + " (direct, whole saddle-point matrix)";
   }
 
@@ -212,6 +223,121 @@ namespace dealvem
       dealii::TrilinosWrappers::PreconditionAMG amg;
       std::vector<double>                       null_space;
     };
+
+    /**
+     * The two-subspace preconditioner of the condensed stick-penalty system
+     * (see SaddlePointSolver::set_stick_directions()):
+     * M^{-1} r = Z AMG(Z^T K Z) Z^T r + sum_s e_s r_s / K_ss.
+     */
+    class StickPreconditioner
+    {
+    public:
+      StickPreconditioner(const dealii::SparseMatrix<double>                                  &K,
+                          const dealii::AffineConstraints<double>                           &normal_lines,
+                          const std::vector<std::vector<std::pair<unsigned int, double>>> &stick_rows,
+                          const std::vector<std::vector<double>>                            &modes,
+                          const double                                                      length)
+        : K(K)
+      {
+        const unsigned int n = K.m();
+        // the spring directions in terms of DoFs that are not normal slaves
+        std::vector<std::vector<std::pair<unsigned int, double>>> rows;
+        for (const auto &r : stick_rows)
+          {
+            std::map<unsigned int, double> row;
+            for (const auto &e : r)
+              if (normal_lines.is_constrained(e.first))
+                {
+                  for (const auto &l : *normal_lines.get_constraint_entries(e.first))
+                    row[l.first] += e.second * l.second;
+                }
+              else
+                row[e.first] += e.second;
+            std::vector<std::pair<unsigned int, double>> reduced;
+            for (const auto &x : row)
+              if (x.second != 0.)
+                reduced.emplace_back(x.first, x.second);
+            if (!reduced.empty())
+              rows.push_back(std::move(reduced));
+          }
+        // the tie lines: ContactConstraints on a saddle matrix that holds
+        // only the tie rows (zero right-hand side: Z is homogeneous)
+        const unsigned int        m = rows.size();
+        std::vector<unsigned int> row_length(n + m, 1);
+        for (const auto &r : rows)
+          for (const auto &e : r)
+            ++row_length[e.first];
+        for (unsigned int k = 0; k < m; ++k)
+          row_length[n + k] += rows[k].size();
+        dealii::SparsityPattern ties_pattern(n + m, n + m, row_length);
+        for (unsigned int k = 0; k < m; ++k)
+          for (const auto &e : rows[k])
+            {
+              ties_pattern.add(n + k, e.first);
+              ties_pattern.add(e.first, n + k);
+            }
+        ties_pattern.compress();
+        dealii::SparseMatrix<double> T(ties_pattern);
+        for (unsigned int k = 0; k < m; ++k)
+          for (const auto &e : rows[k])
+            {
+              T.set(n + k, e.first, e.second);
+              T.set(e.first, n + k, e.second);
+            }
+        ContactConstraints ties;
+        ties.reinit(T, n, dealii::Vector<double>(n + m), length, 1e-10, &normal_lines);
+        Z.copy_from(ties.get_constraints());
+        for (const auto &sl : ties.get_slaves())
+          slaves.push_back(sl.second);
+
+        // Z^T K Z: the springs vanish on tied functions
+        dealii::DynamicSparsityPattern dsp(n, n);
+        for (unsigned int i = 0; i < n; ++i)
+          for (auto it = K.get_sparsity_pattern().begin(i); it != K.get_sparsity_pattern().end(i); ++it)
+            dsp.add(i, it->column());
+        Z.condense(dsp);
+        tied_pattern.copy_from(dsp);
+        dealii::SparseMatrix<double> tied(tied_pattern);
+        for (unsigned int i = 0; i < n; ++i)
+          for (auto it = K.begin(i); it != K.end(i); ++it)
+            tied.add(i, it->column(), it->value());
+        Z.condense(tied);
+        tied_trilinos.reinit(tied);
+        Teuchos::ParameterList list;
+        internal::set_ml_parameters(&list, modes, n, null_space);
+        amg.initialize(tied_trilinos.trilinos_matrix(), list);
+        w.reinit(n);
+        v.reinit(n);
+      }
+
+      void
+      vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const
+      {
+        w = src;
+        Z.condense(w);
+        amg.vmult(v, w);
+        Z.distribute(v);
+        dst = v;
+        for (const auto s : slaves)
+          dst[s] += src[s] / K.diag_element(s);
+      }
+
+      unsigned int
+      n_ties() const
+      {
+        return slaves.size();
+      }
+
+    private:
+      const dealii::SparseMatrix<double>       &K;
+      dealii::AffineConstraints<double>         Z;
+      std::vector<unsigned int>                 slaves;
+      dealii::SparsityPattern                   tied_pattern;
+      dealii::TrilinosWrappers::SparseMatrix    tied_trilinos;
+      std::vector<double>                       null_space;
+      dealii::TrilinosWrappers::PreconditionAMG amg;
+      mutable dealii::Vector<double>            w, v;
+    };
   } // namespace
 
 
@@ -240,6 +366,35 @@ namespace dealvem
         dealii::SparseMatrix<double> K;
         dealii::Vector<double>       f, u;
         contact.condense(A, b, sparsity, K, f);
+        if (!stick_rows.empty())
+          {
+            // stick by penalty: CG on the condensed matrix with the
+            // two-subspace preconditioner
+            const StickPreconditioner preconditioner(K, contact.get_constraints(), stick_rows, modes, length);
+            dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * f.l2_norm());
+            dealii::SolverCG<dealii::Vector<double>> cg(control);
+            u.reinit(n_displacements);
+            try
+              {
+                cg.solve(K, u, f, preconditioner);
+              }
+            catch (const dealii::SolverControl::NoConvergence &e)
+              {
+                AssertThrow(false,
+                            dealii::ExcMessage("CG-AMG constraints (stick penalty) did not converge: residual " +
+                                               std::to_string(e.last_residual) + " after " +
+                                               std::to_string(e.last_step) + " iterations (target " +
+                                               std::to_string(control.tolerance()) + ")."));
+              }
+            iterations                = control.last_step();
+            used_stick_preconditioner = true;
+            for (unsigned int i = 0; i < n_displacements; ++i)
+              x[i] = u[i];
+            contact.distribute_and_recover_multipliers(A, b, x);
+            stick_rows.clear();
+          }
+        else
+          {
         LinearSolver::Settings linear;
         linear.type               = LinearSolver::Type::cg_amg;
         linear.relative_tolerance = settings.relative_tolerance;
@@ -251,6 +406,7 @@ namespace dealvem
         for (unsigned int i = 0; i < n_displacements; ++i)
           x[i] = u[i];
         contact.distribute_and_recover_multipliers(A, b, x);
+          }
       }
     else if (settings.type != Type::gmres_amg)
       {

@@ -224,6 +224,19 @@ namespace dealvem
     add_sparsity(dealii::DynamicSparsityPattern &dsp) const;
 
     /**
+     * With `Tangential = penalty`: the directions of the stick springs that
+     * assemble() adds for the active pairs, the rows c_t = (u_B - u_A).t of
+     * the pairs over their four DoFs with the displacement constraints
+     * condensed in (homogeneous part; a row that the constraints fix
+     * entirely is left out). Empty for the other tangential models. The
+     * condensed contact solver uses them to build a preconditioner that does
+     * not degrade with the penalty (SaddlePointSolver::set_stick_directions()).
+     */
+    std::vector<std::vector<std::pair<unsigned int, double>>>
+    stick_penalty_rows(const dealii::AffineConstraints<double> &constraints,
+                       const std::vector<bool>                 &active) const;
+
+    /**
      * Add the contact blocks to the system: @p active[i] says whether the
      * normal constraint of pair i is enforced. The displacement constraints
      * (Dirichlet data) are applied through @p constraints.
