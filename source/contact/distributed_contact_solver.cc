@@ -16,9 +16,16 @@
 #include <dealvem/solvers/parallel_solver.h>
 #include <dealvem/vem/partitioning.h>
 
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+
+#include <Teuchos_ParameterList.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace dealvem
 {
@@ -55,8 +62,179 @@ namespace dealvem
     return std::string(settings.type == Type::cg_amg_constraints ? "CG + ML AMG" : "Amesos KLU (direct)") +
            " on the stiffness condensed by the active contact constraints, distributed over " +
            std::to_string(np) + " MPI process" + (np > 1 ? "es" : "") +
-           " (one slave DoF per constraint, multipliers from the residual)";
+           " (one slave DoF per constraint, multipliers from the residual" +
+           std::string(used_stick_preconditioner ? "; stick springs preconditioned by tying them" : "") + ")";
   }
+
+
+
+  namespace
+  {
+    /**
+     * The two-subspace preconditioner of the stick penalty (see
+     * SaddlePointSolver::set_stick_directions()) on the distributed path:
+     * M^{-1} r = Z AMG(Z^T K Z) Z^T r + sum_s e_s r_s / K_ss. The tie lines
+     * Z are few (one per active pair at most) and known on every process;
+     * Z^T and Z exchange the values of their slaves and masters by one
+     * small reduction each. Z^T K Z is assembled from the cells with the
+     * ties as further constraints (the springs vanish on tied functions).
+     */
+    class DistributedStickPreconditioner
+    {
+    public:
+      DistributedStickPreconditioner(const dealii::TrilinosWrappers::SparseMatrix                      &K,
+                                     const dealii::AffineConstraints<double>                           &all,
+                                     const dealii::AffineConstraints<double>                           &normal_lines,
+                                     const std::vector<std::vector<std::pair<unsigned int, double>>> &stick_rows,
+                                     const std::vector<std::vector<double>>                            &modes,
+                                     const double                                                      length,
+                                     const VEMPartition<2>                                             &partition,
+                                     const ElasticityAssembler<2>                                      &assembler,
+                                     const MPI_Comm                                                    comm)
+        : K(K)
+        , comm(comm)
+      {
+        const unsigned int      n     = K.m();
+        const dealii::IndexSet &owned = partition.locally_owned_dofs();
+        // the spring directions without normal slaves, then the tie lines
+        std::vector<std::vector<std::pair<unsigned int, double>>> rows;
+        for (const auto &r : stick_rows)
+          {
+            std::map<unsigned int, double> row;
+            for (const auto &e : r)
+              if (normal_lines.is_constrained(e.first))
+                {
+                  for (const auto &l : *normal_lines.get_constraint_entries(e.first))
+                    row[l.first] += e.second * l.second;
+                }
+              else
+                row[e.first] += e.second;
+            std::vector<std::pair<unsigned int, double>> reduced;
+            for (const auto &x : row)
+              if (x.second != 0.)
+                reduced.emplace_back(x.first, x.second);
+            if (!reduced.empty())
+              rows.push_back(std::move(reduced));
+          }
+        const unsigned int        m = rows.size();
+        std::vector<unsigned int> row_length(n + m, 1);
+        for (const auto &r : rows)
+          for (const auto &e : r)
+            ++row_length[e.first];
+        for (unsigned int k = 0; k < m; ++k)
+          row_length[n + k] += rows[k].size();
+        dealii::SparsityPattern pattern(n + m, n + m, row_length);
+        for (unsigned int k = 0; k < m; ++k)
+          for (const auto &e : rows[k])
+            {
+              pattern.add(n + k, e.first);
+              pattern.add(e.first, n + k);
+            }
+        pattern.compress();
+        dealii::SparseMatrix<double> T(pattern);
+        for (unsigned int k = 0; k < m; ++k)
+          for (const auto &e : rows[k])
+            {
+              T.set(n + k, e.first, e.second);
+              T.set(e.first, n + k, e.second);
+            }
+        ContactConstraints ties;
+        ties.reinit(T, n, dealii::Vector<double>(n + m), length, 1e-10, &all);
+        std::set<unsigned int> master_set;
+        for (const auto &line : ties.get_constraints().get_lines())
+          {
+            lines.emplace_back(line.index, line.entries);
+            for (const auto &e : line.entries)
+              master_set.insert(e.first);
+          }
+        masters.assign(master_set.begin(), master_set.end());
+        for (unsigned int k = 0; k < masters.size(); ++k)
+          master_index[masters[k]] = k;
+
+        // Z^T K Z from the cells, with the ties as further constraints
+        dealii::AffineConstraints<double> tied;
+        for (const auto *c : {&all, &ties.get_constraints()})
+          for (const auto &line : c->get_lines())
+            {
+              tied.add_line(line.index);
+              tied.add_entries(line.index, line.entries);
+              tied.set_inhomogeneity(line.index, line.inhomogeneity);
+            }
+        tied.close();
+        const dealii::IndexSet         relevant = partition.locally_relevant_dofs(tied);
+        dealii::DynamicSparsityPattern dsp(relevant);
+        partition.make_sparsity_pattern(dsp, tied);
+        dealii::SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+        K_tied.reinit(owned, owned, dsp, comm);
+        dealii::TrilinosWrappers::MPI::Vector unused(owned, comm);
+        assembler.assemble(tied, partition.locally_owned_cells(), K_tied, unused);
+        std::vector<std::vector<double>> local(modes.size());
+        for (unsigned int k = 0; k < modes.size(); ++k)
+          for (const auto i : owned)
+            local[k].push_back(modes[k][i]);
+        Teuchos::ParameterList list;
+        internal::set_ml_parameters(&list, local, owned.n_elements(), null_space);
+        amg.initialize(K_tied.trilinos_matrix(), list);
+        w.reinit(owned, comm);
+        v.reinit(owned, comm);
+      }
+
+      void
+      vmult(dealii::TrilinosWrappers::MPI::Vector &dst, const dealii::TrilinosWrappers::MPI::Vector &src) const
+      {
+        // (local arrays only: element access to Trilinos vectors would need
+        // a compress() whose mode every process must agree on)
+        const dealii::IndexSet &owned = src.locally_owned_elements();
+        const auto local = [&](const unsigned int i) { return owned.index_within_set(i); };
+        const double *s  = src.begin();
+        // Z^T: the slaves' entries go to their masters
+        std::vector<double> slave_values(lines.size(), 0.);
+        for (unsigned int k = 0; k < lines.size(); ++k)
+          if (owned.is_element(lines[k].first))
+            slave_values[k] = s[local(lines[k].first)];
+        dealii::Utilities::MPI::sum(slave_values, comm, slave_values);
+        w        = src;
+        double *wp = w.begin();
+        for (unsigned int k = 0; k < lines.size(); ++k)
+          {
+            for (const auto &e : lines[k].second)
+              if (owned.is_element(e.first))
+                wp[local(e.first)] += e.second * slave_values[k];
+            if (owned.is_element(lines[k].first))
+              wp[local(lines[k].first)] = 0.;
+          }
+        amg.vmult(v, w);
+        // Z: the slaves from their masters, plus the diagonal correction
+        const double       *vp = v.begin();
+        std::vector<double> master_values(masters.size(), 0.);
+        for (unsigned int k = 0; k < masters.size(); ++k)
+          if (owned.is_element(masters[k]))
+            master_values[k] = vp[local(masters[k])];
+        dealii::Utilities::MPI::sum(master_values, comm, master_values);
+        dst        = v;
+        double *dp = dst.begin();
+        for (const auto &line : lines)
+          if (owned.is_element(line.first))
+            {
+              double value = 0;
+              for (const auto &e : line.second)
+                value += e.second * master_values[master_index.at(e.first)];
+              dp[local(line.first)] = value + s[local(line.first)] / K.diag_element(line.first);
+            }
+      }
+
+    private:
+      const dealii::TrilinosWrappers::SparseMatrix                                  &K;
+      MPI_Comm                                                                       comm;
+      std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>> lines;
+      std::vector<unsigned int>                                                      masters;
+      std::map<unsigned int, unsigned int>                                           master_index;
+      dealii::TrilinosWrappers::SparseMatrix                                         K_tied;
+      std::vector<double>                                                            null_space;
+      dealii::TrilinosWrappers::PreconditionAMG                                      amg;
+      mutable dealii::TrilinosWrappers::MPI::Vector                                  w, v;
+    };
+  } // namespace
 
 
 
@@ -190,11 +368,37 @@ namespace dealvem
     linear.type = (settings.type == Type::cg_amg_constraints ? LinearSolver::Type::cg_amg : LinearSolver::Type::klu);
     linear.relative_tolerance = settings.relative_tolerance;
     linear.max_iterations     = settings.max_iterations;
-    ParallelLinearSolver solver(linear);
-    if (linear.type == LinearSolver::Type::cg_amg)
-      solver.set_near_null_space(modes, owned);
-    solver.solve(K, u, f);
-    iterations = solver.last_iterations();
+    used_stick_preconditioner = false;
+    if (!stick_rows.empty() && settings.type == Type::cg_amg_constraints)
+      {
+        // stick by penalty: CG with the two-subspace preconditioner
+        const DistributedStickPreconditioner preconditioner(K, all, contact.get_constraints(), stick_rows, modes,
+                                                            length, partition, *assembler, comm);
+        dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * f.l2_norm());
+        dealii::SolverCG<dealii::TrilinosWrappers::MPI::Vector> cg(control);
+        try
+          {
+            cg.solve(K, u, f, preconditioner);
+          }
+        catch (const dealii::SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false, dealii::ExcMessage("CG-AMG constraints (stick penalty) did not converge: residual " +
+                                                  std::to_string(e.last_residual) + " after " +
+                                                  std::to_string(e.last_step) + " iterations (target " +
+                                                  std::to_string(control.tolerance()) + ")."));
+          }
+        iterations                = control.last_step();
+        used_stick_preconditioner = true;
+      }
+    else
+      {
+        ParallelLinearSolver solver(linear);
+        if (linear.type == LinearSolver::Type::cg_amg)
+          solver.set_near_null_space(modes, owned);
+        solver.solve(K, u, f);
+        iterations = solver.last_iterations();
+      }
+    stick_rows.clear();
 
     // 4. the displacements on every process, then the multipliers
     dealii::Vector<double> mine(n), full(n);

@@ -350,7 +350,8 @@ namespace dealvem
   {
     AssertDimension(A.m(), b.size());
     x.reinit(b.size());
-    n_dropped = 0;
+    n_dropped                 = 0;
+    used_stick_preconditioner = false;
     if (settings.type == Type::cg_amg_constraints)
       {
         // a length scale for the consistency test of redundant constraints:
