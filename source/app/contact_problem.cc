@@ -347,6 +347,9 @@ namespace dealvem
 
     prm.enter_subsection("Solver");
     solver_type = prm.get("Type");
+    // CG-AMG: GMRES with the block preconditioner in one process, the
+    // condensed CG-AMG under mpirun (setup_system())
+    requested_cg_amg = (solver_type == "CG-AMG");
     if (solver_type == "CG-AMG")
       solver_type = "GMRES-AMG";
     solver_tolerance      = prm.get_double("Relative tolerance");
@@ -651,6 +654,8 @@ namespace dealvem
     settings.max_iterations     = solver_max_iterations;
     if (distributed)
       {
+        if (requested_cg_amg)
+          settings.type = SaddlePointSolver::Type::cg_amg_constraints;
         AssertThrow(!contact_settings.is_coulomb(),
                     dealii::ExcMessage("Contact/Tangential = coulomb runs only on the serial path so far (its slip rows "
                                        "are not symmetric constraints, and the distributed contact solve "

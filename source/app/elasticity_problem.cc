@@ -98,7 +98,10 @@ namespace dealvem
                       "an affine constraint on one slave DoF, condenses the stiffness matrix and "
                       "solves it by CG-AMG at one-body cost, multipliers recovered from the "
                       "residual (not with Coulomb friction); one body: GMRES-AMG and CG-AMG "
-                      "constraints mean CG-AMG.");
+                      "constraints mean CG-AMG. Under mpirun with more than one process, contact is "
+                      "always solved as constraints: CG-AMG constraints (CG-AMG also means this) or "
+                      "UMFPACK/KLU (the condensed system factored by Amesos KLU); GMRES-AMG and "
+                      "Coulomb friction are refused.");
     prm.declare_entry("Preconditioner", "automatic", Selection("automatic|AMG|p-multigrid"),
                       "Preconditioner of CG for one body (serial and distributed): automatic (the "
                       "p-multigrid for k = 2, ML AMG for k = 1), AMG (one ML V-cycle on the whole "

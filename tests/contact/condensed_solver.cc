@@ -250,6 +250,15 @@ main(int argc, char **argv)
                            MPI_COMM_WORLD, dealvem::ElasticityProblem::Parallelism::distributed);
     },
     "coulomb runs only on the serial path", "e) Coulomb friction on the distributed path");
+  testing::check_throws(
+    [&] {
+      testing::run_contact(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
+                                      testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), 1, "unilateral",
+                                      "penalty", flat_supports, "10") +
+                             solver_section("GMRES-AMG"),
+                           MPI_COMM_WORLD, dealvem::ElasticityProblem::Parallelism::distributed);
+    },
+    "GMRES-AMG iterates on the whole saddle-point system", "GMRES-AMG is refused on the distributed path");
   // under mpirun: the partition cuts contact constraints (pairs whose two
   // nodes are owned by different processes)
   if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
