@@ -96,50 +96,8 @@ namespace dealvem
       {
         const unsigned int      n     = K.m();
         const dealii::IndexSet &owned = partition.locally_owned_dofs();
-        // the spring directions without normal slaves, then the tie lines
-        std::vector<std::vector<std::pair<unsigned int, double>>> rows;
-        for (const auto &r : stick_rows)
-          {
-            std::map<unsigned int, double> row;
-            for (const auto &e : r)
-              if (normal_lines.is_constrained(e.first))
-                {
-                  for (const auto &l : *normal_lines.get_constraint_entries(e.first))
-                    row[l.first] += e.second * l.second;
-                }
-              else
-                row[e.first] += e.second;
-            std::vector<std::pair<unsigned int, double>> reduced;
-            for (const auto &x : row)
-              if (x.second != 0.)
-                reduced.emplace_back(x.first, x.second);
-            if (!reduced.empty())
-              rows.push_back(std::move(reduced));
-          }
-        const unsigned int        m = rows.size();
-        std::vector<unsigned int> row_length(n + m, 1);
-        for (const auto &r : rows)
-          for (const auto &e : r)
-            ++row_length[e.first];
-        for (unsigned int k = 0; k < m; ++k)
-          row_length[n + k] += rows[k].size();
-        dealii::SparsityPattern pattern(n + m, n + m, row_length);
-        for (unsigned int k = 0; k < m; ++k)
-          for (const auto &e : rows[k])
-            {
-              pattern.add(n + k, e.first);
-              pattern.add(e.first, n + k);
-            }
-        pattern.compress();
-        dealii::SparseMatrix<double> T(pattern);
-        for (unsigned int k = 0; k < m; ++k)
-          for (const auto &e : rows[k])
-            {
-              T.set(n + k, e.first, e.second);
-              T.set(e.first, n + k, e.second);
-            }
-        ContactConstraints ties;
-        ties.reinit(T, n, dealii::Vector<double>(n + m), length, 1e-10, &all);
+        // the tie lines (a slave must be free of all constraints so far)
+        const ContactConstraints ties = ContactConstraints::tie_lines(stick_rows, normal_lines, all, n, length);
         std::set<unsigned int> master_set;
         for (const auto &line : ties.get_constraints().get_lines())
           {

@@ -41,6 +41,64 @@ namespace dealvem
 
 
 
+  ContactConstraints
+  ContactConstraints::tie_lines(const std::vector<std::vector<std::pair<unsigned int, double>>> &stick_rows,
+                            const dealii::AffineConstraints<double>                           &normal_lines,
+                            const dealii::AffineConstraints<double>                           &excluded,
+                            const unsigned int                                                n,
+                            const double                                                      length)
+  {
+    // the spring directions in terms of DoFs that are not normal slaves
+    std::vector<std::vector<std::pair<unsigned int, double>>> rows;
+    for (const auto &r : stick_rows)
+      {
+        std::map<unsigned int, double> row;
+        for (const auto &e : r)
+          if (normal_lines.is_constrained(e.first))
+            {
+              for (const auto &l : *normal_lines.get_constraint_entries(e.first))
+                row[l.first] += e.second * l.second;
+            }
+          else
+            row[e.first] += e.second;
+        std::vector<std::pair<unsigned int, double>> reduced;
+        for (const auto &x : row)
+          if (x.second != 0.)
+            reduced.emplace_back(x.first, x.second);
+        if (!reduced.empty())
+          rows.push_back(std::move(reduced));
+      }
+    // the tie lines: ContactConstraints on a saddle matrix that holds
+    // only the tie rows (zero right-hand side: Z is homogeneous)
+    const unsigned int        m = rows.size();
+    std::vector<unsigned int> row_length(n + m, 1);
+    for (const auto &r : rows)
+      for (const auto &e : r)
+        ++row_length[e.first];
+    for (unsigned int k = 0; k < m; ++k)
+      row_length[n + k] += rows[k].size();
+    dealii::SparsityPattern ties_pattern(n + m, n + m, row_length);
+    for (unsigned int k = 0; k < m; ++k)
+      for (const auto &e : rows[k])
+        {
+          ties_pattern.add(n + k, e.first);
+          ties_pattern.add(e.first, n + k);
+        }
+    ties_pattern.compress();
+    dealii::SparseMatrix<double> T(ties_pattern);
+    for (unsigned int k = 0; k < m; ++k)
+      for (const auto &e : rows[k])
+        {
+          T.set(n + k, e.first, e.second);
+          T.set(e.first, n + k, e.second);
+        }
+    ContactConstraints ties;
+    ties.reinit(T, n, dealii::Vector<double>(n + m), length, 1e-10, &excluded);
+    return ties;
+  }
+
+
+
   void
   ContactConstraints::reinit(const dealii::SparseMatrix<double> &A,
                              const unsigned int                  n_displacements,

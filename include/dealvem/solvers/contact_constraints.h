@@ -140,6 +140,22 @@ namespace dealvem
       return slaves;
     }
 
+    /**
+     * The homogeneous lines that tie the two ends of every stick spring
+     * (rows over displacement DoFs, ContactAssembler::stick_penalty_rows()):
+     * the rows are first written without the slaves of @p normal_lines
+     * (the active normal constraints, closed), then turned into slave lines
+     * as reinit() does, a DoF being eligible as a slave when @p excluded
+     * does not constrain it. Used by the stick-penalty preconditioners of
+     * the condensed contact solvers (serial and distributed).
+     */
+    static ContactConstraints
+    tie_lines(const std::vector<std::vector<std::pair<unsigned int, double>>> &stick_rows,
+              const dealii::AffineConstraints<double>                           &normal_lines,
+              const dealii::AffineConstraints<double>                           &excluded,
+              const unsigned int                                                n_displacements,
+              const double                                                      length_scale);
+
     /// The multiplier rows without displacement entries and their values
     /// (g_r / D_rr; zero for the contact assembler's inactive pairs).
     const std::vector<std::pair<unsigned int, double>> &
