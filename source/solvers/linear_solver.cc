@@ -260,10 +260,7 @@ namespace dealvem
   LinearSolver::set_coarse_space(const dealii::SparseMatrix<double>     &P,
                                  const std::vector<std::vector<double>> &m)
   {
-    for (const auto &mode : m)
-      AssertThrow(mode.size() == P.n(), dealii::ExcMessage("set_coarse_space: a coarse mode has " +
-                                                           std::to_string(mode.size()) + " entries, P has " +
-                                                           std::to_string(P.n()) + " columns."));
+    internal::check_coarse_space(P, m);
     prolongation = &P;
     coarse_modes = m;
   }

@@ -41,6 +41,16 @@ namespace dealvem
       v.reinit(owned, comm);
     }
 
+    /// Throw unless every coarse mode has one entry per column of @p P.
+    inline void
+    check_coarse_space(const dealii::SparseMatrix<double> &P, const std::vector<std::vector<double>> &modes)
+    {
+      for (const auto &mode : modes)
+        AssertThrow(mode.size() == P.n(), dealii::ExcMessage("set_coarse_space: a coarse mode has " +
+                                                             std::to_string(mode.size()) + " entries, P has " +
+                                                             std::to_string(P.n()) + " columns."));
+    }
+
     /// A copy of the prolongation @p P (into @p Pc, on P's pattern) whose
     /// coarse functions vanish at the fine DoFs flagged @p decoupled
     /// (constrained: their rows carry no coupling), except where such a DoF
