@@ -230,21 +230,22 @@ main(int argc, char **argv)
                      ") at most 1.3 times those with stick by multipliers (" +
                      std::to_string(multipliers.linear_iterations) + ")");
   }
-  // e) Coulomb friction
+  // e) Coulomb friction; the solvers the distributed path refuses
+  const auto small = [&](const std::string &tangential) {
+    return two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
+                      testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), 1, "unilateral", tangential,
+                      flat_supports, "10");
+  };
   testing::check_throws(
     [&] {
-      testing::run_contact(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
-                                      testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), 1, "unilateral",
-                                      "coulomb", flat_supports, "10") +
+      testing::run_contact(small("coulomb") +
                            "subsection Contact\n  set Friction coefficient = 0.3\nend\n" +
                            solver_section("CG-AMG constraints"));
     },
     "Coulomb friction cannot use the 'CG-AMG constraints' contact solver", "e) Coulomb friction is refused");
   testing::check_throws(
     [&] {
-      testing::run_contact(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
-                                      testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), 1, "unilateral",
-                                      "coulomb", flat_supports, "10") +
+      testing::run_contact(small("coulomb") +
                              "subsection Contact\n  set Friction coefficient = 0.3\nend\n" +
                              solver_section("UMFPACK"),
                            MPI_COMM_WORLD, dealvem::ElasticityProblem::Parallelism::distributed);
@@ -252,9 +253,7 @@ main(int argc, char **argv)
     "coulomb runs only on the serial path", "e) Coulomb friction on the distributed path");
   testing::check_throws(
     [&] {
-      testing::run_contact(two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
-                                      testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), 1, "unilateral",
-                                      "penalty", flat_supports, "10") +
+      testing::run_contact(small("penalty") +
                              solver_section("GMRES-AMG"),
                            MPI_COMM_WORLD, dealvem::ElasticityProblem::Parallelism::distributed);
     },
