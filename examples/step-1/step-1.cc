@@ -213,11 +213,14 @@ namespace Step1
   // is integrated exactly by the cell's quadrature rule (degree $2k$).
   // What step-8 does not have is the stabilization: $K_c$ vanishes on the
   // part $(I-\Pi)$ of each function that the projection cannot see, and
-  // the term $\gamma\tau(I-\Pi)^T(I-\Pi)$ restores coercivity there, with
-  // $\tau$ the mean diagonal entry of $K_c$ so that it scales like $K_c$.
-  // The space hands out the material-free form $S=(I-\Pi)^T(I-\Pi)$;
-  // ElasticityOperator::stabilization_scaling() is the one place the rule
-  // for $\tau$ is written. (ElasticityOperator computes the same
+  // a term $\gamma(I-\Pi)^T W (I-\Pi)$ restores coercivity there, with a
+  // diagonal weight $W$ that scales like $K_c$: for k = 1 the mean diagonal
+  // entry $\tau$ of $K_c$ for every degree of freedom, for k = 2 each
+  // degree of freedom's own $(K_c)_{ii}/4$ (bounded below by $10^{-3}\tau$),
+  // which matters where node insertion has made edges short (see
+  // ElasticityOperator). ElasticityOperator::add_stabilization() is the one
+  // place the rules are written; it uses the space's projector onto the
+  // degrees of freedom $\Pi = D\Pi_*$. (ElasticityOperator computes the same
   // $K_c = \Pi_*^T(\lambda T+2\mu E)\Pi_*$ from the space's Gram matrices
   // without quadrature; ElasticityAssembler uses it. tests/vem/vem_values
   // checks that the two agree to round-off.)
@@ -248,8 +251,7 @@ namespace Step1
                                     2 * mu * (vem_values.shape_symmetric_gradient(i, q) *
                                               vem_values.shape_symmetric_gradient(j, q))) *
                                    vem_values.JxW(q);
-        const double tau = ElasticityOperator<2>::stabilization_scaling(cell_matrix, gamma);
-        cell_matrix.add(tau, vem_values.get_element().get_stabilization_form());
+        ElasticityOperator<2>::add_stabilization(vem_values.get_element(), cell_matrix, gamma);
 
         for (unsigned int e = 0; e < vem_values.n_edges(); ++e)
           if (vem_values.edge_boundary_id(e) == 1)

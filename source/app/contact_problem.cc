@@ -250,6 +250,9 @@ namespace dealvem
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Order");
     gamma  = prm.get_double("Stabilization factor");
+    stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
+                     prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
+                                                              Stabilization::automatic);
     prm.leave_subsection();
     InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
     bc.parse_parameters(prm);
@@ -700,7 +703,7 @@ namespace dealvem
     d.constraints.clear();
     bc.apply_constraints(d.dof_handler, d.constraints);
     d.constraints.close();
-    d.assembler = std::make_unique<ElasticityAssembler<2>>(d.dof_handler, d.materials, gamma);
+    d.assembler = std::make_unique<ElasticityAssembler<2>>(d.dof_handler, d.materials, gamma, stabilization);
     ElasticityAssembler<2> &assembler = *d.assembler;
     bc.add_loads(assembler);
     // the first n unknowns of the saddle-point system are the displacements
@@ -846,9 +849,15 @@ namespace dealvem
               force_t[j] = tangential_force[offset + j];
               closed[j]  = as.active[offset + j];
             }
-          const auto p = ContactPressure::recover(itf, force, closed);
+          // a fit of degree k: linear for k = 1, where it filters the
+          // node-by-node kink pattern of the raw forces; quadratic for k = 2,
+          // whose raw forces carry no such pattern (diagonal stabilization)
+          // and where a linear fit over the patch misses the curvature of
+          // the pressure (Hertz, level 0: 1.20 % against 0.47 % of p0)
+          const unsigned int fit = itf.degree;
+          const auto p = ContactPressure::recover(itf, force, closed, 3, fit);
           recovered.insert(recovered.end(), p.begin(), p.end());
-          const auto q = ContactPressure::recover(itf, force_t, closed);
+          const auto q = ContactPressure::recover(itf, force_t, closed, 3, fit);
           recovered_shear.insert(recovered_shear.end(), q.begin(), q.end());
           offset += itf.pairs.size();
         }
@@ -1091,19 +1100,37 @@ namespace dealvem
             if (r.unpaired.size() > 5)
               std::cout << "    ... (" << r.unpaired.size() - 5 << " more)" << std::endl;
           }
-        if (!r.unresolved_gaps.empty())
+        for (const bool closed : {false, true})
           {
-            const auto worst = std::max_element(r.unresolved_gaps.begin(), r.unresolved_gaps.end(),
-                                                [](const auto &a, const auto &b) {
-                                                  return std::abs(a.second) < std::abs(b.second);
-                                                });
-            std::cout << "  warning: interface " << i << " keeps " << r.unresolved_gaps.size()
-                      << " gap(s) that may be discretisation gaps of a curve whose curvature changes sign "
-                         "between too few vertices (largest "
-                      << worst->second << " at (" << worst->first[0] << ", " << worst->first[1]
-                      << ")). If the bodies touch along one curve, refine the interface meshes there; if "
-                         "the gaps are real, ignore this."
-                      << std::endl;
+            const auto &list = closed ? r.closed_unresolved_gaps : r.unresolved_gaps;
+            if (list.empty())
+              continue;
+            const auto worst = std::max_element(list.begin(), list.end(), [](const auto &a, const auto &b) {
+              return std::abs(a.gap) < std::abs(b.gap);
+            });
+            double deviation = 0;
+            for (const auto &g : list)
+              deviation = std::max(deviation, g.chord_deviation);
+            if (!closed)
+              std::cout << "  warning: interface " << i << " has real gaps or overlaps (up to " << r.max_kept_gap
+                        << ") and keeps them all as measured, but at " << list.size()
+                        << " pair(s) the gap (largest " << worst->gap << " at (" << worst->location[0] << ", "
+                        << worst->location[1] << ")) is no larger than the chord deviation of the meshes there (up to "
+                        << deviation
+                        << "): there it cannot be told from a discretisation gap. If the two sides are meant to "
+                           "touch along one curve there, refine the interface meshes (the chord deviation falls "
+                           "with h^2); to keep every gap without this check, set Close discretisation gaps = false."
+                        << std::endl;
+            else
+              std::cout << "  warning: interface " << i << " has no real gap, so its sides are taken to sample one "
+                        << "curve and every gap is closed, but " << list.size()
+                        << " gap(s) next to an inflection exceed the curvature band there (largest " << worst->gap
+                        << " at (" << worst->location[0] << ", " << worst->location[1]
+                        << "), chord deviation up to " << deviation
+                        << "): the curve changes its curvature between too few vertices. If the sides are meant "
+                           "to stand apart there, refine the interface meshes, or set Close discretisation gaps = "
+                           "false to keep every gap."
+                        << std::endl;
           }
       }
     for (const auto &d : contact.get_dropped_constraints())
@@ -1260,7 +1287,7 @@ namespace dealvem
       for (const auto &r : results.insertion_reports)
         {
           n_unpaired += r.unpaired.size();
-          n_unresolved += r.unresolved_gaps.size();
+          n_unresolved += r.unresolved_gaps.size() + r.closed_unresolved_gaps.size();
           n_closed += r.n_closed_gaps;
           n_merged += r.n_merged;
           max_closed = std::max(max_closed, r.max_closed_gap);

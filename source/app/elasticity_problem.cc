@@ -70,9 +70,14 @@ namespace dealvem
 
     prm.enter_subsection("Discretization");
     prm.declare_entry("Order", "2", Integer(1, 2), "Order k of the virtual elements (1 or 2).");
+    prm.declare_entry("Stabilization", "automatic", Selection("automatic|diagonal|trace"),
+                      "Stabilization of the element stiffness: 'automatic' (trace for k = 1, diagonal "
+                      "for k = 2), 'diagonal' (the D-recipe, "
+                      "gamma c_k (I-Pi)^T diag(max(K_c,ii, 1e-3 tau)) (I-Pi), c_1 = 1, c_2 = 1/4: every "
+                      "degree of freedom stabilized like its own consistency stiffness) or 'trace' "
+                      "(dofi-dofi, gamma tau (I-Pi)^T (I-Pi), tau = trace(K_c)/n_dofs).");
     prm.declare_entry("Stabilization factor", "1.0", Double(1e-8),
-                      "Factor gamma of the dofi-dofi stabilization gamma*tau*(I-Pi)^T(I-Pi), "
-                      "tau = trace(consistency matrix)/n_dofs; 1e-6 <= gamma <= 1e6.");
+                      "Factor gamma of the stabilization; 1e-6 <= gamma <= 1e6.");
     prm.leave_subsection();
 
     BoundaryConditionParameters::declare_parameters(prm);
@@ -156,6 +161,9 @@ namespace dealvem
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Order");
     gamma  = prm.get_double("Stabilization factor");
+    stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
+                     prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
+                                                              Stabilization::automatic);
     prm.leave_subsection();
     InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
 
@@ -258,7 +266,7 @@ namespace dealvem
   ElasticityProblem::assemble_system()
   {
     dealii::TimerOutput::Scope t(*timer, "assembly");
-    ElasticityAssembler<2>     assembler(dof_handler, materials, gamma);
+    ElasticityAssembler<2>     assembler(dof_handler, materials, gamma, stabilization);
     bc.add_loads(assembler);
     assembler.assemble(constraints, system_matrix, system_rhs);
   }
@@ -329,7 +337,7 @@ namespace dealvem
   ElasticityProblem::assemble_distributed_system()
   {
     dealii::TimerOutput::Scope t(*timer, "assembly");
-    ElasticityAssembler<2>     assembler(dof_handler, materials, gamma);
+    ElasticityAssembler<2>     assembler(dof_handler, materials, gamma, stabilization);
     bc.add_loads(assembler);
     assembler.assemble(constraints, partition.locally_owned_cells(), distributed_matrix, distributed_rhs);
   }
@@ -539,6 +547,10 @@ namespace dealvem
     json.set("material.model", ElasticMaterial::model_name(model));
     json.set("discretization.order", double(degree));
     json.set("discretization.gamma", gamma);
+    json.set("discretization.stabilization",
+             std::string(stabilization == Stabilization::trace || (stabilization == Stabilization::automatic && degree == 1) ?
+                           "trace" :
+                           "diagonal"));
     json.set("solver.type", solver_type);
 
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)

@@ -124,20 +124,23 @@ namespace dealvem
         {
           if (open(i) || at[i].empty())
             continue;
-          // the patch: segments reached from i in at most patch_segments
-          // steps through closed vertex pairs, with the arc length of their
-          // start relative to node i
+          // the patch: the segments that contain node i, and those reached
+          // from them in at most patch_segments steps through closed vertex
+          // pairs, with the arc length of their start relative to node i.
+          // It grows from all segments at i at once, so that it reaches
+          // equally far to both sides (a mirror-symmetric problem gives a
+          // mirror-symmetric recovery).
           std::map<unsigned int, double> seg_start; // segment -> s at its 'first' end
           {
-            const auto &s0 = interface.segments[at[i][0]];
-            // position of node i inside its first segment
-            double s_i = 0;
-            if (i == s0.second)
-              s_i = s0.length;
-            else if (i == s0.midpoint)
-              s_i = 0.5 * s0.length;
-            seg_start[at[i][0]] = -s_i;
-            std::vector<unsigned int> frontier{at[i][0]};
+            std::vector<unsigned int> frontier;
+            for (const unsigned int s : at[i])
+              {
+                const auto &seg = interface.segments[s];
+                // position of node i inside this segment
+                const double s_i  = (i == seg.second ? seg.length : (i == seg.midpoint ? 0.5 * seg.length : 0.));
+                seg_start[s]      = -s_i;
+                frontier.push_back(s);
+              }
             for (unsigned int step = 0; step < patch_segments; ++step)
               {
                 std::vector<unsigned int> next;

@@ -141,6 +141,89 @@ namespace dealvem
       return 2 * cross(d1, d2) / (l1 * l2 * l3);
     }
 
+    /**
+     * The circle through the ends a, b of a chord with signed curvature
+     * @p kappa (convex > 0 for the side whose outward chord normal is
+     * edge_normal(a, b)): the curve a side is taken to follow between two
+     * vertices where it approximates a smooth curve.
+     */
+    struct Arc
+    {
+      bool   valid = false;
+      Point  centre;
+      double radius = 0;
+    };
+
+    Arc
+    arc_of(const Point &a, const Point &b, const double kappa)
+    {
+      Arc          arc;
+      const double L = a.distance(b);
+      if (kappa == 0 || !std::isfinite(kappa) || std::abs(kappa) * L >= 2)
+        return arc;
+      arc.radius     = 1. / std::abs(kappa);
+      const double s = std::sqrt(arc.radius * arc.radius - 0.25 * L * L);
+      arc.centre     = 0.5 * (a + b) - (kappa > 0 ? s : -s) * edge_normal(a, b);
+      arc.valid      = true;
+      return arc;
+    }
+
+    /// Chord parameter of the foot of @p x on the chord a -> b.
+    double
+    chord_parameter(const Point &a, const Point &b, const Point &x)
+    {
+      return ((x - a) * (b - a)) / a.distance_square(b);
+    }
+
+    /**
+     * The point of the arc of the chord a -> b (curvature @p kappa) nearest
+     * to @p p: the foot of p along the arc's normal. Returns false (and
+     * leaves @p x) if there is no arc or the foot falls off the chord's
+     * span.
+     */
+    bool
+    closest_on_arc(const Point &a, const Point &b, const double kappa, const Point &p, Point &x)
+    {
+      const Arc arc = arc_of(a, b, kappa);
+      if (!arc.valid || p.distance(arc.centre) == 0)
+        return false;
+      const Point  y = arc.centre + (arc.radius / p.distance(arc.centre)) * (p - arc.centre);
+      const double t = chord_parameter(a, b, y);
+      if (!(t > 0 && t < 1))
+        return false;
+      x = y;
+      return true;
+    }
+
+    /**
+     * The point where the line through @p p along @p direction meets the
+     * arc of the chord a -> b (curvature @p kappa), the one nearer to p.
+     * Returns false if there is no arc, the line misses it, or the hit falls
+     * off the chord's span.
+     */
+    bool
+    cast_on_arc(const Point &a, const Point &b, const double kappa, const Point &p, const Vector &direction,
+                Point &x)
+    {
+      const Arc arc = arc_of(a, b, kappa);
+      if (!arc.valid)
+        return false;
+      const Vector d    = direction / direction.norm();
+      const Vector pc   = p - arc.centre;
+      const double half = d * pc;
+      const double disc = half * half - (pc * pc - arc.radius * arc.radius);
+      if (disc < 0)
+        return false;
+      const double root = std::sqrt(disc);
+      const double tau1 = -half - root, tau2 = -half + root;
+      const Point  y    = p + (std::abs(tau1) < std::abs(tau2) ? tau1 : tau2) * d;
+      const double t    = chord_parameter(a, b, y);
+      if (!(t > 0 && t < 1))
+        return false;
+      x = y;
+      return true;
+    }
+
     Side
     collect_side(const Mesh &mesh, const dealii::types::boundary_id id)
     {
@@ -281,6 +364,31 @@ namespace dealvem
           const double ka = side.kappa[side.edges[i][0]], kb = side.kappa[side.edges[i][1]];
           side.edge_kappa[i] = (ka * kb > 0 ? (std::abs(ka) < std::abs(kb) ? ka : kb) : 0.);
         }
+
+      // where a side follows a smooth curve, the vertex normal is the normal
+      // of that curve (the circles of the edges at the vertex, averaged),
+      // not the average of the chord normals: at an end of the side, or
+      // between chords of different lengths, the two differ by up to half
+      // the chord's turning angle
+      for (auto &n : side.normal)
+        n.second = Vector();
+      for (unsigned int i = 0; i < side.edges.size(); ++i)
+        {
+          const Point &a = mesh.vertex(side.edges[i][0]), &b = mesh.vertex(side.edges[i][1]);
+          const Vector n = edge_normal(a, b);
+          const double x = 0.5 * a.distance(b) * side.edge_kappa[i];
+          const double turn = (std::abs(x) < 1 ? std::asin(x) : 0.);
+          for (unsigned int end = 0; end < 2; ++end) // at a: turned back, at b: on
+            {
+              const double phi = (end == 0 ? -turn : turn);
+              Vector       r;
+              r[0] = n[0] * std::cos(phi) - n[1] * std::sin(phi);
+              r[1] = n[0] * std::sin(phi) + n[1] * std::cos(phi);
+              side.normal[side.edges[i][end]] += r;
+            }
+        }
+      for (auto &n : side.normal)
+        n.second /= n.second.norm();
       return side;
     }
 
@@ -670,10 +778,21 @@ namespace dealvem
               // split_edge keeps e for (previous, nv) and appends (nv, b)
               e = mesh.n_edges() - 1;
               // on a smooth curve, the new vertex goes onto the circle of the
-              // side's curvature instead of the chord
-              const double deviation = 0.5 * t * (1 - t) * L * L * kappa;
-              if (deviation != 0)
-                moves.emplace_back(nv, mesh.vertex(nv) + deviation * edge_normal(xa, xb));
+              // side's curvature instead of the chord, at the point the
+              // partner faces along the master normals: the closest point of
+              // the circle to a slave vertex, the hit of the master vertex's
+              // normal line. So the pair's gap is the normal distance of the
+              // two curves, whether they coincide, overlap or stand apart.
+              if (kappa != 0)
+                {
+                  Point      target;
+                  const bool on_arc = onto_master ?
+                                        closest_on_arc(xa, xb, kappa, mesh.vertex(v), target) :
+                                        cast_on_arc(xa, xb, kappa, mesh.vertex(v), from.normal.at(v), target);
+                  if (!on_arc) // (a degenerate arc: the chord's own offset rule)
+                    target = mesh.vertex(nv) + 0.5 * t * (1 - t) * L * L * kappa * edge_normal(xa, xb);
+                  moves.emplace_back(nv, target);
+                }
               partner_onto[nv] = v;
               partner_from[v]  = nv;
               inserted.push_back({nv, v, onto_master, entry.first, xa + t * (xb - xa), edge_normal(xa, xb),
@@ -688,162 +807,254 @@ namespace dealvem
     split_side(master, slave, on_master, master_partner, slave_partner, true);
     split_side(slave, master, on_slave, slave_partner, master_partner, false);
 
-    // 4. close discretisation gaps. A gap at an inserted vertex is one if
-    // the partner lies where the receiving chord's curve would put it with
-    // a curvature that both sides show around the pair (see the class
-    // documentation); everything else is a real gap (or penetration).
-    if (settings.close_discretisation_gaps)
-      {
-        // curvatures (convex > 0 for @p side) of the vertices in @p vs and
-        // their neighbours on @p side, as an interval widened by the
-        // curvature factor; sign -1 turns them into the other side's view
-        const auto curvature_range = [&](const Side &side, const std::vector<unsigned int> &vs, const double sign) {
-          std::vector<unsigned int> around;
-          for (const unsigned int v : vs)
-            {
-              around.push_back(v);
-              if (const auto in = side.incoming.find(v); in != side.incoming.end())
-                around.push_back(side.edges[in->second][0]);
-              if (const auto out = side.outgoing.find(v); out != side.outgoing.end())
-                around.push_back(side.edges[out->second][1]);
-            }
-          double lo = 0, hi = 0;
-          bool   first = true;
-          for (const unsigned int v : around)
-            if (const auto k = side.kappa_gap.find(v); k != side.kappa_gap.end())
-              {
-                lo    = first ? sign * k->second : std::min(lo, sign * k->second);
-                hi    = first ? sign * k->second : std::max(hi, sign * k->second);
-                first = false;
-              }
-          // the interval reaches 0 (the curvature of a smooth curve may
-          // fall towards an inflection between samples); beyond the end of a
-          // side nothing is known, so next to one either sign is possible
-          // up to the largest curvature seen
-          // no interior vertex nearby: the side is straight there
-          // (an inflection nearby is sampled like an end: the extremes of
-          // either sign may lie between the samples)
-          if ((lo < 0 && hi > 0) ||
-              std::any_of(around.begin(), around.end(), [&](const unsigned int v) { return side.is_end(v); }))
-            {
-              const double k = std::max(std::abs(lo), std::abs(hi));
-              lo = -k, hi = k;
-            }
-          const double f = settings.curvature_factor;
-          return std::make_pair(f * std::min(lo, 0.), f * std::max(hi, 0.));
-        };
-        std::map<unsigned int, const Inserted *> by_vertex;
-        for (const auto &ins : inserted)
-          by_vertex[ins.vertex] = &ins;
-        const Side master_now = collect_side(mesh, master_id);
-        for (const auto &mp : master_partner)
+    // 4. gaps, in three passes (see the class documentation):
+    //  (a) every pair is judged on the geometry the splits left: its gap is
+    //      zero (round-off of the coordinates), a discretisation gap (the
+    //      partner lies off the receiving chord by what a curvature that
+    //      both sides show around the pair gives), unresolved (next to an
+    //      inflection, within twice the chord deviation) or real;
+    //  (b) two merged original vertices are put opposite each other along
+    //      the master normal, the slave vertex moving along its own curve
+    //      (the master vertex if the slave vertex ends its side): a merge
+    //      never moves a node across a gap;
+    //  (c) one decision for the whole interface: without a real gap both
+    //      sides sample one curve and every gap is closed (the partners
+    //      coincide); with a real gap somewhere only the zero gaps are
+    //      closed, every other gap is kept as measured, and the gaps that
+    //      could have been discretisation gaps are reported with their
+    //      chord deviation. So a smooth interface never mixes closed and
+    //      kept gaps above round-off.
+    std::map<unsigned int, const Inserted *> by_vertex;
+    for (const auto &ins : inserted)
+      by_vertex[ins.vertex] = &ins;
+
+    // curvatures (convex > 0 for @p side) of the vertices in @p vs and their
+    // neighbours on @p side; sign -1 turns them into the other side's view.
+    // Next to an inflection the extremes of either sign may lie between the
+    // samples: the range is made symmetric. No curvature known (a straight
+    // side, corners): {0}.
+    const auto curvature_range = [&](const Side &side, const std::vector<unsigned int> &vs, const double sign) {
+      std::vector<unsigned int> around;
+      for (const unsigned int v : vs)
+        {
+          around.push_back(v);
+          if (const auto in = side.incoming.find(v); in != side.incoming.end())
+            around.push_back(side.edges[in->second][0]);
+          if (const auto out = side.outgoing.find(v); out != side.outgoing.end())
+            around.push_back(side.edges[out->second][1]);
+        }
+      double lo = 0, hi = 0;
+      bool   first = true;
+      for (const unsigned int v : around)
+        if (const auto k = side.kappa_gap.find(v); k != side.kappa_gap.end())
           {
-            const unsigned int m = mp.first, s = mp.second;
-            const auto         im = by_vertex.find(m), is = by_vertex.find(s);
-            const Inserted    *ins = (im != by_vertex.end() ? im->second : (is != by_vertex.end() ? is->second : nullptr));
-            const Point        xm = mesh.vertex(m), xs = mesh.vertex(s);
-            const double       g0 = (xs - xm) * master_now.normal.at(m);
-            const double       tol =
-              settings.coordinate_precision * (std::abs(xs[0]) + std::abs(xs[1])) +
-              1e-12 * std::min(master_now.h.at(m), slave.h.count(s) ? slave.h.at(s) : master_now.h.at(m));
-            // the partner's offset from a chord of the receiving side,
-            // against the curvatures both sides show around the pair: on one
-            // curve the offset is t(1 - t) L^2 kappa / 2 for a kappa between
-            // the chord's ends
-            enum class Verdict
-            {
-              real,
-              discretisation,
-              unresolved
-            };
-            const auto same_curve = [&](const Side &onto, const unsigned int edge, const Point &chord,
-                                        const Vector &normal, const double q, const Side &from,
-                                        const unsigned int partner) {
-              const auto   r  = curvature_range(onto, {onto.edges[edge][0], onto.edges[edge][1]}, 1.);
-              const auto   p  = curvature_range(from, {partner}, -1.);
-              const double lo = std::min(r.first, p.first), hi = std::max(r.second, p.second);
-              const double delta = (mesh.vertex(partner) - chord) * normal;
-              // q < 0 beyond the chord's ends: the circle lies on the other side
-              if (delta >= std::min(q * lo, q * hi) - tol && delta <= std::max(q * lo, q * hi) + tol)
-                return Verdict::discretisation;
-              // near an inflection, a gap up to twice the largest chord
-              // deviation may still be one of a curve sampled too coarsely
-              const double k = std::max(-lo, hi);
-              if (lo < 0 && hi > 0 && std::abs(delta) <= 2 * std::abs(q) * k)
-                return Verdict::unresolved;
-              return Verdict::real;
-            };
-            Verdict verdict = (std::abs(g0) <= tol ? Verdict::discretisation : Verdict::real);
-            if (verdict == Verdict::real && ins)
-              verdict = ins->on_master ? same_curve(master, ins->edge, ins->chord, ins->normal, ins->q, slave, s) :
-                                         same_curve(slave, ins->edge, ins->chord, ins->normal, ins->q, master, m);
-            else if (verdict == Verdict::real)
-              {
-                // two merged original vertices: the chord is the master
-                // edge at m nearest to the slave vertex along the side (on a
-                // convex vertex the slave vertex may lie beyond both)
-                unsigned int best = invalid;
-                double       best_t = 0, best_out = std::numeric_limits<double>::max();
-                for (const auto *edges : {&master.incoming, &master.outgoing})
-                  if (const auto it = edges->find(m); it != edges->end())
-                    {
-                      const Point &a = mesh.vertex(master.edges[it->second][0]),
-                                  &b = mesh.vertex(master.edges[it->second][1]);
-                      const double t   = ((xs - a) * (b - a)) / a.distance_square(b);
-                      const double out = std::max({-t, t - 1, 0.});
-                      if (out < best_out)
-                        best = it->second, best_t = t, best_out = out;
-                    }
-                if (best != invalid)
-                  {
-                    const Point &a = mesh.vertex(master.edges[best][0]), &b = mesh.vertex(master.edges[best][1]);
-                    verdict = same_curve(master, best, a + best_t * (b - a), edge_normal(a, b),
-                                         0.5 * best_t * (1 - best_t) * a.distance_square(b), slave, s);
-                  }
-              }
-            if (verdict == Verdict::unresolved)
-              report.unresolved_gaps.emplace_back(0.5 * (xm + xs), g0);
-            const bool discretisation_gap = (verdict == Verdict::discretisation);
-            if (!discretisation_gap)
-              {
-                // a real gap: keep it, but put two merged vertices opposite
-                // each other along the master normal (the slave vertex onto
-                // the point of its side that the master normal hits, on
-                // the side's circle where it is curved)
-                if (!ins)
-                  {
-                    const auto align = [&](const Side &side, const Projection &pr, const unsigned int v) {
-                      const Point &a = mesh.vertex(side.edges[pr.edge][0]), &b = mesh.vertex(side.edges[pr.edge][1]);
-                      Point        x = pr.point;
-                      if (pr.t > 0 && pr.t < 1)
-                        x += 0.5 * pr.t * (1 - pr.t) * a.distance_square(b) * side.edge_kappa[pr.edge] *
-                             edge_normal(a, b);
-                      report.max_merge_shift = std::max(report.max_merge_shift, x.distance(mesh.vertex(v)));
-                      mesh.move_vertex(v, x);
-                    };
-                    const auto cm = on_slave.find(m), cs = on_master.find(s);
-                    if (!slave.is_end(s) && cm != on_slave.end() && cm->second.accepted)
-                      align(slave, cm->second.projection, s);
-                    else if (!master.is_end(m) && cs != on_master.end() && cs->second.accepted)
-                      align(master, cs->second.projection, m);
-                  }
-                continue;
-              }
-            // move the new vertex onto the old one; of two old vertices the
-            // slave one, unless only the slave vertex ends its side
-            bool move_master = (im != by_vertex.end());
-            if (!ins)
-              move_master = slave.is_end(s) && !master.is_end(m);
-            if (move_master)
-              mesh.move_vertex(m, xs);
-            else
-              mesh.move_vertex(s, xm);
-            if (!ins)
-              report.max_merge_shift = std::max(report.max_merge_shift, xm.distance(xs));
-            ++report.n_closed_gaps;
-            report.max_closed_gap = std::max(report.max_closed_gap, std::abs(g0));
+            lo    = first ? sign * k->second : std::min(lo, sign * k->second);
+            hi    = first ? sign * k->second : std::max(hi, sign * k->second);
+            first = false;
           }
+      if (lo < 0 && hi > 0)
+        {
+          const double k = std::max(-lo, hi);
+          lo = -k, hi = k;
+        }
+      return std::make_pair(lo, hi);
+    };
+    // the union of two ranges widened by the curvature factor: about 0 if
+    // it contains 0 (the signs stay apart: a flat block under a cylinder
+    // never qualifies), else about its centre without reaching 0 (two
+    // circles of different radii are told apart however close the radii)
+    const auto widened = [&](const std::pair<double, double> &r, const std::pair<double, double> &p) {
+      const double lo = std::min(r.first, p.first), hi = std::max(r.second, p.second);
+      const double f  = settings.curvature_factor;
+      if (lo <= 0 && hi >= 0)
+        return std::make_pair(f * lo, f * hi);
+      const double c = 0.5 * (lo + hi), w = 0.5 * f * (hi - lo);
+      return lo > 0 ? std::make_pair(std::max(c - w, 0.), c + w) : std::make_pair(c - w, std::min(c + w, 0.));
+    };
+
+    enum class Verdict
+    {
+      zero,
+      discretisation,
+      unresolved,
+      real
+    };
+    struct Judged
+    {
+      unsigned int m, s;
+      Verdict      verdict;
+      double       deviation; ///< chord deviation at the pair: q times the largest |kappa|
+    };
+    std::vector<Judged> judged;
+    {
+      const Side master_now = collect_side(mesh, master_id);
+      for (const auto &mp : master_partner)
+        {
+          const unsigned int m = mp.first, s = mp.second;
+          const auto         im = by_vertex.find(m), is = by_vertex.find(s);
+          const Inserted *ins = (im != by_vertex.end() ? im->second : (is != by_vertex.end() ? is->second : nullptr));
+          const Point     xm = mesh.vertex(m), xs = mesh.vertex(s);
+          const double    g0 = (xs - xm) * master_now.normal.at(m);
+          const double    tol = settings.coordinate_precision * (std::abs(xs[0]) + std::abs(xs[1])) +
+                             1e-12 * std::min(master_now.h.at(m), slave.h.count(s) ? slave.h.at(s) : master_now.h.at(m));
+          Judged j{m, s, std::abs(g0) <= tol ? Verdict::zero : Verdict::real, 0};
+          // the partner's offset from a chord of the receiving side: on one
+          // curve it is t(1 - t) L^2 kappa / 2 for a kappa between the
+          // chord's ends (q < 0 beyond them: the circle lies on the other side)
+          const auto same_curve = [&](const Side &onto, const unsigned int edge, const Point &chord,
+                                      const Vector &normal, const double q, const Side &from,
+                                      const unsigned int partner) {
+            const auto   band  = widened(curvature_range(onto, {onto.edges[edge][0], onto.edges[edge][1]}, 1.),
+                                       curvature_range(from, {partner}, -1.));
+            const double k     = std::max(-band.first, band.second);
+            const double delta = (mesh.vertex(partner) - chord) * normal;
+            j.deviation        = std::abs(q) * k;
+            if (delta >= std::min(q * band.first, q * band.second) - tol &&
+                delta <= std::max(q * band.first, q * band.second) + tol)
+              return Verdict::discretisation;
+            // near an inflection, a gap up to twice the largest chord
+            // deviation may still be one of a curve sampled too coarsely
+            if (band.first < 0 && band.second > 0 && std::abs(delta) <= 2 * std::abs(q) * k)
+              return Verdict::unresolved;
+            return Verdict::real;
+          };
+          if (j.verdict == Verdict::real && ins)
+            j.verdict = ins->on_master ? same_curve(master, ins->edge, ins->chord, ins->normal, ins->q, slave, s) :
+                                         same_curve(slave, ins->edge, ins->chord, ins->normal, ins->q, master, m);
+          else if (j.verdict == Verdict::real)
+            {
+              // two merged original vertices: the chord is the master edge
+              // at m nearest to the slave vertex along the side (on a convex
+              // vertex the slave vertex may lie beyond both)
+              unsigned int best = invalid;
+              double       best_t = 0, best_out = std::numeric_limits<double>::max();
+              for (const auto *edges : {&master.incoming, &master.outgoing})
+                if (const auto it = edges->find(m); it != edges->end())
+                  {
+                    const Point &a = mesh.vertex(master.edges[it->second][0]),
+                                &b = mesh.vertex(master.edges[it->second][1]);
+                    const double t   = chord_parameter(a, b, xs);
+                    const double out = std::max({-t, t - 1, 0.});
+                    if (out < best_out)
+                      best = it->second, best_t = t, best_out = out;
+                  }
+              if (best != invalid)
+                {
+                  const Point &a = mesh.vertex(master.edges[best][0]), &b = mesh.vertex(master.edges[best][1]);
+                  j.verdict = same_curve(master, best, a + best_t * (b - a), edge_normal(a, b),
+                                         0.5 * best_t * (1 - best_t) * a.distance_square(b), slave, s);
+                }
+            }
+          judged.push_back(j);
+        }
+    }
+
+    // (b) merged original vertices opposite each other: the slave vertex
+    // moves along its own side (on the circle of the edge the master normal
+    // hits, either edge at the vertex) to where the master vertex's normal
+    // line meets it; if the slave vertex ends its side, the master vertex
+    // moves to the point of its side closest to the slave vertex instead.
+    for (const auto &mp : master_partner)
+      {
+        const unsigned int m = mp.first, s = mp.second;
+        if (by_vertex.count(m) || by_vertex.count(s))
+          continue; // an inserted vertex was placed facing its partner already
+        const auto edges_at = [](const Side &side, const unsigned int v) {
+          std::vector<unsigned int> e;
+          for (const auto *map : {&side.incoming, &side.outgoing})
+            if (const auto it = map->find(v); it != map->end())
+              e.push_back(it->second);
+          return e;
+        };
+        const bool move_slave = !slave.is_end(s), move_master = !move_slave && !master.is_end(m);
+        const Side &side = move_slave ? slave : master;
+        const unsigned int v = move_slave ? s : m;
+        if (!move_slave && !move_master)
+          continue;
+        Point  target = mesh.vertex(v);
+        double best   = std::numeric_limits<double>::max();
+        for (const unsigned int e : edges_at(side, v))
+          {
+            const Point &a = mesh.vertex(side.edges[e][0]), &b = mesh.vertex(side.edges[e][1]);
+            Point        x;
+            bool         hit = false;
+            if (move_slave)
+              {
+                hit = cast_on_arc(a, b, side.edge_kappa[e], mesh.vertex(m), master.normal.at(m), x);
+                if (!hit)
+                  {
+                    // a straight edge: intersect the chord
+                    const Vector d = b - a, dir = master.normal.at(m);
+                    const double denom = cross(d, dir);
+                    if (std::abs(denom) > 1e-12 * d.norm())
+                      {
+                        const double t = cross(mesh.vertex(m) - a, dir) / denom;
+                        hit            = (t > 0 && t < 1) && side.edge_kappa[e] == 0;
+                        x              = a + t * d;
+                      }
+                  }
+              }
+            else
+              {
+                hit = closest_on_arc(a, b, side.edge_kappa[e], mesh.vertex(s), x);
+                if (!hit && side.edge_kappa[e] == 0)
+                  {
+                    const double t = chord_parameter(a, b, mesh.vertex(s));
+                    hit            = (t > 0 && t < 1);
+                    x              = a + t * (b - a);
+                  }
+              }
+            if (hit && x.distance(mesh.vertex(v)) < best)
+              best = x.distance(mesh.vertex(v)), target = x;
+          }
+        if (best > 0.5 * side.h.at(v))
+          continue; // no hit near the vertex (a corner): leave it
+        report.max_merge_shift = std::max(report.max_merge_shift, best);
+        mesh.move_vertex(v, target);
       }
+
+    // (c) one decision for the interface
+    {
+      const Side   master_now = collect_side(mesh, master_id);
+      unsigned int n_real = 0;
+      for (const auto &j : judged)
+        n_real += (j.verdict == Verdict::real);
+      const bool one_curve = settings.close_discretisation_gaps && n_real == 0;
+      for (const auto &j : judged)
+        {
+          const Point  xm = mesh.vertex(j.m), xs = mesh.vertex(j.s);
+          const double g0 = (xs - xm) * master_now.normal.at(j.m);
+          const bool   close =
+            settings.close_discretisation_gaps && (j.verdict == Verdict::zero || (one_curve && j.verdict != Verdict::real));
+          if (!close)
+            {
+              if (settings.close_discretisation_gaps && j.verdict != Verdict::real && j.verdict != Verdict::zero)
+                report.unresolved_gaps.push_back({0.5 * (xm + xs), g0, j.deviation});
+              if (j.verdict != Verdict::zero)
+                {
+                  ++report.n_kept_gaps;
+                  report.max_kept_gap = std::max(report.max_kept_gap, std::abs(g0));
+                }
+              continue;
+            }
+          if (one_curve && j.verdict == Verdict::unresolved)
+            report.closed_unresolved_gaps.push_back({0.5 * (xm + xs), g0, j.deviation});
+          // move the new vertex onto the old one; of two old vertices the
+          // slave one, unless only the slave vertex ends its side
+          const bool is_new_master = by_vertex.count(j.m) > 0, is_new_slave = by_vertex.count(j.s) > 0;
+          bool       move_master   = is_new_master;
+          if (!is_new_master && !is_new_slave)
+            move_master = slave.is_end(j.s) && !master.is_end(j.m);
+          if (move_master)
+            mesh.move_vertex(j.m, xs);
+          else
+            mesh.move_vertex(j.s, xm);
+          if (!is_new_master && !is_new_slave)
+            report.max_merge_shift = std::max(report.max_merge_shift, xm.distance(xs));
+          ++report.n_closed_gaps;
+          report.max_closed_gap = std::max(report.max_closed_gap, std::abs(g0));
+        }
+    }
     try
       {
         mesh.validate();

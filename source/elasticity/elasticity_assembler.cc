@@ -19,10 +19,12 @@ namespace dealvem
   ElasticityAssembler<dim>::ElasticityAssembler(
     const VEMDoFHandler<dim>                                    &dof_handler,
     const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-    const double                                                 gamma)
+    const double                                                 gamma,
+    const Stabilization                                          stabilization)
     : dof_handler(dof_handler)
     , materials(materials)
     , gamma(gamma)
+    , stabilization(stabilization)
   {
     AssertThrow(gamma > 0 && std::isfinite(gamma),
                 dealii::ExcMessage("The stabilization factor gamma must be positive, got " +
@@ -184,7 +186,7 @@ namespace dealvem
       {
         const unsigned int c = cells ? (*cells)[i] : i;
         vem_values.reinit(c);
-        elasticity.reinit(vem_values.get_element(), get_material(c), gamma);
+        elasticity.reinit(vem_values.get_element(), get_material(c), gamma, stabilization);
         local_load(vem_values, F);
         constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), F,
                                                vem_values.get_dof_indices(), matrix, rhs);
@@ -222,7 +224,7 @@ namespace dealvem
     for (const unsigned int c : cells)
       {
         vem_values.reinit(c);
-        elasticity.reinit(vem_values.get_element(), get_material(c), gamma);
+        elasticity.reinit(vem_values.get_element(), get_material(c), gamma, stabilization);
         local_load(vem_values, F);
         const auto &indices = vem_values.get_dof_indices();
         u_c.reinit(indices.size());

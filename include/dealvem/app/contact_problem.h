@@ -105,7 +105,7 @@ namespace dealvem
       bool             active;
       double           weight;
       double           gap;
-      double           pressure;            ///< consistent recovery M_Gamma p = -lambda (compression > 0)
+      double           pressure;            ///< recovered pressure (ContactPressure::recover(), compression > 0)
       double           lumped_pressure;     ///< -lambda / weight
       double           multiplier;          ///< raw multiplier lambda (a nodal force)
       bool             at_open_end;         ///< see ContactNodePair::at_open_end
@@ -231,6 +231,7 @@ namespace dealvem
     ElasticMaterial::Model     model = ElasticMaterial::Model::plane_strain;
     unsigned int               degree = 2;
     double                     gamma  = 1.0;
+    Stabilization              stabilization = Stabilization::automatic;
     BoundaryConditionParameters bc;
     std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> contact_pairs;
     ContactSettings            contact_settings;

@@ -20,6 +20,7 @@
 
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/app/problem_setup.h>
+#include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/postprocessing/error_norms.h>
@@ -141,6 +142,7 @@ namespace dealvem
     ElasticMaterial::Model model = ElasticMaterial::Model::plane_strain;
     unsigned int           degree = 2;
     double                 gamma  = 1.0;
+    Stabilization          stabilization = Stabilization::automatic;
     BoundaryConditionParameters bc;
     std::string                 exact_displacement;
     std::string  solver_type = "UMFPACK";

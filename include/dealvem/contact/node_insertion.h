@@ -153,6 +153,14 @@ namespace dealvem
       std::string      reason;
     };
 
+    /// A gap that the rule could not tell from a discretisation gap.
+    struct GapRecord
+    {
+      dealii::Point<2> location;        ///< midpoint of the pair
+      double           gap = 0;         ///< g_0
+      double           chord_deviation = 0; ///< q max|kappa| at the pair (length)
+    };
+
     /// What insert() did.
     struct Report
     {
@@ -167,10 +175,21 @@ namespace dealvem
       unsigned int n_master_edges    = 0; ///< master interface edges after insertion
       unsigned int n_slave_edges     = 0; ///< slave interface edges after insertion
       std::vector<UnpairedNode> unpaired;
-      /// Gaps kept although they may be discretisation gaps of a curve that
-      /// changes the sign of its curvature between too few vertices (up to
-      /// twice the chord deviation): the midpoint of the pair and g_0.
-      std::vector<std::pair<dealii::Point<2>, double>> unresolved_gaps;
+      /// pairs whose gap is kept (above the coordinate precision): real
+      /// gaps and penetrations, and the undecided ones below
+      unsigned int n_kept_gaps  = 0;
+      double       max_kept_gap = 0; ///< largest |g_0| kept (length)
+      /// Gaps kept on an interface that also has real gaps, although each
+      /// of them alone could be a discretisation gap (its size is within
+      /// the chord deviation the sides' curvatures give there): the
+      /// interface is not one curve, so they are kept as measured, and the
+      /// program says so with the numbers.
+      std::vector<GapRecord> unresolved_gaps;
+      /// Gaps closed on an interface without real gaps although they lie
+      /// next to an inflection and exceed the curvature band there (up to
+      /// twice the chord deviation): closed with the rest of the curve,
+      /// reported.
+      std::vector<GapRecord> closed_unresolved_gaps;
     };
 
     /// Everything insert() creates for one interface.

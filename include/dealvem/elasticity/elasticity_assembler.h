@@ -11,6 +11,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
@@ -55,7 +56,8 @@ namespace dealvem
   public:
     ElasticityAssembler(const VEMDoFHandler<dim>                                   &dof_handler,
                         const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-                        const double                                                gamma = 1.0);
+                        const double                                                gamma = 1.0,
+                        const Stabilization stabilization = Stabilization::automatic);
 
     /// Body force (2 components). The function must outlive the assembler.
     void
@@ -100,6 +102,13 @@ namespace dealvem
     get_gamma() const
     {
       return gamma;
+    }
+
+    /// The stabilization rule of the element matrices (ElasticityOperator).
+    Stabilization
+    get_stabilization() const
+    {
+      return stabilization;
     }
 
     /// Reuse the element matrices of translated cells (default: on); see
@@ -181,6 +190,7 @@ namespace dealvem
     const VEMDoFHandler<dim>                               &dof_handler;
     std::map<dealii::types::material_id, ElasticMaterial>   materials;
     double                                                  gamma;
+    Stabilization                                           stabilization;
     bool                                                    cell_similarity = true;
     const dealii::Function<dim>                            *body_force = nullptr;
     std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> tractions;

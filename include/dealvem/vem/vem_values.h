@@ -36,7 +36,7 @@ namespace dealvem
    *                                   2 * mu * vem_values.shape_symmetric_gradient(i, q) *
    *                                     vem_values.shape_symmetric_gradient(j, q)) *
    *                                  vem_values.JxW(q);
-   *       // plus the stabilization, scaled: vem_values.get_element().get_stabilization_form()
+   *       ElasticityOperator<2>::add_stabilization(vem_values.get_element(), cell_matrix);
    *       vem_values.get_dof_indices(local_dof_indices);
    *       constraints.distribute_local_to_global(cell_matrix, cell_rhs, local_dof_indices,
    *                                              system_matrix, system_rhs);
