@@ -6,6 +6,8 @@
 // value), the names of the function constants, the size estimate of a run
 // and its limits (with the way around them, 'Allow large runs'), and the
 // range of Young's modulus in ElasticMaterial itself.
+#include <deal.II/base/parameter_handler.h>
+
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/elasticity/material.h>
@@ -105,5 +107,52 @@ main()
   many.n_cells = 3000000;
   testing::check_throws([&] { check_run_size({&many}, 2, 1, false); }, "more than 1e+07 Voronoi cells",
                         "1.2e7 Voronoi cells are refused");
+  // values in braces, which ParameterHandler leaves unchecked, and the
+  // entries a file changed
+  {
+    const auto declare = [](dealii::ParameterHandler &prm) {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Type", "voronoi", dealii::Patterns::Selection("structured quads|voronoi"));
+      prm.declare_entry("File name", "", dealii::Patterns::Anything());
+      prm.declare_entry("Perturbation", "0.2", dealii::Patterns::Double(0, 0.49));
+      prm.leave_subsection();
+      prm.enter_subsection("Body 1");
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0));
+      prm.leave_subsection();
+      prm.leave_subsection();
+    };
+    {
+      dealii::ParameterHandler prm;
+      declare(prm);
+      prm.parse_input_from_string("subsection Mesh\n set File name = m-{cycle}.vtk\n"
+                                  " set Perturbation = 0.3\nend\n");
+      check_braced_values(prm);
+      testing::check(true, "a file name with '{cycle}' (pattern Anything) passes the brace check");
+      const auto changed = changed_entries(prm, "Mesh");
+      testing::check(changed == std::vector<std::string>{"Mesh/File name", "Mesh/Perturbation"},
+                     "changed_entries lists the two entries the input set");
+      testing::check(changed_entries(prm, "Body 1").empty(), "... and none in a section it did not set");
+    }
+    {
+      dealii::ParameterHandler prm;
+      declare(prm);
+      prm.parse_input_from_string("subsection Mesh\n set Type = {voronoi}\nend\n");
+      testing::check_throws([&] { check_braced_values(prm); },
+                            "Parameter 'Mesh/Type' = '{voronoi}' does not match its pattern [Selection",
+                            "a selection in braces is refused, naming the entry");
+    }
+    {
+      dealii::ParameterHandler prm;
+      declare(prm);
+      prm.parse_input_from_string("subsection Body 1\n subsection Mesh\n set Seed = {-3}\n end\nend\n");
+      testing::check_throws([&] { check_braced_values(prm); },
+                            "Parameter 'Body 1/Mesh/Seed' = '{-3}' does not match its pattern [Integer",
+                            "an integer in braces in a nested section is refused, naming the path");
+      testing::check(changed_entries(prm, "Body 1") == std::vector<std::string>{"Body 1/Mesh/Seed"},
+                     "changed_entries finds an entry two sections deep");
+    }
+  }
+
   return testing::finish();
 }
