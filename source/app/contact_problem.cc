@@ -35,6 +35,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -322,12 +323,23 @@ namespace dealvem
     insertion_settings.search_distance           = prm.get_double("Search distance");
     insertion_settings.coordinate_precision      = prm.get_double("Coordinate precision");
     insertion_settings.close_discretisation_gaps = prm.get_bool("Close discretisation gaps");
+    const std::string tangential_name            = prm.get("Tangential");
     prm.leave_subsection();
-    InputParsing::check_range(contact_settings.penalty, 0, 1e12, "Contact/Penalty", false, false,
-                              "Larger penalties make the system too ill-conditioned for correct pressures.");
-    InputParsing::check_range(contact_settings.penalty_factor, 0, 1e12, "Contact/Penalty factor", false,
-                              false,
-                              "Larger penalties make the system too ill-conditioned for correct pressures.");
+    if (root && contact_settings.tangential != ContactSettings::Tangential::penalty &&
+        contact_settings.tangential != ContactSettings::Tangential::coulomb_penalty)
+      for (const auto &e : InputParsing::changed_entries(prm, "Contact"))
+        if (e == "Contact/Penalty" || e == "Contact/Penalty factor")
+          std::cout << "warning: the parameter file sets '" << e << "', but 'Contact/Tangential' is '"
+                    << tangential_name << "', which uses no stick penalty; the setting has no effect." << std::endl;
+    // the penalty itself is bounded relative to E_min / h_min once the
+    // interfaces are known (setup_system()); its factor is dimensionless
+    InputParsing::check_range(contact_settings.penalty, 0, std::numeric_limits<double>::max(), "Contact/Penalty",
+                              false, false, "0 selects the default rule 'Penalty factor' * E_min / h_min.");
+    InputParsing::check_range(contact_settings.penalty_factor, ContactScales::min_penalty_factor,
+                              ContactScales::max_penalty_factor, "Contact/Penalty factor", false, false,
+                              "The stick penalty is this factor times E_min / h_min: a much smaller one leaves "
+                              "the stick direction nearly free, a larger one makes the system too "
+                              "ill-conditioned for correct pressures.");
     AssertThrow(n == 1 || !contact_pairs.empty(),
                 dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
                                    std::to_string(n) + " bodies: name at least one contact pair."));
@@ -609,6 +621,9 @@ namespace dealvem
     for (const auto &m : d.materials)
       moduli.push_back(m.second.youngs_modulus());
     const ContactScales scales(moduli, results.interfaces);
+    if (contact_settings.tangential == ContactSettings::Tangential::penalty ||
+        contact_settings.tangential == ContactSettings::Tangential::coulomb_penalty)
+      scales.check_penalty(contact_settings, "Contact/Penalty", "Contact/Penalty factor");
     d.complementarity = scales.complementarity_constant();
     results.penalty   = scales.penalty(contact_settings);
     d.contact = std::make_unique<ContactAssembler<2>>(d.dof_handler, d.pairs, contact_settings, results.penalty);

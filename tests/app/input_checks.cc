@@ -10,6 +10,7 @@
 
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/app/mesh_parameters.h>
+#include <dealvem/contact/contact_assembler.h>
 #include <dealvem/elasticity/material.h>
 
 #include "../tests.h"
@@ -154,5 +155,34 @@ main()
     }
   }
 
+  // the stick penalty relative to E_min / h_min: E_min = 1000, h_min = 0.1
+  {
+    NodeInsertion::Interface itf;
+    itf.segments.push_back(ContactSegment{0, 1, dealii::numbers::invalid_unsigned_int, 0.1});
+    itf.segments.push_back(ContactSegment{1, 2, dealii::numbers::invalid_unsigned_int, 0.25});
+    const ContactScales scales({4000, 1000}, {itf});
+    testing::check(std::abs(scales.penalty(ContactSettings()) - 1e7) < 1e-6,
+                   "the default penalty is 1000 * E_min / h_min = 1e7");
+    ContactSettings s;
+    s.penalty = 1e-2; // 1e-6 * 1e4
+    scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor");
+    s.penalty = 1e12; // 1e8 * 1e4
+    scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor");
+    testing::check(true, "penalties at both ends of [1e-6, 1e8] * E_min / h_min pass");
+    s.penalty = 1e-300;
+    testing::check_throws([&] { scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor"); },
+                          "Parameter 'Contact/Penalty' = 1e-300 is out of range for this problem: the stick "
+                          "penalty must lie in [0.01, 1e+12], that is 1e-06 to 1e+08 times E_min / h_min = 10000",
+                          "a penalty of 1e-300 is refused, naming the parameter and the bounds");
+    s.penalty = 1.01e12;
+    testing::check_throws([&] { scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor"); },
+                          "Parameter 'Contact/Penalty' = 1.01e+12 is out of range",
+                          "a penalty just above 1e8 * E_min / h_min is refused");
+    s.penalty        = 0;
+    s.penalty_factor = 1e-300;
+    testing::check_throws([&] { scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor"); },
+                          "Parameter 'Contact/Penalty factor' = 1e-300 is out of range for this problem",
+                          "the factor of the default rule is named when Penalty = 0");
+  }
   return testing::finish();
 }
