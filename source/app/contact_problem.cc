@@ -204,6 +204,12 @@ namespace dealvem
   {
     prm_directory    = dir;
     const unsigned n = n_bodies(prm);
+    // sections of bodies beyond the number of bodies would be ignored
+    for (unsigned int b = n; b < max_bodies; ++b)
+      InputParsing::check_section_unused(prm, "Body " + std::to_string(b),
+                                         "'Number of bodies' is " + std::to_string(n) + ": section 'Body " +
+                                           std::to_string(b) + "' is read only with 'Number of bodies' at least " +
+                                           std::to_string(b + 1) + ".");
     bodies.resize(n);
     prm.enter_subsection("Mesh");
     bodies[0].mesh.parse_parameters(prm, "Mesh");

@@ -138,6 +138,29 @@ namespace dealvem
   ElasticityProblem::parse_parameters(dealii::ParameterHandler &prm, const std::string &dir)
   {
     prm_directory = dir;
+    // the sections that only contact problems (Number of bodies > 1) read:
+    // a file that sets them describes another problem than this one
+    {
+      std::set<std::string> body_sections;
+      for (const auto &e : InputParsing::list_entries(prm))
+        if (e.path.compare(0, 5, "Body ") == 0)
+          body_sections.insert(e.path.substr(0, e.path.find('/')));
+      for (const auto &section : body_sections)
+        InputParsing::check_section_unused(prm, section,
+                                           "'Number of bodies' is 1: section '" + section +
+                                             "' is read only with 'Number of bodies' at least " +
+                                             std::to_string(std::stoi(section.substr(5)) + 1) + ".");
+    }
+    InputParsing::check_section_unused(prm, "Contact",
+                                       "'Number of bodies' is 1, and contact needs at least two bodies.");
+    InputParsing::check_section_unused(prm, "Load steps",
+                                       "'Number of bodies' is 1: the one-body program solves the static "
+                                       "problem at t = 1; load steps are run by contact problems.");
+    for (const auto &e : InputParsing::changed_entries(prm, "Output"))
+      if (e == "Output/Write pictures" || e == "Output/Write CSV")
+        pcout << "warning: the parameter file sets '" << e
+              << "', which only contact problems read; it has no effect on this one-body problem." << std::endl;
+
     prm.enter_subsection("Mesh");
     mesh_parameters.parse_parameters(prm, "Mesh");
     prm.leave_subsection();
