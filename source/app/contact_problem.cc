@@ -119,8 +119,9 @@ namespace dealvem
         prm.enter_subsection("Exact solution");
         prm.declare_entry("Displacement", "", Anything(),
                           "Exact displacement 'ux, uy' of this body (muparser in x, y, t with the "
-                          "function constants, t = 1). Empty: the top-level 'Exact solution' "
-                          "applies to this body too.");
+                          "function constants), compared with the solution of the last load step at "
+                          "t = 'Load steps/Final time' (1 by default). Empty: the top-level 'Exact "
+                          "solution' applies to this body too.");
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -1009,7 +1010,9 @@ namespace dealvem
           const auto        parts = InputParsing::split(bodies[b].exact, ',');
           AssertThrow(parts.size() == 2,
                       dealii::ExcMessage("Parameter '" + name + "' needs two expressions 'ux, uy'."));
-          const InputParsing::ParsedFunction exact(parts, bc.get_constants(), name);
+          // the solution is the one of the last load step, at t = final time
+          InputParsing::ParsedFunction exact(parts, bc.get_constants(), name);
+          exact.set_time(final_time);
           results.errors[b] = compute_errors(d.dof_handler, d.materials, results.solution, exact,
                                              dealii::types::material_id(b));
           for (const double v : {results.errors[b].l2, results.errors[b].h1_seminorm, results.errors[b].energy})

@@ -80,8 +80,8 @@ namespace dealvem
     prm.enter_subsection("Exact solution");
     prm.declare_entry("Displacement", "", Anything(),
                       "Exact displacement 'ux, uy' (muparser expressions in x, y and t with "
-                      "the function constants; static problem: t = 1). Empty: no error "
-                      "computation.");
+                      "the function constants; one body: t = 1; contact problems: the time of the "
+                      "last load step, 'Load steps/Final time'). Empty: no error computation.");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
