@@ -443,12 +443,24 @@ namespace dealvem
     for (const auto &b : bodies)
       any_exact = any_exact || !InputParsing::trim(b.exact).empty();
     std::vector<dealii::ConvergenceTable> tables(bodies.size());
+    std::vector<std::vector<double>>      dofs_per_cycle(bodies.size());
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
       {
         if (n_cycles > 1)
           std::cout << "Cycle " << cycle << ":" << std::endl;
         run_cycle(cycle);
         convergence.push_back(results.errors);
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          {
+            if (cycle > 0 && results.dofs_per_body[b] <= dofs_per_cycle[b].back())
+              std::cout << "warning: body " << b << " has " << results.dofs_per_body[b]
+                        << " DoFs in cycle " << cycle << ", no more than in cycle " << cycle - 1
+                        << ": the meshes of a convergence study must be refined from cycle to cycle (are "
+                           "two cycles reading the same mesh file?); the convergence rate of this cycle is "
+                           "not defined."
+                        << std::endl;
+            dofs_per_cycle[b].push_back(results.dofs_per_body[b]);
+          }
         if (any_exact)
           for (unsigned int b = 0; b < bodies.size(); ++b)
             if (!InputParsing::trim(bodies[b].exact).empty())
@@ -473,8 +485,20 @@ namespace dealvem
                 t.set_precision(c, 3);
               }
             if (n_cycles > 1)
-              for (const char *c : {"L2", "H1", "energy"})
-                t.evaluate_convergence_rates(c, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
+              {
+                std::vector<double> dofs;
+                std::map<std::string, std::vector<double>> errors;
+                for (const auto &e : convergence)
+                  {
+                    errors["L2"].push_back(e[b].l2 / std::max(e[b].l2_exact, 1e-300));
+                    errors["H1"].push_back(e[b].h1_seminorm / std::max(e[b].h1_exact, 1e-300));
+                    errors["energy"].push_back(e[b].energy / std::max(e[b].energy_exact, 1e-300));
+                  }
+                for (const double n : dofs_per_cycle[b])
+                  dofs.push_back(n);
+                for (const char *c : {"L2", "H1", "energy"})
+                  add_convergence_rates(t, c, errors[c], dofs);
+              }
             std::cout << "Relative errors of body " << b << " (against its exact solution):" << std::endl;
             t.write_text(std::cout, dealii::TableHandler::org_mode_table);
           }
@@ -919,6 +943,66 @@ namespace dealvem
     step_result.total_contact_force = results.total_contact_force;
     step_result.pairs               = results.pairs;
     results.dissipated_energy += step_result.dissipated_energy;
+    // nothing non-finite is reported or written: a quantity that overflowed
+    // stops the run here, named, before any file of the step is written
+    {
+      const auto refuse = [&](const std::string &quantity, const double value) {
+        std::ostringstream msg;
+        msg << "Load step " << step << " (t = " << time << "): the " << quantity << " is " << value
+            << ". The solution overflowed double precision (or the solve failed); check the loads, the "
+               "Dirichlet values, 'Load steps/Final time' and the Young's moduli for values far from 1 in "
+               "the units of the problem.";
+        AssertThrow(false, dealii::ExcMessage(msg.str()));
+      };
+      for (unsigned int i = 0; i < x.size(); ++i)
+        if (!std::isfinite(x[i]))
+          refuse(i < n ? "displacement DoF " + std::to_string(i) :
+                         "contact multiplier " + std::to_string(i - n),
+                 x[i]);
+      // a displacement far beyond the size of the bodies: loads out of
+      // scale with the stiffness
+      {
+        const auto      &vertices = results.mesh.get_vertices();
+        dealii::Point<2> lo = vertices[0], hi = vertices[0];
+        for (const auto &p : vertices)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              lo[c] = std::min(lo[c], p[c]);
+              hi[c] = std::max(hi[c], p[c]);
+            }
+        const double size = lo.distance(hi);
+        for (unsigned int i = 0; i < n; ++i)
+          if (std::abs(x[i]) > BoundaryConditionParameters::max_displacement_ratio * size)
+            {
+              std::ostringstream msg;
+              msg << "Load step " << step << " (t = " << time << "): the displacement of DoF " << i << " is "
+                  << x[i] << ", more than " << BoundaryConditionParameters::max_displacement_ratio
+                  << " times the size of the meshes (" << size
+                  << "): far outside the small-displacement model. The loads are out of scale with the "
+                     "stiffness: check 'Boundary conditions and loads' (Traction, Pressure, Body force, Rigid "
+                     "boundary) against the Young's moduli, or a body held by a stick penalty alone.";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
+      }
+      for (const auto &r : results.pairs)
+        for (const auto &[name, v] : std::vector<std::pair<std::string, double>>{
+               {"pressure", r.pressure}, {"shear", r.shear}, {"gap", r.gap}, {"slip", r.slip},
+               {"slip increment", r.slip_increment}})
+          if (!std::isfinite(v))
+            {
+              std::ostringstream where;
+              where << name << " of the contact pair at (" << r.location[0] << ", " << r.location[1] << ")";
+              refuse(where.str(), v);
+            }
+      if (!std::isfinite(step_result.dissipated_energy))
+        refuse("dissipated energy of the step", step_result.dissipated_energy);
+      if (!std::isfinite(results.dissipated_energy))
+        refuse("dissipated energy summed over the steps", results.dissipated_energy);
+      for (unsigned int d = 0; d < 2; ++d)
+        if (!std::isfinite(results.total_contact_force[d]))
+          refuse(std::string("total contact force (") + (d == 0 ? "x" : "y") + " component)",
+                 results.total_contact_force[d]);
+    }
     results.steps.push_back(step_result);
 
     if (n_steps > 1 || friction)

@@ -33,6 +33,9 @@
 #include <iostream>
 #include <iterator>
 #include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
 
 namespace dealvem
 {
@@ -431,6 +434,49 @@ namespace dealvem
         else
           errors = compute_errors(dof_handler, materials, solution, *exact);
       }
+    // nothing non-finite is reported or written
+    {
+      std::vector<unsigned int> own_cells;
+      if (distributed)
+        own_cells = partition.locally_owned_cells();
+      else
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          own_cells.push_back(c);
+      for (const unsigned int c : own_cells)
+        if (!std::isfinite(stresses.cell_von_mises(c)))
+          {
+            std::ostringstream msg;
+            msg << "Cycle " << cycle << ": the von Mises stress of cell " << c << " (first vertex at ("
+                << mesh.vertex(mesh.cell(c).vertices[0])[0] << ", " << mesh.vertex(mesh.cell(c).vertices[0])[1]
+                << ")) is " << stresses.cell_von_mises(c)
+                << ": the displacements or the stresses overflow double precision. Check the loads, the "
+                   "Dirichlet values and 'Material/Young's modulus' for values far from 1 in the units of the "
+                   "problem.";
+            AssertThrow(false, dealii::ExcMessage(msg.str()));
+          }
+      if (exact)
+        for (const auto &[name, v] : std::vector<std::pair<std::string, double>>{
+               {"L2", errors.l2}, {"H1 seminorm", errors.h1_seminorm}, {"energy", errors.energy}})
+          if (!std::isfinite(v) || !std::isfinite(errors.l2_exact) || !std::isfinite(errors.h1_exact))
+            {
+              dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
+              for (const auto &p : mesh.get_vertices())
+                for (unsigned int d = 0; d < 2; ++d)
+                  {
+                    lo[d] = std::min(lo[d], p[d]);
+                    hi[d] = std::max(hi[d], p[d]);
+                  }
+              std::ostringstream msg;
+              msg << "Cycle " << cycle << ": the " << name << " error against 'Exact solution/Displacement' = '"
+                  << exact_displacement << "' is " << v << " (norms of the exact solution: L2 " << errors.l2_exact
+                  << ", H1 " << errors.h1_exact
+                  << "). The integrals of the error overflow double precision: the mesh spans (" << lo[0] << ", "
+                  << lo[1] << ") to (" << hi[0] << ", " << hi[1]
+                  << "); give the coordinates, loads and the exact solution in units that bring them nearer "
+                     "to 1.";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
+    }
     const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
     const std::string vtu    = prefix + (distributed ? ".pvtu" : ".vtu");
     if (write_vtu)
@@ -504,11 +550,21 @@ namespace dealvem
         table.add_value("L2", errors.l2);
         table.add_value("H1", errors.h1_seminorm);
         table.add_value("energy", errors.energy);
+        cycle_errors["L2"].push_back(errors.l2);
+        cycle_errors["H1"].push_back(errors.h1_seminorm);
+        cycle_errors["energy"].push_back(errors.energy);
         json.set(key + "errors.L2", errors.l2);
         json.set(key + "errors.H1_seminorm", errors.h1_seminorm);
         json.set(key + "errors.energy", errors.energy);
         last_errors = {errors.l2, errors.h1_seminorm, errors.energy};
       }
+    if (!cycle_dofs.empty() && dof_handler.n_dofs() <= cycle_dofs.back())
+      pcout << "warning: cycle " << cycle << " has " << dof_handler.n_dofs() << " DoFs, no more than cycle "
+            << cycle - 1 << " (" << cycle_dofs.back()
+            << "): the meshes of a convergence study must be refined from cycle to cycle (are two cycles "
+               "reading the same mesh file?); the convergence rate of this cycle is not defined."
+            << std::endl;
+    cycle_dofs.push_back(dof_handler.n_dofs());
     last_n_dofs = dof_handler.n_dofs();
     last_timings.clear();
     for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
@@ -554,6 +610,8 @@ namespace dealvem
                 dealii::ExcMessage("Parameter 'Exact solution/Displacement' needs two expressions 'ux, uy'."));
 
     table = dealii::ConvergenceTable();
+    cycle_dofs.clear();
+    cycle_errors.clear();
     json  = JsonSummary();
     json.set("program", "dealvem");
     json.set("mesh.type", mesh_parameters.description());
@@ -593,7 +651,7 @@ namespace dealvem
           }
         if (n_cycles > 1)
           for (const std::string c : {"L2", "H1", "energy"})
-            table.evaluate_convergence_rates(c, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
+            add_convergence_rates(table, c, cycle_errors[c], cycle_dofs);
         pcout << std::endl;
         if (this_process == 0)
           table.write_text(std::cout, dealii::TableHandler::org_mode_table);

@@ -138,3 +138,35 @@ if(leftovers)
   message(FATAL_ERROR "FAIL: temporary files left behind: ${leftovers}")
 endif()
 message(STATUS "PASS no temporary files left")
+
+# ---- a convergence study whose two cycles read the same mesh: the rates
+# are undefined; the table says "n/a" (never nan or inf) and a warning
+# names the cycles
+configure_file(${SOURCE_DIR}/tests/mesh/data/two_cells.vtk ${WORK_DIR}/same-0.vtk COPYONLY)
+configure_file(${SOURCE_DIR}/tests/mesh/data/two_cells.vtk ${WORK_DIR}/same-1.vtk COPYONLY)
+set(linear "1e-3*x + 2e-3*y, -1e-3*x + 3e-3*y")
+file(WRITE ${WORK_DIR}/same-mesh.prm "subsection Mesh
+  set Type        = vtk file
+  set File name   = same-{cycle}.vtk
+  set Material id = 4
+end
+subsection Convergence study
+  set Refinement cycles = 2
+end
+subsection Boundary conditions and loads
+  set Dirichlet = 0 : xy : ${linear}; 5 : xy : ${linear}; 6 : xy : ${linear}
+end
+subsection Exact solution
+  set Displacement = ${linear}
+end
+subsection Output
+  set Base name = same-mesh
+end
+")
+run_dealvem("two cycles on the same mesh" TRUE "DoFs, no more than cycle 0" ${WORK_DIR}/same-mesh.prm)
+string(REGEX MATCH "n/a" na "${LAST_OUTPUT}")
+string(REGEX MATCH "[^a-z](-?nan|-?inf)[^a-z]" nonfinite "${LAST_OUTPUT}")
+if(NOT na OR nonfinite)
+  message(FATAL_ERROR "FAIL two cycles on the same mesh: the rates must read n/a, not '${nonfinite}'\n${LAST_OUTPUT}")
+endif()
+message(STATUS "PASS two cycles on the same mesh: rates n/a")

@@ -177,6 +177,9 @@ namespace dealvem
     /// Wall time of the preconditioner set-up within the solve.
     double                                                solver_setup_time = 0;
     dealii::ConvergenceTable                              table;
+    /// Per cycle: the DoFs and the errors L2, H1, energy (for the rates).
+    std::vector<double>                                   cycle_dofs;
+    std::map<std::string, std::vector<double>>            cycle_errors;
     JsonSummary                                           json;
   };
 } // namespace dealvem
