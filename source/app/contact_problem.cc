@@ -772,7 +772,20 @@ namespace dealvem
       }
     results.applied_load_per_body.assign(bodies.size(), dealii::Tensor<1, 2>());
     for (unsigned int i = 0; i < d.n; ++i)
-      results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
+      {
+        // an overflowed load is named here, before a solver fails on it
+        if (!std::isfinite(loads[i]))
+          {
+            std::ostringstream msg;
+            msg << "Load step at t = " << time << ": the assembled load vector is " << loads[i] << " at DoF " << i
+                << " (body " << node_body[i / 2]
+                << "): the loads overflow double precision when integrated. Check 'Boundary conditions and "
+                   "loads' (Body force, Traction, Pressure, Rigid boundary) for values far from the units of "
+                   "the problem.";
+            AssertThrow(false, dealii::ExcMessage(msg.str()));
+          }
+        results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
+      }
   }
 
 

@@ -287,6 +287,25 @@ namespace dealvem
     ElasticityAssembler<2>     assembler(dof_handler, materials, gamma);
     bc.add_loads(assembler);
     assembler.assemble(constraints, system_matrix, system_rhs);
+    for (unsigned int i = 0; i < system_rhs.size(); ++i)
+      check_load_entry(i, system_rhs[i]);
+  }
+
+
+
+  // A load vector entry that overflowed: the loads, not the solver or the
+  // support, are the cause.
+  void
+  ElasticityProblem::check_load_entry(const dealii::types::global_dof_index i, const double value) const
+  {
+    if (std::isfinite(value))
+      return;
+    std::ostringstream msg;
+    msg << "The assembled load vector is " << value << " at DoF " << i
+        << ": the loads overflow double precision when integrated. Check 'Boundary conditions and "
+           "loads' (Body force, Traction, Pressure, Rigid boundary) for values far from the units of the "
+           "problem.";
+    AssertThrow(false, dealii::ExcMessage(msg.str()));
   }
 
 
@@ -358,6 +377,8 @@ namespace dealvem
     ElasticityAssembler<2>     assembler(dof_handler, materials, gamma);
     bc.add_loads(assembler);
     assembler.assemble(constraints, partition.locally_owned_cells(), distributed_matrix, distributed_rhs);
+    for (const auto i : distributed_rhs.locally_owned_elements())
+      check_load_entry(i, distributed_rhs(i));
   }
 
 
@@ -412,6 +433,44 @@ namespace dealvem
   void
   ElasticityProblem::output_results(const unsigned int cycle)
   {
+    // a displacement far beyond the size of the body means loads far too
+    // large for the stiffness (or a prescribed value out of scale): say so
+    // before the stresses or the error integrals overflow and take the blame
+    {
+      dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
+      for (const auto &p : mesh.get_vertices())
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            lo[d] = std::min(lo[d], p[d]);
+            hi[d] = std::max(hi[d], p[d]);
+          }
+      const double size = lo.distance(hi);
+      std::vector<dealii::types::global_dof_index> dofs;
+      const auto check_cell = [&](const unsigned int c) {
+        dof_handler.get_dof_indices(c, dofs);
+        for (const auto i : dofs)
+          if (!(std::abs(solution[i]) <= BoundaryConditionParameters::max_displacement_ratio * size))
+            {
+              std::ostringstream msg;
+              msg << "Cycle " << cycle << ": the displacement of DoF " << i << " (cell " << c << ") is "
+                  << solution[i] << ", more than " << BoundaryConditionParameters::max_displacement_ratio
+                  << " times the size of the mesh (" << size
+                  << "): far outside the small-displacement model, and the stresses and error integrals "
+                     "would overflow. The loads and prescribed displacements are out of scale with the "
+                     "stiffness: check 'Boundary conditions and loads' (Traction, Pressure, Body force, "
+                     "Rigid boundary, Dirichlet, Point constraints) against 'Material/Young's modulus' = "
+                  << youngs_modulus << ".";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
+      };
+      if (distributed)
+        for (const unsigned int c : partition.locally_owned_cells())
+          check_cell(c);
+      else
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          check_cell(c);
+    }
+
     // the cells this process computes: all, or (distributed) its own, with
     // the ghost layer for the nodal stress averages
     std::vector<unsigned int> stress_cells;

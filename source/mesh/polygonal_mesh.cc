@@ -22,6 +22,8 @@ namespace dealvem
     // multiply coordinate differences and sum such products over a loop,
     // which must stay far from overflow.
     constexpr double max_coordinate = 1e100;
+    // The smallest extent of a mesh (largest side of its bounding box).
+    constexpr double min_extent = 1e-100;
 
     inline double
     cross(const P &o, const P &a, const P &b)
@@ -271,6 +273,28 @@ namespace dealvem
     // (1) checks on the raw loops that the later steps rely on
     for (unsigned int v = 0; v < vertices.size(); ++v)
       check_coordinates(name, v, vertices[v]);
+    // a mesh far below the scale of double precision: areas and the
+    // geometric tolerances (products of coordinate differences) underflow,
+    // and the checks below would report zero areas or repeated vertices
+    if (!vertices.empty())
+      {
+        P lo = vertices[0], hi = vertices[0];
+        for (const auto &p : vertices)
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d] = std::min(lo[d], p[d]);
+              hi[d] = std::max(hi[d], p[d]);
+            }
+        const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+        AssertThrow(extent == 0 || extent >= min_extent,
+                    ExcInvalidMesh("mesh '" + name + "': its vertices span only " + [&] {
+                      std::ostringstream e;
+                      e << extent << " (from " << point_string(lo) << " to " << point_string(hi) << ")";
+                      return e.str();
+                    }() + "; meshes smaller than 1e-100 are not supported, because the areas and geometric "
+                          "tolerances (products of coordinate differences) underflow. Give the coordinates "
+                          "in a length unit nearer to the size of the mesh."));
+      }
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
         const auto &loop = cells[c].vertices;

@@ -122,6 +122,10 @@ namespace dealvem
     make_mesh(const unsigned int cycle);
     void
     setup_system();
+    /// Throw, naming the loads, if entry @p i of the load vector is not
+    /// finite.
+    void
+    check_load_entry(const dealii::types::global_dof_index i, const double value) const;
     void
     assemble_system();
     void

@@ -78,7 +78,9 @@ namespace dealvem
     /// Write all constraints: Dirichlet first, then rollers, point
     /// constraints and rigid boundaries. A point constraint or rigid
     /// boundary that collides with an earlier constraint stops with a
-    /// message naming both entries.
+    /// message naming both entries; so does a prescribed displacement larger
+    /// than max_displacement_ratio times the size of the mesh, naming its
+    /// entry.
     void
     apply_constraints(const VEMDoFHandler<2> &dof_handler,
                       dealii::AffineConstraints<double> &constraints) const;
