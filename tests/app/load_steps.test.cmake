@@ -136,3 +136,23 @@ string(CONFIGURE "${prm}" text @ONLY)
 file(WRITE ${WORK_DIR}/static.prm "${text}")
 run_case("pressure p without t" ${WORK_DIR}/static.prm)
 check_csv_pressure(${WORK_DIR}/output/static-interface.csv 10)
+
+# the fuzz seeds of the friction, load-step and rigid-boundary inputs run
+# as they are: every load step converges, and the JSON lists them all
+foreach(seed friction-rigid-steps coulomb-penalty-steps)
+  file(REMOVE_RECURSE ${WORK_DIR}/${seed})
+  file(MAKE_DIRECTORY ${WORK_DIR}/${seed})
+  execute_process(COMMAND ${DEALVEM} ${TEST_DIR}/${seed}.prm WORKING_DIRECTORY ${WORK_DIR}/${seed}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "FAIL ${seed}.prm: exit code ${rc}\n${out}${err}")
+  endif()
+  file(GLOB json ${WORK_DIR}/${seed}/output/*.json)
+  file(READ ${json} text)
+  string(JSON requested GET "${text}" load_steps requested)
+  string(JSON converged GET "${text}" load_steps converged)
+  if(NOT requested EQUAL converged OR requested LESS 2)
+    message(FATAL_ERROR "FAIL ${seed}.prm: ${converged} of ${requested} load steps converged")
+  endif()
+  message(STATUS "PASS ${seed}.prm: ${converged} load steps")
+endforeach()
