@@ -18,6 +18,7 @@
 
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/app/elasticity_problem.h>
+#include <dealvem/app/input_parsing.h>
 
 #include <muParserError.h>
 
@@ -197,6 +198,8 @@ main(int argc, char **argv)
         check_includes(arg, stack);
       }
       prm.parse_input(arg);
+      // values with '{' passed ParameterHandler unchecked
+      dealvem::InputParsing::check_braced_values(prm);
       const std::string directory = fs::path(arg).parent_path().string();
       if (dealvem::ContactProblem::n_bodies(prm) > 1)
         {

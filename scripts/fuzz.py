@@ -2,8 +2,12 @@
 """A small mutation fuzzer for the program `dealvem` (standard library only).
 
 Seeds: the example parameter file examples/step-2/patch-test.prm, the
-parameter files tests/app/*.prm and the mesh files tests/mesh/data/* (each
-mesh read through a fixed parameter file). Every case applies one to three
+parameter files tests/app/*.prm (among them the friction, load-step and
+rigid-boundary inputs friction-rigid-steps.prm and coulomb-penalty-steps.prm),
+the friction, load-step, penalty and rigid-boundary cases of the bad-input
+corpus tests/bad_input/*.prm (inputs one mistake away from valid ones) and the
+mesh files tests/mesh/data/* (each mesh read through a fixed parameter file).
+Every case applies one to three
 random mutations to one seed (flip, insert or delete characters, duplicate or
 drop lines, replace a number by an extreme value or a huge count) and runs
 `dealvem` on it with a time limit.
@@ -93,6 +97,15 @@ def seeds():
     files = [os.path.join(ROOT, "examples", "step-2", "patch-test.prm")]
     app = os.path.join(ROOT, "tests", "app")
     files += sorted(os.path.join(app, f) for f in os.listdir(app) if f.endswith(".prm"))
+    # of the bad-input corpus, the friction, load-step, penalty and
+    # rigid-boundary inputs: one mistake away from valid ones
+    bad = os.path.join(ROOT, "tests", "bad_input")
+    for f in sorted(os.listdir(bad)):
+        if f.endswith(".prm"):
+            with open(os.path.join(bad, f), encoding="utf-8", errors="replace") as fh:
+                text = fh.read()
+            if re.search(r"coulomb|Load steps|Rigid boundary|Penalty", text):
+                files.append(os.path.join(bad, f))
     for f in files:
         with open(f, encoding="utf-8", errors="replace") as fh:
             out.append((os.path.relpath(f, ROOT), "prm", fh.read()))

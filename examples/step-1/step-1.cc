@@ -43,6 +43,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <string>
 
 namespace Step1
 {
@@ -339,6 +340,24 @@ namespace Step1
   }
 } // namespace Step1
 
+
+// @sect3{The command line}
+//
+// An argument is a whole number in a given range; anything else (a sign, a
+// letter, a number too large for the type) stops the program with the usage
+// instead of a wrapped or misread value.
+namespace
+{
+  bool
+  parse_argument(const std::string &text, const unsigned int min, const unsigned int max, unsigned int &value)
+  {
+    if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+      return false;
+    value = static_cast<unsigned int>(std::stoul(text));
+    return value >= min && value <= max;
+  }
+} // namespace
+
 // @sect3{The main function}
 int
 main(int argc, char **argv)
@@ -346,7 +365,15 @@ main(int argc, char **argv)
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const unsigned int degree = (argc > 1 ? std::stoi(argv[1]) : 2);
+      unsigned int                             degree = 2;
+      if (argc > 2 || (argc == 2 && !parse_argument(argv[1], 1, 2, degree)))
+        {
+          std::cerr << "step-1: " << (argc > 2 ? "too many arguments" : "the order k must be 1 or 2, not '" +
+                                                                             std::string(argv[1]) + "'")
+                    << ".\nusage: step-1 [k]   (k = 1 or 2, the order of the virtual elements; default 2)"
+                    << std::endl;
+          return 2;
+        }
       Step1::CantileverProblem problem(degree);
       problem.run();
     }

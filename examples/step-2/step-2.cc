@@ -40,6 +40,7 @@
 
 #include <iomanip>
 #include <iostream>
+#include <string>
 
 namespace Step2
 {
@@ -257,6 +258,24 @@ namespace Step2
   }
 } // namespace Step2
 
+
+// @sect3{The command line}
+//
+// An argument is a whole number in a given range; anything else (a sign, a
+// letter, a number too large for the type) stops the program with the usage
+// instead of a wrapped or misread value.
+namespace
+{
+  bool
+  parse_argument(const std::string &text, const unsigned int min, const unsigned int max, unsigned int &value)
+  {
+    if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+      return false;
+    value = static_cast<unsigned int>(std::stoul(text));
+    return value >= min && value <= max;
+  }
+} // namespace
+
 // @sect3{The main function}
 int
 main(int argc, char **argv)
@@ -264,8 +283,18 @@ main(int argc, char **argv)
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      const std::vector<unsigned int> degrees =
-        (argc > 1 ? std::vector<unsigned int>{unsigned(std::stoi(argv[1]))} : std::vector<unsigned int>{1, 2});
+      std::vector<unsigned int>                degrees = {1, 2};
+      unsigned int                             k       = 0;
+      if (argc > 2 || (argc == 2 && !parse_argument(argv[1], 1, 2, k)))
+        {
+          std::cerr << "step-2: " << (argc > 2 ? "too many arguments" : "the order k must be 1 or 2, not '" +
+                                                                             std::string(argv[1]) + "'")
+                    << ".\nusage: step-2 [k]   (k = 1 or 2, the order of the virtual elements; both if omitted)"
+                    << std::endl;
+          return 2;
+        }
+      if (argc == 2)
+        degrees = {k};
       for (const unsigned int k : degrees)
         for (const bool voronoi : {false, true})
           {

@@ -7,7 +7,7 @@
 //
 // Build (from a dealvem build directory):   make step-5
 // Run:                                      ./examples/step-5 [k [cycles]]
-//                                           (k = 1 or 2, both if omitted; 5 cycles)
+//                                           (k = 1 or 2, both if omitted; 2 to 8 cycles, default 5)
 // What it does: a deal.II program owns a Triangulation (a distorted square,
 // refined globally cycle by cycle), hands it to dealvem, which solves plane
 // strain elasticity with a manufactured solution by virtual elements on the
@@ -466,6 +466,24 @@ namespace Step5
   }
 } // namespace Step5
 
+
+// @sect3{The command line}
+//
+// An argument is a whole number in a given range; anything else (a sign, a
+// letter, a number too large for the type) stops the program with the usage
+// instead of a wrapped or misread value.
+namespace
+{
+  bool
+  parse_argument(const std::string &text, const unsigned int min, const unsigned int max, unsigned int &value)
+  {
+    if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+      return false;
+    value = static_cast<unsigned int>(std::stoul(text));
+    return value >= min && value <= max;
+  }
+} // namespace
+
 // @sect3{The main function}
 int
 main(int argc, char **argv)
@@ -474,10 +492,25 @@ main(int argc, char **argv)
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       std::vector<unsigned int>                degrees = {1, 2};
+      unsigned int                             k = 0, n_cycles = 5;
+      // at least two cycles for the rates; cycle 7 has 16 * 4^7 = 262144 cells
+      std::string error;
+      if (argc > 3)
+        error = "too many arguments";
+      else if (argc > 1 && !parse_argument(argv[1], 1, 2, k))
+        error = "the order k must be 1 or 2, not '" + std::string(argv[1]) + "'";
+      else if (argc > 2 && !parse_argument(argv[2], 2, 8, n_cycles))
+        error = "the number of cycles must be a whole number from 2 to 8, not '" + std::string(argv[2]) + "'";
+      if (!error.empty())
+        {
+          std::cerr << "step-5: " << error
+                    << ".\nusage: step-5 [k [cycles]]   (k = 1 or 2, both if omitted; cycles from 2 to 8, "
+                       "default 5)"
+                    << std::endl;
+          return 2;
+        }
       if (argc > 1)
-        degrees = {static_cast<unsigned int>(std::stoi(argv[1]))};
-      const unsigned int n_cycles = (argc > 2 ? std::stoi(argv[2]) : 5);
-      AssertThrow(n_cycles >= 2, dealii::ExcMessage("step-5 needs at least two cycles for the rates."));
+        degrees = {k};
       for (const unsigned int k : degrees)
         {
           Step5::EmbeddingProblem problem(k, n_cycles);

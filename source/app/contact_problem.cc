@@ -35,6 +35,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -118,8 +119,9 @@ namespace dealvem
         prm.enter_subsection("Exact solution");
         prm.declare_entry("Displacement", "", Anything(),
                           "Exact displacement 'ux, uy' of this body (muparser in x, y, t with the "
-                          "function constants, t = 1). Empty: the top-level 'Exact solution' "
-                          "applies to this body too.");
+                          "function constants), compared with the solution of the last load step at "
+                          "t = 'Load steps/Final time' (1 by default). Empty: the top-level 'Exact "
+                          "solution' applies to this body too.");
         prm.leave_subsection();
         prm.leave_subsection();
       }
@@ -203,6 +205,12 @@ namespace dealvem
   {
     prm_directory    = dir;
     const unsigned n = n_bodies(prm);
+    // sections of bodies beyond the number of bodies would be ignored
+    for (unsigned int b = n; b < max_bodies; ++b)
+      InputParsing::check_section_unused(prm, "Body " + std::to_string(b),
+                                         "'Number of bodies' is " + std::to_string(n) + ": section 'Body " +
+                                           std::to_string(b) + "' is read only with 'Number of bodies' at least " +
+                                           std::to_string(b + 1) + ".");
     bodies.resize(n);
     prm.enter_subsection("Mesh");
     bodies[0].mesh.parse_parameters(prm, "Mesh");
@@ -325,12 +333,23 @@ namespace dealvem
     insertion_settings.search_distance           = prm.get_double("Search distance");
     insertion_settings.coordinate_precision      = prm.get_double("Coordinate precision");
     insertion_settings.close_discretisation_gaps = prm.get_bool("Close discretisation gaps");
+    const std::string tangential_name            = prm.get("Tangential");
     prm.leave_subsection();
-    InputParsing::check_range(contact_settings.penalty, 0, 1e12, "Contact/Penalty", false, false,
-                              "Larger penalties make the system too ill-conditioned for correct pressures.");
-    InputParsing::check_range(contact_settings.penalty_factor, 0, 1e12, "Contact/Penalty factor", false,
-                              false,
-                              "Larger penalties make the system too ill-conditioned for correct pressures.");
+    if (root && contact_settings.tangential != ContactSettings::Tangential::penalty &&
+        contact_settings.tangential != ContactSettings::Tangential::coulomb_penalty)
+      for (const auto &e : InputParsing::changed_entries(prm, "Contact"))
+        if (e == "Contact/Penalty" || e == "Contact/Penalty factor")
+          std::cout << "warning: the parameter file sets '" << e << "', but 'Contact/Tangential' is '"
+                    << tangential_name << "', which uses no stick penalty; the setting has no effect." << std::endl;
+    // the penalty itself is bounded relative to E_min / h_min once the
+    // interfaces are known (setup_system()); its factor is dimensionless
+    InputParsing::check_range(contact_settings.penalty, 0, std::numeric_limits<double>::max(), "Contact/Penalty",
+                              false, false, "0 selects the default rule 'Penalty factor' * E_min / h_min.");
+    InputParsing::check_range(contact_settings.penalty_factor, ContactScales::min_penalty_factor,
+                              ContactScales::max_penalty_factor, "Contact/Penalty factor", false, false,
+                              "The stick penalty is this factor times E_min / h_min: a much smaller one leaves "
+                              "the stick direction nearly free, a larger one makes the system too "
+                              "ill-conditioned for correct pressures.");
     AssertThrow(n == 1 || !contact_pairs.empty(),
                 dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
                                    std::to_string(n) + " bodies: name at least one contact pair."));
@@ -427,12 +446,24 @@ namespace dealvem
     for (const auto &b : bodies)
       any_exact = any_exact || !InputParsing::trim(b.exact).empty();
     std::vector<dealii::ConvergenceTable> tables(bodies.size());
+    std::vector<std::vector<double>>      dofs_per_cycle(bodies.size());
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
       {
         if (n_cycles > 1)
           std::cout << "Cycle " << cycle << ":" << std::endl;
         run_cycle(cycle);
         convergence.push_back(results.errors);
+        for (unsigned int b = 0; b < bodies.size(); ++b)
+          {
+            if (cycle > 0 && results.dofs_per_body[b] <= dofs_per_cycle[b].back())
+              std::cout << "warning: body " << b << " has " << results.dofs_per_body[b]
+                        << " DoFs in cycle " << cycle << ", no more than in cycle " << cycle - 1
+                        << ": the meshes of a convergence study must be refined from cycle to cycle (are "
+                           "two cycles reading the same mesh file?); the convergence rate of this cycle is "
+                           "not defined."
+                        << std::endl;
+            dofs_per_cycle[b].push_back(results.dofs_per_body[b]);
+          }
         if (any_exact)
           for (unsigned int b = 0; b < bodies.size(); ++b)
             if (!InputParsing::trim(bodies[b].exact).empty())
@@ -457,8 +488,20 @@ namespace dealvem
                 t.set_precision(c, 3);
               }
             if (n_cycles > 1)
-              for (const char *c : {"L2", "H1", "energy"})
-                t.evaluate_convergence_rates(c, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
+              {
+                std::vector<double> dofs;
+                std::map<std::string, std::vector<double>> errors;
+                for (const auto &e : convergence)
+                  {
+                    errors["L2"].push_back(e[b].l2 / std::max(e[b].l2_exact, 1e-300));
+                    errors["H1"].push_back(e[b].h1_seminorm / std::max(e[b].h1_exact, 1e-300));
+                    errors["energy"].push_back(e[b].energy / std::max(e[b].energy_exact, 1e-300));
+                  }
+                for (const double n : dofs_per_cycle[b])
+                  dofs.push_back(n);
+                for (const char *c : {"L2", "H1", "energy"})
+                  add_convergence_rates(t, c, errors[c], dofs);
+              }
             std::cout << "Relative errors of body " << b << " (against its exact solution):" << std::endl;
             t.write_text(std::cout, dealii::TableHandler::org_mode_table);
           }
@@ -612,6 +655,9 @@ namespace dealvem
     for (const auto &m : d.materials)
       moduli.push_back(m.second.youngs_modulus());
     const ContactScales scales(moduli, results.interfaces);
+    if (contact_settings.tangential == ContactSettings::Tangential::penalty ||
+        contact_settings.tangential == ContactSettings::Tangential::coulomb_penalty)
+      scales.check_penalty(contact_settings, "Contact/Penalty", "Contact/Penalty factor");
     d.complementarity = scales.complementarity_constant();
     results.penalty   = scales.penalty(contact_settings);
     d.contact = std::make_unique<ContactAssembler<2>>(d.dof_handler, d.pairs, contact_settings, results.penalty);
@@ -729,7 +775,20 @@ namespace dealvem
       }
     results.applied_load_per_body.assign(bodies.size(), dealii::Tensor<1, 2>());
     for (unsigned int i = 0; i < d.n; ++i)
-      results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
+      {
+        // an overflowed load is named here, before a solver fails on it
+        if (!std::isfinite(loads[i]))
+          {
+            std::ostringstream msg;
+            msg << "Load step at t = " << time << ": the assembled load vector is " << loads[i] << " at DoF " << i
+                << " (body " << node_body[i / 2]
+                << "): the loads overflow double precision when integrated. Check 'Boundary conditions and "
+                   "loads' (Body force, Traction, Pressure, Rigid boundary) for values far from the units of "
+                   "the problem.";
+            AssertThrow(false, dealii::ExcMessage(msg.str()));
+          }
+        results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
+      }
   }
 
 
@@ -906,6 +965,66 @@ namespace dealvem
     step_result.total_contact_force = results.total_contact_force;
     step_result.pairs               = results.pairs;
     results.dissipated_energy += step_result.dissipated_energy;
+    // nothing non-finite is reported or written: a quantity that overflowed
+    // stops the run here, named, before any file of the step is written
+    {
+      const auto refuse = [&](const std::string &quantity, const double value) {
+        std::ostringstream msg;
+        msg << "Load step " << step << " (t = " << time << "): the " << quantity << " is " << value
+            << ". The solution overflowed double precision (or the solve failed); check the loads, the "
+               "Dirichlet values, 'Load steps/Final time' and the Young's moduli for values far from 1 in "
+               "the units of the problem.";
+        AssertThrow(false, dealii::ExcMessage(msg.str()));
+      };
+      for (unsigned int i = 0; i < x.size(); ++i)
+        if (!std::isfinite(x[i]))
+          refuse(i < n ? "displacement DoF " + std::to_string(i) :
+                         "contact multiplier " + std::to_string(i - n),
+                 x[i]);
+      // a displacement far beyond the size of the bodies: loads out of
+      // scale with the stiffness
+      {
+        const auto      &vertices = results.mesh.get_vertices();
+        dealii::Point<2> lo = vertices[0], hi = vertices[0];
+        for (const auto &p : vertices)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              lo[c] = std::min(lo[c], p[c]);
+              hi[c] = std::max(hi[c], p[c]);
+            }
+        const double size = lo.distance(hi);
+        for (unsigned int i = 0; i < n; ++i)
+          if (std::abs(x[i]) > BoundaryConditionParameters::max_displacement_ratio * size)
+            {
+              std::ostringstream msg;
+              msg << "Load step " << step << " (t = " << time << "): the displacement of DoF " << i << " is "
+                  << x[i] << ", more than " << BoundaryConditionParameters::max_displacement_ratio
+                  << " times the size of the meshes (" << size
+                  << "): far outside the small-displacement model. The loads are out of scale with the "
+                     "stiffness: check 'Boundary conditions and loads' (Traction, Pressure, Body force, Rigid "
+                     "boundary) against the Young's moduli, or a body held by a stick penalty alone.";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
+      }
+      for (const auto &r : results.pairs)
+        for (const auto &[name, v] : std::vector<std::pair<std::string, double>>{
+               {"pressure", r.pressure}, {"shear", r.shear}, {"gap", r.gap}, {"slip", r.slip},
+               {"slip increment", r.slip_increment}})
+          if (!std::isfinite(v))
+            {
+              std::ostringstream where;
+              where << name << " of the contact pair at (" << r.location[0] << ", " << r.location[1] << ")";
+              refuse(where.str(), v);
+            }
+      if (!std::isfinite(step_result.dissipated_energy))
+        refuse("dissipated energy of the step", step_result.dissipated_energy);
+      if (!std::isfinite(results.dissipated_energy))
+        refuse("dissipated energy summed over the steps", results.dissipated_energy);
+      for (unsigned int d = 0; d < 2; ++d)
+        if (!std::isfinite(results.total_contact_force[d]))
+          refuse(std::string("total contact force (") + (d == 0 ? "x" : "y") + " component)",
+                 results.total_contact_force[d]);
+    }
     results.steps.push_back(step_result);
 
     if (n_steps > 1 || friction)
@@ -997,7 +1116,9 @@ namespace dealvem
           const auto        parts = InputParsing::split(bodies[b].exact, ',');
           AssertThrow(parts.size() == 2,
                       dealii::ExcMessage("Parameter '" + name + "' needs two expressions 'ux, uy'."));
-          const InputParsing::ParsedFunction exact(parts, bc.get_constants(), name);
+          // the solution is the one of the last load step, at t = final time
+          InputParsing::ParsedFunction exact(parts, bc.get_constants(), name);
+          exact.set_time(final_time);
           results.errors[b] = compute_errors(d.dof_handler, d.materials, results.solution, exact,
                                              dealii::types::material_id(b));
           for (const double v : {results.errors[b].l2, results.errors[b].h1_seminorm, results.errors[b].energy})

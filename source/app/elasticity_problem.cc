@@ -33,6 +33,9 @@
 #include <iostream>
 #include <iterator>
 #include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
 
 namespace dealvem
 {
@@ -85,8 +88,8 @@ namespace dealvem
     prm.enter_subsection("Exact solution");
     prm.declare_entry("Displacement", "", Anything(),
                       "Exact displacement 'ux, uy' (muparser expressions in x, y and t with "
-                      "the function constants; static problem: t = 1). Empty: no error "
-                      "computation.");
+                      "the function constants; one body: t = 1; contact problems: the time of the "
+                      "last load step, 'Load steps/Final time'). Empty: no error computation.");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
@@ -143,6 +146,29 @@ namespace dealvem
   ElasticityProblem::parse_parameters(dealii::ParameterHandler &prm, const std::string &dir)
   {
     prm_directory = dir;
+    // the sections that only contact problems (Number of bodies > 1) read:
+    // a file that sets them describes another problem than this one
+    {
+      std::set<std::string> body_sections;
+      for (const auto &e : InputParsing::list_entries(prm))
+        if (e.path.compare(0, 5, "Body ") == 0)
+          body_sections.insert(e.path.substr(0, e.path.find('/')));
+      for (const auto &section : body_sections)
+        InputParsing::check_section_unused(prm, section,
+                                           "'Number of bodies' is 1: section '" + section +
+                                             "' is read only with 'Number of bodies' at least " +
+                                             std::to_string(std::stoi(section.substr(5)) + 1) + ".");
+    }
+    InputParsing::check_section_unused(prm, "Contact",
+                                       "'Number of bodies' is 1, and contact needs at least two bodies.");
+    InputParsing::check_section_unused(prm, "Load steps",
+                                       "'Number of bodies' is 1: the one-body program solves the static "
+                                       "problem at t = 1; load steps are run by contact problems.");
+    for (const auto &e : InputParsing::changed_entries(prm, "Output"))
+      if (e == "Output/Write pictures" || e == "Output/Write CSV")
+        pcout << "warning: the parameter file sets '" << e
+              << "', which only contact problems read; it has no effect on this one-body problem." << std::endl;
+
     prm.enter_subsection("Mesh");
     mesh_parameters.parse_parameters(prm, "Mesh");
     prm.leave_subsection();
@@ -269,6 +295,25 @@ namespace dealvem
     ElasticityAssembler<2>     assembler(dof_handler, materials, gamma, stabilization);
     bc.add_loads(assembler);
     assembler.assemble(constraints, system_matrix, system_rhs);
+    for (unsigned int i = 0; i < system_rhs.size(); ++i)
+      check_load_entry(i, system_rhs[i]);
+  }
+
+
+
+  // A load vector entry that overflowed: the loads, not the solver or the
+  // support, are the cause.
+  void
+  ElasticityProblem::check_load_entry(const dealii::types::global_dof_index i, const double value) const
+  {
+    if (std::isfinite(value))
+      return;
+    std::ostringstream msg;
+    msg << "The assembled load vector is " << value << " at DoF " << i
+        << ": the loads overflow double precision when integrated. Check 'Boundary conditions and "
+           "loads' (Body force, Traction, Pressure, Rigid boundary) for values far from the units of the "
+           "problem.";
+    AssertThrow(false, dealii::ExcMessage(msg.str()));
   }
 
 
@@ -340,6 +385,8 @@ namespace dealvem
     ElasticityAssembler<2>     assembler(dof_handler, materials, gamma, stabilization);
     bc.add_loads(assembler);
     assembler.assemble(constraints, partition.locally_owned_cells(), distributed_matrix, distributed_rhs);
+    for (const auto i : distributed_rhs.locally_owned_elements())
+      check_load_entry(i, distributed_rhs(i));
   }
 
 
@@ -394,6 +441,44 @@ namespace dealvem
   void
   ElasticityProblem::output_results(const unsigned int cycle)
   {
+    // a displacement far beyond the size of the body means loads far too
+    // large for the stiffness (or a prescribed value out of scale): say so
+    // before the stresses or the error integrals overflow and take the blame
+    {
+      dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
+      for (const auto &p : mesh.get_vertices())
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            lo[d] = std::min(lo[d], p[d]);
+            hi[d] = std::max(hi[d], p[d]);
+          }
+      const double size = lo.distance(hi);
+      std::vector<dealii::types::global_dof_index> dofs;
+      const auto check_cell = [&](const unsigned int c) {
+        dof_handler.get_dof_indices(c, dofs);
+        for (const auto i : dofs)
+          if (!(std::abs(solution[i]) <= BoundaryConditionParameters::max_displacement_ratio * size))
+            {
+              std::ostringstream msg;
+              msg << "Cycle " << cycle << ": the displacement of DoF " << i << " (cell " << c << ") is "
+                  << solution[i] << ", more than " << BoundaryConditionParameters::max_displacement_ratio
+                  << " times the size of the mesh (" << size
+                  << "): far outside the small-displacement model, and the stresses and error integrals "
+                     "would overflow. The loads and prescribed displacements are out of scale with the "
+                     "stiffness: check 'Boundary conditions and loads' (Traction, Pressure, Body force, "
+                     "Rigid boundary, Dirichlet, Point constraints) against 'Material/Young's modulus' = "
+                  << youngs_modulus << ".";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
+      };
+      if (distributed)
+        for (const unsigned int c : partition.locally_owned_cells())
+          check_cell(c);
+      else
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          check_cell(c);
+    }
+
     // the cells this process computes: all, or (distributed) its own, with
     // the ghost layer for the nodal stress averages
     std::vector<unsigned int> stress_cells;
@@ -416,6 +501,49 @@ namespace dealvem
         else
           errors = compute_errors(dof_handler, materials, solution, *exact);
       }
+    // nothing non-finite is reported or written
+    {
+      std::vector<unsigned int> own_cells;
+      if (distributed)
+        own_cells = partition.locally_owned_cells();
+      else
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          own_cells.push_back(c);
+      for (const unsigned int c : own_cells)
+        if (!std::isfinite(stresses.cell_von_mises(c)))
+          {
+            std::ostringstream msg;
+            msg << "Cycle " << cycle << ": the von Mises stress of cell " << c << " (first vertex at ("
+                << mesh.vertex(mesh.cell(c).vertices[0])[0] << ", " << mesh.vertex(mesh.cell(c).vertices[0])[1]
+                << ")) is " << stresses.cell_von_mises(c)
+                << ": the displacements or the stresses overflow double precision. Check the loads, the "
+                   "Dirichlet values and 'Material/Young's modulus' for values far from 1 in the units of the "
+                   "problem.";
+            AssertThrow(false, dealii::ExcMessage(msg.str()));
+          }
+      if (exact)
+        for (const auto &[name, v] : std::vector<std::pair<std::string, double>>{
+               {"L2", errors.l2}, {"H1 seminorm", errors.h1_seminorm}, {"energy", errors.energy}})
+          if (!std::isfinite(v) || !std::isfinite(errors.l2_exact) || !std::isfinite(errors.h1_exact))
+            {
+              dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
+              for (const auto &p : mesh.get_vertices())
+                for (unsigned int d = 0; d < 2; ++d)
+                  {
+                    lo[d] = std::min(lo[d], p[d]);
+                    hi[d] = std::max(hi[d], p[d]);
+                  }
+              std::ostringstream msg;
+              msg << "Cycle " << cycle << ": the " << name << " error against 'Exact solution/Displacement' = '"
+                  << exact_displacement << "' is " << v << " (norms of the exact solution: L2 " << errors.l2_exact
+                  << ", H1 " << errors.h1_exact
+                  << "). The integrals of the error overflow double precision: the mesh spans (" << lo[0] << ", "
+                  << lo[1] << ") to (" << hi[0] << ", " << hi[1]
+                  << "); give the coordinates, loads and the exact solution in units that bring them nearer "
+                     "to 1.";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
+    }
     const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
     const std::string vtu    = prefix + (distributed ? ".pvtu" : ".vtu");
     if (write_vtu)
@@ -489,11 +617,21 @@ namespace dealvem
         table.add_value("L2", errors.l2);
         table.add_value("H1", errors.h1_seminorm);
         table.add_value("energy", errors.energy);
+        cycle_errors["L2"].push_back(errors.l2);
+        cycle_errors["H1"].push_back(errors.h1_seminorm);
+        cycle_errors["energy"].push_back(errors.energy);
         json.set(key + "errors.L2", errors.l2);
         json.set(key + "errors.H1_seminorm", errors.h1_seminorm);
         json.set(key + "errors.energy", errors.energy);
         last_errors = {errors.l2, errors.h1_seminorm, errors.energy};
       }
+    if (!cycle_dofs.empty() && dof_handler.n_dofs() <= cycle_dofs.back())
+      pcout << "warning: cycle " << cycle << " has " << dof_handler.n_dofs() << " DoFs, no more than cycle "
+            << cycle - 1 << " (" << cycle_dofs.back()
+            << "): the meshes of a convergence study must be refined from cycle to cycle (are two cycles "
+               "reading the same mesh file?); the convergence rate of this cycle is not defined."
+            << std::endl;
+    cycle_dofs.push_back(dof_handler.n_dofs());
     last_n_dofs = dof_handler.n_dofs();
     last_timings.clear();
     for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
@@ -539,6 +677,8 @@ namespace dealvem
                 dealii::ExcMessage("Parameter 'Exact solution/Displacement' needs two expressions 'ux, uy'."));
 
     table = dealii::ConvergenceTable();
+    cycle_dofs.clear();
+    cycle_errors.clear();
     json  = JsonSummary();
     json.set("program", "dealvem");
     json.set("mesh.type", mesh_parameters.description());
@@ -582,7 +722,7 @@ namespace dealvem
           }
         if (n_cycles > 1)
           for (const std::string c : {"L2", "H1", "energy"})
-            table.evaluate_convergence_rates(c, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
+            add_convergence_rates(table, c, cycle_errors[c], cycle_dofs);
         pcout << std::endl;
         if (this_process == 0)
           table.write_text(std::cout, dealii::TableHandler::org_mode_table);

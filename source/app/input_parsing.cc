@@ -12,7 +12,11 @@
 
 #include <muParserError.h>
 
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -431,6 +435,116 @@ namespace dealvem
                                      " values requested."));
       for (unsigned int c = 0; c < n_components; ++c)
         values[c] = value(p, c);
+    }
+
+
+
+    namespace
+    {
+      // ParameterHandler writes every character of a section or entry name
+      // other than a letter or digit as '_' and two hexadecimal digits
+      std::string
+      demangle(const std::string &s)
+      {
+        std::string out;
+        for (std::size_t i = 0; i < s.size(); ++i)
+          if (s[i] == '_' && i + 2 < s.size() && std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
+              std::isxdigit(static_cast<unsigned char>(s[i + 2])))
+            {
+              out += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+              i += 2;
+            }
+          else
+            out += s[i];
+        return out;
+      }
+
+      void
+      collect_entries(const boost::property_tree::ptree &tree, const std::string &prefix, std::vector<Entry> &out)
+      {
+        for (const auto &child : tree)
+          {
+            const std::string name = demangle(child.first);
+            const auto        value = child.second.get_optional<std::string>("value");
+            if (value)
+              out.push_back(Entry{prefix + name, *value, child.second.get<std::string>("default_value", ""),
+                                  trim(child.second.get<std::string>("pattern_description", ""))});
+            else if (!child.second.empty())
+              collect_entries(child.second, prefix + name + "/", out);
+          }
+      }
+    } // namespace
+
+
+
+    std::vector<Entry>
+    list_entries(const dealii::ParameterHandler &prm)
+    {
+      std::stringstream xml;
+      prm.print_parameters(xml, dealii::ParameterHandler::XML);
+      boost::property_tree::ptree tree;
+      boost::property_tree::read_xml(xml, tree);
+      std::vector<Entry> out;
+      const auto         root = tree.get_child_optional("ParameterHandler");
+      AssertThrow(root, dealii::ExcMessage("InputParsing::list_entries: the XML description of the "
+                                           "parameters has no element 'ParameterHandler'."));
+      collect_entries(*root, "", out);
+      return out;
+    }
+
+
+
+    void
+    check_braced_values(const dealii::ParameterHandler &prm)
+    {
+      for (const auto &e : list_entries(prm))
+        {
+          if (e.value.find('{') == std::string::npos)
+            continue;
+          const auto pattern = dealii::Patterns::pattern_factory(e.pattern);
+          // a pattern that cannot be rebuilt from its description is left
+          // alone (dealvem declares none)
+          if (pattern == nullptr || pattern->match(e.value))
+            continue;
+          AssertThrow(false,
+                      dealii::ExcMessage("Parameter '" + e.path + "' = '" + e.value + "' does not match its pattern " +
+                                         e.pattern +
+                                         ". (The parameter reader leaves values that contain '{' unchecked; "
+                                         "dealvem takes them literally, so write the value without braces.)"));
+        }
+    }
+
+
+
+    std::vector<std::string>
+    changed_entries(const dealii::ParameterHandler &prm, const std::string &section)
+    {
+      std::vector<std::string> out;
+      const std::string        prefix = section.empty() ? std::string() : section + "/";
+      for (const auto &e : list_entries(prm))
+        if (e.path.compare(0, prefix.size(), prefix) == 0 && trim(e.value) != trim(e.default_value))
+          out.push_back(e.path);
+      return out;
+    }
+
+
+
+    void
+    check_section_unused(const dealii::ParameterHandler &prm,
+                         const std::string              &section,
+                         const std::string              &reason)
+    {
+      const auto changed = changed_entries(prm, section);
+      if (changed.empty())
+        return;
+      std::ostringstream msg;
+      msg << "The parameter file sets '" << changed[0] << "'";
+      if (changed.size() > 1)
+        msg << " (and " << changed.size() - 1 << " more entr" << (changed.size() > 2 ? "ies" : "y")
+            << " of section '" << section << "')";
+      msg << ", but this problem does not read section '" << section << "', so the setting would be ignored. "
+          << reason;
+      AssertThrow(false, dealii::ExcMessage(msg.str()));
     }
   } // namespace InputParsing
 } // namespace dealvem

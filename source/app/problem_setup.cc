@@ -6,6 +6,7 @@
 #include <dealvem/elasticity/boundary_conditions.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace dealvem
 {
@@ -268,6 +269,34 @@ namespace dealvem
       {
         BoundaryConditions::add_rigid_boundary(dof_handler, r.id, constraints, r.name, &origins);
         record(r.name);
+      }
+    // prescribed displacements far beyond the size of the mesh leave the
+    // small-displacement model and make the solvers fail for reasons that
+    // would not name the value (overflowing residuals, cycling active sets)
+    const auto &mesh = dof_handler.get_mesh();
+    if (mesh.n_vertices() > 0)
+      {
+        dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
+        for (const auto &p : mesh.get_vertices())
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d] = std::min(lo[d], p[d]);
+              hi[d] = std::max(hi[d], p[d]);
+            }
+        const double size = lo.distance(hi);
+        for (const auto &line : constraints.get_lines())
+          if (!(std::abs(line.inhomogeneity) <= max_displacement_ratio * size))
+            {
+              const auto        origin = origins.find(line.index);
+              std::ostringstream msg;
+              msg << "Parameter '" << (origin != origins.end() ? origin->second : std::string("?"))
+                  << "': the prescribed displacement of DoF " << line.index << " is " << line.inhomogeneity
+                  << ", more than " << max_displacement_ratio << " times the size of the mesh '" << mesh.name
+                  << "' (" << size
+                  << "). The small-displacement model does not hold there, and the solution would overflow; "
+                     "check the value and its units.";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
       }
   }
 

@@ -67,7 +67,9 @@ namespace dealvem
     AssertThrow((settings.tangential != ContactSettings::Tangential::penalty &&
                  settings.tangential != ContactSettings::Tangential::coulomb_penalty) ||
                   penalty > 0,
-                dealii::ExcMessage("The tangential penalty must be positive."));
+                dealii::ExcMessage("ContactAssembler: the tangential stick penalty is " + std::to_string(penalty) +
+                                   ", but the tangential model uses a penalty, which must be positive "
+                                   "(see ContactScales::penalty())."));
     for (const auto &p : pairs)
       AssertThrow(std::isfinite(settings.friction_coefficient_of(p.interface)) &&
                     settings.friction_coefficient_of(p.interface) >= 0,
@@ -450,5 +452,35 @@ namespace dealvem
     AssertThrow(h_min > 0 && std::isfinite(h_min),
                 dealii::ExcMessage("ContactScales: node insertion paired no interface edge, so the contact "
                                    "scale E_min / h_min is undefined."));
+  }
+
+
+
+  void
+  ContactScales::check_penalty(const ContactSettings &settings,
+                               const std::string     &penalty_parameter,
+                               const std::string     &factor_parameter) const
+  {
+    const double scale  = E_min / h_min;
+    const bool   given  = settings.penalty > 0;
+    const double factor = given ? settings.penalty / scale : settings.penalty_factor;
+    if (std::isfinite(factor) && factor >= min_penalty_factor && factor <= max_penalty_factor)
+      return;
+    std::ostringstream msg;
+    msg << "Parameter '" << (given ? penalty_parameter : factor_parameter) << "' = "
+        << (given ? settings.penalty : settings.penalty_factor) << " is out of range for this problem: ";
+    if (given)
+      msg << "the stick penalty must lie in [" << min_penalty_factor * scale << ", " << max_penalty_factor * scale
+          << "], that is " << min_penalty_factor << " to " << max_penalty_factor
+          << " times E_min / h_min = " << scale << " (it is " << factor << " times that)";
+    else
+      msg << "the factor of the default penalty rule 'penalty = factor * E_min / h_min' must lie in ["
+          << min_penalty_factor << ", " << max_penalty_factor << "] (E_min / h_min = " << scale << ")";
+    msg << "; E_min = " << E_min << " is the smallest Young's modulus of the bodies and h_min = " << h_min
+        << " the shortest paired interface sub-edge. A smaller penalty leaves the stick direction "
+           "nearly free (a body held there by the springs alone moves by about 1 / factor times its "
+           "elastic deformation, computed from a nearly singular system), a larger one makes the "
+           "system too ill-conditioned for correct pressures.";
+    AssertThrow(false, dealii::ExcMessage(msg.str()));
   }
 } // namespace dealvem

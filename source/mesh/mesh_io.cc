@@ -267,6 +267,7 @@ namespace dealvem
 
       // points: three numbers each
       t.expect("POINTS");
+      const std::size_t points_line = t.line();
       const long long n_points = t.count("the number of points", 3 * bytes_per_number, 1);
       t.next("the point data type");
       mesh.clear();
@@ -277,6 +278,29 @@ namespace dealvem
           const double y = t.coordinate("y of point " + std::to_string(i));
           t.coordinate("z of point " + std::to_string(i));
           mesh.add_vertex(dealii::Point<dim>(x, y));
+        }
+      // a mesh far below the scale of double precision: the areas below
+      // (products of coordinates) underflow and every cell would look
+      // degenerate; say what is wrong instead
+      if (n_points > 0)
+        {
+          dealii::Point<dim> lo = mesh.vertex(0), hi = mesh.vertex(0);
+          for (const auto &p : mesh.get_vertices())
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                lo[d] = std::min(lo[d], p[d]);
+                hi[d] = std::max(hi[d], p[d]);
+              }
+          const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+          if (extent > 0 && extent < 1e-100)
+            {
+              std::ostringstream msg;
+              msg << t.at(points_line) << "the points span only " << extent
+                  << "; meshes smaller than 1e-100 are not supported, because areas and geometric "
+                     "tolerances (products of coordinate differences) underflow. Give the coordinates in "
+                     "a length unit nearer to the size of the mesh.";
+              AssertThrow(false, ExcInvalidMesh(msg.str()));
+            }
         }
 
       // cells: a count and at least one index each

@@ -22,6 +22,8 @@ namespace dealvem
     // multiply coordinate differences and sum such products over a loop,
     // which must stay far from overflow.
     constexpr double max_coordinate = 1e100;
+    // The smallest extent of a mesh (largest side of its bounding box).
+    constexpr double min_extent = 1e-100;
 
     inline double
     cross(const P &o, const P &a, const P &b)
@@ -271,6 +273,28 @@ namespace dealvem
     // (1) checks on the raw loops that the later steps rely on
     for (unsigned int v = 0; v < vertices.size(); ++v)
       check_coordinates(name, v, vertices[v]);
+    // a mesh far below the scale of double precision: areas and the
+    // geometric tolerances (products of coordinate differences) underflow,
+    // and the checks below would report zero areas or repeated vertices
+    if (!vertices.empty())
+      {
+        P lo = vertices[0], hi = vertices[0];
+        for (const auto &p : vertices)
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d] = std::min(lo[d], p[d]);
+              hi[d] = std::max(hi[d], p[d]);
+            }
+        const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+        AssertThrow(extent == 0 || extent >= min_extent,
+                    ExcInvalidMesh("mesh '" + name + "': its vertices span only " + [&] {
+                      std::ostringstream e;
+                      e << extent << " (from " << point_string(lo) << " to " << point_string(hi) << ")";
+                      return e.str();
+                    }() + "; meshes smaller than 1e-100 are not supported, because the areas and geometric "
+                          "tolerances (products of coordinate differences) underflow. Give the coordinates "
+                          "in a length unit nearer to the size of the mesh."));
+      }
     for (unsigned int c = 0; c < cells.size(); ++c)
       {
         const auto &loop = cells[c].vertices;
@@ -567,6 +591,53 @@ namespace dealvem
     if (cells.size() < 2)
       return;
 
+    std::vector<std::vector<unsigned int>> vertex_cells(vertices.size());
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      for (const auto v : cells[c].vertices)
+        vertex_cells[v].push_back(c);
+
+    // two distinct vertices of one body at the same point (within 1e-10 of
+    // the smaller diameter of the cells around them): the cells on either
+    // side use different vertices there, so the body is cut (a slit) where
+    // the mesh looks connected. Found through a bucket grid of the vertices.
+    {
+      std::vector<double> vertex_h(vertices.size(), 0);
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        for (const unsigned int c : vertex_cells[v])
+          vertex_h[v] = (vertex_h[v] == 0 ? diam[c] : std::min(vertex_h[v], diam[c]));
+      Grid vertex_grid(lo, hi, vertices.size());
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        if (!vertex_cells[v].empty())
+          vertex_grid.insert_box(vertices[v], vertices[v], v);
+      const auto same_body = [&](const unsigned int v, const unsigned int w) {
+        for (const unsigned int c : vertex_cells[v])
+          for (const unsigned int d : vertex_cells[w])
+            if (cells[c].material_id == cells[d].material_id)
+              return true;
+        return false;
+      };
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        {
+          if (vertex_cells[v].empty())
+            continue;
+          const P                   &p   = vertices[v];
+          const double               tol = 1e-10 * vertex_h[v];
+          const dealii::Tensor<1, 2> r({tol, tol});
+          vertex_grid.query_box(p - r, p + r, [&](const unsigned int w) {
+            if (w <= v || p.distance(vertices[w]) > 1e-10 * std::min(vertex_h[v], vertex_h[w]) ||
+                !same_body(v, w))
+              return;
+            AssertThrow(false,
+                        ExcInvalidMesh("mesh '" + name + "': the distinct vertices " + std::to_string(v) + " and " +
+                                       std::to_string(w) + " lie at the same point " + point_string(p) +
+                                       " (cell " + std::to_string(vertex_cells[v][0]) + " uses the first, cell " +
+                                       std::to_string(vertex_cells[w][0]) +
+                                       " the second), so the body is cut there although its cells touch. "
+                                       "Merge the duplicated vertex (node) in the mesh."));
+          });
+        }
+    }
+
     // overlapping cells of one body: crossing edges, or a vertex strictly
     // inside another cell
     Grid edge_grid(lo, hi, edges.size());
@@ -607,10 +678,6 @@ namespace dealvem
             }
         cell_grid.insert_box(clo, chi, c);
       }
-    std::vector<std::vector<unsigned int>> vertex_cells(vertices.size());
-    for (unsigned int c = 0; c < cells.size(); ++c)
-      for (const auto v : cells[c].vertices)
-        vertex_cells[v].push_back(c);
     for (unsigned int v = 0; v < vertices.size(); ++v)
       {
         if (vertex_cells[v].empty())

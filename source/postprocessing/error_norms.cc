@@ -125,6 +125,38 @@ namespace dealvem
     return r;
   }
 
+  void
+  add_convergence_rates(dealii::ConvergenceTable  &table,
+                        const std::string         &key,
+                        const std::vector<double> &errors,
+                        const std::vector<double> &n_dofs)
+  {
+    AssertThrow(errors.size() == n_dofs.size(),
+                dealii::ExcMessage("add_convergence_rates: " + std::to_string(errors.size()) + " errors but " +
+                                   std::to_string(n_dofs.size()) + " DoF counts for the column '" + key + "'."));
+    // ConvergenceTable computes only the rows that its rate column lacks;
+    // with every row filled here, evaluate_convergence_rates() adds nothing
+    // but the column's format (two decimals, grouped under key) as for its own
+    const std::string rate_key = key + "...red.rate.log2";
+    for (unsigned int i = 0; i < errors.size(); ++i)
+      {
+        if (i == 0)
+          {
+            table.add_value(rate_key, std::string("-"));
+            continue;
+          }
+        const bool defined = errors[i - 1] > 0 && errors[i] > 0 && std::isfinite(errors[i - 1]) &&
+                             std::isfinite(errors[i]) && n_dofs[i] > n_dofs[i - 1];
+        if (defined)
+          table.add_value(rate_key, 2 * std::log(errors[i - 1] / errors[i]) / std::log(n_dofs[i] / n_dofs[i - 1]));
+        else
+          table.add_value(rate_key, std::string("n/a"));
+      }
+    table.evaluate_convergence_rates(key, "dofs", dealii::ConvergenceTable::reduction_rate_log2, 2);
+  }
+
+
+
   template ErrorNorms
   compute_errors(const VEMDoFHandler<2> &, const std::map<dealii::types::material_id, ElasticMaterial> &,
                  const dealii::Vector<double> &, const dealii::Function<2> &,

@@ -43,16 +43,19 @@ namespace dealvem
   void
   JsonSummary::set(const std::string &path, const double value)
   {
+    // JSON has no inf or NaN, and a null in place of a number that
+    // overflowed would hide the failure from whoever reads the summary
+    AssertThrow(std::isfinite(value),
+                dealii::ExcMessage("JSON summary: the value of '" + path + "' is " +
+                                   (std::isnan(value) ? std::string("NaN") : value > 0 ? "inf" : "-inf") +
+                                   "; a summary with a non-finite number is not written. The quantity "
+                                   "overflowed (check the input for values far from 1 in the units of "
+                                   "the problem)."));
     Node &n   = find(path);
     n.is_leaf = true;
-    if (!std::isfinite(value))
-      n.value = "null";
-    else
-      {
-        std::ostringstream s;
-        s << std::setprecision(17) << value;
-        n.value = s.str();
-      }
+    std::ostringstream s;
+    s << std::setprecision(17) << value;
+    n.value = s.str();
   }
 
 

@@ -5,7 +5,10 @@
 #include <dealvem/base/output_file.h>
 #include <dealvem/postprocessing/vtu_output.h>
 
+#include <cmath>
 #include <iomanip>
+#include <sstream>
+#include <string>
 
 namespace dealvem
 {
@@ -52,6 +55,51 @@ namespace dealvem
             local[v] = v;
             vertices.push_back(v);
           }
+
+      // nothing non-finite goes into the file: a value that overflowed
+      // stops the output, naming the field and where it is
+      {
+        const auto refuse = [&](const std::string &field, const double value, const std::string &where) {
+          std::ostringstream msg;
+          msg << "Cannot write the VTU file '" << filename << "': the field '" << field << "' is " << value
+              << " at " << where
+              << ". The solution or the stresses recovered from it overflow (or the solve failed); "
+                 "check the loads and the material for values far from 1 in the units of the problem.";
+          AssertThrow(false, dealii::ExcMessage(msg.str()));
+        };
+        const auto vertex_name = [&](const unsigned int v) {
+          std::ostringstream w;
+          w << "vertex " << v << " (" << mesh.get_vertices()[v][0] << ", " << mesh.get_vertices()[v][1] << ")";
+          return w.str();
+        };
+        // the displacements first: stresses derive from them
+        for (const unsigned int v : vertices)
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              if (!std::isfinite(mesh.get_vertices()[v][d]))
+                refuse("coordinates", mesh.get_vertices()[v][d], "vertex " + std::to_string(v));
+              if (!std::isfinite(u[2 * v + d]))
+                refuse("displacement", u[2 * v + d], vertex_name(v));
+            }
+        for (const unsigned int v : vertices)
+          {
+            for (unsigned int d = 0; d < 2; ++d)
+              for (unsigned int e = 0; e < 2; ++e)
+                if (!std::isfinite(s.vertex_stress(v)[d][e]))
+                  refuse("stress", s.vertex_stress(v)[d][e], vertex_name(v));
+            if (!std::isfinite(s.vertex_von_mises(v)))
+              refuse("von_mises", s.vertex_von_mises(v), vertex_name(v));
+          }
+        for (const unsigned int c : cells)
+          {
+            for (unsigned int d = 0; d < 2; ++d)
+              for (unsigned int e = 0; e < 2; ++e)
+                if (!std::isfinite(s.cell_stress(c)[d][e]))
+                  refuse("stress", s.cell_stress(c)[d][e], "cell " + std::to_string(c));
+            if (!std::isfinite(s.cell_von_mises(c)))
+              refuse("von_mises", s.cell_von_mises(c), "cell " + std::to_string(c));
+          }
+      }
 
       OutputFile    file(filename);
       std::ostream &out = file.stream();

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cctype>
 #include <memory>
+#include <sstream>
 
 namespace dealvem
 {
@@ -361,7 +362,16 @@ namespace dealvem
         iterations = control.last_step();
       }
     for (unsigned int i = 0; i < x.size(); ++i)
-      AssertThrow(std::isfinite(x[i]), dealii::ExcMessage("The linear solver produced a non-finite value: "
-                                                          "the system is singular (is the body supported?)."));
+      if (!std::isfinite(x[i]))
+        {
+          // the rigid-body support is checked before a solve, so the usual
+          // cause is a solution beyond double precision: give its scale
+          std::ostringstream msg;
+          msg << "The linear solver produced a non-finite value (unknown " << i << ", right-hand side up to "
+              << b.linfty_norm()
+              << "): the solution overflows double precision, because the loads are far too large for the "
+                 "stiffness, or the system is singular (is the body supported?).";
+          AssertThrow(false, dealii::ExcMessage(msg.str()));
+        }
   }
 } // namespace dealvem

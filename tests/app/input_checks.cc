@@ -6,8 +6,11 @@
 // value), the names of the function constants, the size estimate of a run
 // and its limits (with the way around them, 'Allow large runs'), and the
 // range of Young's modulus in ElasticMaterial itself.
+#include <deal.II/base/parameter_handler.h>
+
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/app/mesh_parameters.h>
+#include <dealvem/contact/contact_assembler.h>
 #include <dealvem/elasticity/material.h>
 
 #include "../tests.h"
@@ -105,5 +108,81 @@ main()
   many.n_cells = 3000000;
   testing::check_throws([&] { check_run_size({&many}, 2, 1, false); }, "more than 1e+07 Voronoi cells",
                         "1.2e7 Voronoi cells are refused");
+  // values in braces, which ParameterHandler leaves unchecked, and the
+  // entries a file changed
+  {
+    const auto declare = [](dealii::ParameterHandler &prm) {
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Type", "voronoi", dealii::Patterns::Selection("structured quads|voronoi"));
+      prm.declare_entry("File name", "", dealii::Patterns::Anything());
+      prm.declare_entry("Perturbation", "0.2", dealii::Patterns::Double(0, 0.49));
+      prm.leave_subsection();
+      prm.enter_subsection("Body 1");
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Seed", "1", dealii::Patterns::Integer(0));
+      prm.leave_subsection();
+      prm.leave_subsection();
+    };
+    {
+      dealii::ParameterHandler prm;
+      declare(prm);
+      prm.parse_input_from_string("subsection Mesh\n set File name = m-{cycle}.vtk\n"
+                                  " set Perturbation = 0.3\nend\n");
+      check_braced_values(prm);
+      testing::check(true, "a file name with '{cycle}' (pattern Anything) passes the brace check");
+      const auto changed = changed_entries(prm, "Mesh");
+      testing::check(changed == std::vector<std::string>{"Mesh/File name", "Mesh/Perturbation"},
+                     "changed_entries lists the two entries the input set");
+      testing::check(changed_entries(prm, "Body 1").empty(), "... and none in a section it did not set");
+    }
+    {
+      dealii::ParameterHandler prm;
+      declare(prm);
+      prm.parse_input_from_string("subsection Mesh\n set Type = {voronoi}\nend\n");
+      testing::check_throws([&] { check_braced_values(prm); },
+                            "Parameter 'Mesh/Type' = '{voronoi}' does not match its pattern [Selection",
+                            "a selection in braces is refused, naming the entry");
+    }
+    {
+      dealii::ParameterHandler prm;
+      declare(prm);
+      prm.parse_input_from_string("subsection Body 1\n subsection Mesh\n set Seed = {-3}\n end\nend\n");
+      testing::check_throws([&] { check_braced_values(prm); },
+                            "Parameter 'Body 1/Mesh/Seed' = '{-3}' does not match its pattern [Integer",
+                            "an integer in braces in a nested section is refused, naming the path");
+      testing::check(changed_entries(prm, "Body 1") == std::vector<std::string>{"Body 1/Mesh/Seed"},
+                     "changed_entries finds an entry two sections deep");
+    }
+  }
+
+  // the stick penalty relative to E_min / h_min: E_min = 1000, h_min = 0.1
+  {
+    NodeInsertion::Interface itf;
+    itf.segments.push_back(ContactSegment{0, 1, dealii::numbers::invalid_unsigned_int, 0.1});
+    itf.segments.push_back(ContactSegment{1, 2, dealii::numbers::invalid_unsigned_int, 0.25});
+    const ContactScales scales({4000, 1000}, {itf});
+    testing::check(std::abs(scales.penalty(ContactSettings()) - 1e7) < 1e-6,
+                   "the default penalty is 1000 * E_min / h_min = 1e7");
+    ContactSettings s;
+    s.penalty = 1e-2; // 1e-6 * 1e4
+    scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor");
+    s.penalty = 1e12; // 1e8 * 1e4
+    scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor");
+    testing::check(true, "penalties at both ends of [1e-6, 1e8] * E_min / h_min pass");
+    s.penalty = 1e-300;
+    testing::check_throws([&] { scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor"); },
+                          "Parameter 'Contact/Penalty' = 1e-300 is out of range for this problem: the stick "
+                          "penalty must lie in [0.01, 1e+12], that is 1e-06 to 1e+08 times E_min / h_min = 10000",
+                          "a penalty of 1e-300 is refused, naming the parameter and the bounds");
+    s.penalty = 1.01e12;
+    testing::check_throws([&] { scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor"); },
+                          "Parameter 'Contact/Penalty' = 1.01e+12 is out of range",
+                          "a penalty just above 1e8 * E_min / h_min is refused");
+    s.penalty        = 0;
+    s.penalty_factor = 1e-300;
+    testing::check_throws([&] { scales.check_penalty(s, "Contact/Penalty", "Contact/Penalty factor"); },
+                          "Parameter 'Contact/Penalty factor' = 1e-300 is out of range for this problem",
+                          "the factor of the default rule is named when Penalty = 0");
+  }
   return testing::finish();
 }

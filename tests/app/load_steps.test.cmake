@@ -5,6 +5,9 @@
 # (t = 2) the pressure 10, both to 1e-10 relative: the patch test is exact,
 # so any other value means t did not reach the expression. The same file
 # with 'Pressure = 13 : p' and p = 10 (no t, one step) gives 10 as well.
+# The exact displacement, written with t as the load, is compared at the
+# final time: the relative errors of the two-step run must be round-off
+# (at t = 1 they would be 1).
 function(run_case name)
   execute_process(COMMAND ${DEALVEM} ${ARGN} WORKING_DIRECTORY ${WORK_DIR}
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -86,6 +89,9 @@ subsection Boundary conditions and loads
   @PRESSURE@
 end
 @STEPS@
+subsection Exact solution
+  set Displacement = 0.3*1.3*5*t/7000*x, -0.91*5*t/7000*y
+end
 subsection Output
   set Folder = output
   set Base name = @BASE@
@@ -109,6 +115,18 @@ string(JSON t2 GET "${json}" steps 2 time)
 if(NOT t2 EQUAL 2)
   message(FATAL_ERROR "FAIL steps JSON: step 2 at t = ${t2}, not 2")
 endif()
+# the errors against the exact solution at t = 2
+foreach(body body0 body1)
+  foreach(norm L2 H1 energy)
+    string(JSON err GET "${json}" errors ${body} ${norm})
+    string(REGEX MATCH "^[0-9.]+e-(1[0-9]|[2-9][0-9])$" small "${err}")
+    if(NOT small AND NOT err EQUAL 0)
+      message(FATAL_ERROR "FAIL steps JSON: relative ${norm} error of ${body} = ${err} against the exact "
+        "solution at the final time t = 2, expected round-off")
+    endif()
+  endforeach()
+endforeach()
+message(STATUS "PASS steps: the exact solution is evaluated at the final time")
 
 # the spelling without t: p = 10, one step at t = 1
 set(PRESSURE "set Pressure = 13 : p")
@@ -118,3 +136,23 @@ string(CONFIGURE "${prm}" text @ONLY)
 file(WRITE ${WORK_DIR}/static.prm "${text}")
 run_case("pressure p without t" ${WORK_DIR}/static.prm)
 check_csv_pressure(${WORK_DIR}/output/static-interface.csv 10)
+
+# the fuzz seeds of the friction, load-step and rigid-boundary inputs run
+# as they are: every load step converges, and the JSON lists them all
+foreach(seed friction-rigid-steps coulomb-penalty-steps)
+  file(REMOVE_RECURSE ${WORK_DIR}/${seed})
+  file(MAKE_DIRECTORY ${WORK_DIR}/${seed})
+  execute_process(COMMAND ${DEALVEM} ${TEST_DIR}/${seed}.prm WORKING_DIRECTORY ${WORK_DIR}/${seed}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "FAIL ${seed}.prm: exit code ${rc}\n${out}${err}")
+  endif()
+  file(GLOB json ${WORK_DIR}/${seed}/output/*.json)
+  file(READ ${json} text)
+  string(JSON requested GET "${text}" load_steps requested)
+  string(JSON converged GET "${text}" load_steps converged)
+  if(NOT requested EQUAL converged OR requested LESS 2)
+    message(FATAL_ERROR "FAIL ${seed}.prm: ${converged} of ${requested} load steps converged")
+  endif()
+  message(STATUS "PASS ${seed}.prm: ${converged} load steps")
+endforeach()

@@ -13,8 +13,10 @@
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/vem/virtual_element.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "../elasticity_common.h"
@@ -84,6 +86,17 @@ main()
       testing::check(text.find("points " + std::to_string(mesh.n_vertices()) + "\n") != std::string::npos &&
                        text.find("polygon cells " + std::to_string(mesh.n_cells()) + "\n") != std::string::npos,
                      file + ": numbers of points and polygon cells");
+
+      // a displacement that overflowed: the file is refused, naming the
+      // field and the vertex, and nothing is written
+      dealii::Vector<double> bad = x;
+      bad[2 * 3 + 1]             = std::numeric_limits<double>::infinity();
+      const StressRecovery<2> bad_stresses(dof_handler, materials, bad);
+      const std::string       bad_file = "overflow-k" + std::to_string(k) + ".vtu";
+      testing::check_throws([&] { write_vtu_file(bad_file, dof_handler, bad, bad_stresses); },
+                            "Cannot write the VTU file '" + bad_file + "': the field 'displacement' is inf at vertex 3",
+                            "k=" + std::to_string(k) + ": a VTU file with an infinite displacement is refused");
+      testing::check(!std::ifstream(bad_file), "... and not written");
     }
 
   JsonSummary json;
@@ -92,5 +105,10 @@ main()
   json.set("d", 2.0);
   const std::string expected = "{\n  \"a\": {\n    \"b\": 1.5,\n    \"c\": \"say \\\"hi\\\"\"\n  },\n  \"d\": 2\n}\n";
   testing::check(json.to_string() == expected, "JSON summary text:\n" + json.to_string());
+  testing::check_throws([&] { json.set("contact.dissipated_energy", std::numeric_limits<double>::infinity()); },
+                        "JSON summary: the value of 'contact.dissipated_energy' is inf",
+                        "an infinite number is refused by the JSON summary, naming its key");
+  testing::check_throws([&] { json.set("steps.1.force_x", std::nan("")); },
+                        "JSON summary: the value of 'steps.1.force_x' is NaN", "... and so is NaN");
   return testing::finish();
 }

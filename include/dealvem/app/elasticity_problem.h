@@ -123,6 +123,10 @@ namespace dealvem
     make_mesh(const unsigned int cycle);
     void
     setup_system();
+    /// Throw, naming the loads, if entry @p i of the load vector is not
+    /// finite.
+    void
+    check_load_entry(const dealii::types::global_dof_index i, const double value) const;
     void
     assemble_system();
     void
@@ -179,6 +183,9 @@ namespace dealvem
     /// Wall time of the preconditioner set-up within the solve.
     double                                                solver_setup_time = 0;
     dealii::ConvergenceTable                              table;
+    /// Per cycle: the DoFs and the errors L2, H1, energy (for the rates).
+    std::vector<double>                                   cycle_dofs;
+    std::map<std::string, std::vector<double>>            cycle_errors;
     JsonSummary                                           json;
   };
 } // namespace dealvem

@@ -5,6 +5,7 @@
 #ifndef dealvem_app_input_parsing_h
 #define dealvem_app_input_parsing_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
 
 #include <map>
@@ -130,6 +131,55 @@ namespace dealvem
                    const unsigned int                        n_cycles,
                    const unsigned int                        degree,
                    const bool                                allow_large_runs);
+
+    /// One entry of a ParameterHandler: its path ("Body 1/Mesh/Type"), its
+    /// current and default values and the description of its pattern.
+    struct Entry
+    {
+      std::string path, value, default_value, pattern;
+    };
+
+    /**
+     * Every entry of @p prm (from its XML description, so that the patterns
+     * are known too), in the order ParameterHandler prints them.
+     */
+    std::vector<Entry>
+    list_entries(const dealii::ParameterHandler &prm);
+
+    /**
+     * deal.II's ParameterHandler does not check a value that contains '{'
+     * against the pattern of its entry (it keeps such values for its
+     * parameter loops, which dealvem does not run), so that
+     * `set Type = {voronoi}` would reach the program as the literal text.
+     * Check every such value against its pattern and throw, naming the
+     * entry, the value and the pattern, if it does not match. Values that
+     * match (the expressions and file names of 'Anything' entries, such as
+     * a file name with '{cycle}') pass.
+     */
+    void
+    check_braced_values(const dealii::ParameterHandler &prm);
+
+    /**
+     * The paths of the entries of @p prm below the section @p section (a
+     * path such as "Body 1" or "Contact", without a trailing '/') whose value
+     * differs from their default: the entries a parameter file set to
+     * something else. (ParameterHandler does not record which entries a
+     * file sets; an entry set to its default value is not listed.)
+     */
+    std::vector<std::string>
+    changed_entries(const dealii::ParameterHandler &prm, const std::string &section);
+
+    /**
+     * Throw if the parameter file set an entry of the section @p section
+     * (see changed_entries()) that the problem it describes does not read:
+     * the message names the first such entry, how many more there are, and
+     * ends with @p reason (what the section needs, e.g. "set 'Number of
+     * bodies = 2'").
+     */
+    void
+    check_section_unused(const dealii::ParameterHandler &prm,
+                         const std::string              &section,
+                         const std::string              &reason);
 
     /**
      * A function of (x, y) and the time t given by muparser expressions, one

@@ -59,6 +59,13 @@ namespace dealvem
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /// The bound of displacements, prescribed (apply_constraints()) or
+    /// computed (checked by the problems after each solve), relative to the
+    /// diagonal of the bounding box of the mesh: beyond it the
+    /// small-displacement model means nothing and stresses and error
+    /// integrals head for overflow.
+    static constexpr double max_displacement_ratio = 1e6;
+
     /**
      * Stop with an error naming the parameter entry, the missing boundary id
      * and the ids the mesh has if an entry (Dirichlet, roller, traction,
@@ -71,7 +78,9 @@ namespace dealvem
     /// Write all constraints: Dirichlet first, then rollers, point
     /// constraints and rigid boundaries. A point constraint or rigid
     /// boundary that collides with an earlier constraint stops with a
-    /// message naming both entries.
+    /// message naming both entries; so does a prescribed displacement larger
+    /// than max_displacement_ratio times the size of the mesh, naming its
+    /// entry.
     void
     apply_constraints(const VEMDoFHandler<2> &dof_handler,
                       dealii::AffineConstraints<double> &constraints) const;

@@ -125,6 +125,33 @@ namespace dealvem
     {
       return settings.penalty > 0 ? settings.penalty : settings.penalty_factor * E_min / h_min;
     }
+
+    /**
+     * The range of a stick penalty, relative to $E_{min}/h_{min}$. Below
+     * min_penalty_factor the springs hardly hold the stick direction: where
+     * they are the only tangential support, a body moves by about
+     * 1/min_penalty_factor times its elastic deformation, and the rigid
+     * motion that the springs barely hold turns the system into a nearly
+     * singular one (the solvers lose about 3 digits per factor 1000 of
+     * stiffness contrast). Above max_penalty_factor the condition number,
+     * which grows with the factor, leaves too few digits for the pressures.
+     */
+    static constexpr double min_penalty_factor = 1e-6;
+    static constexpr double max_penalty_factor = 1e8;
+
+    /**
+     * Throw unless the stick penalty that penalty() gives for @p settings
+     * lies in [min_penalty_factor, max_penalty_factor] $\cdot E_{min}/h_{min}$.
+     * The message names @p penalty_parameter (when the penalty is given
+     * explicitly, ContactSettings::penalty > 0) or @p factor_parameter
+     * (when the default rule applies), the value, the bounds and the two
+     * scales. Only meaningful for the penalty models of the tangential
+     * behaviour (penalty, coulomb_penalty).
+     */
+    void
+    check_penalty(const ContactSettings &settings,
+                  const std::string     &penalty_parameter,
+                  const std::string     &factor_parameter) const;
   };
 
 

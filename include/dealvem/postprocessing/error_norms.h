@@ -5,6 +5,7 @@
 #ifndef dealvem_postprocessing_error_norms_h
 #define dealvem_postprocessing_error_norms_h
 
+#include <deal.II/base/convergence_table.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
@@ -14,6 +15,7 @@
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <map>
+#include <string>
 #include <vector>
 
 namespace dealvem
@@ -70,6 +72,22 @@ namespace dealvem
    */
   ErrorNorms
   sum_over_processes(const ErrorNorms &local, const MPI_Comm comm);
+
+  /**
+   * Add the convergence rates of the column @p key of @p table, as
+   * ConvergenceTable::evaluate_convergence_rates(key, "dofs",
+   * reduction_rate_log2, 2) does (the column "<key>...red.rate.log2", "-" in the
+   * first row, $2\log(e_{i-1}/e_i)/\log(N_i/N_{i-1})$ with two decimals),
+   * from the errors @p errors and the numbers of DoFs @p n_dofs of the
+   * rows, except where a rate is undefined: an error of zero or one that is
+   * not finite, or no more DoFs than in the row before (two cycles that read
+   * the same mesh). There the row reads "n/a" instead of inf or nan.
+   */
+  void
+  add_convergence_rates(dealii::ConvergenceTable  &table,
+                        const std::string         &key,
+                        const std::vector<double> &errors,
+                        const std::vector<double> &n_dofs);
 } // namespace dealvem
 
 #endif

@@ -15,8 +15,8 @@ namespace dealvem
   /**
    * A small JSON writer for run summaries. Keys are paths with dots,
    * "cycles.0.dofs", which become nested objects; insertion order is kept;
-   * numbers are written with 17 significant digits (non-finite numbers as
-   * null), strings escaped.
+   * numbers are written with 17 significant digits (a non-finite number
+   * is refused: set() throws naming its key), strings escaped.
    */
   class JsonSummary
   {
