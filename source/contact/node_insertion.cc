@@ -1188,25 +1188,84 @@ namespace dealvem
   void
   NodeInsertion::update_geometry(const PolygonalMesh<2> &mesh, Interface &interface)
   {
+    // The contact direction of the interface does not depend on which side
+    // is called master: it is the normal of the flatter side (the smaller
+    // mean curvature over the paired vertices, by more than 10 %), turned to
+    // point out of the master, or, where the two sides curve alike, the
+    // bisector of their outward normals, n = (n_A - n_B)/|n_A - n_B| (A =
+    // master, B = slave), which is either normal where the sides coincide.
+    // Two straight sides (polygonal, without a smooth curvature) keep the
+    // master's normal: which face carries the normal is the user's choice
+    // there, as in node-to-segment codes.
+    // A cylinder on a block gets the block's normal whichever is master (the
+    // half-space direction of Hertz's theory); with the master's normal
+    // alone the two choices were 1.1 % of p0 apart in the Hertz pressure.
     const Side master = collect_side(mesh, interface.master_id);
+    const Side slave  = collect_side(mesh, interface.slave_id);
+    {
+      double       km = 0, ks = 0;
+      unsigned int n  = 0;
+      for (const auto &p : interface.pairs)
+        if (!p.is_midpoint)
+          {
+            const auto a = master.kappa.find(p.master_entity), b = slave.kappa.find(p.slave_entity);
+            km += (a != master.kappa.end() ? std::abs(a->second) : 0.);
+            ks += (b != slave.kappa.end() ? std::abs(b->second) : 0.);
+            ++n;
+          }
+      // size of the interface, for "straight": a mean curvature below 1e-6
+      // over the interface's extent
+      double size = 0;
+      for (const auto &p : interface.pairs)
+        size = std::max(size, mesh.vertex(p.is_midpoint ? mesh.edge(p.master_entity).vertices[0] : p.master_entity)
+                                .distance(interface.pairs.front().is_midpoint ?
+                                            mesh.vertex(mesh.edge(interface.pairs.front().master_entity).vertices[0]) :
+                                            mesh.vertex(interface.pairs.front().master_entity)));
+      const bool straight = n == 0 || std::max(km, ks) / n * size <= 1e-6;
+      interface.normal_side = (straight || km < 0.9 * ks ? Interface::NormalSide::master :
+                               ks < 0.9 * km         ? Interface::NormalSide::slave :
+                                                       Interface::NormalSide::bisector);
+    }
     for (auto &p : interface.pairs)
       {
+        Vector n_master, n_slave;
         if (p.is_midpoint)
           {
             const auto &me = mesh.edge(p.master_entity).vertices, &se = mesh.edge(p.slave_entity).vertices;
             p.master_location = 0.5 * (mesh.vertex(me[0]) + mesh.vertex(me[1]));
             p.slave_location  = 0.5 * (mesh.vertex(se[0]) + mesh.vertex(se[1]));
-            p.normal          = edge_normal(mesh.vertex(me[0]), mesh.vertex(me[1]));
+            // the edges' own outward normals (their vertices in the order of
+            // the side, i.e. of the owning cell)
+            const auto mi = master.edge_by_pair.find(key(me[0], me[1]));
+            const auto si = slave.edge_by_pair.find(key(se[0], se[1]));
+            AssertThrow(mi != master.edge_by_pair.end() && si != slave.edge_by_pair.end(),
+                        dealii::ExcInternalError("node insertion: a paired edge is not on its side."));
+            n_master = edge_normal(mesh.vertex(master.edges[mi->second][0]), mesh.vertex(master.edges[mi->second][1]));
+            n_slave  = edge_normal(mesh.vertex(slave.edges[si->second][0]), mesh.vertex(slave.edges[si->second][1]));
           }
         else
           {
             p.master_location = mesh.vertex(p.master_entity);
             p.slave_location  = mesh.vertex(p.slave_entity);
-            const auto n      = master.normal.find(p.master_entity);
-            AssertThrow(n != master.normal.end(),
-                        dealii::ExcInternalError("node insertion: master vertex " + std::to_string(p.master_entity) +
-                                                 " is not on the master side."));
-            p.normal = n->second;
+            const auto n = master.normal.find(p.master_entity), m = slave.normal.find(p.slave_entity);
+            AssertThrow(n != master.normal.end() && m != slave.normal.end(),
+                        dealii::ExcInternalError("node insertion: a paired vertex " +
+                                                 std::to_string(p.master_entity) + " / " +
+                                                 std::to_string(p.slave_entity) + " is not on its side."));
+            n_master = n->second;
+            n_slave  = m->second;
+          }
+        const Vector bisector = n_master - n_slave;
+        switch (interface.normal_side)
+          {
+            case Interface::NormalSide::master:
+              p.normal = n_master;
+              break;
+            case Interface::NormalSide::slave:
+              p.normal = -n_slave;
+              break;
+            default:
+              p.normal = (bisector.norm() > 1e-12 ? bisector / bisector.norm() : n_master);
           }
         p.tangent     = tangent_of(p.normal);
         p.initial_gap = (p.slave_location - p.master_location) * p.normal;

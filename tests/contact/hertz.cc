@@ -12,9 +12,17 @@
 // real gaps between them. For k = 1 and k = 2:
 // - recovered peak pressure within 1 % of p0 = 2P/(pi a);
 // - half-width within one local edge of a = sqrt(4PR/(pi E*));
-// - recovered nodal pressure within 3 % of p0 at every pair with |x| < 0.8a;
+// - recovered nodal pressure within 1.5 % (k = 1) and 1 % (k = 2) of p0 at
+//   every pair with |x| < 0.8a, the raw multipliers per length within
+//   2.5 % (k = 1) and 0.7 % (k = 2), the recovered no worse than the raw
+//   ones for k = 2;
 // - no open pair inside |x| < a - h; no open-end warning;
-// - total contact force = P to 1e-10 relative.
+// - total contact force = P to 1e-10 relative;
+// - for both choices of the master body (the flat block, the cylinder):
+//   the recovered pressures at |x| < 0.8a agree within 0.5 % of p0 and the
+//   stresses of the cells there within 2 % of p0 (no master bias beyond
+//   the discretisation error: the contact direction is the flat block's
+//   normal whichever side is master).
 // And the warning for a contact part that is too short: with the block's
 // contact part cut to |x| <= 4 < a, the pairs at both ends of the paired
 // part are active where both boundaries go on smoothly, so the run reports
@@ -29,6 +37,7 @@
 #include <dealvem/mesh/generators.h>
 #include <dealvem/mesh/mesh_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -99,7 +108,7 @@ namespace
   }
 
   std::string
-  hertz_prm(const unsigned int k, const std::string &block_file = "block.vtk")
+  hertz_prm(const unsigned int k, const std::string &block_file = "block.vtk", const bool block_master = true)
   {
     std::ostringstream p;
     p << "set Number of bodies = 2\n"
@@ -110,10 +119,15 @@ namespace
       << "    set Boundary id offset = 10\n  end\n  subsection Material\n    set Young's modulus = " << E_cyl
       << "\n    set Poisson's ratio = " << nu << "\n  end\nend\n"
       << "subsection Discretization\n  set Order = " << k << "\nend\n"
-      << "subsection Contact\n  set Pairs = 3 : 10\n  set Normal = unilateral\n"
+      << "subsection Contact\n  set Pairs = " << (block_master ? "3 : 10" : "10 : 3") << "\n  set Normal = unilateral\n"
       << "  set Tangential = frictionless\nend\n"
       << "subsection Boundary conditions and loads\n  set Dirichlet = 2 : xy : 0, 0\n"
-      << "  set Rigid boundary = 11 : 0, " << -P << "\n  set Point constraints = 0, 50 : x : 0 : 1\nend\n"
+      << "  set Rigid boundary = 11 : 0, " << -P << "\n  set Point constraints = 0, 50 : x : 0 : 1"
+      // with the cylinder as master the pair normals are radial, so
+      // frictionless contact leaves the rotation about the cylinder's
+      // centre free: hold its lowest point horizontally (u_x = 0 there by
+      // symmetry), for both choices alike
+      << "; 0, 0 : x : 0 : 1\nend\n"
       << "subsection Output\n  set Write VTU = false\n  set Write JSON = false\n"
       << "  set Write pictures = false\n  set Write CSV = false\nend\n";
     return p.str();
@@ -135,45 +149,102 @@ main(int argc, char **argv)
   const double h = std::max(local_edge("block.vtk", 3, a + 1), local_edge("cylinder.vtk", 0, a + 1));
   std::cout << "local edge length h = " << h << std::endl;
 
+  // the recovered pressure of a run at x (linear between its closed pairs)
+  const auto pressure_at = [](const dealvem::ContactProblem::Results &r, const double x) {
+    std::vector<std::pair<double, double>> px;
+    for (const auto &pair : r.pairs)
+      px.emplace_back(pair.location[0], pair.pressure);
+    std::sort(px.begin(), px.end());
+    const auto it = std::lower_bound(px.begin(), px.end(), std::make_pair(x, -1e300));
+    if (it == px.begin() || it == px.end())
+      return it == px.end() ? px.back().second : px.front().second;
+    const auto &l = *(it - 1), &u = *it;
+    return u.first == l.first ? u.second : l.second + (x - l.first) / (u.first - l.first) * (u.second - l.second);
+  };
+
   for (const unsigned int k : {1u, 2u})
     {
-      const std::string tag = "k=" + std::to_string(k);
-      const auto        r   = testing::run_contact(hertz_prm(k));
-      double            p_max = 0, error = 0, x_min = 0, x_max = 0;
-      unsigned int      open_inside = 0;
-      for (const auto &pair : r.pairs)
-        if (pair.active)
-          {
-            x_min = std::min(x_min, pair.location[0]);
-            x_max = std::max(x_max, pair.location[0]);
-          }
-      double open_left = -1e10, open_right = 1e10;
-      for (const auto &pair : r.pairs)
+      dealvem::ContactProblem::Results by_master[2];
+      for (const bool block_master : {true, false})
         {
-          const double x = pair.location[0];
-          p_max          = std::max(p_max, pair.pressure);
-          if (std::abs(x) < 0.8 * a)
-            error = std::max(error, std::abs(pair.pressure - exact(x)));
-          if (!pair.active)
+          const std::string tag = "k=" + std::to_string(k) + ", master " + (block_master ? "block" : "cylinder");
+          const auto        r   = testing::run_contact(hertz_prm(k, "block.vtk", block_master));
+          double            p_max = 0, error = 0, raw_error = 0, x_min = 0, x_max = 0;
+          unsigned int      open_inside = 0;
+          for (const auto &pair : r.pairs)
+            if (pair.active)
+              {
+                x_min = std::min(x_min, pair.location[0]);
+                x_max = std::max(x_max, pair.location[0]);
+              }
+          double open_left = -1e10, open_right = 1e10;
+          for (const auto &pair : r.pairs)
             {
-              if (std::abs(x) < a - h)
-                ++open_inside;
-              if (x > x_max)
-                open_right = std::min(open_right, x);
-              if (x < x_min)
-                open_left = std::max(open_left, x);
+              const double x = pair.location[0];
+              p_max          = std::max(p_max, pair.pressure);
+              if (std::abs(x) < 0.8 * a)
+                {
+                  error     = std::max(error, std::abs(pair.pressure - exact(x)));
+                  raw_error = std::max(raw_error, std::abs(pair.lumped_pressure - exact(x)));
+                }
+              if (!pair.active)
+                {
+                  if (std::abs(x) < a - h)
+                    ++open_inside;
+                  if (x > x_max)
+                    open_right = std::min(open_right, x);
+                  if (x < x_min)
+                    open_left = std::max(open_left, x);
+                }
             }
+          // edge of the contact zone: middle between the last closed and the
+          // first open pair, on both sides
+          const double a_h = 0.25 * (x_max + open_right - x_min - open_left);
+          std::cout << tag << ": peak " << p_max / p0 - 1 << ", (a_h - a)/h " << (a_h - a) / h
+                    << ", max nodal error inside 0.8a / p0: recovered " << error / p0 << ", raw " << raw_error / p0
+                    << ", active-set iterations " << r.active_set_iterations << std::endl;
+          testing::check_small(p_max / p0 - 1., 0.01, tag + ": peak pressure / p0 - 1");
+          testing::check_small((a_h - a) / h, 1., tag + ": (half-width - a) / h");
+          testing::check_small(error / p0, k == 2 ? 0.01 : 0.015, tag + ": max recovered nodal pressure error inside 0.8a / p0");
+          // the multipliers themselves (issue 17: k = 2 raw within 0.7 % of
+          // p0 on a mesh like step-3's level 1; measured 0.56 %)
+          testing::check_small(raw_error / p0, k == 2 ? 0.007 : 0.025, tag + ": max raw nodal pressure error inside 0.8a / p0");
+          if (k == 2)
+            testing::check(error <= raw_error, tag + ": the recovered pressure is no worse than the raw one");
+          testing::check(open_inside == 0, tag + ": no open pair inside |x| < a - h (" + std::to_string(open_inside) + ")");
+          testing::check(r.n_open_end_warnings == 0, tag + ": no open-end warnings");
+          // (on the slave body: the cylinder, or the block when it is the slave)
+          const double sign = block_master ? 1. : -1.;
+          testing::check_small(sign * r.total_contact_force[1] / P - 1., 1e-10, tag + ": total contact force / P - 1");
+          testing::check_small(r.total_contact_force[0] / P, 1e-10, tag + ": horizontal contact force / P");
+          by_master[block_master] = r;
         }
-      // edge of the contact zone: middle between the last closed and the
-      // first open pair, on both sides
-      const double a_h = 0.25 * (x_max + open_right - x_min - open_left);
-      testing::check_small(p_max / p0 - 1., 0.01, tag + ": peak pressure / p0 - 1");
-      testing::check_small((a_h - a) / h, 1., tag + ": (half-width - a) / h");
-      testing::check_small(error / p0, 0.03, tag + ": max nodal pressure error inside 0.8a / p0");
-      testing::check(open_inside == 0, tag + ": no open pair inside |x| < a - h (" + std::to_string(open_inside) + ")");
-      testing::check(r.n_open_end_warnings == 0, tag + ": no open-end warnings");
-      testing::check_small(r.total_contact_force[1] / P - 1., 1e-10, tag + ": total contact force / P - 1");
-      testing::check_small(r.total_contact_force[0] / P, 1e-10, tag + ": horizontal contact force / P");
+      // no master bias: the recovered pressures of the two choices at the
+      // pairs inside 0.8a, and the stresses of every cell
+      double d_pressure = 0, d_stress = 0;
+      for (const auto &pair : by_master[0].pairs)
+        if (std::abs(pair.location[0]) < 0.8 * a)
+          d_pressure = std::max(d_pressure, std::abs(pair.pressure - pressure_at(by_master[1], pair.location[0])));
+      const auto &s0 = by_master[0].cell_stress, &s1 = by_master[1].cell_stress;
+      testing::check(s0.size() == s1.size(), "k=" + std::to_string(k) + ": the same cells for both masters");
+      // (cells with their centroid at |x| < 0.8a: the edge of the contact
+      // zone, where the last closed pair may differ, is left out as for the
+      // pressures)
+      std::vector<dealii::Point<2>> vertices;
+      for (unsigned int c = 0; c < std::min(s0.size(), s1.size()); ++c)
+        {
+          by_master[0].mesh.cell_vertices(c, vertices);
+          double x = 0;
+          for (const auto &v : vertices)
+            x += v[0] / vertices.size();
+          if (std::abs(x) < 0.8 * a)
+            for (unsigned int i = 0; i < 3; ++i)
+              d_stress = std::max(d_stress, std::abs(s0[c][i] - s1[c][i]));
+        }
+      std::cout << "k=" << k << ", master block against master cylinder: recovered pressure inside 0.8a differs by "
+                << d_pressure / p0 << " p0, cell stresses by " << d_stress / p0 << " p0" << std::endl;
+      testing::check_small(d_pressure / p0, 0.005, "k=" + std::to_string(k) + ": master choice, recovered pressure / p0");
+      testing::check_small(d_stress / p0, 0.02, "k=" + std::to_string(k) + ": master choice, cell stresses / p0");
     }
   {
     dealvem::PolygonalMesh<2> block;

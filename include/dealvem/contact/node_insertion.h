@@ -19,9 +19,16 @@ namespace dealvem
   /**
    * One node-to-node contact pair on a matched interface.
    *
-   * The master side gives the normal: $n$ is the outward unit normal of the
-   * master body at the master node (for a vertex between two master edges
-   * the normalized average of their normals), $t = (-n_y, n_x)$. The gap
+   * The normal does not depend on which side is called master: it is the
+   * outward unit normal $n_A$ of the master (A) or $-n_B$ of the slave (B),
+   * whichever side is flatter over the interface (the smaller mean
+   * curvature at the paired vertices, by more than 10 %), or, where both
+   * curve alike, the bisector $n = (n_A - n_B)/|n_A - n_B|$, either normal
+   * where the sides coincide; two straight sides keep the master's normal
+   * (see NodeInsertion::Interface::normal_side; at
+   * a vertex a side's normal is the normal of the curve where the side
+   * follows a smooth curve, else the normalized average of the two edge
+   * normals); $t = (-n_y, n_x)$. The gap
    * $g = (u_B - u_A)\cdot n + g_0$ with $g_0 = (x_B - x_A)\cdot n$, A =
    * master, B = slave; $g \ge 0$ means the bodies do not penetrate.
    *
@@ -201,6 +208,14 @@ namespace dealvem
       std::vector<ContactNodePair> pairs;
       std::vector<ContactSegment>  segments;
       Report                       report;
+      /// Whose normal gives the contact direction (see ContactNodePair):
+      /// the flatter side's, or the bisector where both curve alike.
+      enum class NormalSide
+      {
+        master,
+        slave,
+        bisector
+      } normal_side = NormalSide::master;
     };
 
     /**
