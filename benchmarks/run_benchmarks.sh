@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# Build (./build) and run the benchmarks; write doc/benchmarks.md.
+# Build (./build) and run the benchmarks; write doc/benchmarks.md (with the
+# Hertz peer comparison of benchmarks/hertz_peer/run.sh at its end).
 # Each case runs in its own process so that the peak memory is its own.
 # MAX_DOFS limits the elasticity sizes (default 1e6); CONTACT_SIZES the
 # contact sizes n (default "30 100 210").
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD="${BUILD_DIR:-$ROOT/build}"
-bash "$ROOT/scripts/build.sh" --target benchmark_elasticity benchmark_contact > /dev/null
+bash "$ROOT/scripts/build.sh" --target benchmark_elasticity benchmark_contact dealvem_app step-3 > /dev/null
 MAX_DOFS="${MAX_DOFS:-1000000}"
 CONTACT_SIZES="${CONTACT_SIZES:-30 100 210}"
 OUT="$ROOT/doc/benchmarks.md"
@@ -190,7 +191,6 @@ done
     $3=="onebody" { printf("| %s | %d | %d | %d | %d | %.3f | %.3f / %.3f | %.3f / %.3f | %.2f | %.2f |\n",
                            s, n, cd, cm, $5, ins, ca, $9, cs, $10, ca/$9, cs/$10) }' "$contact"
   echo
-<<<<<<< HEAD
   echo "CG-AMG-constraints(t): the contact constraints written as affine constraints on one slave DoF"
   echo "each, the stiffness condensed and solved by CG + ML AMG (the one-body run by CG + AMG too), stick"
   echo "by tangential multipliers or by the default penalty. End to end (mesh to output, contact run):"
@@ -199,19 +199,18 @@ done
   echo "|---|---:|---:|---:|---:|"
   awk '{ printf("| %s | %d | %.2f | %d | %d |\n", $2, $4, $5, $6, $7) }' "$total"
   echo
-  echo "Raw lines: \`RESULT case cells dofs t_mesh t_setup t_assembly t_solve iterations peak_MB\` and"
-  echo "\`RESULT solver contact|onebody n dofs multipliers t_mesh t_insertion t_assembly t_solve\`."
-  echo
-  echo '```'
-  cat "$elastic" "$contact" "$total"
-=======
   echo "Raw lines: \`RESULT case cells dofs t_mesh t_setup t_assembly t_solve iterations peak_MB"
   echo "t_precond_setup precond t_prolongation nnz_per_row\` (\`CANDIDATE label|\` the same fields) and"
   echo "\`RESULT solver contact|onebody n dofs multipliers t_mesh t_insertion t_assembly t_solve\`."
   echo
   echo '```'
-  cat "$elastic" "$candidates" "$contact"
->>>>>>> amg
+  cat "$elastic" "$candidates" "$contact" "$total"
   echo '```'
 } > "$OUT"
+# the peer comparison of the contact accuracy and solve (Hertz, dealvem
+# against GetFEM on step-3's meshes); HERTZ_PEER=0 skips it
+if [ "${HERTZ_PEER:-1}" != "0" ]; then
+  BUILD_DIR="$BUILD" OUT="$TMP/hertz.md" WORK="$TMP/hertz" bash "$ROOT/benchmarks/hertz_peer/run.sh" > /dev/null
+  { echo; sed 's/^#/##/' "$TMP/hertz.md"; } >> "$OUT"
+fi
 echo "wrote $OUT"

@@ -217,7 +217,7 @@ namespace Step1
   // a term $\gamma(I-\Pi)^T W (I-\Pi)$ restores coercivity there, with a
   // diagonal weight $W$ that scales like $K_c$: for k = 1 the mean diagonal
   // entry $\tau$ of $K_c$ for every degree of freedom, for k = 2 each
-  // degree of freedom's own $(K_c)_{ii}/4$ (bounded below by $10^{-3}\tau$),
+  // degree of freedom's own $(K_c)_{ii}/5$ (bounded below by $10^{-3}\tau$),
   // which matters where node insertion has made edges short (see
   // ElasticityOperator). ElasticityOperator::add_stabilization() is the one
   // place the rules are written; it uses the space's projector onto the

@@ -76,7 +76,7 @@ namespace dealvem
     prm.declare_entry("Stabilization", "automatic", Selection("automatic|diagonal|trace"),
                       "Stabilization of the element stiffness: 'automatic' (trace for k = 1, diagonal "
                       "for k = 2), 'diagonal' (the D-recipe, "
-                      "gamma c_k (I-Pi)^T diag(max(K_c,ii, 1e-3 tau)) (I-Pi), c_1 = 1, c_2 = 1/4: every "
+                      "gamma c_k (I-Pi)^T diag(max(K_c,ii, 1e-3 tau)) (I-Pi), c_1 = 1, c_2 = 1/5: every "
                       "degree of freedom stabilized like its own consistency stiffness) or 'trace' "
                       "(dofi-dofi, gamma tau (I-Pi)^T (I-Pi), tau = trace(K_c)/n_dofs).");
     prm.declare_entry("Stabilization factor", "1.0", Double(1e-8),

@@ -65,7 +65,7 @@ namespace dealvem
         return;
       }
     // (I - Pi)^T diag(d) (I - Pi), d_i = c_k max(K_ii, 1e-3 tau)
-    const double c_k   = (element.get_degree() == 1 ? 1. : 0.25);
+    const double c_k   = (element.get_degree() == 1 ? 1. : 0.2);
     RowMatrix    I_Pi  = -view(element.get_projector_dof_basis());
     Eigen::VectorXd d(n);
     for (unsigned int i = 0; i < n; ++i)

@@ -37,7 +37,7 @@ namespace dealvem
    * 5 % for k = 2 at $h/a \approx 0.02$, growing with the stabilization
    * factor $\gamma$ and falling with $h$; at k = 2 the diagonal
    * stabilization (ElasticityOperator) removes most of it (Hertz, level 1:
-   * 0.57 % of $p_0$). Dividing by the consistent
+   * 0.53 % of $p_0$). Dividing by the consistent
    * interface mass matrix instead of the lumped one (consistent()) is exact
    * for pressures of degree k but amplifies these patterns (they are of
    * high frequency), to about twice the lumped error.

@@ -49,7 +49,7 @@ namespace dealvem
    *   - Stabilization::diagonal, the "D-recipe" of Beirao da
    *     Veiga, Dassi and Russo (2017):
    *     $K_s = \gamma\,c_k\,(I-\Pi)^T\mathrm{diag}(d_i)(I-\Pi)$,
-   *     $d_i = \max((K_c)_{ii}, 10^{-3}\tau)$, $c_1 = 1$, $c_2 = 1/4$;
+   *     $d_i = \max((K_c)_{ii}, 10^{-3}\tau)$, $c_1 = 1$, $c_2 = 1/5$;
    *   - Stabilization::trace, "dofi-dofi": $K_s = \gamma\,\tau\,(I-\Pi)^T(I-\Pi)$,
    *   with $\tau = \mathrm{tr}(K_c)/n_{dofs}$; both scale with the material
    *   and the cell like $K_c$;
@@ -61,9 +61,11 @@ namespace dealvem
    * strongly as every other one. At a contact interface the nodal forces,
    * hence the multipliers, then carry a stabilization pattern: on the
    * Hertz problem of step-3 at k = 2 the raw multipliers per length are off
-   * by 9.9 % / 4.0 % of p0 (levels 0 / 1) with the trace rule and 0.74 % /
-   * 0.57 % with the diagonal rule (c_2 = 1/4: 1.07 % / 0.74 % with
-   * c_2 = 1/2, 1.74 % / 1.09 % with c_2 = 1), see doc/architecture.md,
+   * by 9.9 % / 4.5 % of p0 (levels 0 / 1) with the trace rule and 0.67 % /
+   * 0.53 % with the diagonal rule (c_2 = 1/5; 0.74 % / 0.57 % with
+   * c_2 = 1/4, 1.07 % / 0.74 % with c_2 = 1/2, 1.74 % / 1.09 % with
+   * c_2 = 1; c_2 = 1/8 is too weak to keep the accuracy of the
+   * FE_Q transfer of the solution), see doc/architecture.md,
    * "Contact pressure". At k = 1 the two rules are equally accurate there
    * (1.60 % / 1.46 % trace, 1.41 % / 1.37 % diagonal), and the trace rule
    * keeps the Newton iteration counts of the friction tutorial (step-4,
