@@ -257,7 +257,7 @@ def main():
     L.append("")
 
     L.append("## Smoothed and interpolated pressures\n")
-    L.append("dealvem's recovered pressure (its consistent recovery M p = -lambda) at its pairs, and "
+    L.append("dealvem's recovered pressure (ContactPressure::recover: a least-squares fit of degree k to the nodal forces over a patch of sub-edges) at its pairs, and "
              "GetFEM's P1 pressure field evaluated at dealvem's pair locations of the same level and "
              "order (|x| < 0.8a, % of p0).\n")
     L.append("| level | order | dealvem recovered: p0 err % | max / rms vs Hertz | max / rms vs fine ref. | "
