@@ -29,6 +29,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <dealvem/app/input_parsing.h>
 #include <dealvem/elasticity/boundary_conditions.h>
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
@@ -345,18 +346,7 @@ namespace Step1
 //
 // An argument is a whole number in a given range; anything else (a sign, a
 // letter, a number too large for the type) stops the program with the usage
-// instead of a wrapped or misread value.
-namespace
-{
-  bool
-  parse_argument(const std::string &text, const unsigned int min, const unsigned int max, unsigned int &value)
-  {
-    if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
-      return false;
-    value = static_cast<unsigned int>(std::stoul(text));
-    return value >= min && value <= max;
-  }
-} // namespace
+// instead of a wrapped or misread value (InputParsing::parse_count()).
 
 // @sect3{The main function}
 int
@@ -366,7 +356,7 @@ main(int argc, char **argv)
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       unsigned int                             degree = 2;
-      if (argc > 2 || (argc == 2 && !parse_argument(argv[1], 1, 2, degree)))
+      if (argc > 2 || (argc == 2 && !dealvem::InputParsing::parse_count(argv[1], 1, 2, degree)))
         {
           std::cerr << "step-1: " << (argc > 2 ? "too many arguments" : "the order k must be 1 or 2, not '" +
                                                                              std::string(argv[1]) + "'")

@@ -51,6 +51,7 @@
 // The dealvem side: the polygonal mesh made from the triangulation (with
 // the maps between the two), the VEM DoFs, assembly, solver, error norms
 // and the transfer back.
+#include <dealvem/app/input_parsing.h>
 #include <dealvem/elasticity/boundary_conditions.h>
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
@@ -471,18 +472,7 @@ namespace Step5
 //
 // An argument is a whole number in a given range; anything else (a sign, a
 // letter, a number too large for the type) stops the program with the usage
-// instead of a wrapped or misread value.
-namespace
-{
-  bool
-  parse_argument(const std::string &text, const unsigned int min, const unsigned int max, unsigned int &value)
-  {
-    if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
-      return false;
-    value = static_cast<unsigned int>(std::stoul(text));
-    return value >= min && value <= max;
-  }
-} // namespace
+// instead of a wrapped or misread value (InputParsing::parse_count()).
 
 // @sect3{The main function}
 int
@@ -497,9 +487,9 @@ main(int argc, char **argv)
       std::string error;
       if (argc > 3)
         error = "too many arguments";
-      else if (argc > 1 && !parse_argument(argv[1], 1, 2, k))
+      else if (argc > 1 && !dealvem::InputParsing::parse_count(argv[1], 1, 2, k))
         error = "the order k must be 1 or 2, not '" + std::string(argv[1]) + "'";
-      else if (argc > 2 && !parse_argument(argv[2], 2, 8, n_cycles))
+      else if (argc > 2 && !dealvem::InputParsing::parse_count(argv[2], 2, 8, n_cycles))
         error = "the number of cycles must be a whole number from 2 to 8, not '" + std::string(argv[2]) + "'";
       if (!error.empty())
         {

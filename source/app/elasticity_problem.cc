@@ -445,14 +445,7 @@ namespace dealvem
     // large for the stiffness (or a prescribed value out of scale): say so
     // before the stresses or the error integrals overflow and take the blame
     {
-      dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
-      for (const auto &p : mesh.get_vertices())
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            lo[d] = std::min(lo[d], p[d]);
-            hi[d] = std::max(hi[d], p[d]);
-          }
-      const double size = lo.distance(hi);
+      const double size = mesh.extent();
       std::vector<dealii::types::global_dof_index> dofs;
       const auto check_cell = [&](const unsigned int c) {
         dof_handler.get_dof_indices(c, dofs);

@@ -546,5 +546,18 @@ namespace dealvem
           << reason;
       AssertThrow(false, dealii::ExcMessage(msg.str()));
     }
+
+    bool
+    parse_count(const std::string &text, const unsigned int min, const unsigned int max, unsigned int &value)
+    {
+      if (text.empty() || text.size() > 9 || text.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+      const unsigned int v = static_cast<unsigned int>(std::stoul(text));
+      if (v < min || v > max)
+        return false;
+      value = v;
+      return true;
+    }
+
   } // namespace InputParsing
 } // namespace dealvem

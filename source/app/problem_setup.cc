@@ -276,14 +276,7 @@ namespace dealvem
     const auto &mesh = dof_handler.get_mesh();
     if (mesh.n_vertices() > 0)
       {
-        dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
-        for (const auto &p : mesh.get_vertices())
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              lo[d] = std::min(lo[d], p[d]);
-              hi[d] = std::max(hi[d], p[d]);
-            }
-        const double size = lo.distance(hi);
+        const double size = mesh.extent();
         for (const auto &line : constraints.get_lines())
           if (!(std::abs(line.inhomogeneity) <= max_displacement_ratio * size))
             {

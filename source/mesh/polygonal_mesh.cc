@@ -855,6 +855,24 @@ namespace dealvem
 
   template <int dim>
   double
+  PolygonalMesh<dim>::extent() const
+  {
+    if (vertices.empty())
+      return 0.;
+    dealii::Point<dim> lo = vertices[0], hi = vertices[0];
+    for (const auto &p : vertices)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lo[d] = std::min(lo[d], p[d]);
+          hi[d] = std::max(hi[d], p[d]);
+        }
+    return lo.distance(hi);
+  }
+
+
+
+  template <int dim>
+  double
   PolygonalMesh<dim>::total_area() const
   {
     double a = 0;

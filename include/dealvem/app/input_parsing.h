@@ -56,6 +56,15 @@ namespace dealvem
     parse_double(const std::string &s, const std::string &parameter);
 
     /**
+     * Parse a command-line count: true and @p value set if @p text is a
+     * whole number (digits only: no sign, at most 9 digits, so nothing
+     * wraps or overflows) in [@p min, @p max]; false otherwise. The
+     * tutorials' argument parsing.
+     */
+    bool
+    parse_count(const std::string &text, const unsigned int min, const unsigned int max, unsigned int &value);
+
+    /**
      * Check that @p value lies in the interval from @p lower to @p upper
      * (each end included unless @p lower_open or @p upper_open); throws an
      * ExcMessage naming @p parameter, the value and the interval, followed

@@ -306,6 +306,11 @@ namespace dealvem
     std::pair<double, double>
     cell_diameter_range() const;
 
+    /// Length of the diagonal of the bounding box of all vertices (0 for
+    /// a mesh without vertices): the size of the mesh.
+    double
+    extent() const;
+
     /// Total area of all cells.
     double
     total_area() const;
