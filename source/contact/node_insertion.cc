@@ -1213,14 +1213,9 @@ namespace dealvem
             ks += (b != slave.kappa.end() ? std::abs(b->second) : 0.);
             ++n;
           }
-      // size of the interface, for "straight": a mean curvature below 1e-6
-      // over the interface's extent
-      double size = 0;
-      for (const auto &p : interface.pairs)
-        size = std::max(size, mesh.vertex(p.is_midpoint ? mesh.edge(p.master_entity).vertices[0] : p.master_entity)
-                                .distance(interface.pairs.front().is_midpoint ?
-                                            mesh.vertex(mesh.edge(interface.pairs.front().master_entity).vertices[0]) :
-                                            mesh.vertex(interface.pairs.front().master_entity)));
+      // "straight": a mean curvature below 1e-6 over the size of the slave
+      // side (the box of its edges)
+      const double size = slave.lo.distance(slave.hi);
       const bool straight = n == 0 || std::max(km, ks) / n * size <= 1e-6;
       interface.normal_side = (straight || km < 0.9 * ks ? Interface::NormalSide::master :
                                ks < 0.9 * km         ? Interface::NormalSide::slave :
