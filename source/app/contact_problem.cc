@@ -170,6 +170,12 @@ namespace dealvem
     prm.declare_entry("Maximum active set iterations", "50", Integer(1),
                       "Iteration limit of the active set (per load step; with Coulomb friction, of the "
                       "semismooth Newton iteration over open/stick/slip).");
+    prm.declare_entry("Active set acceleration", "true", Bool(),
+                      "Correct the primal-dual active-set update where it crawls: a step that more than "
+                      "doubles the set adds the deeper half of the penetrating pairs; a releasing step "
+                      "also releases, next to each run of released pairs, the active pairs over the run's "
+                      "length, until such a pair penetrates again. The solution is the same; false runs "
+                      "the plain update.");
     prm.leave_subsection();
     prm.enter_subsection("Load steps");
     prm.declare_entry("Number of steps", "1", Integer(),
@@ -329,6 +335,7 @@ namespace dealvem
     contact_settings.penalty    = prm.get_double("Penalty");
     contact_settings.penalty_factor           = prm.get_double("Penalty factor");
     contact_settings.max_active_set_iterations = prm.get_integer("Maximum active set iterations");
+    contact_settings.accelerate_active_set     = prm.get_bool("Active set acceleration");
     insertion_settings.merge_fraction            = prm.get_double("Merge fraction");
     insertion_settings.search_distance           = prm.get_double("Search distance");
     insertion_settings.coordinate_precision      = prm.get_double("Coordinate precision");
@@ -723,6 +730,7 @@ namespace dealvem
     d.active_set = std::make_unique<ActiveSetSolver<2>>(*d.contact, d.constraints, *d.solver, contact_settings,
                                                         d.complementarity);
     d.active_set->set_support(d.support.get());
+    d.active_set->set_pair_neighbours(ActiveSetSolver<2>::pair_neighbours(results.interfaces));
     d.reference.assign(d.pairs.size(), 0.);
     if (contact_settings.is_coulomb())
       {
@@ -1276,6 +1284,8 @@ namespace dealvem
     if (as.n_closed_for_support > 0)
       std::cout << " (the first set closes the " << as.n_closed_for_support
                 << " pair(s) of smallest initial gap, so that every body is held)";
+    if (as.n_accelerated > 0)
+      std::cout << " (" << as.n_accelerated << " step(s) corrected by the active-set acceleration)";
     std::cout << std::endl << "  solver: " << d.solver->description();
     if (as.linear_iterations > as.n_iterations)
       std::cout << ", " << as.linear_iterations << " linear iterations in all";

@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/node_insertion.h>
 #include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
@@ -39,6 +40,33 @@ namespace dealvem
    * singular, whatever the solver. An active set that would leave a body
    * free (every pair that held it pulled open) means there is no static
    * equilibrium: solve() then stops with a message naming the free motions.
+   *
+   * <h3>Acceleration</h3>
+   * The plain update crawls in two places, both seen on Hertz-type
+   * problems (examples/step-3): the first solve holds the bodies at the
+   * few pairs of smallest gap, so the bodies approach far too much and
+   * nearly every pair comes out penetrating; from that too large set the
+   * iteration then releases, per step, only the band at each edge of the
+   * contact zone where the bonded solution is in tension, which is about
+   * half of the excess (the excess halves per step). With
+   * set_pair_neighbours() (the pairs' order along their interfaces) and
+   * ContactSettings::accelerate_active_set, two corrections of the
+   * proposed set shorten both phases:
+   * - a step that would more than double the active set adds only the
+   *   pairs penetrating by more than half the largest penetration (the
+   *   rest follow in the next step if they still penetrate);
+   * - a step that releases pairs also releases, from each run of released
+   *   pairs along the interface, the kept active pairs next to it over the
+   *   run's length (the excess halves per step, so twice the band reaches
+   *   about the true edge).
+   * A correction is dropped when the corrected set would leave a body
+   * free, and the release extrapolation is switched off for the rest of
+   * the solve as soon as a pair it released penetrates again (the edge is
+   * then found); from there on the plain update runs. Convergence is
+   * judged on the plain update of the last exact solution, so the result
+   * is the same complementarity solution: only the path is shorter
+   * (Hertz, step-3's meshes: k = 1 from 8/10/10 to 4/4/5 iterations, k = 2
+   * from 8/9/11 to 5/5/6). Cycle detection applies to plain steps.
    */
   template <int dim>
   class ActiveSetSolver
@@ -53,6 +81,8 @@ namespace dealvem
       /// Pairs with an open initial gap closed for the first iteration so
       /// that every body is held.
       unsigned int              n_closed_for_support = 0;
+      /// Steps whose proposed set the acceleration corrected.
+      unsigned int              n_accelerated = 0;
     };
 
     /// @p c is the constant of the active-set update, units of E/h.
@@ -75,6 +105,22 @@ namespace dealvem
       this->support = support;
     }
 
+    /**
+     * The neighbours of each pair along its interface (pairs of one
+     * sub-edge, vertex - midpoint - vertex for k = 2), for the acceleration
+     * above. pair_neighbours() builds them from node insertion's segments.
+     */
+    void
+    set_pair_neighbours(const std::vector<std::vector<unsigned int>> &neighbours)
+    {
+      this->neighbours = neighbours;
+    }
+
+    /// Neighbours along the interfaces of the concatenated pair lists of
+    /// @p interfaces (in the order given).
+    static std::vector<std::vector<unsigned int>>
+    pair_neighbours(const std::vector<NodeInsertion::Interface> &interfaces);
+
     Result
     solve(const dealii::SparseMatrix<double> &system_matrix,
           const dealii::Vector<double>       &system_rhs,
@@ -82,12 +128,23 @@ namespace dealvem
           dealii::Vector<double>             &x);
 
   private:
+    /// Apply the two corrections (see the class documentation) to the
+    /// plain proposal @p next from the active set @p active; returns
+    /// whether a release extrapolation was applied, and marks its pairs in
+    /// @p extrapolated.
+    bool
+    accelerate(const std::vector<bool>   &active,
+               const std::vector<double> &gaps,
+               std::vector<bool>         &next,
+               std::vector<bool>         &extrapolated) const;
+
     const ContactAssembler<dim>             &contact;
     const dealii::AffineConstraints<double> &constraints;
     SaddlePointSolver                       &solver;
     ContactSettings                          settings;
     double                                   c;
     const RigidBodySupport                  *support = nullptr;
+    std::vector<std::vector<unsigned int>>   neighbours;
   };
 } // namespace dealvem
 

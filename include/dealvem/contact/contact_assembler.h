@@ -59,6 +59,9 @@ namespace dealvem
     double penalty_factor = 1e3;
     /// Active set: maximum number of iterations.
     unsigned int max_active_set_iterations = 50;
+    /// Active set: correct the plain update where it crawls (see
+    /// ActiveSetSolver); false gives the plain primal-dual active set.
+    bool accelerate_active_set = true;
     /// Coulomb friction coefficient of every interface without its own.
     double friction_coefficient = 0;
     /// Friction coefficient per interface (index ContactNodePair::interface);
