@@ -247,12 +247,18 @@ namespace dealvem
     n_cycles = prm.get_integer("Refinement cycles");
     prm.leave_subsection();
     memory_limit_GB = prm.get_double("Memory limit");
-    InputParsing::check_run_size({&mesh_parameters}, n_cycles, degree, prm.get_bool("Allow large runs"),
+    const auto size = InputParsing::check_run_size({&mesh_parameters}, n_cycles, degree, prm.get_bool("Allow large runs"),
                                  prm_directory,
                                  solver_type == "automatic" ? InputParsing::SolverKind::automatic :
                                  solver_type == "CG-AMG"    ? InputParsing::SolverKind::iterative :
                                                               InputParsing::SolverKind::direct,
                                  memory_limit_GB);
+    // a direct solver asked for far above the crossover: it fits, but slowly
+    if ((solver_type == "UMFPACK" || solver_type == "KLU") && size.dofs > 1e6)
+      pcout << "warning: 'Solver/Type = " << solver_type << "' with about " << std::setprecision(3) << size.dofs
+            << " DoFs in the last cycle: the factorization takes minutes (UMFPACK is 4.5x slower than CG at "
+               "2e5 DoFs already, doc/benchmarks.md); 'Solver/Type = automatic' or 'CG-AMG' would be faster."
+            << std::setprecision(6) << std::endl;
 
     prm.enter_subsection("Output");
     output_folder = prm.get("Folder");

@@ -445,7 +445,7 @@ namespace dealvem
 
 
 
-    void
+    RunSizeEstimate
     check_run_size(const std::vector<const MeshParameters *> &meshes,
                    const unsigned int                        n_cycles,
                    const unsigned int                        degree,
@@ -471,7 +471,7 @@ namespace dealvem
                                      "program can represent: " +
                                      estimate.str() + "."));
       if (allow_large_runs)
-        return;
+        return e;
       std::string what;
       std::ostringstream limit;
       limit << std::setprecision(3);
@@ -515,6 +515,7 @@ namespace dealvem
                                      "set 'Memory limit' (in GB) if the run may use more memory, or set "
                                      "'Allow large runs = true' (top level of the parameter file) to go "
                                      "ahead anyway."));
+      return e;
     }
 
 

@@ -216,9 +216,9 @@ namespace dealvem
      * parameter 'Allow large runs'); the message gives the estimate, the
      * mesh files and their header counts, the limit, and names the
      * parameters that change it. Runs beyond max_representable_cells are
-     * refused in any case.
+     * refused in any case. Returns the estimate.
      */
-    void
+    RunSizeEstimate
     check_run_size(const std::vector<const MeshParameters *> &meshes,
                    const unsigned int                        n_cycles,
                    const unsigned int                        degree,
