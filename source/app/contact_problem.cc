@@ -452,7 +452,7 @@ namespace dealvem
       std::filesystem::create_directories(output_folder);
     // the files under the output prefix belong to this run only: those of
     // an earlier run go first (process 0 writes every file)
-    RunFiles run_files(output_folder, base_name, root);
+    RunFiles run_files(output_folder, base_name, root, write_vtu || write_csv || write_json || write_pictures);
     std::cout << run_files.removal_note(run_files.start());
     try
       {

@@ -737,7 +737,7 @@ namespace dealvem
       create_output_folder(output_folder);
     // the files under the output prefix belong to this run only: those of
     // an earlier run go first (process 0, before any process writes)
-    RunFiles run_files(output_folder, base_name, this_process == 0);
+    RunFiles run_files(output_folder, base_name, this_process == 0, write_vtu || write_json);
     pcout << run_files.removal_note(run_files.start());
     if (distributed)
       {

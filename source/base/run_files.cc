@@ -38,10 +38,14 @@ namespace dealvem
 
 
 
-  RunFiles::RunFiles(const std::string &folder, const std::string &base_name, const bool writer)
+  RunFiles::RunFiles(const std::string &folder,
+                     const std::string &base_name,
+                     const bool         writer,
+                     const bool         writes_files)
     : folder(folder)
     , base_name(base_name)
     , writer(writer)
+    , writes_files(writes_files)
   {}
 
 
@@ -95,6 +99,9 @@ namespace dealvem
     std::vector<std::string> removed;
     files.clear();
     finished = false;
+    // a run without output files cannot mix its files with others
+    if (!writes_files)
+      return removed;
     if (writer)
       {
         std::error_code ec;

@@ -919,6 +919,17 @@ namespace dealvem
                   right += (turn < 0);
                 }
               area /= 2;
+              // two corners of the cell at one point (distinct node tags)
+              for (unsigned int k = 0; k < n && length > 0; ++k)
+                {
+                  const auto &a = nodes.at(c.node[k]), &b = nodes.at(c.node[(k + 1) % n]);
+                  AssertThrow(a != b,
+                              element_error(c, name(c, false) + " has its nodes " + std::to_string(c.node[k]) +
+                                                 " and " + std::to_string(c.node[(k + 1) % n]) +
+                                                 " at the same point (" + node_list(c) +
+                                                 "): a side of length zero. Merge the two nodes or remove "
+                                                 "the cell."));
+                }
               AssertThrow(n == 3 || (left != 2 || right != 2) || length == 0,
                           element_error(c, name(c, false) + " crosses itself (its sides cross like a bow tie): "
                                              "nodes " + node_list(c) +

@@ -602,6 +602,11 @@ namespace dealvem
       while (std::getline(in, text))
         {
           ++line;
+          // most lines are numbers: look at the first word only where it
+          // can be a keyword
+          const std::size_t b = text.find_first_not_of(" \t");
+          if (b == std::string::npos || !(text[b] == '$' || text[b] == 'P' || text[b] == 'C' || after_format))
+            continue;
           std::istringstream s(text);
           std::string        key;
           s >> key;

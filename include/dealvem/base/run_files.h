@@ -43,8 +43,12 @@ namespace dealvem
   {
   public:
     /// The run writing under "<folder>/<base_name>"; only a @p writer
-    /// touches files.
-    RunFiles(const std::string &folder, const std::string &base_name, const bool writer = true);
+    /// touches files. A run that writes no files at all (@p writes_files
+    /// false: every output switched off) leaves the folder as it is.
+    RunFiles(const std::string &folder,
+             const std::string &base_name,
+             const bool         writer       = true,
+             const bool         writes_files = true);
 
     /// Stops recording; a run that ended neither by complete() nor by
     /// failed() (an exception went through) is marked failed.
@@ -113,6 +117,7 @@ namespace dealvem
     std::string              folder;
     std::string              base_name;
     bool                     writer;
+    bool                     writes_files;
     bool                     active   = false;
     bool                     finished = false;
     std::vector<std::string> files;
