@@ -19,6 +19,7 @@
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/app/elasticity_problem.h>
 #include <dealvem/app/input_parsing.h>
+#include <dealvem/base/run_files.h>
 
 #include <muParserError.h>
 
@@ -137,6 +138,9 @@ namespace
             << ":" << std::endl
             << text << std::endl
             << "----------------------------------------------------" << std::endl;
+    // which output files the failed run wrote (process 0 keeps the list)
+    if (!dealvem::RunFiles::last_failure_report().empty())
+      message << dealvem::RunFiles::last_failure_report() << std::endl;
     std::cerr << message.str() << std::flush;
   }
 

@@ -109,12 +109,18 @@ def seeds():
     for f in files:
         with open(f, encoding="utf-8", errors="replace") as fh:
             out.append((os.path.relpath(f, ROOT), "prm", fh.read()))
+    # mesh files: the valid ones, and the rejected gmsh files of the
+    # bad-input corpus (an interior physical line, a zero-area triangle, a
+    # duplicated cell, ...), each one mutation away from other mistakes
+    mesh_files = []
     data = os.path.join(ROOT, "tests", "mesh", "data")
-    for f in sorted(os.listdir(data)):
-        suffix = os.path.splitext(f)[1]
+    mesh_files += [os.path.join(data, f) for f in sorted(os.listdir(data))]
+    mesh_files += [os.path.join(bad, f) for f in sorted(os.listdir(bad)) if f.endswith(".msh")]
+    for path in mesh_files:
+        suffix = os.path.splitext(path)[1]
         if suffix in MESH_PRM:
-            with open(os.path.join(data, f), encoding="utf-8", errors="replace") as fh:
-                out.append((os.path.relpath(os.path.join(data, f), ROOT), suffix, fh.read()))
+            with open(path, encoding="utf-8", errors="replace") as fh:
+                out.append((os.path.relpath(path, ROOT), suffix, fh.read()))
     return out
 
 

@@ -20,6 +20,7 @@
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/base/output_file.h>
+#include <dealvem/base/run_files.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/svg_plots.h>
 #include <dealvem/postprocessing/vtu_output.h>
@@ -376,6 +377,10 @@ namespace dealvem
 
     prm.enter_subsection("Solver");
     solver_type = prm.get("Type");
+    // 'automatic' chooses by size for one body; the contact system is
+    // factored by UMFPACK (the reference solver of the saddle point)
+    if (solver_type == "automatic")
+      solver_type = "UMFPACK";
     // CG-AMG: GMRES with the block preconditioner in one process, the
     // condensed CG-AMG under mpirun (setup_system())
     requested_cg_amg = (solver_type == "CG-AMG");
@@ -389,7 +394,11 @@ namespace dealvem
       std::vector<const MeshParameters *> meshes;
       for (const auto &b : bodies)
         meshes.push_back(&b.mesh);
-      InputParsing::check_run_size(meshes, n_cycles, degree, prm.get_bool("Allow large runs"));
+      InputParsing::check_run_size(meshes, n_cycles, degree, prm.get_bool("Allow large runs"), prm_directory,
+                                   solver_type == "UMFPACK" || solver_type == "KLU" ?
+                                     InputParsing::SolverKind::direct :
+                                     InputParsing::SolverKind::iterative,
+                                   prm.get_double("Memory limit"));
     }
 
     prm.enter_subsection("Output");
@@ -448,6 +457,28 @@ namespace dealvem
     } silence(*this);
     if (root)
       std::filesystem::create_directories(output_folder);
+    // the files under the output prefix belong to this run only: those of
+    // an earlier run go first (process 0 writes every file)
+    RunFiles run_files(output_folder, base_name, root, write_vtu || write_csv || write_json || write_pictures);
+    std::cout << run_files.removal_note(run_files.start());
+    try
+      {
+        run_cycles();
+      }
+    catch (...)
+      {
+        // the program prints the list after the error
+        run_files.failed();
+        throw;
+      }
+    run_files.complete();
+  }
+
+
+
+  void
+  ContactProblem::run_cycles()
+  {
     convergence.clear();
     bool any_exact = false;
     for (const auto &b : bodies)
@@ -848,6 +879,7 @@ namespace dealvem
                 json.set("load_steps.converged", double(step - 1));
                 json.set("load_steps.failed_step", double(step));
                 json.set("load_steps.failed_time", time);
+                json.set("status", "failed");
                 for (const auto &sr : results.steps)
                   {
                     const std::string k = "steps." + std::to_string(sr.step) + ".";
@@ -1387,6 +1419,7 @@ namespace dealvem
     JsonSummary json;
     json.set("program", "dealvem");
     json.set("problem", "contact");
+    json.set("status", "complete");
     json.set("bodies", double(bodies.size()));
     json.set("cells", double(mesh.n_cells()));
     json.set("dofs", double(n));

@@ -21,6 +21,7 @@
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/base/output_file.h>
+#include <dealvem/base/run_files.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/solvers/linear_solver.h>
@@ -58,7 +59,13 @@ namespace dealvem
     prm.declare_entry("Allow large runs", "false", Bool(),
                       "Before a run starts, its size is estimated from the mesh parameters and the "
                       "refinement cycles; runs estimated above 2e7 DoFs, 1e7 Voronoi cells, 1e5 Lloyd "
-                      "iterations or 1e8 Lloyd iterations x cells (summed over the cycles) are refused unless this is true.");
+                      "iterations or 1e8 Lloyd iterations x cells (summed over the cycles) are refused unless this is true. "
+                      "Mesh files enter with the counts in their header (read before the file). So are "
+                      "runs whose estimated memory with the chosen solver exceeds 'Memory limit'.");
+    prm.declare_entry("Memory limit", "0", Double(0),
+                      "Memory (GB) a run may use, for the size check before the run; 0: 80 % of the "
+                      "smallest of the physical memory, the process limits (ulimit -v, -d) and the "
+                      "control group's limit.");
     prm.enter_subsection("Mesh");
     MeshParameters::declare_parameters(prm);
     prm.leave_subsection();
@@ -93,8 +100,10 @@ namespace dealvem
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    prm.declare_entry("Type", "UMFPACK", Selection("UMFPACK|KLU|CG-AMG|GMRES-AMG|CG-AMG constraints"),
-                      "UMFPACK: SuiteSparse direct; KLU: Trilinos Amesos KLU direct; CG-AMG: "
+    prm.declare_entry("Type", "automatic", Selection("automatic|UMFPACK|KLU|CG-AMG|GMRES-AMG|CG-AMG constraints"),
+                      "automatic: one body: UMFPACK up to 2e5 DoFs (where it fits into 'Memory limit'), "
+                      "CG-AMG above (the measured crossover, doc/benchmarks.md); the choice and the "
+                      "reason are printed; contact problems: UMFPACK. UMFPACK: SuiteSparse direct; KLU: Trilinos Amesos KLU direct; CG-AMG: "
                       "deal.II's SolverCG preconditioned by Trilinos ML algebraic multigrid with the "
                       "rigid-body modes as near-null space; for k = 2 the default preconditioner of CG is a "
                       "two-level p-multigrid (Chebyshev smoothing on k = 2, the ML AMG on the "
@@ -198,6 +207,28 @@ namespace dealvem
     prm.enter_subsection("Exact solution");
     exact_displacement = prm.get("Displacement");
     prm.leave_subsection();
+    // the one-body problem is static (no load steps): an expression in t
+    // would silently be taken at t = 1
+    {
+      std::vector<std::string> timed = bc.time_dependent_entries();
+      for (const auto &e : InputParsing::split(exact_displacement, ','))
+        if (InputParsing::uses_variable(e, "t"))
+          {
+            timed.push_back("Exact solution/Displacement");
+            break;
+          }
+      timed.erase(std::unique(timed.begin(), timed.end()), timed.end());
+      std::string others;
+      for (unsigned int i = 1; i < timed.size(); ++i)
+        others += (i > 1 ? ", '" : " (also '") + timed[i] + "'" + (i + 1 == timed.size() ? ")" : "");
+      AssertThrow(timed.empty(),
+                  dealii::ExcMessage("Parameter '" + (timed.empty() ? std::string() : timed[0]) + "'" + others +
+                                     " uses the time t, but 'Number of bodies' is 1: the one-body program "
+                                     "solves one static problem, without load steps, and would take t as 1. "
+                                     "Write the expression without t (with the value you mean in place of "
+                                     "t). Load steps (section 'Load steps', t = k * Final time / Number of "
+                                     "steps) are run by contact problems ('Number of bodies' at least 2)."));
+    }
 
     prm.enter_subsection("Solver");
     solver_type           = prm.get("Type");
@@ -215,7 +246,19 @@ namespace dealvem
     prm.enter_subsection("Convergence study");
     n_cycles = prm.get_integer("Refinement cycles");
     prm.leave_subsection();
-    InputParsing::check_run_size({&mesh_parameters}, n_cycles, degree, prm.get_bool("Allow large runs"));
+    memory_limit_GB = prm.get_double("Memory limit");
+    const auto size = InputParsing::check_run_size({&mesh_parameters}, n_cycles, degree, prm.get_bool("Allow large runs"),
+                                 prm_directory,
+                                 solver_type == "automatic" ? InputParsing::SolverKind::automatic :
+                                 solver_type == "CG-AMG"    ? InputParsing::SolverKind::iterative :
+                                                              InputParsing::SolverKind::direct,
+                                 memory_limit_GB);
+    // a direct solver asked for far above the crossover: it fits, but slowly
+    if ((solver_type == "UMFPACK" || solver_type == "KLU") && size.dofs > 1e6)
+      pcout << "warning: 'Solver/Type = " << solver_type << "' with about " << std::setprecision(3) << size.dofs
+            << " DoFs in the last cycle: the factorization takes minutes (UMFPACK is 4.5x slower than CG at "
+               "2e5 DoFs already, doc/benchmarks.md); 'Solver/Type = automatic' or 'CG-AMG' would be faster."
+            << std::setprecision(6) << std::endl;
 
     prm.enter_subsection("Output");
     output_folder = prm.get("Folder");
@@ -318,12 +361,41 @@ namespace dealvem
 
 
 
+  // 'Solver/Type = automatic': a direct factorization where it is as fast
+  // as CG and fits into memory, CG with AMG or the p-multigrid elsewhere
+  // (printed with the reason); the other types as given.
+  std::string
+  ElasticityProblem::chosen_solver_type() const
+  {
+    if (solver_type != "automatic")
+      return solver_type;
+    const double n = dof_handler.n_dofs();
+    std::string  reason;
+    std::string  type;
+    if (distributed)
+      {
+        type   = "CG-AMG";
+        reason = "several MPI processes: the distributed CG (a direct solver would gather the matrix on one "
+                 "process)";
+      }
+    else
+      {
+        std::string  source;
+        const double limit = InputParsing::memory_limit(memory_limit_GB, source);
+        type = InputParsing::automatic_solver_is_direct(n, degree, limit, reason) ? "UMFPACK" : "CG-AMG";
+      }
+    pcout << "  solver (Solver/Type = automatic): " << type << ", " << reason << std::endl;
+    return type;
+  }
+
+
+
   void
   ElasticityProblem::solve()
   {
     dealii::TimerOutput::Scope t(*timer, "solve");
     LinearSolver::Settings     settings;
-    settings.type               = LinearSolver::parse_type(solver_type);
+    settings.type               = LinearSolver::parse_type(chosen_solver_type());
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
     settings.preconditioner     = LinearSolver::parse_preconditioner(solver_preconditioner);
@@ -400,7 +472,7 @@ namespace dealvem
     {
       dealii::TimerOutput::Scope t(*timer, "solve");
       LinearSolver::Settings     settings;
-      settings.type               = LinearSolver::parse_type(solver_type);
+      settings.type               = LinearSolver::parse_type(chosen_solver_type());
       settings.relative_tolerance = solver_tolerance;
       settings.max_iterations     = solver_max_iterations;
       settings.preconditioner     = LinearSolver::parse_preconditioner(solver_preconditioner);
@@ -555,6 +627,9 @@ namespace dealvem
                 for (unsigned int p = 0; p < n_processes; ++p)
                   pieces.push_back(stem + "." + std::to_string(p) + ".vtu");
                 write_pvtu_record(vtu, pieces);
+                // the pieces of the other processes belong to the run too
+                for (const auto &piece : pieces)
+                  RunFiles::record(output_folder + "/" + piece);
               }
           }
         else
@@ -598,6 +673,7 @@ namespace dealvem
     json.set(key + "h_max", hmax);
     json.set(key + "h_min", hmin);
     json.set(key + "max_von_mises", max_vm);
+    json.set(key + "solver", solver_description);
     json.set(key + "solver_iterations", double(solver_iterations));
     json.set(key + "solver_setup_seconds", solver_setup_time);
     json.set(key + "mpi_processes", double(distributed ? n_processes : 1));
@@ -644,7 +720,11 @@ namespace dealvem
           last_solution = solution;
       }
     if (write_json && this_process == 0)
-      json.write(output_folder + "/" + base_name + ".json");
+      {
+        json.set("status", cycle + 1 < n_cycles ? "running" : "complete");
+        json.write(output_folder + "/" + base_name + ".json");
+        json_written = true;
+      }
   }
 
 
@@ -655,11 +735,46 @@ namespace dealvem
     check_output_names(output_folder, base_name);
     if (this_process == 0 || !distributed)
       create_output_folder(output_folder);
+    // the files under the output prefix belong to this run only: those of
+    // an earlier run go first (process 0, before any process writes)
+    RunFiles run_files(output_folder, base_name, this_process == 0, write_vtu || write_json);
+    pcout << run_files.removal_note(run_files.start());
     if (distributed)
       {
         const int ierr = MPI_Barrier(mpi_communicator);
         AssertThrowMPI(ierr);
       }
+    try
+      {
+        run_cycles();
+      }
+    catch (...)
+      {
+        // the JSON summary (if any was written) and the manifest say
+        // "failed"; the user learns which files the run wrote
+        if (write_json && this_process == 0 && json_written)
+          {
+            json.set("status", "failed");
+            try
+              {
+                json.write(output_folder + "/" + base_name + ".json");
+              }
+            catch (...)
+              {}
+          }
+        // the program prints the list after the error
+        run_files.failed();
+        throw;
+      }
+    run_files.complete();
+  }
+
+
+
+  void
+  ElasticityProblem::run_cycles()
+  {
+    json_written = false;
     materials = {{dealii::types::material_id(mesh_parameters.material_id),
                   ElasticMaterial(youngs_modulus, poissons_ratio, model)}};
     exact.reset();
@@ -739,7 +854,10 @@ namespace dealvem
       }
     pcout << std::defaultfloat << std::setprecision(6) << std::endl;
     if (write_json && this_process == 0)
-      json.write(output_folder + "/" + base_name + ".json");
+      {
+        json.set("status", "complete");
+        json.write(output_folder + "/" + base_name + ".json");
+      }
 
     if (write_json)
       pcout << "Summary written to " << output_folder + "/" + base_name + ".json" << std::endl;

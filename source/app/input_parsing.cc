@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/app/input_parsing.h>
+#include <dealvem/mesh/mesh_io.h>
 #include <dealvem/app/mesh_parameters.h>
 
 #include <muParserError.h>
@@ -17,8 +18,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
+#include <filesystem>
 #include <cmath>
 #include <cstdlib>
+
+#include <sys/resource.h>
+#include <unistd.h>
 #include <exception>
 #include <iomanip>
 #include <sstream>
@@ -205,10 +211,55 @@ namespace dealvem
 
 
 
+    bool
+    uses_variable(const std::string &expression, const std::string &variable)
+    {
+      const auto is_start = [](const char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+      const auto is_name  = [](const char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+      const auto is_digit = [](const char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+      std::size_t i = 0;
+      while (i < expression.size())
+        {
+          const char c = expression[i];
+          if (is_digit(c) || (c == '.' && i + 1 < expression.size() && is_digit(expression[i + 1])))
+            {
+              // a number, with its exponent
+              while (i < expression.size() && (is_digit(expression[i]) || expression[i] == '.'))
+                ++i;
+              if (i < expression.size() && (expression[i] == 'e' || expression[i] == 'E'))
+                {
+                  std::size_t j = i + 1;
+                  if (j < expression.size() && (expression[j] == '+' || expression[j] == '-'))
+                    ++j;
+                  if (j < expression.size() && is_digit(expression[j]))
+                    {
+                      i = j;
+                      while (i < expression.size() && is_digit(expression[i]))
+                        ++i;
+                    }
+                }
+            }
+          else if (is_start(c))
+            {
+              const std::size_t b = i;
+              while (i < expression.size() && is_name(expression[i]))
+                ++i;
+              if (expression.compare(b, i - b, variable) == 0 && i - b == variable.size())
+                return true;
+            }
+          else
+            ++i;
+        }
+      return false;
+    }
+
+
+
     RunSizeEstimate
     estimate_run_size(const std::vector<const MeshParameters *> &meshes,
                       const unsigned int                        n_cycles,
-                      const unsigned int                        degree)
+                      const unsigned int                        degree,
+                      const std::string                        &base_directory)
     {
       RunSizeEstimate e;
       for (const MeshParameters *m : meshes)
@@ -250,8 +301,45 @@ namespace dealvem
               }
             else
               {
-                e.complete = false;
-                continue;
+                // a mesh file: the counts of its header (per cycle with
+                // '{cycle}' in the name, else refined 'cycle' times)
+                std::string path     = m->file_name;
+                const auto  at       = path.find("{cycle}");
+                const bool  per_file = (at != std::string::npos);
+                if (per_file)
+                  path.replace(at, 7, std::to_string(cycle));
+                else if (cycle > 0 && m->type == "vtk file")
+                  break; // refused by the reader (a VTK mesh is not refined)
+                if (!path.empty() && path[0] != '/' && !base_directory.empty())
+                  path = base_directory + "/" + path;
+                const std::string ext    = std::filesystem::path(path).extension().string();
+                const std::string format = m->type == "vtk file" ? "vtk" : (ext.empty() || ext == ".msh") ? "msh" : "";
+                std::error_code   ec;
+                MeshIO::FileCounts counts;
+                if (!format.empty() && std::filesystem::is_regular_file(path, ec))
+                  counts = MeshIO::count_entities(path, format);
+                if (!counts.valid)
+                  {
+                    e.complete = false;
+                    continue;
+                  }
+                const double r = per_file ? 1. : std::ldexp(1., 2 * int(cycle));
+                vertices       = double(counts.n_vertices) * r;
+                // without a cell count, one cell per vertex (quadrangles)
+                cells = (counts.n_cells > 0 ? double(counts.n_cells) : double(counts.n_vertices)) * r;
+                edges = vertices + cells;
+                if (last)
+                  {
+                    std::ostringstream f;
+                    f << (e.files.empty() ? "" : ", ") << "'" << path << "' (line " << counts.line << ": "
+                      << counts.n_vertices << (format == "vtk" ? " points" : " nodes");
+                    if (counts.n_cells > 0)
+                      f << ", " << counts.n_cells << (format == "vtk" ? " cells" : " elements");
+                    if (!per_file && cycle > 0)
+                      f << "; refined " << cycle << " times";
+                    f << ")";
+                    e.files += f.str();
+                  }
               }
             if (last)
               {
@@ -265,15 +353,113 @@ namespace dealvem
 
 
 
-    void
+    double
+    estimated_memory(const double n_dofs, const unsigned int degree, const bool direct)
+    {
+      // bytes per DoF of everything but the solver (mesh, DoF handler,
+      // matrix, vectors, stresses, output): k = 1 rows hold fewer entries
+      const double base = (degree >= 2 ? base_bytes_per_dof_k2 : base_bytes_per_dof_k1);
+      if (!direct)
+        return (base + iterative_bytes_per_dof) * n_dofs + fixed_bytes;
+      // the factors of a 2D problem grow like n log n
+      return base * n_dofs + direct_bytes_per_dof_log * n_dofs * std::log2(std::max(n_dofs, 2.)) + fixed_bytes;
+    }
+
+
+
+    double
+    memory_limit(const double limit_GB, std::string &source)
+    {
+      if (limit_GB > 0)
+        {
+          source = "the parameter 'Memory limit'";
+          return limit_GB * 1e9;
+        }
+      double      bytes = 0;
+      std::string what;
+      const long  pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+      if (pages > 0 && page > 0)
+        {
+          bytes = double(pages) * double(page);
+          what  = "the physical memory of this machine";
+        }
+      for (const int resource : {RLIMIT_AS, RLIMIT_DATA})
+        {
+          struct rlimit l;
+          if (::getrlimit(resource, &l) == 0 && l.rlim_cur != RLIM_INFINITY &&
+              (bytes == 0 || double(l.rlim_cur) < bytes))
+            {
+              bytes = double(l.rlim_cur);
+              what  = resource == RLIMIT_AS ? "the process limit 'ulimit -v'" : "the process limit 'ulimit -d'";
+            }
+        }
+      for (const char *cgroup : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"})
+        {
+          std::ifstream in(cgroup);
+          double        v = 0;
+          if (in >> v && v > 0 && (bytes == 0 || v < bytes))
+            {
+              bytes = v;
+              what  = "the memory limit of the control group (container)";
+            }
+        }
+      if (bytes == 0)
+        {
+          source = "a default of 8 GB (the memory of this machine is not known)";
+          return 8e9;
+        }
+      source = "80 % of " + what;
+      return 0.8 * bytes;
+    }
+
+
+
+    bool
+    automatic_solver_is_direct(const double n_dofs, const unsigned int degree, const double limit_bytes,
+                               std::string &reason)
+    {
+      std::ostringstream r;
+      r << std::setprecision(3);
+      if (n_dofs > direct_solver_max_dofs)
+        {
+          r << n_dofs << " DoFs > " << direct_solver_max_dofs
+            << ": above this size CG with " << (degree == 2 ? "the p-multigrid" : "AMG")
+            << " is faster than a direct factorization (measured crossover, doc/benchmarks.md)";
+          reason = r.str();
+          return false;
+        }
+      const double direct = estimated_memory(n_dofs, degree, true);
+      if (direct > limit_bytes)
+        {
+          r << "the direct factorization would need about " << direct / 1e9 << " GB, more than the limit of "
+            << limit_bytes / 1e9 << " GB";
+          reason = r.str();
+          return false;
+        }
+      r << n_dofs << " DoFs <= " << direct_solver_max_dofs
+        << ": a direct factorization is as fast as CG or faster at this size (measured crossover, "
+           "doc/benchmarks.md)";
+      reason = r.str();
+      return true;
+    }
+
+
+
+    RunSizeEstimate
     check_run_size(const std::vector<const MeshParameters *> &meshes,
                    const unsigned int                        n_cycles,
                    const unsigned int                        degree,
-                   const bool                                allow_large_runs)
+                   const bool                                allow_large_runs,
+                   const std::string                        &base_directory,
+                   const SolverKind                          solver,
+                   const double                              memory_limit_GB)
     {
-      const RunSizeEstimate e = estimate_run_size(meshes, n_cycles, degree);
+      const RunSizeEstimate e = estimate_run_size(meshes, n_cycles, degree, base_directory);
       std::ostringstream    estimate;
-      estimate << std::setprecision(3) << "the estimate for the last of the " << n_cycles
+      estimate << std::setprecision(3);
+      if (!e.files.empty())
+        estimate << "mesh file(s) " << e.files << "; ";
+      estimate << "the estimate for the last of the " << n_cycles
                << " refinement cycle(s) is " << e.cells << " cells and " << e.dofs << " DoFs";
       if (e.voronoi_cells > 0)
         estimate << ", " << e.voronoi_cells << " Voronoi cells, " << e.lloyd_iterations
@@ -285,7 +471,7 @@ namespace dealvem
                                      "program can represent: " +
                                      estimate.str() + "."));
       if (allow_large_runs)
-        return;
+        return e;
       std::string what;
       std::ostringstream limit;
       limit << std::setprecision(3);
@@ -297,13 +483,39 @@ namespace dealvem
         limit << " more than " << max_lloyd_iterations << " Lloyd iterations;";
       if (e.lloyd_work > max_lloyd_work)
         limit << " Lloyd iterations x cells above " << max_lloyd_work << ";";
+      // the memory with the solver the run will use
+      std::string  limit_source;
+      const double limit_bytes = memory_limit(memory_limit_GB, limit_source);
+      std::string  reason;
+      const bool   direct = solver == SolverKind::direct ||
+                          (solver == SolverKind::automatic && automatic_solver_is_direct(e.dofs, degree, limit_bytes, reason));
+      const double memory = estimated_memory(e.dofs, degree, direct);
+      std::string  solver_hint;
+      if (memory > limit_bytes)
+        {
+          limit << " about " << memory / 1e9 << " GB of memory with "
+                << (direct ? "a direct factorization ('Solver/Type' = UMFPACK or KLU)" :
+                             "CG and AMG or the p-multigrid")
+                << ", more than the limit of " << limit_bytes / 1e9 << " GB (" << limit_source << ");";
+          const double iterative = estimated_memory(e.dofs, degree, false);
+          if (direct && iterative <= limit_bytes)
+            {
+              std::ostringstream h;
+              h << std::setprecision(3) << " An iterative solver would need about " << iterative / 1e9
+                << " GB: set 'Solver/Type = automatic' or 'CG-AMG'.";
+              solver_hint = h.str();
+            }
+        }
       what = limit.str();
       AssertThrow(what.empty(),
                   dealii::ExcMessage("This run is very large:" + what + " " + estimate.str() +
-                                     ". It would take very long or run out of memory. Reduce 'Mesh/Subdivisions', "
-                                     "'Mesh/Number of cells', 'Mesh/Lloyd iterations' or 'Convergence "
-                                     "study/Refinement cycles', or set 'Allow large runs = true' (top "
-                                     "level of the parameter file) to go ahead anyway."));
+                                     ". It would take very long or run out of memory." + solver_hint +
+                                     " Reduce 'Mesh/Subdivisions', 'Mesh/Number of cells', 'Mesh/Lloyd "
+                                     "iterations', the mesh file or 'Convergence study/Refinement cycles', "
+                                     "set 'Memory limit' (in GB) if the run may use more memory, or set "
+                                     "'Allow large runs = true' (top level of the parameter file) to go "
+                                     "ahead anyway."));
+      return e;
     }
 
 

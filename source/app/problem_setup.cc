@@ -340,6 +340,37 @@ namespace dealvem
 
 
 
+  std::vector<std::string>
+  BoundaryConditionParameters::time_dependent_entries() const
+  {
+    std::vector<std::string> names;
+    const auto check = [&names](const InputParsing::ParsedFunction *f) {
+      if (f != nullptr)
+        for (const auto &e : f->get_expressions())
+          if (InputParsing::uses_variable(e, "t"))
+            {
+              names.push_back(f->get_parameter());
+              return;
+            }
+    };
+    for (const auto &d : dirichlet)
+      check(d.function.get());
+    for (const auto *loads : {&tractions, &pressures})
+      for (const auto &l : *loads)
+        check(l.function.get());
+    for (const auto &pc : points)
+      check(pc.value.get());
+    for (const auto &r : rigid_boundaries)
+      {
+        check(r.force.get());
+        check(r.moment.get());
+      }
+    check(body_force.get());
+    return names;
+  }
+
+
+
   std::set<dealii::types::boundary_id>
   BoundaryConditionParameters::used_boundary_ids() const
   {

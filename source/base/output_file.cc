@@ -5,6 +5,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <dealvem/base/output_file.h>
+#include <dealvem/base/run_files.h>
 
 #include <atomic>
 #include <cerrno>
@@ -140,6 +141,8 @@ namespace dealvem
                                                   "); the earlier version of the file, if any, "
                                                   "is unchanged."));
           }
+        // a run of the program keeps the list of its files
+        RunFiles::record(target);
       }
     finished = true;
   }

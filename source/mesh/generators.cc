@@ -14,6 +14,10 @@
 #  include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #endif
 
+#include <array>
+#include <iomanip>
+#include <unordered_map>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -463,6 +467,8 @@ namespace dealvem
           AssertThrow(n_triangles == 0 || n_quads == 0,
                       error("the file mixes " + std::to_string(n_triangles) + " triangles and " +
                             std::to_string(n_quads) + " quadrangles; deal.II reads one kind only."));
+          check_cells();
+          check_lines();
         }
 
       private:
@@ -474,7 +480,20 @@ namespace dealvem
         std::vector<std::string> words;
         int                   version = 0; // 22, 40, 41
         std::string           version_text;
-        std::unordered_set<long long> node_tags;
+        // node tag -> coordinates (x, y)
+        std::unordered_map<long long, std::array<double, 2>> nodes;
+        // an element as the file gives it, for the checks of check_topology()
+        struct Element
+        {
+          long long              number   = 0;  // element number (2.x) or tag (4.x)
+          std::size_t            line     = 0;  // line in the file
+          long long              physical = 0;  // physical tag (material or boundary id)
+          unsigned int           type     = 0;  // 1 line, 2 triangle, 3 quadrangle
+          std::array<long long, 4> node   = {{0, 0, 0, 0}};
+        };
+        std::vector<Element>  cells, lines;
+        // physical tag of each entity (dimension, tag) of a version 4 file
+        std::map<std::pair<long long, long long>, long long> entity_physical;
         // (dimension, tag) of the entities of a version 4 file
         std::set<std::pair<long long, long long>> entities;
         bool                  have_entities = false;
@@ -659,7 +678,10 @@ namespace dealvem
                 AssertThrow(words.size() >= w + n_physicals,
                             error("expected " + what + ", found '" + text + "'."));
                 for (long long k = 0; k < n_physicals; ++k)
-                  check_id(words[w++], "the physical tag of " + what);
+                  {
+                    check_id(words[w], "the physical tag of " + what);
+                    entity_physical[{d, tag}] = integer(words[w++], "the physical tag of " + what, 0, 254);
+                  }
                 if (d > 0)
                   {
                     AssertThrow(words.size() > w, error("expected the number of bounding entities of " + what +
@@ -681,11 +703,21 @@ namespace dealvem
           expect_marker("$EndEntities");
         }
 
-        void
+        long long
         add_node(const std::string &tag_word, const std::string &what)
         {
           const long long tag = integer(tag_word, "the tag of " + what, 1, std::numeric_limits<int>::max());
-          AssertThrow(node_tags.insert(tag).second, error("node tag " + tag_word + " is used twice."));
+          AssertThrow(nodes.emplace(tag, std::array<double, 2>{{0., 0.}}).second,
+                      error("node tag " + tag_word + " is used twice."));
+          return tag;
+        }
+
+        void
+        set_node(const long long tag, const std::string &x, const std::string &y, const std::string &z,
+                 const std::string &what)
+        {
+          nodes[tag] = {{coordinate(x, "x of " + what), coordinate(y, "y of " + what)}};
+          coordinate(z, "z of " + what);
         }
 
         void
@@ -701,9 +733,7 @@ namespace dealvem
               read_line(what);
               AssertThrow(words.size() == 4 && words[0][0] != '$',
                           error("expected " + what + " ('tag x y z'), found '" + text + "'."));
-              add_node(words[0], what);
-              for (unsigned int d = 0; d < 3; ++d)
-                coordinate(words[1 + d], std::string(1, "xyz"[d]) + " of " + what);
+              set_node(add_node(words[0], what), words[1], words[2], words[3], what);
             }
         }
 
@@ -734,20 +764,20 @@ namespace dealvem
                                                  " nodes announced after $Nodes."));
               if (v41)
                 {
+                  std::vector<long long> tags(m);
                   for (long long i = 0; i < m; ++i)
                     {
                       const std::string what = "node " + std::to_string(n_read + i + 1) + " of " + std::to_string(n);
                       read_line("the tag of " + what);
                       expect_words(1, "the tag of " + what);
-                      add_node(words[0], what);
+                      tags[i] = add_node(words[0], what);
                     }
                   for (long long i = 0; i < m; ++i)
                     {
                       const std::string what = "node " + std::to_string(n_read + i + 1) + " of " + std::to_string(n);
                       read_line("the coordinates of " + what);
                       expect_words(3, "the coordinates 'x y z' of " + what);
-                      for (unsigned int d = 0; d < 3; ++d)
-                        coordinate(words[d], std::string(1, "xyz"[d]) + " of " + what);
+                      set_node(tags[i], words[0], words[1], words[2], what);
                     }
                 }
               else
@@ -756,9 +786,7 @@ namespace dealvem
                     const std::string what = "node " + std::to_string(n_read + i + 1) + " of " + std::to_string(n);
                     read_line(what);
                     expect_words(4, what + " ('tag x y z')");
-                    add_node(words[0], what);
-                    for (unsigned int d = 0; d < 3; ++d)
-                      coordinate(words[1 + d], std::string(1, "xyz"[d]) + " of " + what);
+                    set_node(add_node(words[0], what), words[1], words[2], words[3], what);
                   }
               n_read += m;
             }
@@ -787,12 +815,212 @@ namespace dealvem
               long long  v = 0;
               const auto r = std::from_chars(words[k].data(), words[k].data() + words[k].size(), v);
               AssertThrow(r.ec == std::errc() && r.ptr == words[k].data() + words[k].size() &&
-                            node_tags.count(v) == 1,
+                            nodes.count(v) == 1,
                           error(what + " refers to node '" + words[k] + "', which is not in $Nodes."));
               for (std::size_t j = first; j < k; ++j)
                 AssertThrow(words[j] != words[k], error(what + " uses node " + words[k] + " twice."));
             }
         }
+
+        // Keeps a line, triangle or quadrangle whose node tags are words
+        // first, first + 1, ... of the current line (points are not kept).
+        void
+        keep_element(const long long number, const long long physical, const std::string &type_word,
+                     const std::size_t first)
+        {
+          Element e;
+          e.number   = number;
+          e.line     = line;
+          e.physical = physical;
+          e.type     = static_cast<unsigned int>(std::stoi(type_word));
+          if (e.type != 1 && e.type != 2 && e.type != 3)
+            return;
+          const unsigned int n = (e.type == 1 ? 2 : e.type == 2 ? 3 : 4);
+          for (unsigned int k = 0; k < n; ++k)
+            std::from_chars(words[first + k].data(), words[first + k].data() + words[first + k].size(), e.node[k]);
+          (e.type == 1 ? lines : cells).push_back(e);
+        }
+
+        unsigned int
+        n_nodes(const Element &e) const
+        {
+          return e.type == 1 ? 2 : e.type == 2 ? 3 : 4;
+        }
+
+        // "quadrangle 7", with " (line 23)" if @p at_line
+        std::string
+        name(const Element &e, const bool at_line = true) const
+        {
+          return std::string(e.type == 1 ? "line element " : e.type == 2 ? "triangle " : "quadrangle ") +
+                 std::to_string(e.number) + (at_line ? " (line " + std::to_string(e.line) + ")" : std::string());
+        }
+
+        std::string
+        node_list(const Element &e) const
+        {
+          std::ostringstream s;
+          s << std::setprecision(15);
+          for (unsigned int k = 0; k < n_nodes(e); ++k)
+            {
+              const auto &x = nodes.at(e.node[k]);
+              s << (k > 0 ? ", " : "") << e.node[k] << " (" << x[0] << ", " << x[1] << ")";
+            }
+          return s.str();
+        }
+
+        static std::pair<long long, long long>
+        edge_key(const long long a, const long long b)
+        {
+          return {std::min(a, b), std::max(a, b)};
+        }
+
+        // The error for element @p e, with the file and its line first.
+        dealii::ExcMessage
+        element_error(const Element &e, const std::string &what) const
+        {
+          return dealii::ExcMessage("Invalid gmsh file " + filename + ":" + std::to_string(e.line) + ": " + what);
+        }
+
+        // Cells before deal.II builds its triangulation from them: no cell
+        // without area (collinear or coincident nodes, which deal.II turns
+        // into wrong neighbours and "boundary id for an internal face"), no
+        // self-intersecting quadrangle, no cell given twice, no edge of
+        // more than two cells, no edge between two bodies (physical
+        // surfaces: they interact through contact only).
+        void
+        check_cells()
+        {
+          // the size of the mesh, for the tolerance of the area test
+          double lo[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+          double hi[2] = {-lo[0], -lo[1]};
+          for (const auto &c : cells)
+            for (unsigned int k = 0; k < n_nodes(c); ++k)
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  lo[d] = std::min(lo[d], nodes.at(c.node[k])[d]);
+                  hi[d] = std::max(hi[d], nodes.at(c.node[k])[d]);
+                }
+          std::map<std::vector<long long>, std::size_t> seen;
+          for (std::size_t i = 0; i < cells.size(); ++i)
+            {
+              const Element &c = cells[i];
+              const unsigned int n = n_nodes(c);
+              // signed area and the turn at each corner
+              double       area = 0, length = 0;
+              unsigned int left = 0, right = 0;
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  const auto &a = nodes.at(c.node[k]), &b = nodes.at(c.node[(k + 1) % n]),
+                             &q = nodes.at(c.node[(k + 2) % n]);
+                  area += a[0] * b[1] - b[0] * a[1];
+                  length = std::max(length, std::hypot(b[0] - a[0], b[1] - a[1]));
+                  const double turn = (b[0] - a[0]) * (q[1] - b[1]) - (b[1] - a[1]) * (q[0] - b[0]);
+                  left += (turn > 0);
+                  right += (turn < 0);
+                }
+              area /= 2;
+              // two corners of the cell at one point (distinct node tags)
+              for (unsigned int k = 0; k < n && length > 0; ++k)
+                {
+                  const auto &a = nodes.at(c.node[k]), &b = nodes.at(c.node[(k + 1) % n]);
+                  AssertThrow(a != b,
+                              element_error(c, name(c, false) + " has its nodes " + std::to_string(c.node[k]) +
+                                                 " and " + std::to_string(c.node[(k + 1) % n]) +
+                                                 " at the same point (" + node_list(c) +
+                                                 "): a side of length zero. Merge the two nodes or remove "
+                                                 "the cell."));
+                }
+              AssertThrow(n == 3 || (left != 2 || right != 2) || length == 0,
+                          element_error(c, name(c, false) + " crosses itself (its sides cross like a bow tie): "
+                                             "nodes " + node_list(c) +
+                                             ". List the nodes in their order around the cell."));
+              AssertThrow(std::abs(area) > 1e-12 * length * length && length > 0,
+                          element_error(c, name(c, false) + " has zero area: its nodes " + node_list(c) +
+                                             (length == 0 ? " lie at one point." :
+                                              n == 3      ? " lie on one line." :
+                                                            " enclose no area.") +
+                                             " Remove the cell or move its nodes apart."));
+              std::vector<long long> key(c.node.begin(), c.node.begin() + n);
+              std::sort(key.begin(), key.end());
+              const auto it = seen.emplace(key, i);
+              AssertThrow(it.second,
+                          element_error(c, name(c, false) + " has the same nodes as " + name(cells[it.first->second]) +
+                                             ": a cell is given twice. Remove one of them."));
+            }
+          for (std::size_t i = 0; i < cells.size(); ++i)
+            {
+              const Element &c = cells[i];
+              for (unsigned int k = 0; k < n_nodes(c); ++k)
+                edge_cells[edge_key(c.node[k], c.node[(k + 1) % n_nodes(c)])].push_back(i);
+            }
+          for (const auto &e : edge_cells)
+            {
+              if (e.second.size() > 2)
+                {
+                  const Element &c = cells[e.second[2]];
+                  AssertThrow(false,
+                              element_error(c, "the edge from node " + std::to_string(e.first.first) + " to node " +
+                                                 std::to_string(e.first.second) + " belongs to three cells: " +
+                                                 name(cells[e.second[0]]) + ", " + name(cells[e.second[1]]) +
+                                                 " and " + name(c) + "; cells overlap there."));
+                }
+              if (e.second.size() == 2)
+                {
+                  const Element &a = cells[e.second[0]], &b = cells[e.second[1]];
+                  AssertThrow(a.physical == b.physical,
+                              element_error(b, name(a) + " (physical surface " + std::to_string(a.physical) +
+                                                 ") and " + name(b) + " (physical surface " +
+                                                 std::to_string(b.physical) + ") share the edge from node " +
+                                                 std::to_string(e.first.first) + " to node " +
+                                                 std::to_string(e.first.second) +
+                                                 ". Different physical surfaces are different bodies (material "
+                                                 "ids), and bodies interact through contact only: give each "
+                                                 "body its own nodes along the interface (separate curves in "
+                                                 "gmsh), or put both in one physical surface."));
+                }
+            }
+        }
+
+        // Line elements become boundary ids of the edges they lie on
+        // (deal.II asserts in tria.cc otherwise): each must be an edge of
+        // exactly one cell, and an edge gets one id.
+        void
+        check_lines()
+        {
+          std::map<std::pair<long long, long long>, std::size_t> seen;
+          for (std::size_t i = 0; i < lines.size(); ++i)
+            {
+              const Element &l   = lines[i];
+              const auto     key = edge_key(l.node[0], l.node[1]);
+              const auto     it  = edge_cells.find(key);
+              AssertThrow(it != edge_cells.end(),
+                          element_error(l, name(l, false) + " (physical line " + std::to_string(l.physical) +
+                                             ") joins the nodes " + node_list(l) +
+                                             ", which are not the two ends of an edge of any cell; a boundary "
+                                             "id can only go to a cell side. Is the curve meshed with other "
+                                             "nodes than the surface (a missing 'Coherence', or a curve not "
+                                             "part of the surface)?"));
+              AssertThrow(it->second.size() == 1,
+                          element_error(l, name(l, false) + " (physical line " + std::to_string(l.physical) +
+                                             ") lies on the edge from node " + std::to_string(key.first) +
+                                             " to node " + std::to_string(key.second) +
+                                             " inside the mesh, between " + name(cells[it->second[0]]) + " and " +
+                                             name(cells[it->second[1]]) +
+                                             "; boundary ids go to boundary edges only. Remove the curve from "
+                                             "the physical group (or the line from the file)."));
+              const auto s = seen.emplace(key, i);
+              AssertThrow(s.second || lines[s.first->second].physical == l.physical,
+                          element_error(l, name(l, false) + " (physical line " + std::to_string(l.physical) +
+                                             ") and " + name(lines[s.first->second]) + " (physical line " +
+                                             std::to_string(lines[s.first->second].physical) +
+                                             ") give the edge from node " + std::to_string(key.first) +
+                                             " to node " + std::to_string(key.second) +
+                                             " two boundary ids. Keep one of them."));
+            }
+        }
+
+        // the cells (indices into cells) at each edge, by its node tags
+        std::map<std::pair<long long, long long>, std::vector<std::size_t>> edge_cells;
 
         void
         read_elements_2()
@@ -807,19 +1035,24 @@ namespace dealvem
               AssertThrow(words.size() >= 3 && words[0][0] != '$',
                           error("expected " + what + " ('number type n-tags tags... nodes...'), found '" + text +
                                 "'."));
-              integer(words[0], "the number of " + what, 0, std::numeric_limits<int>::max());
+              const long long number = integer(words[0], "the number of " + what, 0, std::numeric_limits<int>::max());
               const unsigned int n_nodes = nodes_of_type(words[1], what);
               const long long    n_tags  = integer(words[2], "the number of tags of " + what, 0, 1000);
               AssertThrow(words.size() == std::size_t(3 + n_tags + n_nodes),
                           error("expected " + std::to_string(n_tags) + " tags and " + std::to_string(n_nodes) +
                                 " nodes for " + what + ", found '" + text + "'."));
               // the first tag (the physical group) becomes the id
+              long long physical = 0;
               if (n_tags > 0)
-                check_id(words[3], "the physical tag of " + what);
+                {
+                  check_id(words[3], "the physical tag of " + what);
+                  physical = integer(words[3], "the physical tag of " + what, 0, 254);
+                }
               for (long long k = 1; k < n_tags; ++k)
                 integer(words[3 + k], "a tag of " + what, std::numeric_limits<int>::min(),
                         std::numeric_limits<int>::max());
               check_element_nodes(3 + n_tags, what);
+              keep_element(number, physical, words[1], 3 + n_tags);
             }
         }
 
@@ -860,8 +1093,10 @@ namespace dealvem
                   AssertThrow(words.size() == 1 + n_nodes,
                               error("expected " + what + " ('tag' and " + std::to_string(n_nodes) +
                                     " nodes), found '" + text + "'."));
-                  integer(words[0], "the tag of " + what, 1, std::numeric_limits<int>::max());
+                  const long long number = integer(words[0], "the tag of " + what, 1, std::numeric_limits<int>::max());
                   check_element_nodes(1, what);
+                  const auto p = entity_physical.find({dim, tag});
+                  keep_element(number, p == entity_physical.end() ? 0 : p->second, type_word, 1);
                 }
               n_read += m;
             }

@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -561,6 +562,88 @@ namespace dealvem
       write_vtk(mesh, file.stream());
       file.commit();
     }
+
+    FileCounts
+    count_entities(const std::string &filename, const std::string &format)
+    {
+      std::ifstream in(filename);
+      AssertThrow(in, ExcInvalidMesh("Cannot open the mesh file '" + filename + "'."));
+      std::error_code      ec;
+      const std::uintmax_t size = std::filesystem::file_size(filename, ec);
+      FileCounts           counts;
+      const bool           vtk = (format == "vtk");
+      // the keyword before a count, and the smallest number of bytes a
+      // vertex takes in the file
+      const std::string vertex_key = vtk ? "POINTS" : "$Nodes", cell_key = vtk ? "CELLS" : "$Elements";
+      const std::uintmax_t min_vertex_bytes = vtk ? 3 * bytes_per_number : 8;
+      int               version = 22;
+      std::string       text;
+      std::size_t       line = 0;
+      // the count that follows @p key on its line (VTK) or on the next
+      // line (gmsh; format 4: the second number)
+      const auto read_count = [&](const std::string &rest, unsigned long long &n) {
+        std::string numbers = rest;
+        if (!vtk)
+          {
+            if (!std::getline(in, numbers))
+              return false;
+            ++line;
+          }
+        std::istringstream s(numbers);
+        std::string        word;
+        if (!vtk && version >= 40)
+          s >> word;
+        if (!(s >> word))
+          return false;
+        const auto r = std::from_chars(word.data(), word.data() + word.size(), n);
+        return r.ec == std::errc() && r.ptr == word.data() + word.size();
+      };
+      bool after_format = false;
+      while (std::getline(in, text))
+        {
+          ++line;
+          // most lines are numbers: look at the first word only where it
+          // can be a keyword
+          const std::size_t b = text.find_first_not_of(" \t");
+          if (b == std::string::npos || !(text[b] == '$' || text[b] == 'P' || text[b] == 'C' || after_format))
+            continue;
+          std::istringstream s(text);
+          std::string        key;
+          s >> key;
+          if (!vtk && key == "$MeshFormat")
+            after_format = true;
+          else if (after_format)
+            {
+              version      = (key.compare(0, 1, "4") == 0) ? 40 : 22;
+              after_format = false;
+            }
+          else if (key == vertex_key && counts.line == 0)
+            {
+              counts.line = line;
+              std::string rest;
+              std::getline(s, rest);
+              unsigned long long n = 0;
+              const bool found = read_count(rest, n);
+              counts.line      = line; // gmsh: the line after $Nodes
+              if (!found || (size > 0 && !ec && n > size / min_vertex_bytes))
+                return counts;
+              counts.n_vertices = n;
+              counts.valid      = true;
+            }
+          else if (key == cell_key && counts.valid)
+            {
+              std::string rest;
+              std::getline(s, rest);
+              unsigned long long n = 0;
+              if (read_count(rest, n) && (ec || n <= size / 4))
+                counts.n_cells = n;
+              return counts;
+            }
+        }
+      return counts;
+    }
+
+
 
     template void read_vtk(PolygonalMesh<2> &, const std::string &);
     template void read_vtk(PolygonalMesh<2> &, std::istream &, const std::string &);

@@ -60,6 +60,13 @@ main()
                         "Parameter 'Body force': cannot parse the expression(s) 'foo(x)'",
                         "an unknown function is reported naming the parameter");
 
+  // the time t in an expression (a one-body run refuses it)
+  testing::check(uses_variable("0, -5*t", "t") && uses_variable("exp(-t)+x", "t") && uses_variable("t", "t"),
+                 "uses_variable finds t as a name of its own");
+  testing::check(!uses_variable("tan(x) + 1e5 + .5e-3*y", "t") && !uses_variable("t2 + _t + sqrt(x)", "t") &&
+                   !uses_variable("", "t"),
+                 "uses_variable: not in other names or in numbers");
+
   // size estimates
   MeshParameters quads;
   quads.type = "structured quads";

@@ -195,6 +195,11 @@ namespace dealvem
     }
 
   private:
+    /// The refinement cycles of run(), after the output files of an
+    /// earlier run were removed.
+    void
+    run_cycles();
+
     /// The steps of one cycle, in the order run_cycle() calls them.
     void
     make_meshes(const unsigned int cycle);

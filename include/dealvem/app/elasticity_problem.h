@@ -119,6 +119,14 @@ namespace dealvem
     std::map<std::string, double> last_timings;
 
   private:
+    /// The refinement cycles and the summary of run(), after the output
+    /// files of an earlier run were removed.
+    void
+    run_cycles();
+    /// The solver type of this cycle: 'Solver/Type', or for 'automatic'
+    /// the choice by the size (printed with the reason).
+    std::string
+    chosen_solver_type() const;
     void
     make_mesh(const unsigned int cycle);
     void
@@ -149,7 +157,8 @@ namespace dealvem
     Stabilization          stabilization = Stabilization::automatic;
     BoundaryConditionParameters bc;
     std::string                 exact_displacement;
-    std::string  solver_type = "UMFPACK";
+    std::string  solver_type = "automatic";
+    double       memory_limit_GB = 0;
     double       solver_tolerance = 1e-12;
     unsigned int solver_max_iterations = 10000;
     std::string  solver_preconditioner = "automatic";
@@ -157,6 +166,8 @@ namespace dealvem
     std::string  output_folder = "output", base_name = "solution";
     bool         write_vtu = true, write_json = true;
     std::string  prm_directory;
+    /// Whether this run has written its JSON summary yet.
+    bool         json_written = false;
 
     MPI_Comm                   mpi_communicator;
     bool                       distributed = false;

@@ -91,6 +91,14 @@ namespace dealvem
     void
     check_constant_names(const std::map<std::string, double> &constants, const std::string &parameter);
 
+    /**
+     * Whether the muparser expression @p expression uses the variable
+     * @p variable (as a name of its own: "t" in "5*t", not in "tan(x)" or
+     * "1e5").
+     */
+    bool
+    uses_variable(const std::string &expression, const std::string &variable);
+
     /// Size estimate of a run, see estimate_run_size().
     struct RunSizeEstimate
     {
@@ -102,10 +110,76 @@ namespace dealvem
       double lloyd_iterations = 0;
       /// Sum over cycles and bodies of (Lloyd iterations + 1) * cells.
       double lloyd_work = 0;
-      /// false when a mesh is read from a file (its size is not known
-      /// before it is read; it does not enter the numbers above).
+      /// false when the size of a mesh file could not be found from its
+      /// header (it does not enter the numbers above); files whose header
+      /// gives their counts enter them (see MeshIO::count_entities()).
       bool complete = true;
+      /// The mesh files that entered the estimate, with their header
+      /// counts, for messages ("'a.msh' (header: 1000000 nodes, ...)").
+      std::string files;
     };
+
+    /// The linear solvers as the size check sees them.
+    enum class SolverKind
+    {
+      /// a sparse direct factorization (UMFPACK, KLU)
+      direct,
+      /// CG or GMRES with AMG or the p-multigrid
+      iterative,
+      /// the one-body program's 'automatic': direct up to
+      /// direct_solver_max_dofs DoFs when it fits, else iterative
+      automatic
+    };
+
+    /**
+     * The automatic choice of the one-body program: a direct
+     * factorization up to this many DoFs, CG with the p-multigrid or AMG
+     * above. Measured on 2 cores (doc/benchmarks.md, "Solver choice"):
+     * UMFPACK and CG-AMG take the same time at 3e3 to 6e3 DoFs (quads and
+     * Voronoi cells, k = 1 and 2), and UMFPACK grows faster above (2.5x
+     * CG's time at 2.4e4 DoFs, 4.5x at 2e5); up to 1e4 DoFs the direct
+     * solve costs at most 0.1 s more and needs no tolerance.
+     */
+    constexpr double direct_solver_max_dofs = 1e4;
+
+    /// The constants of estimated_memory() (bytes): fits to the peak
+    /// memory measured on quads and Voronoi cells, k = 1 and 2, up to
+    /// 2e5 DoFs and to the 1e6-DoF runs of doc/benchmarks.md, rounded up.
+    constexpr double base_bytes_per_dof_k2    = 1500;
+    constexpr double base_bytes_per_dof_k1    = 1500;
+    constexpr double iterative_bytes_per_dof  = 1000;
+    constexpr double direct_bytes_per_dof_log = 300;
+    constexpr double fixed_bytes              = 200e6;
+
+    /**
+     * Estimated peak memory (bytes) of a run with @p n_dofs DoFs of order
+     * @p degree solved by a direct factorization (@p direct) or by CG with
+     * AMG or the p-multigrid: mesh, DoFs, matrix, vectors, postprocessing,
+     * and the factors or the multigrid hierarchy. The constants are fits to
+     * the peak memory measured on structured quads and Voronoi meshes
+     * (doc/benchmarks.md, "Solver choice"), rounded up.
+     */
+    double
+    estimated_memory(const double n_dofs, const unsigned int degree, const bool direct);
+
+    /**
+     * The memory a run may use (bytes): @p limit_GB if positive (the
+     * parameter 'Memory limit'), else 80 % of the smallest of the physical
+     * memory, the process limits (ulimit -v, -d) and the control group's
+     * limit. @p source gets a description for messages.
+     */
+    double
+    memory_limit(const double limit_GB, std::string &source);
+
+    /**
+     * Whether 'Solver/Type = automatic' takes a direct solver for a
+     * one-body problem with @p n_dofs DoFs: up to direct_solver_max_dofs,
+     * and only when its estimated memory stays within @p limit_bytes.
+     * @p reason gets the explanation the program prints.
+     */
+    bool
+    automatic_solver_is_direct(const double n_dofs, const unsigned int degree, const double limit_bytes,
+                               std::string &reason);
 
     /// The limits checked by check_run_size().
     constexpr double max_dofs             = 2e7;
@@ -121,25 +195,37 @@ namespace dealvem
      * the bodies @p meshes, the number of refinement cycles (subdivisions
      * times 2^cycle, Voronoi cells times 4^cycle) and the order @p degree
      * (DoFs: 2 per vertex, plus 2 per edge and 2 per cell for k = 2;
-     * Voronoi meshes: about 2 vertices and 3 edges per cell).
+     * Voronoi meshes: about 2 vertices and 3 edges per cell). Mesh files
+     * (relative to @p base_directory) enter with the counts of their
+     * header (MeshIO::count_entities(); V vertices and C cells give
+     * V + C edges; a 'gridin file' refined in the cycles has 4^cycle times
+     * the vertices and cells; a name with '{cycle}' is read per cycle),
+     * before their body is read.
      */
     RunSizeEstimate
     estimate_run_size(const std::vector<const MeshParameters *> &meshes,
                       const unsigned int                        n_cycles,
-                      const unsigned int                        degree);
+                      const unsigned int                        degree,
+                      const std::string                        &base_directory = "");
 
     /**
      * Refuse a run whose estimate exceeds max_dofs, max_voronoi_cells,
-     * max_lloyd_iterations or max_lloyd_work unless @p allow_large_runs
-     * (the parameter 'Allow large runs'); the message gives the estimate
-     * and names that parameter. Runs beyond max_representable_cells are
-     * refused in any case.
+     * max_lloyd_iterations or max_lloyd_work, or whose estimated memory
+     * with the solver @p solver (estimated_memory()) exceeds
+     * memory_limit(@p memory_limit_GB), unless @p allow_large_runs (the
+     * parameter 'Allow large runs'); the message gives the estimate, the
+     * mesh files and their header counts, the limit, and names the
+     * parameters that change it. Runs beyond max_representable_cells are
+     * refused in any case. Returns the estimate.
      */
-    void
+    RunSizeEstimate
     check_run_size(const std::vector<const MeshParameters *> &meshes,
                    const unsigned int                        n_cycles,
                    const unsigned int                        degree,
-                   const bool                                allow_large_runs);
+                   const bool                                allow_large_runs,
+                   const std::string                        &base_directory = "",
+                   const SolverKind                          solver         = SolverKind::automatic,
+                   const double                              memory_limit_GB = 0);
 
     /// One entry of a ParameterHandler: its path ("Body 1/Mesh/Type"), its
     /// current and default values and the description of its pattern.

@@ -104,6 +104,10 @@ namespace dealvem
       return constants;
     }
 
+    /// The entries (parameter names) whose expressions use the time t.
+    std::vector<std::string>
+    time_dependent_entries() const;
+
     /// The boundary ids used by any condition or load.
     std::set<dealii::types::boundary_id>
     used_boundary_ids() const;

@@ -59,6 +59,33 @@ namespace dealvem
     template <int dim>
     void
     write_vtk(const PolygonalMesh<dim> &mesh, std::ostream &out);
+
+    /// The size of a mesh file as its header says, see count_entities().
+    struct FileCounts
+    {
+      /// Points (VTK) or nodes (gmsh) declared in the header.
+      unsigned long long n_vertices = 0;
+      /// Cells declared (VTK: CELLS, gmsh: $Elements; both include the
+      /// boundary line cells); 0 if the count was not found.
+      unsigned long long n_cells = 0;
+      /// Whether the vertex count was found and is plausible (at most what
+      /// the size of the file can hold). If not, the reader will say what
+      /// is wrong.
+      bool valid = false;
+      /// The line of the file with the vertex count.
+      std::size_t line = 0;
+    };
+
+    /**
+     * Read only the counts of a legacy VTK file (@p format "vtk") or a gmsh
+     * .msh file (@p format "msh", versions 2.2 and 4.x): the POINTS and
+     * CELLS counts or the counts after $Nodes and $Elements. The lines in
+     * between are skipped, not parsed, and nothing is stored, so that a
+     * program can estimate the size of a run before it reads a large
+     * file. Throws only if the file cannot be opened.
+     */
+    FileCounts
+    count_entities(const std::string &filename, const std::string &format);
   } // namespace MeshIO
 } // namespace dealvem
 

@@ -1,0 +1,127 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_base_run_files_h
+#define dealvem_base_run_files_h
+
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * The output files of one run of the program, so that the files under
+   * one output prefix always belong to one run.
+   *
+   * A run writes its files as "<folder>/<base name>" followed by one of the
+   * program's own suffixes (matches()): `.vtu`, `.pvtu`, `.<process>.vtu`,
+   * `.pvd`, `.json`, `-interface.csv`, `-stress.svg`, `-pressure.svg`,
+   * optionally after `-cycle<c>` and `-step-<n>`. A rerun with fewer load
+   * steps, cycles or output options would leave some files of the earlier
+   * run beside its own. So start() first removes every file of the folder
+   * whose name matches these patterns for this base name (nothing else:
+   * not other base names, not other suffixes), and then keeps the list of
+   * the files this run writes in the manifest "<folder>/<base name>.files":
+   * @code
+   *   # dealvem: the files written by one run with the output prefix 'output/solution'
+   *   status: running
+   *   file: output/solution-step-001.vtu
+   *   ...
+   *   status: complete
+   * @endcode
+   * The last "status:" line is "complete" after complete(), "failed" after
+   * failed(), and stays "running" if the process was killed. Every
+   * OutputFile that is committed while a RunFiles object is active (between
+   * start() and its destruction) is added through record().
+   *
+   * With several MPI processes only one process (@p writer true) removes
+   * and records; the caller puts a barrier after start() before the other
+   * processes write.
+   */
+  class RunFiles
+  {
+  public:
+    /// The run writing under "<folder>/<base_name>"; only a @p writer
+    /// touches files. A run that writes no files at all (@p writes_files
+    /// false: every output switched off) leaves the folder as it is.
+    RunFiles(const std::string &folder,
+             const std::string &base_name,
+             const bool         writer       = true,
+             const bool         writes_files = true);
+
+    /// Stops recording; a run that ended neither by complete() nor by
+    /// failed() (an exception went through) is marked failed.
+    ~RunFiles();
+
+    RunFiles(const RunFiles &) = delete;
+    RunFiles &
+    operator=(const RunFiles &) = delete;
+
+    /// Remove the files of earlier runs with this prefix, start the
+    /// manifest, and record the files committed from now on. Returns the
+    /// names of the removed files.
+    std::vector<std::string>
+    start();
+
+    /// A line for the user about the files start() removed (@p removed);
+    /// empty if there were none.
+    std::string
+    removal_note(const std::vector<std::string> &removed) const;
+
+    /// Add @p filename to the list of this run (once).
+    void
+    add(const std::string &filename);
+
+    /// Mark the run complete in the manifest.
+    void
+    complete();
+
+    /// Mark the run failed in the manifest and return a text for the user:
+    /// which files this run wrote (all of them incomplete as a set) and
+    /// that no file of an earlier run is left under the prefix.
+    std::string
+    failed();
+
+    /// The files this run has written so far.
+    const std::vector<std::string> &
+    get_files() const
+    {
+      return files;
+    }
+
+    /// The manifest's name, "<folder>/<base name>.files".
+    std::string
+    manifest_name() const;
+
+    /// The text failed() returned last in this process (empty if no run
+    /// failed), for the program's error message.
+    static const std::string &
+    last_failure_report();
+
+    /// Record @p filename with the active run, if any (OutputFile::commit()
+    /// calls this).
+    static void
+    record(const std::string &filename);
+
+    /// Whether the file name @p name (without folder) is one the program
+    /// writes for @p base_name (including OutputFile's temporary names and
+    /// the manifest).
+    static bool
+    matches(const std::string &base_name, const std::string &name);
+
+  private:
+    void
+    append_line(const std::string &line) const;
+
+    std::string              folder;
+    std::string              base_name;
+    bool                     writer;
+    bool                     writes_files;
+    bool                     active   = false;
+    bool                     finished = false;
+    std::vector<std::string> files;
+  };
+} // namespace dealvem
+
+#endif
