@@ -377,15 +377,7 @@ namespace dealvem
 
     prm.enter_subsection("Solver");
     solver_type = prm.get("Type");
-    // 'automatic' chooses by size for one body; the contact system is
-    // factored by UMFPACK (the reference solver of the saddle point)
-    if (solver_type == "automatic")
-      solver_type = "UMFPACK";
-    // CG-AMG: GMRES with the block preconditioner in one process, the
-    // condensed CG-AMG under mpirun (setup_system())
-    requested_cg_amg = (solver_type == "CG-AMG");
-    if (solver_type == "CG-AMG")
-      solver_type = "GMRES-AMG";
+    // 'automatic' is resolved in setup_system(), when the size is known
     solver_tolerance      = prm.get_double("Relative tolerance");
     solver_max_iterations = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
@@ -736,13 +728,39 @@ namespace dealvem
     }
 
     SaddlePointSolver::Settings settings;
-    settings.type               = SaddlePointSolver::parse_type(solver_type);
+    if (solver_type == "automatic")
+      {
+        // the condensed solves need symmetric contact rows; Coulomb's slip
+        // rows are not: the whole saddle point by UMFPACK
+        std::ostringstream why;
+        if (contact_settings.is_coulomb() && !distributed)
+          {
+            settings.type = SaddlePointSolver::Type::umfpack;
+            why << "Coulomb friction (its slip rows are not symmetric: the saddle point is factored as a whole)";
+          }
+        else if (d.n <= InputParsing::contact_direct_solver_max_dofs)
+          {
+            settings.type = SaddlePointSolver::Type::direct_constraints;
+            why << d.n << " DoFs <= " << InputParsing::contact_direct_solver_max_dofs
+                << ": up to this size the Cholesky factorization of the condensed stiffness is faster than "
+                   "CG-AMG (measured, doc/benchmarks.md)";
+          }
+        else
+          {
+            settings.type = SaddlePointSolver::Type::cg_amg_constraints;
+            why << d.n << " DoFs > " << InputParsing::contact_direct_solver_max_dofs
+                << ": above this size CG-AMG on the condensed stiffness is faster than its factorization "
+                   "(measured, doc/benchmarks.md)";
+          }
+        std::cout << "  solver (Solver/Type = automatic): " << SaddlePointSolver::type_name(settings.type) << ", "
+                    << why.str() << std::endl;
+      }
+    else
+      settings.type = SaddlePointSolver::parse_type(solver_type);
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
     if (distributed)
       {
-        if (requested_cg_amg)
-          settings.type = SaddlePointSolver::Type::cg_amg_constraints;
         AssertThrow(!contact_settings.is_coulomb(),
                     dealii::ExcMessage("Contact/Tangential = coulomb runs only on the serial path so far (its slip rows "
                                        "are not symmetric constraints, and the distributed contact solve "
@@ -756,7 +774,8 @@ namespace dealvem
       }
     else
       d.solver = std::make_unique<SaddlePointSolver>(settings);
-    if (settings.type != SaddlePointSolver::Type::umfpack && settings.type != SaddlePointSolver::Type::klu)
+    if (settings.type != SaddlePointSolver::Type::umfpack && settings.type != SaddlePointSolver::Type::klu &&
+        settings.type != SaddlePointSolver::Type::direct_constraints)
       d.solver->set_near_null_space(d.dof_handler.rigid_body_modes());
     d.active_set = std::make_unique<ActiveSetSolver<2>>(*d.contact, d.constraints, *d.solver, contact_settings,
                                                         d.complementarity);

@@ -100,25 +100,28 @@ namespace dealvem
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    prm.declare_entry("Type", "automatic", Selection("automatic|UMFPACK|KLU|CG-AMG|GMRES-AMG|CG-AMG constraints"),
-                      "automatic: one body: UMFPACK up to 2e5 DoFs (where it fits into 'Memory limit'), "
-                      "CG-AMG above (the measured crossover, doc/benchmarks.md); the choice and the "
-                      "reason are printed; contact problems: UMFPACK. UMFPACK: SuiteSparse direct; KLU: Trilinos Amesos KLU direct; CG-AMG: "
-                      "deal.II's SolverCG preconditioned by Trilinos ML algebraic multigrid with the "
-                      "rigid-body modes as near-null space; for k = 2 the default preconditioner of CG is a "
-                      "two-level p-multigrid (Chebyshev smoothing on k = 2, the ML AMG on the "
-                      "Galerkin k = 1 level of the same polygons), which needs less than half "
-                      "the iterations of AMG alone. Contact problems: UMFPACK and KLU factor the whole "
-                      "saddle-point matrix, and CG-AMG or GMRES-AMG both mean GMRES with a block "
-                      "preconditioner (AMG on the displacement block, exact approximate Schur "
-                      "complement); 'CG-AMG constraints' writes every active contact constraint as "
-                      "an affine constraint on one slave DoF, condenses the stiffness matrix and "
-                      "solves it by CG-AMG at one-body cost, multipliers recovered from the "
-                      "residual (not with Coulomb friction); one body: GMRES-AMG and CG-AMG "
-                      "constraints mean CG-AMG. Under mpirun with more than one process, contact is "
-                      "always solved as constraints: CG-AMG constraints (CG-AMG also means this) or "
-                      "UMFPACK/KLU (the condensed system factored by Amesos KLU); GMRES-AMG and "
-                      "Coulomb friction are refused.");
+    prm.declare_entry("Type", "automatic",
+                      Selection("automatic|UMFPACK|KLU|CG-AMG|direct constraints|GMRES-AMG|CG-AMG constraints"),
+                      "Each name is one algorithm, in one process and under mpirun alike. "
+                      "automatic: the choice and its reason are printed; one body: UMFPACK up to 1e4 DoFs "
+                      "(where it fits into 'Memory limit'), CG-AMG above; contact: direct constraints up "
+                      "to 1.2e5 DoFs, CG-AMG above, UMFPACK with Coulomb friction (its slip rows are not "
+                      "symmetric); the crossovers are measured in doc/benchmarks.md. "
+                      "UMFPACK / KLU: a direct LU factorization (SuiteSparse / Trilinos Amesos) of the "
+                      "stiffness, with contact of the whole saddle-point matrix (one process only). "
+                      "CG-AMG: deal.II's SolverCG preconditioned by Trilinos ML algebraic multigrid with "
+                      "the rigid-body modes as near-null space (for k = 2 by default a two-level "
+                      "p-multigrid: Chebyshev smoothing on k = 2, ML AMG on the Galerkin k = 1 level); with "
+                      "contact on the stiffness condensed by the active contact constraints (each becomes "
+                      "an affine constraint on one slave DoF, multipliers recovered from the residual); "
+                      "'CG-AMG constraints' is its former name. direct constraints: the same condensed "
+                      "stiffness factored directly (CHOLMOD's Cholesky in one process, with the ordering "
+                      "of the first factorization reused by later active sets; Amesos KLU under mpirun); "
+                      "one body: UMFPACK. GMRES-AMG: contact only, GMRES on the whole saddle point with a "
+                      "block preconditioner (AMG on the displacement block, exact approximate Schur "
+                      "complement), one process only; one body: CG-AMG. The condensed solvers need "
+                      "symmetric contact rows: Coulomb friction runs on UMFPACK, KLU or GMRES-AMG, in one "
+                      "process.");
     prm.declare_entry("Preconditioner", "automatic", Selection("automatic|AMG|p-multigrid"),
                       "Preconditioner of CG for one body (serial and distributed): automatic (the "
                       "p-multigrid for k = 2, ML AMG for k = 1), AMG (one ML V-cycle on the whole "
@@ -234,6 +237,8 @@ namespace dealvem
     solver_type           = prm.get("Type");
     if (solver_type == "GMRES-AMG" || solver_type == "CG-AMG constraints")
       solver_type = "CG-AMG";
+    if (solver_type == "direct constraints")
+      solver_type = "UMFPACK";
     solver_tolerance      = prm.get_double("Relative tolerance");
     solver_max_iterations = prm.get_integer("Maximum iterations");
     solver_preconditioner = prm.get("Preconditioner");

@@ -38,11 +38,12 @@ namespace dealvem
     , displacement_constraints(displacement_constraints)
     , comm(comm)
   {
-    AssertThrow(settings.type != Type::gmres_amg,
-                dealii::ExcMessage("Solver/Type = GMRES-AMG iterates on the whole saddle-point system, which is "
-                                   "not distributed: with more than one MPI process, contact is solved as "
-                                   "constraints. Use 'CG-AMG constraints' (or UMFPACK / KLU, which factor the "
-                                   "condensed system by Amesos KLU)."));
+    AssertThrow(is_condensed(settings.type),
+                dealii::ExcMessage("Solver/Type = " + type_name(settings.type) +
+                                   " works on the whole saddle-point system, which is not distributed: with more "
+                                   "than one MPI process, contact is solved with the constraints condensed. Use "
+                                   "'CG-AMG' or 'direct constraints' (the condensed system factored by Amesos "
+                                   "KLU), or 'automatic'."));
   }
 
 

@@ -28,11 +28,12 @@ namespace dealvem
                 dealii::ExcMessage("FrictionSolver needs 'Tangential = coulomb' or 'coulomb penalty'."));
     AssertThrow(settings.normal == ContactSettings::Normal::unilateral,
                 dealii::ExcMessage("Coulomb friction needs unilateral normal contact ('Normal = unilateral')."));
-    AssertThrow(solver.get_type() != SaddlePointSolver::Type::cg_amg_constraints,
-                dealii::ExcMessage("Coulomb friction cannot use the 'CG-AMG constraints' contact solver: the rows "
+    AssertThrow(!SaddlePointSolver::is_condensed(solver.get_type()),
+                dealii::ExcMessage("Coulomb friction cannot use the '" + SaddlePointSolver::type_name(solver.get_type()) +
+                                   "' contact solver: the rows "
                                    "of slipping pairs couple the tangential force to the normal multiplier, so "
                                    "the system is not symmetric and cannot be condensed into an SPD problem. "
-                                   "Use Solver/Type = UMFPACK, KLU or GMRES-AMG."));
+                                   "Use Solver/Type = automatic, UMFPACK, KLU or GMRES-AMG."));
   }
 
 

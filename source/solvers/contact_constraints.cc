@@ -149,27 +149,27 @@ namespace dealvem
         std::sort(rows[r].begin(), rows[r].end());
         const std::string which = "multiplier row " + std::to_string(r) + " (unknown " + std::to_string(i) + ")";
         AssertThrow(off_diagonal == 0.,
-                    dealii::ExcMessage("CG-AMG constraints: " + which +
+                    dealii::ExcMessage("Condensed contact constraints: " + which +
                                        " couples multipliers with each other (as the slip rows of Coulomb friction "
                                        "do): the system is not a set of linear constraints on a symmetric problem. "
                                        "Use the UMFPACK, KLU or GMRES-AMG contact solver."));
         if (rows[r].empty())
           {
             AssertThrow(diagonal != 0.,
-                        dealii::ExcMessage("CG-AMG constraints: " + which +
+                        dealii::ExcMessage("Condensed contact constraints: " + which +
                                            " is zero: the saddle-point matrix is singular."));
             inactive.emplace_back(r, b[i] / diagonal);
             continue;
           }
         AssertThrow(diagonal == 0.,
-                    dealii::ExcMessage("CG-AMG constraints: " + which +
+                    dealii::ExcMessage("Condensed contact constraints: " + which +
                                        " has both displacement entries and a diagonal entry: not a constraint row."));
         bool symmetric = (bt[r].size() == rows[r].size());
         for (unsigned int k = 0; symmetric && k < rows[r].size(); ++k)
           symmetric = (bt[r][k].first == rows[r][k].first &&
                        std::abs(bt[r][k].second - rows[r][k].second) <= 1e-12 * bmax);
         AssertThrow(symmetric,
-                    dealii::ExcMessage("CG-AMG constraints: the force column of " + which +
+                    dealii::ExcMessage("Condensed contact constraints: the force column of " + which +
                                        " is not the constraint row (a non-symmetric coupling, as the slip rows of "
                                        "Coulomb friction give). Use the UMFPACK, KLU or GMRES-AMG contact solver."));
         constraint_rows.push_back(r);

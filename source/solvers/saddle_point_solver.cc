@@ -21,6 +21,8 @@
 #include <dealvem/solvers/linear_solver.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
+#include "sparse_cholesky.h"
+
 #include <Teuchos_ParameterList.hpp>
 #include <ml_MultiLevelPreconditioner.h>
 
@@ -41,10 +43,12 @@ namespace dealvem
       return Type::klu;
     if (n == "GMRES-AMG")
       return Type::gmres_amg;
-    if (n == "CG-AMG CONSTRAINTS")
+    if (n == "CG-AMG CONSTRAINTS" || n == "CG-AMG")
       return Type::cg_amg_constraints;
-    AssertThrow(false, dealii::ExcMessage("Unknown saddle-point solver '" + name +
-                                          "': expected UMFPACK, KLU, GMRES-AMG or CG-AMG constraints."));
+    if (n == "DIRECT CONSTRAINTS")
+      return Type::direct_constraints;
+    AssertThrow(false, dealii::ExcMessage("Unknown contact solver '" + name +
+                                          "': expected UMFPACK, KLU, GMRES-AMG, CG-AMG or direct constraints."));
     return Type::umfpack;
   }
 
@@ -60,7 +64,9 @@ namespace dealvem
         case Type::klu:
           return "KLU";
         case Type::cg_amg_constraints:
-          return "CG-AMG constraints";
+          return "CG-AMG";
+        case Type::direct_constraints:
+          return "direct constraints";
         default:
           return "GMRES-AMG";
       }
@@ -99,6 +105,11 @@ namespace dealvem
       return "CG + ML AMG on the stiffness condensed by the active contact constraints (one slave DoF per "
              "constraint, multipliers from the residual" +
              std::string(used_stick_preconditioner ? "; stick springs preconditioned by tying them" : "") + ")";
+    if (settings.type == Type::direct_constraints)
+      return std::string(used_lu_fallback ? "UMFPACK LU (the condensed matrix is not positive definite)"
+                                          : "CHOLMOD Cholesky") +
+             " of the stiffness condensed by the active contact constraints (one slave DoF per constraint, "
+             "multipliers from the residual)";
     return type_name(settings.type) + " (direct, whole saddle-point matrix)";
   }
 
@@ -307,7 +318,7 @@ namespace dealvem
     x.reinit(b.size());
     n_dropped                 = 0;
     used_stick_preconditioner = false;
-    if (settings.type == Type::cg_amg_constraints)
+    if (is_condensed(settings.type))
       {
         // a length scale for the consistency test of redundant constraints:
         // the coordinates in the rotation mode
@@ -322,7 +333,24 @@ namespace dealvem
         dealii::SparseMatrix<double> K;
         dealii::Vector<double>       f, u;
         contact.condense(A, b, sparsity, K, f);
-        if (!stick_rows.empty())
+        if (settings.type == Type::direct_constraints)
+          {
+            if (!cholesky)
+              cholesky = std::make_shared<internal::SparseCholesky>();
+            auto &factor     = *std::static_pointer_cast<internal::SparseCholesky>(cholesky);
+            used_lu_fallback = !factor.factorize(K);
+            u.reinit(n_displacements);
+            if (used_lu_fallback)
+              internal::solve_direct(K, u, f, false);
+            else
+              factor.solve(u, f);
+            iterations = 1;
+            for (unsigned int i = 0; i < n_displacements; ++i)
+              x[i] = u[i];
+            contact.distribute_and_recover_multipliers(A, b, x);
+            stick_rows.clear();
+          }
+        else if (!stick_rows.empty())
           {
             // stick by penalty: CG on the condensed matrix with the
             // two-subspace preconditioner

@@ -132,9 +132,10 @@ endforeach()
 message(STATUS "PASS np = 1 and np = 2 agree; .pvtu and pieces written")
 
 # contact: tests/app/mpi-contact.prm (parabola on a flat block, the active
-# set changes over six iterations) with np = 1 (serial, UMFPACK on the
-# saddle point) and np = 2 (distributed: the condensed system factored by
-# Amesos KLU); the partition must cut contact constraints
+# set changes over several iterations) with 'Solver/Type = direct
+# constraints': np = 1 (serial, CHOLMOD on the condensed stiffness) and
+# np = 2 (distributed: the condensed system factored by Amesos KLU); the
+# partition must cut contact constraints
 file(REMOVE_RECURSE ${WORK_DIR}/contact1 ${WORK_DIR}/contact2)
 run_case(contact_np1 1 TRUE contact1 ${TEST_DIR}/mpi-contact.prm)
 run_case(contact_np2 2 TRUE contact2 ${TEST_DIR}/mpi-contact.prm)

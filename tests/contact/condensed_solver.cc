@@ -107,27 +107,30 @@ namespace
               << r.active_set_iterations << " solve(s)" << std::endl;
   }
 
-  /// Run @p prm with UMFPACK (serial, the reference), with CG-AMG
-  /// constraints (serial, 1e-8), and distributed over the processes of
-  /// MPI_COMM_WORLD (also on one process) with the condensed system
-  /// factored by KLU and solved by CG + AMG (1e-10).
+  /// Run @p prm with UMFPACK (serial, the reference), with CG-AMG (serial,
+  /// 1e-8) and direct constraints (serial, CHOLMOD, 1e-10), and distributed
+  /// over the processes of MPI_COMM_WORLD (also on one process) with the
+  /// condensed system factored by KLU (direct constraints) and solved by
+  /// CG + AMG (1e-10).
   dealvem::ContactProblem::Results
   compare(const std::string &prm, const std::string &tag, const bool uniform_stress)
   {
     using Parallelism = dealvem::ElasticityProblem::Parallelism;
     const auto ref    = testing::run_contact(prm + solver_section("UMFPACK"));
-    const auto r      = testing::run_contact(prm + solver_section("CG-AMG constraints"));
+    const auto r      = testing::run_contact(prm + solver_section("CG-AMG"));
     agree(r, ref, 1e-8, tag, 1e-8);
+    const auto rc = testing::run_contact(prm + solver_section("direct constraints"));
+    agree(rc, ref, 1e-10, tag + " [direct constraints]", 1e-10);
     const unsigned int np = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     const std::string  on = " [distributed, " + std::to_string(np) + " process(es), ";
-    for (const std::string type : {"KLU", "CG-AMG constraints"})
+    for (const std::string type : {"direct constraints", "CG-AMG"})
       {
         const auto rd =
           testing::run_contact(prm + solver_section(type), MPI_COMM_WORLD, Parallelism::distributed);
         // (a penalty force is 1e3 E/h times a difference of displacements:
         // with an iterative solve it carries the residual tolerance times
         // the penalty factor, so it is held to the serial CG's 1e-8)
-        agree(rd, ref, 1e-10, tag + on + type + "]", type == "KLU" ? 1e-10 : 1e-8);
+        agree(rd, ref, 1e-10, tag + on + type + "]", type == "CG-AMG" ? 1e-8 : 1e-10);
         total_rows_across += rd.n_rows_across_processes;
         std::cout << "      contact constraint rows cut by the partition: " << rd.n_rows_across_processes
                   << std::endl;
@@ -242,7 +245,7 @@ main(int argc, char **argv)
                            "subsection Contact\n  set Friction coefficient = 0.3\nend\n" +
                            solver_section("CG-AMG constraints"));
     },
-    "Coulomb friction cannot use the 'CG-AMG constraints' contact solver", "e) Coulomb friction is refused");
+    "Coulomb friction cannot use the 'CG-AMG' contact solver", "e) Coulomb friction is refused");
   testing::check_throws(
     [&] {
       testing::run_contact(small("coulomb") +
@@ -257,7 +260,15 @@ main(int argc, char **argv)
                              solver_section("GMRES-AMG"),
                            MPI_COMM_WORLD, dealvem::ElasticityProblem::Parallelism::distributed);
     },
-    "GMRES-AMG iterates on the whole saddle-point system", "GMRES-AMG is refused on the distributed path");
+    "GMRES-AMG works on the whole saddle-point system, which is not distributed",
+    "GMRES-AMG is refused on the distributed path");
+  testing::check_throws(
+    [&] {
+      testing::run_contact(small("penalty") + solver_section("UMFPACK"), MPI_COMM_WORLD,
+                           dealvem::ElasticityProblem::Parallelism::distributed);
+    },
+    "UMFPACK works on the whole saddle-point system, which is not distributed",
+    "UMFPACK (the saddle point factored as a whole) is refused on the distributed path");
   // under mpirun: the partition cuts contact constraints (pairs whose two
   // nodes are owned by different processes)
   if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)

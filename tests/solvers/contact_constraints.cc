@@ -194,7 +194,7 @@ main(int argc, char **argv)
                         "multiplier row 0 (unknown 20) couples multipliers with each other",
                         "d) coupled multipliers refused");
   testing::check_throws([] { SaddlePointSolver::parse_type("foo"); },
-                        "expected UMFPACK, KLU, GMRES-AMG or CG-AMG constraints", "d) unknown solver name");
+                        "expected UMFPACK, KLU, GMRES-AMG, CG-AMG or direct constraints", "d) unknown solver name");
   testing::check(SaddlePointSolver::parse_type("cg-amg CONSTRAINTS") ==
                    SaddlePointSolver::Type::cg_amg_constraints,
                  "d) 'CG-AMG constraints' parsed case-insensitively");

@@ -242,7 +242,6 @@ namespace dealvem
     ContactSettings            contact_settings;
     NodeInsertion::Settings    insertion_settings;
     std::string                solver_type = "UMFPACK";
-    bool                       requested_cg_amg = false;
     double                     solver_tolerance = 1e-12;
     unsigned int               solver_max_iterations = 2000;
     std::string                output_folder = "output", base_name = "contact";

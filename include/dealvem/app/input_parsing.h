@@ -141,6 +141,11 @@ namespace dealvem
      * solve costs at most 0.1 s more and needs no tolerance.
      */
     constexpr double direct_solver_max_dofs = 1e4;
+    /// Contact problems, 'Solver/Type = automatic': up to this many
+    /// displacement DoFs the condensed stiffness is factored (direct
+    /// constraints), above it CG-AMG iterates on it (measured crossover,
+    /// doc/benchmarks.md).
+    constexpr double contact_direct_solver_max_dofs = 1.2e5;
 
     /// The constants of estimated_memory() (bytes): fits to the peak
     /// memory measured on quads and Voronoi cells, k = 1 and 2, up to
