@@ -96,7 +96,17 @@ namespace dealvem
     void
     set_stick_directions(const std::vector<std::vector<std::pair<unsigned int, double>>> &rows);
 
-    /// Solve A x = b. (DistributedContactSolver overrides it.)
+    /// What the next solve is part of ("active-set iteration 3"), for the
+    /// messages of its verification.
+    void
+    set_context(const std::string &text)
+    {
+      context = text;
+    }
+
+    /// Solve A x = b and check the residual (internal::check_residual(); the
+    /// direct solves are refined iteratively first). (DistributedContactSolver
+    /// overrides it.)
     virtual void
     solve(const dealii::SparseMatrix<double> &A,
           const unsigned int                  n_displacements,
@@ -134,6 +144,7 @@ namespace dealvem
     bool                             used_stick_preconditioner = false;
     unsigned int                     iterations = 0;
     unsigned int                     n_dropped  = 0;
+    std::string                      context;
   };
 } // namespace dealvem
 
