@@ -1077,9 +1077,13 @@ namespace dealvem
     // the nodal contact forces: on the slave node -lambda_n n + f_t t, the
     // opposite on the master node (as the reported contact force)
     dealii::Vector<double> contact_forces(n);
+    std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> couplings;
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const auto                 dofs = d.contact->pair_dofs(i);
+        if (d.as.active[i])
+          for (unsigned int c = 0; c < 2; ++c)
+            couplings.emplace_back(dofs[c], dofs[2 + c]);
         const dealii::Tensor<1, 2> F    = (-x[n + i]) * pairs[i].normal +
                                        (d.as.active[i] ? tangential_force[i] : 0.) * pairs[i].tangent;
         for (unsigned int c = 0; c < 2; ++c)
@@ -1096,8 +1100,9 @@ namespace dealvem
     const double tolerance = direct ? 0. : solver_tolerance;
     const auto   balance =
       (d.partition ? ForceBalance::compute(*d.assembler, d.constraints, u, contact_forces, tolerance,
-                                           &d.partition->locally_owned_cells(), mpi_communicator) :
-                     ForceBalance::compute(*d.assembler, d.constraints, u, contact_forces, tolerance));
+                                           &d.partition->locally_owned_cells(), mpi_communicator, couplings) :
+                     ForceBalance::compute(*d.assembler, d.constraints, u, contact_forces, tolerance, nullptr,
+                                           MPI_COMM_SELF, couplings));
     ForceBalance::check(balance, where.str());
     for (const auto &b : balance)
       step_result.balance.push_back({b.body, b.imbalance, b.residual, b.tolerance, b.condition});
@@ -1379,17 +1384,19 @@ namespace dealvem
                 << std::endl;
     }
     {
-      double worst_imbalance = 0, worst_residual = 0, tolerance = std::numeric_limits<double>::infinity();
+      double worst_imbalance = 0, worst_residual = 0, tolerance = std::numeric_limits<double>::infinity(),
+             condition = 0;
       for (const auto &sr : results.steps)
         for (const auto &b : sr.balance)
           {
             worst_imbalance = std::max(worst_imbalance, b.imbalance);
             worst_residual  = std::max(worst_residual, b.residual);
             tolerance       = std::min(tolerance, b.tolerance);
+            condition       = std::max(condition, b.condition);
           }
       std::cout << "  verification: every body in equilibrium after every step (largest relative imbalance "
                 << worst_imbalance << ", residual " << worst_residual << "; smallest tolerance " << tolerance
-                << ")" << std::endl;
+                << "; condition up to " << condition << ")" << std::endl;
     }
     std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
               << ", " << results.total_contact_force[1] << ")" << std::endl;

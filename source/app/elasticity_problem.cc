@@ -596,7 +596,8 @@ namespace dealvem
     {
       const auto [imbalance, residual] = ForceBalance::worst(balance);
       pcout << "  verification: in equilibrium (relative imbalance " << imbalance << ", residual " << residual
-            << ", tolerance " << balance.front().tolerance << ")" << std::endl;
+            << ", tolerance " << balance.front().tolerance << "; condition " << balance.front().condition << ")"
+            << std::endl;
     }
     if (distributed)
       {

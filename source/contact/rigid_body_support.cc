@@ -87,6 +87,11 @@ namespace dealvem
     if (!named.empty())
       text += " (pieces that share no edge with the rest of their body, each to be held by its own constraints "
               "or contact; a vertex alone, a hinge, connects nothing: " + named + ")";
+    // "; piece 1 of body 0 touches piece 0 at the vertex (1, 1) only: ..."
+    // without its final period (the caller goes on with ". ")
+    const std::string hinges = pieces->describe_hinges(motions);
+    if (hinges.size() > 2)
+      text += "; " + hinges.substr(1, hinges.size() - 2);
     return text;
   }
 

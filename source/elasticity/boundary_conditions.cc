@@ -493,7 +493,7 @@ namespace dealvem
         msg << " The body consists of " << pieces.n_pieces_of_body(b)
             << " pieces that share no edge (cells touching at a vertex only, a hinge, are not connected), and "
                "each piece must be held by its own constraints: "
-            << support.describe_pieces(own) << ".";
+            << support.describe_pieces(own) << "." << support.describe_hinges(own);
       msg << " Add Dirichlet, roller or point constraints (or contact) that fix these motions"
           << (split ? ", or connect the pieces through shared edges." : ".");
       AssertThrow(false, dealii::ExcMessage(msg.str()));

@@ -22,7 +22,9 @@ namespace dealvem
                         const dealii::Vector<double>            &contact_forces,
                         const double                             solver_tolerance,
                         const std::vector<unsigned int>         *cells,
-                        const MPI_Comm                           comm)
+                        const MPI_Comm                           comm,
+                        const std::vector<std::pair<dealii::types::global_dof_index,
+                                                    dealii::types::global_dof_index>> &couplings)
   {
     const auto        &dof_handler = assembler.get_dof_handler();
     const auto        &mesh        = dof_handler.get_mesh();
@@ -155,6 +157,13 @@ namespace dealvem
         magnitude[node_body[i / 2]] += Ku_abs[i] + std::abs(f[i]) + std::abs(e[i]) + std::abs(P[i]);
         residual[node_body[i / 2]] += std::abs(rho[i] + P[i]);
       }
+    // a contact force carries the rounding of the partner body's equations
+    for (const auto &[i, j] : couplings)
+      if (i < n && j < n && node_body[i / 2] != node_body[j / 2])
+        {
+          magnitude[node_body[i / 2]] += Ku_abs[j];
+          magnitude[node_body[j / 2]] += Ku_abs[i];
+        }
     const double eps = std::numeric_limits<double>::epsilon();
     for (unsigned int k = 0; k < bodies.size(); ++k)
       {

@@ -243,4 +243,28 @@ namespace dealvem
       msg << (msg.tellp() > 0 ? "; " : "") << pieces.describe(p);
     return msg.str();
   }
+
+
+
+  std::string
+  PieceSupport::describe_hinges(const std::vector<std::vector<unsigned int>> &motions) const
+  {
+    std::set<unsigned int> moving;
+    for (const auto &m : motions)
+      for (const auto j : m)
+        moving.insert(j / 3);
+    std::ostringstream msg;
+    std::set<std::pair<unsigned int, unsigned int>> named;
+    const auto &mesh = dof_handler.get_mesh();
+    for (unsigned int v = 0; v < mesh.n_vertices() && v < node_pieces.size(); ++v)
+      if (node_pieces[v].size() > 1)
+        for (const auto p : node_pieces[v])
+          if (moving.count(p) > 0)
+            for (const auto q : node_pieces[v])
+              if (q != p && named.insert({p, q}).second)
+                msg << " Piece " << pieces.index_in_body(p) << " of body " << int(pieces.body(p))
+                    << " touches piece " << pieces.index_in_body(q) << " at the vertex (" << mesh.vertex(v)[0]
+                    << ", " << mesh.vertex(v)[1] << ") only: a hinge, not a connection.";
+    return msg.str();
+  }
 } // namespace dealvem

@@ -294,23 +294,22 @@ namespace dealvem
       const double r_norm = r.l2_norm(), b_norm = b.l2_norm();
       std::ostringstream msg;
       msg.precision(4);
+      const double eta = r.linfty_norm() / (A.linfty_norm() * x.linfty_norm() + b.linfty_norm());
+      if (r.linfty_norm() == 0 || eta <= 1e-10)
+        return;
       if (settings.type != LinearSolver::Type::cg_amg)
-        {
-          const double eta = r.linfty_norm() / (A.linfty_norm() * x.linfty_norm() + b.linfty_norm());
-          if (r.linfty_norm() == 0 || eta <= 1e-10)
-            return;
-          msg << "The direct solve (KLU, " << n_processes << " MPI processes) is inaccurate: the normwise backward "
-              << "error of its solution, |b - Ax| / (|A| |x| + |b|) in the max norm, is " << eta
-              << " (tolerance 1e-10): the matrix is numerically singular or too ill-conditioned for double "
-                 "precision.";
-        }
+        msg << "The direct solve (KLU, " << n_processes << " MPI processes) is inaccurate: the normwise backward "
+            << "error of its solution, |b - Ax| / (|A| |x| + |b|) in the max norm, is " << eta
+            << " (tolerance 1e-10): the matrix is numerically singular or too ill-conditioned for double "
+               "precision.";
       else
         {
           const double relative = (b_norm > 0 ? r_norm / b_norm : r_norm);
           if (relative <= 10 * settings.relative_tolerance && std::isfinite(relative))
             return;
           msg << "The iterative solve (CG, " << n_processes << " MPI processes) is inaccurate: its residual |b - Ax| / |b| is "
-              << relative << ", more than 10 times its relative tolerance " << settings.relative_tolerance << ".";
+              << relative << ", more than 10 times its relative tolerance " << settings.relative_tolerance
+              << ", and its normwise backward error " << eta << " exceeds 1e-10.";
         }
       AssertThrow(false, dealii::ExcMessage(msg.str()));
     }

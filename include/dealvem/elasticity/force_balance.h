@@ -15,6 +15,7 @@
 #include <dealvem/elasticity/elasticity_assembler.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealvem
@@ -106,6 +107,10 @@ namespace dealvem
      * iterative solver, 0 for a direct one. @p cells: the cells this process
      * adds (nullptr: all); the sums over the processes of @p comm are taken
      * (collective), so every process gets the same result.
+     * @p couplings: pairs of DoFs whose bodies exchange a force (the two
+     * nodes of a contact pair, per component): a contact force is fixed by
+     * the equations of both bodies, so its rounding carries the larger
+     * $|K||u|$ of the two nodes, and each side's $Q_b$ gets the other's.
      */
     static std::vector<Body>
     compute(const ElasticityAssembler<2>            &assembler,
@@ -114,7 +119,9 @@ namespace dealvem
             const dealii::Vector<double>            &contact_forces,
             const double                             solver_tolerance,
             const std::vector<unsigned int>         *cells = nullptr,
-            const MPI_Comm                           comm  = MPI_COMM_SELF);
+            const MPI_Comm                           comm  = MPI_COMM_SELF,
+            const std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>>
+              &couplings = {});
 
     /// The largest relative imbalance and residual over the bodies.
     static std::pair<double, double>

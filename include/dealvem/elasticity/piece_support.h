@@ -97,6 +97,12 @@ namespace dealvem
     std::string
     describe_pieces(const std::vector<std::vector<unsigned int>> &motions) const;
 
+    /// For the pieces that @p motions move: where they touch another piece
+    /// at a vertex only ("piece 1 of body 0 touches piece 0 at the vertex
+    /// (1, 1) only: a hinge, not a connection."); empty if nowhere.
+    std::string
+    describe_hinges(const std::vector<std::vector<unsigned int>> &motions) const;
+
   private:
     ConnectedPieces                        pieces;
     const VEMDoFHandler<2>                &dof_handler;

@@ -218,7 +218,8 @@ namespace dealvem
      * backward error $\|b - Ax\|_\infty / (\|A\|_\infty \|x\|_\infty +
      * \|b\|_\infty)$ at most 1e-10 (a stable factorisation gives about eps
      * times the growth factor), for an iterative one $\|b - Ax\|_2 \le
-     * 10\,\mathrm{tol}\,\|b\|_2$. @p solver names the solver in the
+     * 10\,\mathrm{tol}\,\|b\|_2$ or that backward error (the floor of the
+     * true residual when tol asks for less than the arithmetic attains). @p solver names the solver in the
      * message. Returns the relative residual $\|b - Ax\|_2 / \|b\|_2$.
      */
     double
