@@ -230,7 +230,8 @@ namespace dealvem
                   << b.applied[1] << ") + reactions (" << b.reaction[0] << ", " << b.reaction[1]
                   << ") + contact (" << b.contact[0] << ", " << b.contact[1]
                   << "). Typical cause: a body many orders of magnitude stiffer than the body that supports it "
-                     "(its strain drowns in its rigid displacement). Bring the Young's moduli of the bodies "
+                     "(its strain drowns in its rigid displacement; the contact forces between them carry that "
+                     "error to both). Bring the Young's moduli of the bodies "
                      "closer together (a stiffness ratio up to about 1e6 is resolved), or model the stiff body "
                      "as a rigid boundary part.";
               AssertThrow(false, dealii::ExcMessage(msg.str()));
