@@ -4,9 +4,11 @@
 Seeds: the example parameter file examples/step-2/patch-test.prm, the
 parameter files tests/app/*.prm (among them the friction, load-step and
 rigid-boundary inputs friction-rigid-steps.prm and coulomb-penalty-steps.prm),
-the friction, load-step, penalty and rigid-boundary cases of the bad-input
-corpus tests/bad_input/*.prm (inputs one mistake away from valid ones) and the
-mesh files tests/mesh/data/* (each mesh read through a fixed parameter file).
+the friction, load-step, penalty, rigid-boundary, verification and per-piece
+support cases of the bad-input corpus tests/bad_input/*.prm (inputs one mistake
+away from valid ones; the mesh files they name are copied beside each case) and
+the mesh files tests/mesh/data/* and tests/bad_input/*piece*, *hinge* (each mesh
+read through a fixed parameter file).
 Every case applies one to three
 random mutations to one seed (flip, insert or delete characters, duplicate or
 drop lines, replace a number by an extreme value or a huge count) and runs
@@ -104,7 +106,9 @@ def seeds():
         if f.endswith(".prm"):
             with open(os.path.join(bad, f), encoding="utf-8", errors="replace") as fh:
                 text = fh.read()
-            if re.search(r"coulomb|Load steps|Rigid boundary|Penalty", text):
+            # ... and the verification and per-piece support inputs (their
+            # mesh files are copied beside each case, see write_case())
+            if re.search(r"coulomb|Load steps|Rigid boundary|Penalty|Verification|piece|hinge", text):
                 files.append(os.path.join(bad, f))
     for f in files:
         with open(f, encoding="utf-8", errors="replace") as fh:
@@ -115,7 +119,8 @@ def seeds():
     mesh_files = []
     data = os.path.join(ROOT, "tests", "mesh", "data")
     mesh_files += [os.path.join(data, f) for f in sorted(os.listdir(data))]
-    mesh_files += [os.path.join(bad, f) for f in sorted(os.listdir(bad)) if f.endswith(".msh")]
+    mesh_files += [os.path.join(bad, f) for f in sorted(os.listdir(bad))
+                   if f.endswith(".msh") or re.search(r"piece|hinge", f)]
     for path in mesh_files:
         suffix = os.path.splitext(path)[1]
         if suffix in MESH_PRM:
@@ -198,7 +203,12 @@ def write_case(case, folder):
         prm = os.path.join(folder, "input.prm")
         with open(prm, "w", encoding="utf-8", errors="replace") as fh:
             fh.write(case["text"])
-        # relative mesh files of a seed (none today) would be copied here
+        # the mesh files a seed names ('File name = ...' beside the seed)
+        seed_dir = os.path.join(ROOT, os.path.dirname(case["seed_file"]))
+        for name in re.findall(r"File name\s*=\s*(\S+)", case["text"]):
+            source = os.path.join(seed_dir, os.path.basename(name))
+            if os.path.isfile(source):
+                shutil.copy(source, os.path.join(folder, os.path.basename(name)))
     else:
         mesh = "mesh" + case["kind"]
         with open(os.path.join(folder, mesh), "w", encoding="utf-8", errors="replace") as fh:

@@ -17,6 +17,7 @@
 #include <dealvem/contact/friction_solver.h>
 #include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/force_balance.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/base/output_file.h>
@@ -1084,6 +1085,7 @@ namespace dealvem
           refuse(std::string("total contact force (") + (d == 0 ? "x" : "y") + " component)",
                  results.total_contact_force[d]);
     }
+    verify_step(step, time, tangential_force, step_result);
     results.steps.push_back(step_result);
 
     if (n_steps > 1 || friction)
@@ -1109,6 +1111,84 @@ namespace dealvem
     if (n_steps > 1)
       output_step(step);
   }
+
+
+  // The verification of a converged step: the residual and the force and
+  // moment balance of every body (ForceBalance: applied loads, support
+  // reactions and contact forces), and no active pair in tension at
+  // convergence of unilateral contact. A violation stops the run with the
+  // figures; the figures of a passed step go to the JSON summary.
+  void
+  ContactProblem::verify_step(const unsigned int         step,
+                              const double               time,
+                              const std::vector<double> &tangential_force,
+                              StepResult                &step_result) const
+  {
+    const CycleData &d     = *data;
+    const auto      &n     = d.n;
+    const auto      &x     = d.x;
+    const auto      &pairs = d.pairs;
+    std::ostringstream where;
+    where << (n_steps > 1 ? "load step " + std::to_string(step) + " of " + std::to_string(n_steps) : "the contact problem")
+          << " (t = " << time << ", " << d.as.n_iterations
+          << (d.friction_solver ? " Newton" : " active-set") << " iteration(s), solver " << d.solver->description()
+          << ")";
+    // the nodal contact forces: on the slave node -lambda_n n + f_t t, the
+    // opposite on the master node (as the reported contact force)
+    dealii::Vector<double> contact_forces(n);
+    std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>> couplings;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto                 dofs = d.contact->pair_dofs(i);
+        if (d.as.active[i])
+          for (unsigned int c = 0; c < 2; ++c)
+            couplings.emplace_back(dofs[c], dofs[2 + c]);
+        const dealii::Tensor<1, 2> F    = (-x[n + i]) * pairs[i].normal +
+                                       (d.as.active[i] ? tangential_force[i] : 0.) * pairs[i].tangent;
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            contact_forces[dofs[2 + c]] += F[c];
+            contact_forces[dofs[c]] -= F[c];
+          }
+      }
+    dealii::Vector<double> u(n);
+    for (unsigned int i = 0; i < n; ++i)
+      u[i] = x[i];
+    const bool   direct    = (d.solver->get_type() == SaddlePointSolver::Type::umfpack ||
+                         d.solver->get_type() == SaddlePointSolver::Type::klu);
+    const double tolerance = direct ? 0. : solver_tolerance;
+    const auto   balance =
+      (d.partition ? ForceBalance::compute(*d.assembler, d.constraints, u, contact_forces, tolerance,
+                                           &d.partition->locally_owned_cells(), mpi_communicator, couplings) :
+                     ForceBalance::compute(*d.assembler, d.constraints, u, contact_forces, tolerance, nullptr,
+                                           MPI_COMM_SELF, couplings));
+    ForceBalance::check(balance, where.str());
+    for (const auto &b : balance)
+      step_result.balance.push_back({b.body, b.imbalance, b.residual, b.tolerance, b.condition});
+
+    // an active pair of unilateral contact in tension contradicts the
+    // converged active set (and friction's open/stick/slip states)
+    if (contact_settings.normal == ContactSettings::Normal::unilateral)
+      {
+        double largest = 0;
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          largest = std::max(largest, std::abs(x[n + i]) / pairs[i].weight);
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          if (d.as.active[i] && -x[n + i] / pairs[i].weight < -1e-8 * largest)
+            {
+              std::ostringstream msg;
+              msg << "Verification failed after the solve of " << where.str() << ": the active contact pair at ("
+                  << pairs[i].slave_location[0] << ", " << pairs[i].slave_location[1] << ") of interface "
+                  << pairs[i].interface << " carries a tensile normal force (pressure " << -x[n + i] / pairs[i].weight
+                  << ", largest magnitude " << largest
+                  << "), although the converged active set keeps only pairs in compression. The solve is not "
+                     "accurate enough for the contact decisions; bring the Young's moduli of the bodies closer "
+                     "together.";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
+      }
+  }
+
 
 
   // The files of load step @p step: the interface CSV, the VTU file and the
@@ -1364,6 +1444,21 @@ namespace dealvem
                 << lo[1] << ", " << hi[1] << "], sigma_xy in [" << lo[2] << ", " << hi[2] << "]"
                 << std::endl;
     }
+    {
+      double worst_imbalance = 0, worst_residual = 0, tolerance = std::numeric_limits<double>::infinity(),
+             condition = 0;
+      for (const auto &sr : results.steps)
+        for (const auto &b : sr.balance)
+          {
+            worst_imbalance = std::max(worst_imbalance, b.imbalance);
+            worst_residual  = std::max(worst_residual, b.residual);
+            tolerance       = std::min(tolerance, b.tolerance);
+            condition       = std::max(condition, b.condition);
+          }
+      std::cout << "  verification: every body in equilibrium after every step (largest relative imbalance "
+                << worst_imbalance << ", residual " << worst_residual << "; smallest tolerance " << tolerance
+                << "; condition up to " << condition << ")" << std::endl;
+    }
     std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
               << ", " << results.total_contact_force[1] << ")" << std::endl;
 
@@ -1510,6 +1605,27 @@ namespace dealvem
             json.set(k + "force_y", sr.total_contact_force[1]);
           }
       }
+    {
+      // the verification of every converged step (ForceBalance)
+      double worst_imbalance = 0, worst_residual = 0, margin = std::numeric_limits<double>::infinity();
+      for (const auto &sr : results.steps)
+        for (const auto &b : sr.balance)
+          {
+            const std::string k =
+              "verification.steps." + std::to_string(sr.step) + ".body" + std::to_string(b.body) + ".";
+            json.set(k + "imbalance", b.imbalance);
+            json.set(k + "residual", b.residual);
+            json.set(k + "tolerance", b.tolerance);
+            json.set(k + "condition", b.condition);
+            worst_imbalance = std::max(worst_imbalance, b.imbalance);
+            worst_residual  = std::max(worst_residual, b.residual);
+            margin          = std::min(margin, b.tolerance / std::max({b.imbalance, b.residual, 1e-300}));
+          }
+      json.set("verification.max_relative_imbalance", worst_imbalance);
+      json.set("verification.max_relative_residual", worst_residual);
+      if (std::isfinite(margin))
+        json.set("verification.smallest_margin", margin);
+    }
     json.set("contact.total_force_x", results.total_contact_force[0]);
     json.set("contact.total_force_y", results.total_contact_force[1]);
     for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))

@@ -18,6 +18,7 @@
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/elasticity/boundary_conditions.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/force_balance.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/base/output_file.h>
@@ -549,6 +550,21 @@ namespace dealvem
           check_cell(c);
     }
 
+    // the verification of the solve: residual and the force and moment
+    // balance of the body (every edge-connected piece is part of it)
+    std::vector<ForceBalance::Body> balance;
+    {
+      ElasticityAssembler<2> assembler(dof_handler, materials, gamma, stabilization);
+      bc.add_loads(assembler);
+      const double tolerance =
+        (LinearSolver::parse_type(solver_type) == LinearSolver::Type::cg_amg ? solver_tolerance : 0.);
+      balance = distributed ? ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(),
+                                                    tolerance, &partition.locally_owned_cells(), mpi_communicator) :
+                              ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(),
+                                                    tolerance);
+      ForceBalance::check(balance, "cycle " + std::to_string(cycle) + " (solver " + solver_description + ")");
+    }
+
     // the cells this process computes: all, or (distributed) its own, with
     // the ghost layer for the nodal stress averages
     std::vector<unsigned int> stress_cells;
@@ -657,6 +673,12 @@ namespace dealvem
     if (solver_iterations > 1)
       pcout << " (" << solver_iterations << " iterations)";
     pcout << ", max von Mises " << max_vm << std::endl;
+    {
+      const auto [imbalance, residual] = ForceBalance::worst(balance);
+      pcout << "  verification: in equilibrium (relative imbalance " << imbalance << ", residual " << residual
+            << ", tolerance " << balance.front().tolerance << "; condition " << balance.front().condition << ")"
+            << std::endl;
+    }
     if (distributed)
       {
         const auto per_part = partition.cells_per_part();
@@ -682,6 +704,14 @@ namespace dealvem
     json.set(key + "solver_iterations", double(solver_iterations));
     json.set(key + "solver_setup_seconds", solver_setup_time);
     json.set(key + "mpi_processes", double(distributed ? n_processes : 1));
+    for (const auto &b : balance)
+      {
+        const std::string k = key + "verification.body" + std::to_string(b.body) + ".";
+        json.set(k + "imbalance", b.imbalance);
+        json.set(k + "residual", b.residual);
+        json.set(k + "tolerance", b.tolerance);
+        json.set(k + "condition", b.condition);
+      }
     if (write_vtu)
       json.set(key + "vtu", vtu);
     for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))

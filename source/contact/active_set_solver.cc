@@ -222,6 +222,7 @@ namespace dealvem
         // the condensed solver preconditions stick springs by tying them
         if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
           solver.set_stick_directions(contact.stick_penalty_rows(constraints, result.active));
+        solver.set_context("active-set iteration " + std::to_string(it));
         solver.solve(matrix, n, x, rhs);
         constraints.distribute(x);
         result.n_iterations = it;

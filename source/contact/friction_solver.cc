@@ -108,6 +108,7 @@ namespace dealvem
         matrix.copy_from(system_matrix);
         rhs = system_rhs;
         contact.assemble_friction(constraints, result.state, reference, matrix, rhs);
+        solver.set_context("Newton iteration " + std::to_string(it) + " of the friction solve");
         solver.solve(matrix, n, x, rhs);
         constraints.distribute(x);
         result.n_iterations = it;

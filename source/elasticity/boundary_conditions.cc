@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <dealvem/elasticity/boundary_conditions.h>
+#include <dealvem/elasticity/piece_support.h>
 
 #include <Eigen/Dense>
 
@@ -450,87 +451,52 @@ namespace dealvem
       const std::map<dealii::types::material_id, std::vector<std::array<double, 3>>>
         &extra_restraints)
     {
-      const auto &mesh = dof_handler.get_mesh();
-      // body of each node (vertices first, then edges and cells)
-      std::vector<dealii::types::material_id> node_body(dof_handler.n_nodes(),
-                                                        dealii::numbers::invalid_material_id);
-      std::vector<unsigned int> nodes;
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        {
-          dof_handler.get_node_indices(c, nodes);
-          for (const auto n : nodes)
-            node_body[n] = mesh.cell(c).material_id;
-        }
-      const auto modes = dof_handler.rigid_body_modes();
-      // Gram matrix of the restrictions per body: rows r of the constraint
-      // operator applied to the three modes, M^T M accumulated.
-      std::map<dealii::types::material_id, Eigen::Matrix3d> gram;
-      for (const auto id : mesh.get_material_ids())
-        gram[id].setZero();
-      double scale = 0;
-      for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-        scale = std::max(scale, mesh.vertex(v).norm());
-      scale = std::max(scale, 1e-300);
+      const auto        &mesh = dof_handler.get_mesh();
+      const PieceSupport support(dof_handler);
+      const auto        &pieces = support.get_pieces();
+      // the rows of the constraint lines (homogeneous parts) and of the
+      // extra restraints on each piece of their body
+      std::vector<PieceSupport::Row> rows;
+      PieceSupport::Form              form;
       for (const auto &line : constraints.get_lines())
         {
-          const auto node = line.index / 2;
-          if (node >= node_body.size())
+          if (line.index / 2 >= dof_handler.n_nodes())
             continue;
-          Eigen::Vector3d row;
-          // size of the terms, to tell a restraint from round-off
-          double magnitude = 1;
+          form.assign(1, {line.index, 1.});
           for (const auto &entry : line.entries)
-            magnitude += std::abs(entry.second);
-          for (unsigned int m = 0; m < 3; ++m)
-            {
-              double r = modes[m][line.index];
-              for (const auto &entry : line.entries)
-                r -= entry.second * modes[m][entry.first];
-              row(m) = (m == 2 ? r / scale : r);
-            }
-          // a line that the rigid-body modes satisfy (a rigid boundary)
-          // holds nothing
-          if (row.norm() <= 1e-10 * magnitude)
-            continue;
-          gram[node_body[node]] += row * row.transpose();
+            form.emplace_back(entry.first, -entry.second);
+          support.add_rows(form, rows);
         }
       for (const auto &b : extra_restraints)
-        for (const auto &r : b.second)
-          {
-            const Eigen::Vector3d row(r[0], r[1], r[2] / scale);
-            gram[b.first] += row * row.transpose();
-          }
-      for (const auto &g : gram)
-        {
-          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(g.second);
-          const auto &vals = eig.eigenvalues();
-          const double vmax = std::max(vals(2), 1e-300);
-          if (vals(0) > 1e-10 * vmax && vals(2) > 0)
-            continue;
-          // describe the free motion(s)
-          std::ostringstream msg;
-          msg << "Unsupported body / rigid-body mode: body (material id " << int(g.first)
-              << ") of mesh '" << mesh.name << "' can move as a rigid body";
-          const Eigen::Matrix3d &vecs = eig.eigenvectors();
-          for (unsigned int k = 0; k < 3; ++k)
-            if (vals(k) <= 1e-10 * vmax || vals(2) == 0)
-              {
-                const Eigen::Vector3d v = vecs.col(k);
-                msg << " [";
-                const char *names[3] = {"x-translation", "y-translation", "rotation"};
-                bool        first    = true;
-                for (unsigned int m = 0; m < 3; ++m)
-                  if (std::abs(v(m)) > 1e-3)
-                    {
-                      msg << (first ? "" : " + ") << names[m];
-                      first = false;
-                    }
-                msg << "]";
-              }
-          msg << ": its constraints do not hold it. Add Dirichlet, roller or point "
-                 "constraints (or contact) that fix these motions.";
-          AssertThrow(false, dealii::ExcMessage(msg.str()));
-        }
+        for (unsigned int p = 0; p < pieces.n_pieces(); ++p)
+          if (pieces.body(p) == b.first)
+            for (const auto &r : b.second)
+              rows.push_back({{3 * p, r[0]}, {3 * p + 1, r[1]}, {3 * p + 2, r[2] / pieces.size(p)}});
+      std::vector<const PieceSupport::Row *> row_pointers;
+      for (const auto &r : rows)
+        row_pointers.push_back(&r);
+      const auto motions = support.free_motions(row_pointers);
+      if (motions.empty())
+        return;
+      // name the first body (or piece) that moves, and its free motions
+      const unsigned int p     = motions.front().front() / 3;
+      const auto         b     = pieces.body(p);
+      const bool         split = pieces.n_pieces_of_body(b) > 1;
+      std::vector<std::vector<unsigned int>> own;
+      for (const auto &m : motions)
+        if (pieces.body(m.front() / 3) == b)
+          own.push_back(m);
+      std::ostringstream msg;
+      msg << "Unsupported body / rigid-body mode: body (material id " << int(b) << ") of mesh '" << mesh.name
+          << "' can move as a rigid body " << support.describe(own, false) << ": its constraints do not hold it.";
+      if (split)
+        msg << " The body consists of " << pieces.n_pieces_of_body(b)
+            << " pieces that share no edge (cells touching at a vertex only, a hinge, are not connected), and "
+               "each piece must be held by its own constraints: "
+            << support.describe_pieces(own) << "." << support.describe_hinges(own);
+      msg << " Add Dirichlet, roller or point constraints (or contact) that fix these motions"
+          << (split ? ", or connect the pieces through shared edges." : ".");
+      AssertThrow(false, dealii::ExcMessage(msg.str()));
     }
 
     template void

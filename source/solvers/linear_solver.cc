@@ -4,6 +4,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -21,6 +22,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -80,25 +83,138 @@ namespace dealvem
     }
 
 
-    void
+    namespace
+    {
+      // r = b - A x and the componentwise backward error of x
+      double
+      backward_error(const dealii::SparseMatrix<double> &A,
+                     const dealii::Vector<double>       &x,
+                     const dealii::Vector<double>       &b,
+                     dealii::Vector<double>             &r)
+      {
+        r.reinit(b.size());
+        double omega = 0;
+        for (unsigned int i = 0; i < A.m(); ++i)
+          {
+            double s = b[i], size = std::abs(b[i]);
+            for (auto it = A.begin(i); it != A.end(i); ++it)
+              {
+                const double t = it->value() * x[it->column()];
+                s -= t;
+                size += std::abs(t);
+              }
+            r[i] = s;
+            if (s != 0)
+              omega = std::max(omega, size > 0 ? std::abs(s) / size : std::numeric_limits<double>::infinity());
+          }
+        return omega;
+      }
+    } // namespace
+
+
+
+    double
     solve_direct(const dealii::SparseMatrix<double> &A,
                  dealii::Vector<double>             &x,
                  const dealii::Vector<double>       &b,
                  const bool                          use_klu)
     {
+      // the factors, kept for the refinement (Trilinos objects only for
+      // KLU: they need MPI, which a program using UMFPACK need not start)
+      dealii::SparseDirectUMFPACK                             umfpack;
+      std::unique_ptr<dealii::TrilinosWrappers::SparseMatrix> At;
+      dealii::SolverControl                                   control(1, 0);
+      const dealii::TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
+      std::unique_ptr<dealii::TrilinosWrappers::SolverDirect>      klu;
+      dealii::LinearAlgebra::distributed::Vector<double>           kx, kb;
       if (!use_klu)
+        umfpack.initialize(A);
+      else
         {
-          dealii::SparseDirectUMFPACK direct;
-          direct.initialize(A);
-          direct.vmult(x, b);
-          return;
+          At = std::make_unique<dealii::TrilinosWrappers::SparseMatrix>();
+          At->reinit(A);
+          klu = std::make_unique<dealii::TrilinosWrappers::SolverDirect>(control, data);
+          klu->initialize(*At);
+          kx.reinit(b.size());
+          kb.reinit(b.size());
         }
-      dealii::TrilinosWrappers::SparseMatrix At;
-      At.reinit(A);
-      dealii::SolverControl                                  control(1, 0);
-      dealii::TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
-      dealii::TrilinosWrappers::SolverDirect                 direct(control, data);
-      direct.solve(At, x, b);
+      const auto apply = [&](dealii::Vector<double> &y, const dealii::Vector<double> &rhs) {
+        y.reinit(rhs.size());
+        if (!use_klu)
+          umfpack.vmult(y, rhs);
+        else
+          {
+            for (unsigned int i = 0; i < rhs.size(); ++i)
+              kb[i] = rhs[i];
+            klu->solve(kx, kb);
+            for (unsigned int i = 0; i < rhs.size(); ++i)
+              y[i] = kx[i];
+          }
+      };
+      apply(x, b);
+      dealii::Vector<double> r, d, x_new, r_new;
+      double                 omega = backward_error(A, x, b, r);
+      const double           eps   = std::numeric_limits<double>::epsilon();
+      for (unsigned int step = 0; step < 3 && omega > 4 * eps && std::isfinite(omega); ++step)
+        {
+          apply(d, r);
+          x_new = x;
+          x_new += d;
+          const double omega_new = backward_error(A, x_new, b, r_new);
+          if (!(omega_new <= 0.5 * omega))
+            break;
+          x.swap(x_new);
+          r.swap(r_new);
+          omega = omega_new;
+        }
+      return omega;
+    }
+
+
+
+    double
+    check_residual(const dealii::SparseMatrix<double> &A,
+                   const dealii::Vector<double>       &x,
+                   const dealii::Vector<double>       &b,
+                   const double                        relative_tolerance,
+                   const std::string                  &solver)
+    {
+      dealii::Vector<double> r(b.size());
+      A.residual(r, x, b);
+      const double r_norm = r.l2_norm(), b_norm = b.l2_norm();
+      const double relative = (b_norm > 0 ? r_norm / b_norm : r_norm);
+      std::ostringstream msg;
+      msg.precision(4);
+      // the normwise backward error: about eps for a stable direct solve,
+      // and the floor of the true residual of an iterative one (whose
+      // recursively updated residual may fall below it)
+      double a_norm = 0;
+      for (unsigned int i = 0; i < A.m(); ++i)
+        {
+          double row = 0;
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            row += std::abs(it->value());
+          a_norm = std::max(a_norm, row);
+        }
+      const double eta = r.linfty_norm() / (a_norm * x.linfty_norm() + b.linfty_norm());
+      if (r.linfty_norm() == 0 || eta <= 1e-10)
+        return relative;
+      if (relative_tolerance == 0)
+        msg << "The direct solve (" << solver << ") is inaccurate: the normwise backward error of its "
+            << "solution, |b - Ax| / (|A| |x| + |b|) in the max norm, is " << eta
+            << " (tolerance 1e-10; |b - Ax| = " << r.linfty_norm() << ", |A| = " << a_norm
+            << ", |x| = " << x.linfty_norm() << ", |b| = " << b.linfty_norm()
+            << "): the matrix is numerically singular or too ill-conditioned for double precision.";
+      else
+        {
+          if (relative <= 10 * relative_tolerance && std::isfinite(relative))
+            return relative;
+          msg << "The iterative solve (" << solver << ") is inaccurate: its residual |b - Ax| / |b| is "
+              << relative << ", more than 10 times its relative tolerance " << relative_tolerance
+              << ", and its normwise backward error " << eta << " exceeds 1e-10.";
+        }
+      AssertThrow(false, dealii::ExcMessage(msg.str()));
+      return relative;
     }
 
 
@@ -373,5 +489,8 @@ namespace dealvem
                  "stiffness, or the system is singular (is the body supported?).";
           AssertThrow(false, dealii::ExcMessage(msg.str()));
         }
+    // the residual of the system that was solved
+    internal::check_residual(A, x, b, settings.type == Type::cg_amg ? settings.relative_tolerance : 0.,
+                             description());
   }
 } // namespace dealvem

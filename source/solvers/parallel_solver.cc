@@ -20,6 +20,8 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 namespace dealvem
 {
@@ -181,7 +183,54 @@ namespace dealvem
         dealii::SolverControl                                  control(1, 0);
         dealii::TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
         dealii::TrilinosWrappers::SolverDirect                 direct(control, data);
-        direct.solve(A, x, b);
+        direct.initialize(A);
+        direct.solve(x, b);
+        // iterative refinement with the same factors, on the componentwise
+        // backward error omega = max_i |b - Ax|_i / (|A||x| + |b|)_i (as
+        // internal::solve_direct() does serially): while omega > 4 eps,
+        // at most three steps, each kept only if it halves omega
+        Epetra_CrsMatrix abs_matrix(A.trilinos_matrix());
+        for (int i = 0; i < abs_matrix.NumMyRows(); ++i)
+          {
+            int     n_entries = 0;
+            double *values    = nullptr;
+            abs_matrix.ExtractMyRowView(i, n_entries, values);
+            for (int k = 0; k < n_entries; ++k)
+              values[k] = std::abs(values[k]);
+          }
+        const auto omega_of = [&](const dealii::TrilinosWrappers::MPI::Vector &y,
+                                  dealii::TrilinosWrappers::MPI::Vector       &r) {
+          A.residual(r, y, b);
+          dealii::TrilinosWrappers::MPI::Vector y_abs(y), size(b);
+          for (const auto i : y_abs.locally_owned_elements())
+            y_abs(i) = std::abs(y(i));
+          y_abs.compress(dealii::VectorOperation::insert);
+          abs_matrix.Multiply(false, y_abs.trilinos_vector(), size.trilinos_vector());
+          double omega = 0;
+          for (const auto i : r.locally_owned_elements())
+            if (r(i) != 0)
+              {
+                const double d = size(i) + std::abs(b(i));
+                omega = std::max(omega, d > 0 ? std::abs(r(i)) / d : std::numeric_limits<double>::infinity());
+              }
+          return dealii::Utilities::MPI::max(omega, b.get_mpi_communicator());
+        };
+        dealii::TrilinosWrappers::MPI::Vector r(b), d(x), x_new(x), r_new(b);
+        double omega = omega_of(x, r);
+        for (unsigned int step = 0; step < 3 && omega > 4 * std::numeric_limits<double>::epsilon() &&
+                                    std::isfinite(omega);
+             ++step)
+          {
+            direct.solve(d, r);
+            x_new = x;
+            x_new += d;
+            const double omega_new = omega_of(x_new, r_new);
+            if (!(omega_new <= 0.5 * omega))
+              break;
+            x.swap(x_new);
+            r.swap(r_new);
+            omega = omega_new;
+          }
         iterations = 1;
         setup_time = 0;
       }
@@ -238,5 +287,31 @@ namespace dealvem
     finite = dealii::Utilities::MPI::min(finite ? 1 : 0, b.get_mpi_communicator()) == 1;
     AssertThrow(finite, dealii::ExcMessage("The linear solver produced a non-finite value: "
                                            "the system is singular (is the body supported?)."));
+    // the residual of the system that was solved (as internal::check_residual)
+    {
+      dealii::TrilinosWrappers::MPI::Vector r(b);
+      A.residual(r, x, b);
+      const double r_norm = r.l2_norm(), b_norm = b.l2_norm();
+      std::ostringstream msg;
+      msg.precision(4);
+      const double eta = r.linfty_norm() / (A.linfty_norm() * x.linfty_norm() + b.linfty_norm());
+      if (r.linfty_norm() == 0 || eta <= 1e-10)
+        return;
+      if (settings.type != LinearSolver::Type::cg_amg)
+        msg << "The direct solve (KLU, " << n_processes << " MPI processes) is inaccurate: the normwise backward "
+            << "error of its solution, |b - Ax| / (|A| |x| + |b|) in the max norm, is " << eta
+            << " (tolerance 1e-10): the matrix is numerically singular or too ill-conditioned for double "
+               "precision.";
+      else
+        {
+          const double relative = (b_norm > 0 ? r_norm / b_norm : r_norm);
+          if (relative <= 10 * settings.relative_tolerance && std::isfinite(relative))
+            return;
+          msg << "The iterative solve (CG, " << n_processes << " MPI processes) is inaccurate: its residual |b - Ax| / |b| is "
+              << relative << ", more than 10 times its relative tolerance " << settings.relative_tolerance
+              << ", and its normwise backward error " << eta << " exceeds 1e-10.";
+        }
+      AssertThrow(false, dealii::ExcMessage(msg.str()));
+    }
   }
 } // namespace dealvem

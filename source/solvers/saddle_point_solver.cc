@@ -432,5 +432,10 @@ namespace dealvem
       AssertThrow(std::isfinite(x[i]),
                   dealii::ExcMessage("The saddle-point solver produced a non-finite value: the "
                                      "system is singular (is every body supported?)."));
+    // the residual of the system that was solved (the condensed solve
+    // checks its CG and recovers the multipliers from the residual)
+    if (settings.type != Type::cg_amg_constraints)
+      internal::check_residual(A, x, b, settings.type == Type::gmres_amg ? settings.relative_tolerance : 0.,
+                               type_name(settings.type) + (context.empty() ? "" : ", " + context));
   }
 } // namespace dealvem

@@ -136,6 +136,15 @@ namespace dealvem
       double       dissipated_energy = 0;
       dealii::Tensor<1, 2> total_contact_force;
       std::vector<PairResult> pairs;
+      /// The verification of the step per body (ForceBalance): relative
+      /// imbalance of force and moment, relative residual, their tolerance
+      /// and the condition of the balance.
+      struct Balance
+      {
+        unsigned int body;
+        double       imbalance, residual, tolerance, condition;
+      };
+      std::vector<Balance> balance;
     };
 
     /// Everything a test or a user program wants to look at after run().
@@ -213,6 +222,11 @@ namespace dealvem
     solve(const unsigned int step, const double time);
     void
     process_step(const unsigned int step, const double time);
+    void
+    verify_step(const unsigned int         step,
+                const double               time,
+                const std::vector<double> &tangential_force,
+                StepResult                &step_result) const;
     void
     output_step(const unsigned int step) const;
     void

@@ -10,17 +10,23 @@
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace dealvem
 {
+  class PieceSupport;
+
   /**
    * Which rigid-body motions of the bodies the displacement constraints and
    * a set of closed contact pairs hold.
    *
-   * Every body (material id) has three rigid-body modes: the two
-   * translations and the rotation about its centroid (scaled by its size).
+   * Every edge-connected piece of a body (ConnectedPieces: cells joined
+   * through shared edges; a body is usually one piece) has three rigid-body
+   * modes: the two translations and the rotation about its centroid
+   * (scaled by its size). A piece is held by its own constraints or by
+   * contact (PieceSupport has the rank test).
    * A constraint line, or the normal (and, with tangential stick, the
    * tangential) row of a closed contact pair, restricts the modes by its
    * values on them; the bodies are held when the restrictions have full
@@ -40,6 +46,8 @@ namespace dealvem
                      const dealii::AffineConstraints<double> &constraints,
                      const ContactAssembler<2>               &contact,
                      const bool                               tangential_stick);
+
+    ~RigidBodySupport();
 
     /// The free rigid-body motions with the closed pairs @p closed (one
     /// entry per pair), as a readable list "[y-translation of body 1] ...";
@@ -80,11 +88,13 @@ namespace dealvem
     }
 
   private:
-    unsigned int n_body;
-    /// Gram matrix (3 n_bodies squared, row major) of the constraint lines.
-    std::vector<double> gram_constraints;
-    /// Per pair, its one or two rows (3 n_bodies values each).
-    std::vector<std::vector<std::vector<double>>> pair_rows;
+    unsigned int                  n_body;
+    std::unique_ptr<PieceSupport> pieces;
+    /// The restrictions of the piece modes by the constraint lines.
+    std::vector<std::vector<std::pair<unsigned int, double>>> constraint_rows;
+    /// Per pair, per direction (normal, tangential), its rows (more than
+    /// one where a node is a hinge between pieces).
+    std::vector<std::vector<std::vector<std::vector<std::pair<unsigned int, double>>>>> pair_rows;
     std::vector<double>                            initial_gaps;
   };
 } // namespace dealvem

@@ -104,7 +104,17 @@ namespace dealvem
     void
     set_stick_directions(const std::vector<std::vector<std::pair<unsigned int, double>>> &rows);
 
-    /// Solve A x = b. (DistributedContactSolver overrides it.)
+    /// What the next solve is part of ("active-set iteration 3"), for the
+    /// messages of its verification.
+    void
+    set_context(const std::string &text)
+    {
+      context = text;
+    }
+
+    /// Solve A x = b and check the residual (internal::check_residual(); the
+    /// direct solves are refined iteratively first). (DistributedContactSolver
+    /// overrides it.)
     virtual void
     solve(const dealii::SparseMatrix<double> &A,
           const unsigned int                  n_displacements,
@@ -152,6 +162,7 @@ namespace dealvem
     /// direct constraints: the factorization, kept for its ordering
     std::shared_ptr<void>            cholesky;
     bool                             used_lu_fallback = false;
+    std::string                      context;
   };
 } // namespace dealvem
 

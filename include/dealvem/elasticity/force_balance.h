@@ -1,0 +1,140 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_elasticity_force_balance_h
+#define dealvem_elasticity_force_balance_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/elasticity/elasticity_assembler.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * The verification after a solve: the residual of the equations and the
+   * global force and moment balance of every body.
+   *
+   * With $K$ and $f$ the unconstrained stiffness and load vector (body
+   * force, tractions, pressures, nodal loads), $e$ the nodal forces of the
+   * contact (normal multipliers, tangential multipliers or stick springs,
+   * friction forces) and $u$ the solution (constraints distributed), the
+   * unbalanced nodal force is $\rho = f + e - Ku$. A constraint line
+   * $u_s = \sum_j a_{sj} u_j + g_s$ carries the reaction
+   * $P = -\rho_s (e_s - \sum_j a_{sj} e_j)$ (Dirichlet data, rollers, point
+   * constraints; the lines of a rigid boundary part pass the force on to
+   * the part's reference nodes and so cancel within the body), and
+   * $r = \rho + P$ is the residual of the condensed equations (zero on
+   * constrained DoFs). Per body b:
+   * - the residual $R_b = \sum_{i\in b} |r_i|$;
+   * - the net force and the moment about the body's area centroid of
+   *   $f + e + P$ (applied loads + contact + support reactions), which must
+   *   vanish; the imbalance is $|F_x| + |F_y| + |M|/s_b$ ($s_b$ the largest
+   *   distance of a vertex from the centroid);
+   * - both relative to the forces that act, $A_b = \sum_{i\in b}
+   *   (|f_i| + |e_i| + |P_i|)$.
+   *
+   * The tolerance (doc/architecture.md, "Verification after every solve")
+   * is what the arithmetic can attain:
+   * @f[ \tau_b = \frac{c_\varepsilon\,\varepsilon\,Q_b + c_{it}\,
+   *     \mathrm{tol}\,\sqrt{N}\,\|f + e + P\|_2}{A_b},\qquad
+   *     Q_b = \sum_{i\in b} \big(|K||u|\big)_i + |f_i| + |e_i| + |P_i| @f]
+   * with $c_\varepsilon = 10^4$, $c_{it} = 10$, tol the relative tolerance
+   * of an iterative solver (0 for a direct one) and N the number of DoFs.
+   * $Q_b / A_b$ is the measured condition of the balance of body b: it is
+   * about the number of DoFs for a body loaded at its boundary and grows
+   * with $E_{\max}/E_{\min}$ when a stiff body rides on a soft one (its
+   * rigid displacement $U \sim pL/E_{\min}$ enters $|K||u|$ with
+   * $E_{\max}$): the a-priori estimate $(E_{\max}/E_{\min})(L/h)^2$.
+   * Where $\varepsilon Q_b / A_b$ exceeds max_attainable (1e-6) the forces
+   * of the body are not resolved by double precision at all (a stiff body
+   * riding on one 1e9 times softer: its strain drowns in its rigid
+   * displacement), and the body is refused as unverifiable.
+   */
+  class ForceBalance
+  {
+  public:
+    /// The balance of one body.
+    struct Body
+    {
+      dealii::types::material_id body = 0;
+      dealii::Point<2>           centroid;
+      double                     size = 0;
+      /// Net forces and moments (about the centroid) of the applied loads,
+      /// the support reactions and the contact forces.
+      dealii::Tensor<1, 2> applied, reaction, contact;
+      double               applied_moment = 0, reaction_moment = 0, contact_moment = 0;
+      /// A_b and Q_b/A_b (see the class documentation).
+      double forces = 0, condition = 0;
+      /// Relative imbalance, relative residual, relative tolerance.
+      double imbalance = 0, residual = 0, tolerance = 0;
+
+      /// The relative accuracy the arithmetic attains for the forces of
+      /// the body: eps times the condition.
+      double
+      attainable() const;
+
+      bool
+      ok() const
+      {
+        return imbalance <= tolerance && residual <= tolerance && attainable() <= max_attainable;
+      }
+    };
+
+    /// The constant $c_\varepsilon$ of the tolerance.
+    static constexpr double rounding_factor = 1e4;
+    /// The constant $c_{it}$ of the tolerance.
+    static constexpr double iterative_factor = 10;
+    /// A body whose forces double precision resolves only to worse than
+    /// this (eps times the condition $Q_b/A_b$) cannot be verified and is
+    /// refused: its contact forces and reactions carry errors of that size.
+    static constexpr double max_attainable = 1e-6;
+
+    /**
+     * The balance of every body. @p u: the solution with the constraints
+     * distributed (on the cells @p cells and their DoFs at least);
+     * @p contact_forces: the nodal contact forces (n_dofs entries, or empty
+     * without contact); @p solver_tolerance: the relative tolerance of an
+     * iterative solver, 0 for a direct one. @p cells: the cells this process
+     * adds (nullptr: all); the sums over the processes of @p comm are taken
+     * (collective), so every process gets the same result.
+     * @p couplings: pairs of DoFs whose bodies exchange a force (the two
+     * nodes of a contact pair, per component): a contact force is fixed by
+     * the equations of both bodies, so its rounding carries the larger
+     * $|K||u|$ of the two nodes, and each side's $Q_b$ gets the other's.
+     */
+    static std::vector<Body>
+    compute(const ElasticityAssembler<2>            &assembler,
+            const dealii::AffineConstraints<double> &constraints,
+            const dealii::Vector<double>            &u,
+            const dealii::Vector<double>            &contact_forces,
+            const double                             solver_tolerance,
+            const std::vector<unsigned int>         *cells = nullptr,
+            const MPI_Comm                           comm  = MPI_COMM_SELF,
+            const std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>>
+              &couplings = {});
+
+    /// The largest relative imbalance and residual over the bodies.
+    static std::pair<double, double>
+    worst(const std::vector<Body> &bodies);
+
+    /**
+     * Throws (AssertThrow) with the figures of the first body whose
+     * imbalance or residual exceeds its tolerance; @p where names the solve
+     * ("load step 2 (t = 0.5)").
+     */
+    static void
+    check(const std::vector<Body> &bodies, const std::string &where);
+  };
+} // namespace dealvem
+
+#endif

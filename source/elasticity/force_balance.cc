@@ -1,0 +1,259 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+
+#include <dealvem/elasticity/elasticity_operator.h>
+#include <dealvem/elasticity/force_balance.h>
+#include <dealvem/vem/vem_values.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace dealvem
+{
+  std::vector<ForceBalance::Body>
+  ForceBalance::compute(const ElasticityAssembler<2>            &assembler,
+                        const dealii::AffineConstraints<double> &constraints,
+                        const dealii::Vector<double>            &u,
+                        const dealii::Vector<double>            &contact_forces,
+                        const double                             solver_tolerance,
+                        const std::vector<unsigned int>         *cells,
+                        const MPI_Comm                           comm,
+                        const std::vector<std::pair<dealii::types::global_dof_index,
+                                                    dealii::types::global_dof_index>> &couplings)
+  {
+    const auto        &dof_handler = assembler.get_dof_handler();
+    const auto        &mesh        = dof_handler.get_mesh();
+    const unsigned int n           = dof_handler.n_dofs();
+    AssertThrow(u.size() == n && (contact_forces.size() == 0 || contact_forces.size() == n),
+                dealii::ExcMessage("ForceBalance::compute(): the vectors must have n_dofs() entries."));
+    const bool parallel = dealii::Utilities::MPI::job_supports_mpi() &&
+                          dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
+    const bool first    = !parallel || dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+
+    // f, K u and |K||u| of the cells of this process, then summed
+    dealii::Vector<double> f(n), Ku(n), Ku_abs(n);
+    {
+      VEMValues<2> vem_values(dof_handler);
+      ElasticityOperator<2>  elasticity;
+      dealii::Vector<double> F;
+      const auto             add_cell = [&](const unsigned int c) {
+        vem_values.reinit(c);
+        elasticity.reinit(vem_values.get_element(), assembler.get_material(c), assembler.get_gamma(),
+                          assembler.get_stabilization());
+        assembler.local_load(vem_values, F);
+        const auto &indices = vem_values.get_dof_indices();
+        const auto &K       = elasticity.get_stiffness_matrix();
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          {
+            double s = 0, a = 0;
+            for (unsigned int j = 0; j < indices.size(); ++j)
+              {
+                const double t = K(i, j) * u[indices[j]];
+                s += t;
+                a += std::abs(t);
+              }
+            f[indices[i]] += F[i];
+            Ku[indices[i]] += s;
+            Ku_abs[indices[i]] += a;
+          }
+      };
+      if (cells != nullptr)
+        for (const auto c : *cells)
+          add_cell(c);
+      else
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          add_cell(c);
+      // the nodal loads (rigid boundary resultants) once
+      if (first)
+        assembler.add_residual({}, u, true, f);
+      if (parallel)
+        for (auto *v : {&f, &Ku, &Ku_abs})
+          dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(v->begin(), n), comm,
+                                      dealii::ArrayView<double>(v->begin(), n));
+    }
+    dealii::Vector<double> e(n);
+    if (contact_forces.size() == n)
+      e = contact_forces;
+
+    // rho = f + e - K u; the reactions P of the constraint lines; the
+    // residual r = rho + P of the condensed equations
+    dealii::Vector<double> rho(n), P(n);
+    for (unsigned int i = 0; i < n; ++i)
+      rho[i] = f[i] + e[i] - Ku[i];
+    for (const auto &line : constraints.get_lines())
+      if (line.index < n)
+        {
+          P[line.index] -= rho[line.index];
+          for (const auto &entry : line.entries)
+            if (entry.first < n)
+              P[entry.first] += entry.second * rho[line.index];
+        }
+
+    // bodies: area centroid and size
+    std::map<dealii::types::material_id, unsigned int> index;
+    std::vector<Body>                                  bodies;
+    std::vector<double>                                area;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const auto id = mesh.cell(c).material_id;
+        if (index.count(id) == 0)
+          {
+            index[id] = bodies.size();
+            bodies.emplace_back();
+            bodies.back().body = id;
+            area.push_back(0);
+          }
+        auto       &b  = bodies[index[id]];
+        const auto &vs = mesh.cell(c).vertices;
+        for (unsigned int i = 0; i < vs.size(); ++i)
+          {
+            const auto  &x0    = mesh.vertex(vs[i]);
+            const auto  &x1    = mesh.vertex(vs[(i + 1) % vs.size()]);
+            const double cross = x0[0] * x1[1] - x1[0] * x0[1];
+            area[index[id]] += 0.5 * cross;
+            b.centroid[0] += (x0[0] + x1[0]) * cross / 6.;
+            b.centroid[1] += (x0[1] + x1[1]) * cross / 6.;
+          }
+      }
+    for (unsigned int k = 0; k < bodies.size(); ++k)
+      if (area[k] != 0)
+        bodies[k].centroid /= area[k];
+    std::vector<unsigned int> node_body(dof_handler.n_nodes(), 0), nodes;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        dof_handler.get_node_indices(c, nodes);
+        for (const auto nd : nodes)
+          node_body[nd] = index[mesh.cell(c).material_id];
+      }
+    for (unsigned int v = 0; v < mesh.n_vertices() && v < node_body.size(); ++v)
+      bodies[node_body[v]].size =
+        std::max(bodies[node_body[v]].size, mesh.vertex(v).distance(bodies[node_body[v]].centroid));
+
+    double external_norm = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      external_norm += (f[i] + e[i] + P[i]) * (f[i] + e[i] + P[i]);
+    external_norm = std::sqrt(external_norm);
+
+    std::vector<double> residual(bodies.size(), 0.), magnitude(bodies.size(), 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        auto              &b    = bodies[node_body[i / 2]];
+        const unsigned int comp = i % 2;
+        const auto         x    = dof_handler.node_location(i / 2) - b.centroid;
+        // the moment arm of a force along this component about the centroid
+        const double arm = (comp == 0 ? -x[1] : x[0]);
+        b.applied[comp] += f[i];
+        b.reaction[comp] += P[i];
+        b.contact[comp] += e[i];
+        b.applied_moment += arm * f[i];
+        b.reaction_moment += arm * P[i];
+        b.contact_moment += arm * e[i];
+        b.forces += std::abs(f[i]) + std::abs(e[i]) + std::abs(P[i]);
+        magnitude[node_body[i / 2]] += Ku_abs[i] + std::abs(f[i]) + std::abs(e[i]) + std::abs(P[i]);
+        residual[node_body[i / 2]] += std::abs(rho[i] + P[i]);
+      }
+    // a contact force carries the rounding of the partner body's equations
+    for (const auto &[i, j] : couplings)
+      if (i < n && j < n && node_body[i / 2] != node_body[j / 2])
+        {
+          magnitude[node_body[i / 2]] += Ku_abs[j];
+          magnitude[node_body[j / 2]] += Ku_abs[i];
+        }
+    const double eps = std::numeric_limits<double>::epsilon();
+    for (unsigned int k = 0; k < bodies.size(); ++k)
+      {
+        auto        &b     = bodies[k];
+        const auto   F     = b.applied + b.reaction + b.contact;
+        const double M     = b.applied_moment + b.reaction_moment + b.contact_moment;
+        const double scale = std::max(b.forces, std::numeric_limits<double>::min());
+        b.imbalance        = (std::abs(F[0]) + std::abs(F[1]) + std::abs(M) / std::max(b.size, 1e-300)) / scale;
+        b.residual         = residual[k] / scale;
+        b.condition        = magnitude[k] / scale;
+        b.tolerance        = (rounding_factor * eps * magnitude[k] +
+                       iterative_factor * solver_tolerance * std::sqrt(double(n)) * external_norm) /
+                      scale;
+        // a body on which nothing acts: nothing to balance
+        if (b.forces == 0)
+          b.imbalance = b.residual = 0;
+      }
+    return bodies;
+  }
+
+
+
+  double
+  ForceBalance::Body::attainable() const
+  {
+    return std::numeric_limits<double>::epsilon() * condition;
+  }
+
+
+
+  std::pair<double, double>
+  ForceBalance::worst(const std::vector<Body> &bodies)
+  {
+    double imbalance = 0, residual = 0;
+    for (const auto &b : bodies)
+      {
+        imbalance = std::max(imbalance, b.imbalance);
+        residual  = std::max(residual, b.residual);
+      }
+    return {imbalance, residual};
+  }
+
+
+
+  void
+  ForceBalance::check(const std::vector<Body> &bodies, const std::string &where)
+  {
+    for (const auto &b : bodies)
+      if (!b.ok() || !std::isfinite(b.imbalance) || !std::isfinite(b.residual))
+        {
+          const auto         F = b.applied + b.reaction + b.contact;
+          std::ostringstream msg;
+          msg.precision(4);
+          if (b.attainable() > max_attainable)
+            {
+              msg << "Verification failed after the solve of " << where << ": the forces of body " << int(b.body)
+                  << " cannot be resolved in double precision. The condition of its balance (the magnitudes "
+                     "summed into it, |K||u| + |f| + |reactions| + |contact|, over the sum of the magnitudes "
+                     "of the forces acting on it, "
+                  << b.forces << ") is " << b.condition << ", so its loads, support reactions and contact forces "
+                  << "are computed only to " << b.attainable() << " relative (limit " << max_attainable
+                  << "); this solve gives an imbalance of " << b.imbalance << " and a residual of " << b.residual
+                  << ". Net force (" << F[0] << ", " << F[1] << ") = applied (" << b.applied[0] << ", "
+                  << b.applied[1] << ") + reactions (" << b.reaction[0] << ", " << b.reaction[1]
+                  << ") + contact (" << b.contact[0] << ", " << b.contact[1]
+                  << "). Typical cause: a body many orders of magnitude stiffer than the body that supports it "
+                     "(its strain drowns in its rigid displacement; the contact forces between them carry that "
+                     "error to both). Bring the Young's moduli of the bodies "
+                     "closer together (a stiffness ratio up to about 1e6 is resolved), or model the stiff body "
+                     "as a rigid boundary part.";
+              AssertThrow(false, dealii::ExcMessage(msg.str()));
+            }
+          msg << "Verification failed after the solve of " << where << ": body " << int(b.body)
+              << " is not in equilibrium. Relative to the forces acting on it (sum of their magnitudes "
+              << b.forces << "), the residual of its equations is " << b.residual
+              << " and the imbalance of its loads, support reactions and contact forces is " << b.imbalance
+              << "; the tolerance is " << b.tolerance << " (= 1e4 eps times the condition " << b.condition
+              << " of the balance"
+              << (b.tolerance > rounding_factor * std::numeric_limits<double>::epsilon() * b.condition * 1.0001 ?
+                    ", plus the iterative solver's tolerance" :
+                    "")
+              << "). Net force (" << F[0] << ", " << F[1] << ") = applied (" << b.applied[0] << ", "
+              << b.applied[1] << ") + reactions (" << b.reaction[0] << ", " << b.reaction[1] << ") + contact ("
+              << b.contact[0] << ", " << b.contact[1] << "); net moment about the centroid (" << b.centroid[0]
+              << ", " << b.centroid[1] << "): " << b.applied_moment + b.reaction_moment + b.contact_moment
+              << ". The linear solve lost too many digits: the system is too ill-conditioned for double "
+                 "precision (Young's moduli of very different size between bodies, a body held only by a "
+                 "soft penalty, extreme mesh grading) or the iterative solver stopped early. Bring the "
+                 "Young's moduli of the bodies closer together or use a tighter 'Solver/Relative tolerance'.";
+          AssertThrow(false, dealii::ExcMessage(msg.str()));
+        }
+  }
+} // namespace dealvem

@@ -1,0 +1,270 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <dealvem/elasticity/piece_support.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace dealvem
+{
+  PieceSupport::PieceSupport(const VEMDoFHandler<2> &dof_handler)
+    : pieces(dof_handler.get_mesh())
+    , dof_handler(dof_handler)
+    , node_pieces(dof_handler.n_nodes())
+  {
+    const auto               &mesh = dof_handler.get_mesh();
+    std::vector<unsigned int> nodes;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const unsigned int p = pieces.piece_of_cell(c);
+        dof_handler.get_node_indices(c, nodes);
+        for (const auto n : nodes)
+          if (std::find(node_pieces[n].begin(), node_pieces[n].end(), p) == node_pieces[n].end())
+            node_pieces[n].push_back(p);
+      }
+  }
+
+
+
+  double
+  PieceSupport::mode(const unsigned int p, const unsigned int k, const dealii::types::global_dof_index dof) const
+  {
+    const unsigned int node = dof / 2, comp = dof % 2;
+    if (k < 2)
+      return (k == comp ? 1. : 0.);
+    const auto x = dof_handler.node_location(node) - pieces.centroid(p);
+    return (comp == 0 ? -x[1] : x[0]) / pieces.size(p);
+  }
+
+
+
+  void
+  PieceSupport::add_rows(const Form &form, std::vector<Row> &rows) const
+  {
+    // the pieces at hinge nodes of the form: one row for each
+    std::vector<unsigned int> choices;
+    double                    magnitude = 0;
+    for (const auto &[dof, c] : form)
+      {
+        magnitude += std::abs(c);
+        const auto &ps = node_pieces[dof / 2];
+        if (ps.size() > 1)
+          for (const auto p : ps)
+            if (std::find(choices.begin(), choices.end(), p) == choices.end())
+              choices.push_back(p);
+      }
+    if (choices.empty())
+      choices.push_back(dealii::numbers::invalid_unsigned_int);
+    for (const auto choice : choices)
+      {
+        std::map<unsigned int, double> row;
+        for (const auto &[dof, c] : form)
+          {
+            const auto &ps = node_pieces[dof / 2];
+            if (ps.empty())
+              continue;
+            const unsigned int p =
+              (std::find(ps.begin(), ps.end(), choice) != ps.end() ? choice : ps.front());
+            for (unsigned int k = 0; k < 3; ++k)
+              if (const double v = mode(p, k, dof); v != 0)
+                row[3 * p + k] += c * v;
+          }
+        // a form that the rigid motions satisfy (a rigid boundary) holds
+        // nothing: its row is round-off
+        double norm = 0;
+        for (const auto &e : row)
+          norm += e.second * e.second;
+        if (std::sqrt(norm) <= 1e-10 * std::max(magnitude, 1.))
+          continue;
+        rows.emplace_back(row.begin(), row.end());
+      }
+  }
+
+
+
+  std::vector<std::vector<unsigned int>>
+  PieceSupport::free_motions(const std::vector<const Row *> &rows) const
+  {
+    const unsigned int n_pieces = pieces.n_pieces();
+    // 1. pieces held by the rows that touch them alone
+    std::vector<Eigen::Matrix3d> own(n_pieces, Eigen::Matrix3d::Zero());
+    std::vector<bool>            single(rows.size(), true);
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        const auto &row = *rows[r];
+        for (const auto &e : row)
+          single[r] = single[r] && (e.first / 3 == row.front().first / 3);
+        if (single[r] && !row.empty())
+          {
+            const unsigned int p = row.front().first / 3;
+            Eigen::Vector3d    v = Eigen::Vector3d::Zero();
+            for (const auto &e : row)
+              v(e.first % 3) += e.second;
+            own[p] += v * v.transpose();
+          }
+      }
+    std::vector<bool> held(n_pieces, false);
+    for (unsigned int p = 0; p < n_pieces; ++p)
+      {
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(own[p]);
+        held[p] = (eig.eigenvalues()(2) > 0 && eig.eigenvalues()(0) > 1e-10 * eig.eigenvalues()(2));
+      }
+    // 2. an unheld piece that no row couples to another: its own null space
+    std::vector<bool> coupled(n_pieces, false);
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      if (!single[r])
+        {
+          std::vector<unsigned int> touched;
+          for (const auto &e : *rows[r])
+            if (!held[e.first / 3])
+              touched.push_back(e.first / 3);
+          std::sort(touched.begin(), touched.end());
+          if (!touched.empty() && touched.front() != touched.back())
+            for (const auto p : touched)
+              coupled[p] = true;
+        }
+    std::vector<std::vector<unsigned int>> motions;
+    std::vector<unsigned int>              rest, column(n_pieces, dealii::numbers::invalid_unsigned_int);
+    for (unsigned int p = 0; p < n_pieces; ++p)
+      if (!held[p] && !coupled[p])
+        {
+          // (the rows of held partners fix nothing of this piece beyond its
+          // own rows: add its part of the rows that touch held pieces too)
+          Eigen::Matrix3d g = own[p];
+          for (unsigned int r = 0; r < rows.size(); ++r)
+            if (!single[r])
+              {
+                Eigen::Vector3d v      = Eigen::Vector3d::Zero();
+                bool            others = false;
+                for (const auto &e : *rows[r])
+                  if (e.first / 3 == p)
+                    v(e.first % 3) += e.second;
+                  else
+                    others = others || !held[e.first / 3];
+                if (!others)
+                  g += v * v.transpose();
+              }
+          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(g);
+          const double vmax = std::max(eig.eigenvalues()(2), 0.);
+          for (unsigned int k = 0; k < 3; ++k)
+            if (vmax == 0 || eig.eigenvalues()(k) <= 1e-10 * vmax)
+              {
+                std::vector<unsigned int> m;
+                for (unsigned int j = 0; j < 3; ++j)
+                  if (std::abs(eig.eigenvectors()(j, k)) > 1e-3)
+                    m.push_back(3 * p + j);
+                motions.push_back(m);
+              }
+        }
+      else if (!held[p])
+        {
+          column[p] = rest.size();
+          rest.push_back(p);
+        }
+    // 3. the coupled unheld pieces together, the held pieces' columns dropped
+    if (rest.empty())
+      return motions;
+    AssertThrow(rest.size() <= 400,
+                dealii::ExcMessage("Unsupported pieces: " + std::to_string(rest.size()) +
+                                   " edge-connected pieces of the meshes are held only through one another "
+                                   "(the first: " + pieces.describe(rest.front()) +
+                                   "); a mesh of that many separate pieces is not a meaningful input. Check the "
+                                   "mesh files for cells that share no edge with the rest of their body."));
+    const unsigned int N = 3 * rest.size();
+    Eigen::MatrixXd    gram = Eigen::MatrixXd::Zero(N, N);
+    std::vector<std::pair<unsigned int, double>> reduced;
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        reduced.clear();
+        for (const auto &e : *rows[r])
+          if (const unsigned int p = e.first / 3; column[p] != dealii::numbers::invalid_unsigned_int)
+            reduced.emplace_back(3 * column[p] + e.first % 3, e.second);
+        for (const auto &a : reduced)
+          for (const auto &b : reduced)
+            gram(a.first, b.first) += a.second * b.second;
+      }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
+    const double vmax = std::max(eig.eigenvalues().maxCoeff(), 0.);
+    for (unsigned int k = 0; k < N; ++k)
+      if (vmax == 0 || eig.eigenvalues()(k) <= 1e-10 * vmax)
+        {
+          std::vector<unsigned int> m;
+          for (unsigned int j = 0; j < N; ++j)
+            if (std::abs(eig.eigenvectors()(j, k)) > 1e-3)
+              m.push_back(3 * rest[j / 3] + j % 3);
+          motions.push_back(m);
+        }
+    return motions;
+  }
+
+
+
+  std::string
+  PieceSupport::describe(const std::vector<std::vector<unsigned int>> &motions, const bool with_body) const
+  {
+    const char        *names[3] = {"x-translation", "y-translation", "rotation"};
+    std::ostringstream msg;
+    for (const auto &m : motions)
+      {
+        msg << (msg.tellp() > 0 ? " " : "") << "[";
+        for (unsigned int j = 0; j < m.size(); ++j)
+          {
+            const unsigned int p = m[j] / 3;
+            msg << (j == 0 ? "" : " + ") << names[m[j] % 3];
+            if (with_body)
+              msg << " of body " << int(pieces.body(p));
+            if (pieces.n_pieces_of_body(pieces.body(p)) > 1)
+              msg << (with_body ? ", " : " of ") << "piece " << pieces.index_in_body(p);
+          }
+        msg << "]";
+      }
+    return msg.str();
+  }
+
+
+
+  std::string
+  PieceSupport::describe_pieces(const std::vector<std::vector<unsigned int>> &motions) const
+  {
+    std::set<unsigned int> named;
+    for (const auto &m : motions)
+      for (const auto j : m)
+        if (pieces.n_pieces_of_body(pieces.body(j / 3)) > 1)
+          named.insert(j / 3);
+    std::ostringstream msg;
+    for (const auto p : named)
+      msg << (msg.tellp() > 0 ? "; " : "") << pieces.describe(p);
+    return msg.str();
+  }
+
+
+
+  std::string
+  PieceSupport::describe_hinges(const std::vector<std::vector<unsigned int>> &motions) const
+  {
+    std::set<unsigned int> moving;
+    for (const auto &m : motions)
+      for (const auto j : m)
+        moving.insert(j / 3);
+    std::ostringstream msg;
+    std::set<std::pair<unsigned int, unsigned int>> named;
+    const auto &mesh = dof_handler.get_mesh();
+    for (unsigned int v = 0; v < mesh.n_vertices() && v < node_pieces.size(); ++v)
+      if (node_pieces[v].size() > 1)
+        for (const auto p : node_pieces[v])
+          if (moving.count(p) > 0)
+            for (const auto q : node_pieces[v])
+              if (q != p && named.insert({p, q}).second)
+                msg << " Piece " << pieces.index_in_body(p) << " of body " << int(pieces.body(p))
+                    << " touches piece " << pieces.index_in_body(q) << " at the vertex (" << mesh.vertex(v)[0]
+                    << ", " << mesh.vertex(v)[1] << ") only: a hinge, not a connection.";
+    return msg.str();
+  }
+} // namespace dealvem
