@@ -401,7 +401,7 @@ namespace dealvem
   {
     dealii::TimerOutput::Scope t(*timer, "solve");
     LinearSolver::Settings     settings;
-    settings.type               = LinearSolver::parse_type(chosen_solver_type());
+    settings.type               = LinearSolver::parse_type(used_solver_type = chosen_solver_type());
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
     settings.preconditioner     = LinearSolver::parse_preconditioner(solver_preconditioner);
@@ -478,7 +478,7 @@ namespace dealvem
     {
       dealii::TimerOutput::Scope t(*timer, "solve");
       LinearSolver::Settings     settings;
-      settings.type               = LinearSolver::parse_type(chosen_solver_type());
+      settings.type               = LinearSolver::parse_type(used_solver_type = chosen_solver_type());
       settings.relative_tolerance = solver_tolerance;
       settings.max_iterations     = solver_max_iterations;
       settings.preconditioner     = LinearSolver::parse_preconditioner(solver_preconditioner);
@@ -557,7 +557,7 @@ namespace dealvem
       ElasticityAssembler<2> assembler(dof_handler, materials, gamma, stabilization);
       bc.add_loads(assembler);
       const double tolerance =
-        (LinearSolver::parse_type(solver_type) == LinearSolver::Type::cg_amg ? solver_tolerance : 0.);
+        (LinearSolver::parse_type(used_solver_type) == LinearSolver::Type::cg_amg ? solver_tolerance : 0.);
       balance = distributed ? ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(),
                                                     tolerance, &partition.locally_owned_cells(), mpi_communicator) :
                               ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(),

@@ -158,6 +158,8 @@ namespace dealvem
     BoundaryConditionParameters bc;
     std::string                 exact_displacement;
     std::string  solver_type = "automatic";
+    /// The solver type of the last solve (automatic resolved).
+    std::string  used_solver_type = "UMFPACK";
     double       memory_limit_GB = 0;
     double       solver_tolerance = 1e-12;
     unsigned int solver_max_iterations = 10000;
