@@ -281,7 +281,7 @@ def main():
     tri = g_any["json"]["triangulation"] if g_any else {}
     L.append("* dealvem: `build/bin/dealvem` on the parameter file of step-3's parameters() (virtual "
              "elements of order k on the polygons; node insertion makes the surfaces match; node-to-node "
-             "unilateral constraints, primal-dual active set, UMFPACK on the saddle-point system). Raw "
+             "unilateral constraints, primal-dual active set with the accelerated update, Solver/Type = automatic: the Cholesky factorization (CHOLMOD) of the stiffness condensed by the active constraints). Raw "
              "nodal pressure: lumped_pressure = -lambda/weight of the interface CSV.")
     L.append("* GetFEM (hertz_getfem.py): each polygon is cut into triangles by a fan from one of its own "
              "vertices (no vertex added; the apex is chosen so that no triangle is flat at the hanging "
