@@ -337,7 +337,7 @@ namespace dealvem
           {
             if (!cholesky)
               cholesky = std::make_shared<internal::SparseCholesky>();
-            auto &factor     = *std::static_pointer_cast<internal::SparseCholesky>(cholesky);
+            auto &factor     = *cholesky;
             used_lu_fallback = !factor.factorize(K);
             u.reinit(n_displacements);
             if (used_lu_fallback)

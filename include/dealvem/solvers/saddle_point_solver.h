@@ -14,6 +14,11 @@
 
 namespace dealvem
 {
+  namespace internal
+  {
+    class SparseCholesky;
+  }
+
   /**
    * Solvers for the contact saddle-point system
    * @f[ A = \begin{pmatrix} K & B^T \\ B & D \end{pmatrix} @f]
@@ -159,8 +164,9 @@ namespace dealvem
     bool                             used_stick_preconditioner = false;
     unsigned int                     iterations = 0;
     unsigned int                     n_dropped  = 0;
-    /// direct constraints: the factorization, kept for its ordering
-    std::shared_ptr<void>            cholesky;
+    /// direct constraints: the factorization (its workspace kept between
+    /// active sets)
+    std::shared_ptr<internal::SparseCholesky> cholesky;
     bool                             used_lu_fallback = false;
     std::string                      context;
   };
