@@ -734,12 +734,7 @@ namespace dealvem
         // the condensed solves need symmetric contact rows; Coulomb's slip
         // rows are not: the whole saddle point by UMFPACK
         std::ostringstream why;
-        if (contact_settings.is_coulomb() && !distributed)
-          {
-            settings.type = SaddlePointSolver::Type::umfpack;
-            why << "Coulomb friction (its slip rows are not symmetric: the saddle point is factored as a whole)";
-          }
-        else if (d.n <= InputParsing::contact_direct_solver_max_dofs)
+        if (d.n <= InputParsing::contact_direct_solver_max_dofs)
           {
             settings.type = SaddlePointSolver::Type::direct_constraints;
             why << d.n << " DoFs <= " << InputParsing::contact_direct_solver_max_dofs
@@ -762,10 +757,6 @@ namespace dealvem
     settings.max_iterations     = solver_max_iterations;
     if (distributed)
       {
-        AssertThrow(!contact_settings.is_coulomb(),
-                    dealii::ExcMessage("Contact/Tangential = coulomb runs only on the serial path so far (its slip rows "
-                                       "are not symmetric constraints, and the distributed contact solve "
-                                       "condenses the contact constraints): run on one MPI process."));
         d.partition = std::make_unique<VEMPartition<2>>();
         d.partition->reinit(d.dof_handler, mpi_communicator);
         auto solver = std::make_unique<DistributedContactSolver>(settings, *d.partition, d.constraints,

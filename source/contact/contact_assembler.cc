@@ -254,7 +254,8 @@ namespace dealvem
   {
     AssertDimension(active.size(), pairs.size());
     std::vector<std::vector<std::pair<unsigned int, double>>> rows;
-    if (settings.tangential != ContactSettings::Tangential::penalty)
+    if (settings.tangential != ContactSettings::Tangential::penalty &&
+        settings.tangential != ContactSettings::Tangential::coulomb_penalty)
       return rows;
     for (unsigned int i = 0; i < pairs.size(); ++i)
       if (active[i])

@@ -17,6 +17,7 @@
 #include <dealvem/vem/partitioning.h>
 
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
@@ -60,10 +61,12 @@ namespace dealvem
   DistributedContactSolver::description() const
   {
     const unsigned int np = dealii::Utilities::MPI::n_mpi_processes(comm);
-    return std::string(settings.type == Type::cg_amg_constraints ? "CG + ML AMG" : "Amesos KLU (direct)") +
+    return std::string(settings.type == Type::cg_amg_constraints ? (used_gmres ? "GMRES + ML AMG" : "CG + ML AMG")
+                                                                 : "Amesos KLU (direct)") +
            " on the stiffness condensed by the active contact constraints, distributed over " +
            std::to_string(np) + " MPI process" + (np > 1 ? "es" : "") +
            " (one slave DoF per constraint, multipliers from the residual" +
+           std::string(used_gmres ? "; slipping pairs: Petrov-Galerkin condensation, not symmetric" : "") +
            std::string(used_stick_preconditioner ? "; stick springs preconditioned by tying them" : "") + ")";
   }
 
@@ -244,14 +247,9 @@ namespace dealvem
         n_rows_across += cut;
       }
 
-    // known (inactive) multipliers: their forces go to the right-hand side
-    std::vector<double> known(m, 0.);
-    std::vector<bool>   is_known(m, false);
-    for (const auto &in : contact.get_inactive_rows())
-      {
-        known[in.first]    = in.second;
-        is_known[in.first] = true;
-      }
+    // known multipliers (inactive, and the constant parts of tied ones):
+    // their forces go to the right-hand side
+    const std::vector<double> known = contact.known_multipliers();
 
     // 2. the rows of the contact blocks' displacement part (springs,
     //    right-hand side) that this process adds: those of its owned DoFs
@@ -296,12 +294,67 @@ namespace dealvem
         row_values.push_back(std::move(values));
         row_rhs.push_back(rhs);
       }
+    // Petrov-Galerkin (slipping pairs): the slaves whose test line differs
+    // from the trial line, the owned cells around them, and the masters of
+    // the difference, which receive the slave's row of K C
+    const auto &differences = contact.get_line_differences();
+    std::map<dealii::types::global_dof_index, std::map<dealii::types::global_dof_index, double>> slave_rows;
+    std::vector<unsigned int>                    correction_cells;
+    std::vector<dealii::types::global_dof_index> dof_indices;
+    const auto                                  &dof_handler = assembler->get_dof_handler();
+    std::vector<std::vector<dealii::types::global_dof_index>> correction_columns(differences.size());
+    if (!differences.empty())
+      {
+        for (const auto &d : differences)
+          slave_rows[d.first];
+        for (const unsigned int c : partition.locally_owned_cells())
+          {
+            dof_handler.get_dof_indices(c, dof_indices);
+            for (const auto d : dof_indices)
+              if (slave_rows.count(d) > 0)
+                {
+                  correction_cells.push_back(c);
+                  break;
+                }
+          }
+        // the columns of the slaves' rows: the DoFs of their cells and of
+        // their spring rows, through the constraints
+        std::map<dealii::types::global_dof_index, std::set<dealii::types::global_dof_index>> columns;
+        for (const unsigned int c : correction_cells)
+          {
+            dof_handler.get_dof_indices(c, dof_indices);
+            for (const auto s : dof_indices)
+              if (slave_rows.count(s) > 0)
+                columns[s].insert(dof_indices.begin(), dof_indices.end());
+          }
+        for (unsigned int k = 0; k < differences.size(); ++k)
+          {
+            const auto s = differences[k].first;
+            if (owned.is_element(s))
+              for (auto it = A.begin(s); it != A.end(s); ++it)
+                if (it->column() < n)
+                  columns[s].insert(it->column());
+            for (const auto j : columns[s])
+              if (all.is_constrained(j))
+                for (const auto &e : *all.get_constraint_entries(j))
+                  correction_columns[k].push_back(e.first);
+              else
+                correction_columns[k].push_back(j);
+            for (const auto &e : differences[k].second)
+              relevant.add_index(e.first);
+            for (const auto j : correction_columns[k])
+              relevant.add_index(j);
+          }
+      }
     relevant.compress();
 
     dealii::DynamicSparsityPattern dsp(relevant);
     partition.make_sparsity_pattern(dsp, all);
     for (const auto &dofs : row_dofs)
       all.add_entries_local_to_global(dofs, dsp, false);
+    for (unsigned int k = 0; k < differences.size(); ++k)
+      for (const auto &e : differences[k].second)
+        dsp.add_entries(e.first, correction_columns[k].begin(), correction_columns[k].end());
     dealii::SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
     dealii::TrilinosWrappers::SparseMatrix K;
     K.reinit(owned, owned, dsp, comm);
@@ -319,14 +372,79 @@ namespace dealvem
         local_rhs[0] = row_rhs[k];
         all.distribute_local_to_global(local, local_rhs, row_dofs[k], K, f);
       }
+    if (!differences.empty())
+      {
+        // Z^T K C = C^T K C + (Z - C)^T K C: this process's part of each
+        // slave's row of K C (its owned cells; the spring row on the owner)
+        // and of f - K c, times the difference of the lines
+        assembler->add_matrix_rows(correction_cells, slave_rows);
+        dealii::Vector<double> c(n), r(n);
+        all.distribute(c); // the inhomogeneities
+        assembler->add_residual(correction_cells, c, dealii::Utilities::MPI::this_mpi_process(comm) == 0, r);
+        for (const auto &d : differences)
+          {
+            const auto s   = d.first;
+            auto      &row = slave_rows[s];
+            double     rs  = r[s];
+            if (owned.is_element(s))
+              {
+                rs += b[s];
+                for (auto it = A.begin(s); it != A.end(s); ++it)
+                  {
+                    const auto j = it->column();
+                    if (j >= n)
+                      rs -= it->value() * known[j - n];
+                    else
+                      {
+                        row[j] += it->value();
+                        rs -= it->value() * c[j];
+                      }
+                  }
+              }
+            std::map<dealii::types::global_dof_index, double> condensed;
+            for (const auto &e : row)
+              if (all.is_constrained(e.first))
+                {
+                  for (const auto &l : *all.get_constraint_entries(e.first))
+                    condensed[l.first] += e.second * l.second;
+                }
+              else
+                condensed[e.first] += e.second;
+            std::vector<dealii::types::global_dof_index> cols;
+            std::vector<double>                          values;
+            for (const auto &e : condensed)
+              if (e.second != 0.)
+                {
+                  cols.push_back(e.first);
+                  values.push_back(e.second);
+                }
+            for (const auto &e : d.second)
+              {
+                std::vector<double> v(values);
+                for (auto &x : v)
+                  x *= e.second;
+                K.add(e.first, cols.size(), cols.data(), v.data());
+                f.add(std::vector<dealii::types::global_dof_index>{e.first}, std::vector<double>{e.second * rs});
+              }
+          }
+      }
     K.compress(dealii::VectorOperation::add);
     f.compress(dealii::VectorOperation::add);
 
-    // 3. the condensed solve
+    // 3. the condensed solve (GMRES instead of CG where slipping pairs make
+    //    the condensed matrix non-symmetric; KLU factors either)
     LinearSolver::Settings linear;
     linear.type = (settings.type == Type::cg_amg_constraints ? LinearSolver::Type::cg_amg : LinearSolver::Type::klu);
     linear.relative_tolerance = settings.relative_tolerance;
     linear.max_iterations     = settings.max_iterations;
+    linear.symmetric          = contact.is_symmetric();
+    used_gmres                = !contact.is_symmetric();
+    if (settings.warm_start && previous.size() == n && linear.type == LinearSolver::Type::cg_amg)
+      {
+        for (const auto i : owned)
+          u(i) = previous[i];
+        u.compress(dealii::VectorOperation::insert);
+      }
     used_stick_preconditioner = false;
     if (!stick_rows.empty() && settings.type == Type::cg_amg_constraints)
       {
@@ -334,10 +452,15 @@ namespace dealvem
         const DistributedStickPreconditioner preconditioner(K, all, contact.get_constraints(), stick_rows, modes,
                                                             length, partition, *assembler, comm);
         dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * f.l2_norm());
-        dealii::SolverCG<dealii::TrilinosWrappers::MPI::Vector> cg(control);
+        using Vector = dealii::TrilinosWrappers::MPI::Vector;
+        dealii::SolverCG<Vector>    cg(control);
+        dealii::SolverGMRES<Vector> gmres(control, dealii::SolverGMRES<Vector>::AdditionalData(100, true));
         try
           {
-            cg.solve(K, u, f, preconditioner);
+            if (used_gmres)
+              gmres.solve(K, u, f, preconditioner);
+            else
+              cg.solve(K, u, f, preconditioner);
           }
         catch (const dealii::SolverControl::NoConvergence &e)
           {
@@ -367,6 +490,8 @@ namespace dealvem
     dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(mine.data(), n), comm,
                                 dealii::ArrayView<double>(full.data(), n));
     all.distribute(full);
+    if (linear.type == LinearSolver::Type::cg_amg)
+      previous = full;
 
     // the residual rows the multipliers need: the slaves, and the DoFs
     // whose displacement constraint refers to a slave (their rows are
@@ -394,8 +519,6 @@ namespace dealvem
             folded[e.first].emplace_back(line.index, e.second);
           }
     std::vector<unsigned int> cells;
-    std::vector<dealii::types::global_dof_index> dof_indices;
-    const auto &dof_handler = assembler->get_dof_handler();
     for (const unsigned int c : partition.locally_owned_cells())
       {
         dof_handler.get_dof_indices(c, dof_indices);

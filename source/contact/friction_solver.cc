@@ -28,12 +28,6 @@ namespace dealvem
                 dealii::ExcMessage("FrictionSolver needs 'Tangential = coulomb' or 'coulomb penalty'."));
     AssertThrow(settings.normal == ContactSettings::Normal::unilateral,
                 dealii::ExcMessage("Coulomb friction needs unilateral normal contact ('Normal = unilateral')."));
-    AssertThrow(!SaddlePointSolver::is_condensed(solver.get_type()),
-                dealii::ExcMessage("Coulomb friction cannot use the '" + SaddlePointSolver::type_name(solver.get_type()) +
-                                   "' contact solver: the rows "
-                                   "of slipping pairs couple the tangential force to the normal multiplier, so "
-                                   "the system is not symmetric and cannot be condensed into an SPD problem. "
-                                   "Use Solver/Type = automatic, UMFPACK, KLU or GMRES-AMG."));
   }
 
 
@@ -108,6 +102,15 @@ namespace dealvem
         matrix.copy_from(system_matrix);
         rhs = system_rhs;
         contact.assemble_friction(constraints, result.state, reference, matrix, rhs);
+        if (!multipliers)
+          {
+            // the stick springs: the condensed solvers precondition them by
+            // tying their ends
+            std::vector<bool> sticking(n_pairs);
+            for (unsigned int i = 0; i < n_pairs; ++i)
+              sticking[i] = (result.state[i] == PairState::stick);
+            solver.set_stick_directions(contact.stick_penalty_rows(constraints, sticking));
+          }
         solver.set_context("Newton iteration " + std::to_string(it) + " of the friction solve");
         solver.solve(matrix, n, x, rhs);
         constraints.distribute(x);

@@ -244,6 +244,38 @@ namespace dealvem
 
   template <int dim>
   void
+  ElasticityAssembler<dim>::add_matrix_rows(
+    const std::vector<unsigned int>                                                              &cells,
+    std::map<dealii::types::global_dof_index, std::map<dealii::types::global_dof_index, double>> &rows) const
+  {
+    VEMValues<dim> vem_values(dof_handler);
+    vem_values.set_cell_similarity(cell_similarity);
+    ElasticityOperator<dim> elasticity;
+    for (const unsigned int c : cells)
+      {
+        vem_values.reinit(c);
+        const auto &indices = vem_values.get_dof_indices();
+        bool        needed  = false;
+        for (const auto d : indices)
+          needed = needed || rows.count(d) > 0;
+        if (!needed)
+          continue;
+        elasticity.reinit(vem_values.get_element(), get_material(c), gamma, stabilization);
+        const auto &K = elasticity.get_stiffness_matrix();
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          {
+            const auto row = rows.find(indices[i]);
+            if (row != rows.end())
+              for (unsigned int j = 0; j < indices.size(); ++j)
+                row->second[indices[j]] += K(i, j);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
   ElasticityAssembler<dim>::assemble_load_vector(dealii::Vector<double> &rhs) const
   {
     rhs.reinit(dof_handler.n_dofs());

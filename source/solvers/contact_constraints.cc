@@ -99,158 +99,60 @@ namespace dealvem
 
 
 
-  void
-  ContactConstraints::reinit(const dealii::SparseMatrix<double> &A,
-                             const unsigned int                  n_displacements,
-                             const dealii::Vector<double>       &b,
-                             const double                        length_scale,
-                             const double                        dependency_tolerance,
-                             const dealii::AffineConstraints<double> *displacement_constraints)
+  namespace
   {
-    AssertThrow(A.m() == A.n() && A.m() == b.size() && n_displacements <= A.m(),
-                dealii::ExcMessage("ContactConstraints: the saddle-point matrix must be square, of the size of "
-                                   "the right-hand side, with at most that many displacements."));
-    n = n_displacements;
-    m = A.m() - n;
-    constraints.clear();
-    constraint_rows.clear();
-    dependent_rows.clear();
-    slaves.clear();
-    inactive.clear();
+    /// The lines of a Gauss-Jordan elimination: every line in terms of DoFs
+    /// that are not slaves.
+    struct Elimination
+    {
+      std::vector<Line>                                           lines;
+      std::unordered_map<unsigned int, unsigned int>              line_of; // slave DoF -> line
+      std::unordered_map<unsigned int, std::vector<unsigned int>> users;   // DoF -> lines containing it
 
-    // the columns of B^T, from the displacement rows
-    std::vector<std::vector<std::pair<unsigned int, double>>> bt(m);
-    for (unsigned int i = 0; i < n; ++i)
-      for (auto it = A.begin(i); it != A.end(i); ++it)
-        if (it->column() >= n && it->value() != 0.)
-          bt[it->column() - n].emplace_back(i, it->value());
-
-    // classify the multiplier rows
-    std::vector<std::vector<std::pair<unsigned int, double>>> rows(m);
-    for (unsigned int r = 0; r < m; ++r)
+      /// @p row with the slaves so far substituted; the value subtracted
+      /// from the right-hand side, its scale and the rows it came from.
+      void
+      reduce(const std::vector<std::pair<unsigned int, double>> &row,
+             std::map<unsigned int, double>                     &reduced,
+             double                                             &rhs,
+             double                                             &scale,
+             std::set<unsigned int>                             &origin) const
       {
-        const unsigned int i        = n + r;
-        double             diagonal = 0, off_diagonal = 0, bmax = 0;
-        for (auto it = A.begin(i); it != A.end(i); ++it)
+        for (const auto &e : row)
           {
-            const auto j = it->column();
-            if (it->value() == 0.)
-              continue;
-            if (j < n)
-              {
-                rows[r].emplace_back(j, it->value());
-                bmax = std::max(bmax, std::abs(it->value()));
-              }
-            else if (j == i)
-              diagonal = it->value();
-            else
-              off_diagonal = std::max(off_diagonal, std::abs(it->value()));
-          }
-        std::sort(rows[r].begin(), rows[r].end());
-        const std::string which = "multiplier row " + std::to_string(r) + " (unknown " + std::to_string(i) + ")";
-        AssertThrow(off_diagonal == 0.,
-                    dealii::ExcMessage("Condensed contact constraints: " + which +
-                                       " couples multipliers with each other (as the slip rows of Coulomb friction "
-                                       "do): the system is not a set of linear constraints on a symmetric problem. "
-                                       "Use the UMFPACK, KLU or GMRES-AMG contact solver."));
-        if (rows[r].empty())
-          {
-            AssertThrow(diagonal != 0.,
-                        dealii::ExcMessage("Condensed contact constraints: " + which +
-                                           " is zero: the saddle-point matrix is singular."));
-            inactive.emplace_back(r, b[i] / diagonal);
-            continue;
-          }
-        AssertThrow(diagonal == 0.,
-                    dealii::ExcMessage("Condensed contact constraints: " + which +
-                                       " has both displacement entries and a diagonal entry: not a constraint row."));
-        bool symmetric = (bt[r].size() == rows[r].size());
-        for (unsigned int k = 0; symmetric && k < rows[r].size(); ++k)
-          symmetric = (bt[r][k].first == rows[r][k].first &&
-                       std::abs(bt[r][k].second - rows[r][k].second) <= 1e-12 * bmax);
-        AssertThrow(symmetric,
-                    dealii::ExcMessage("Condensed contact constraints: the force column of " + which +
-                                       " is not the constraint row (a non-symmetric coupling, as the slip rows of "
-                                       "Coulomb friction give). Use the UMFPACK, KLU or GMRES-AMG contact solver."));
-        constraint_rows.push_back(r);
-      }
-    bt.clear();
-
-    // a DoF can be a slave if its row of K couples to other DoFs (DoFs
-    // condensed by the displacement constraints have decoupled rows)
-    const auto eligible = [&](const unsigned int j) {
-      if (displacement_constraints != nullptr)
-        return !displacement_constraints->is_constrained(j);
-      for (auto it = A.begin(j); it != A.end(j); ++it)
-        if (it->column() < n && it->column() != j && it->value() != 0.)
-          return true;
-      return false;
-    };
-
-    // Gauss-Jordan elimination with partial pivoting per row
-    std::vector<Line>                                          lines;
-    std::unordered_map<unsigned int, unsigned int>             line_of; // slave DoF -> line
-    std::unordered_map<unsigned int, std::vector<unsigned int>> users;  // DoF -> lines containing it
-    const double                                               abs_floor = 1e-12 * length_scale;
-    for (const unsigned int r : constraint_rows)
-      {
-        std::map<unsigned int, double> row;
-        double                         rhs = b[n + r], scale = std::abs(b[n + r]), norm = 0;
-        std::set<unsigned int>         origin;
-        for (const auto &e : rows[r])
-          {
-            norm          = std::max(norm, std::abs(e.second));
             const auto li = line_of.find(e.first);
             if (li == line_of.end())
-              row[e.first] += e.second;
+              reduced[e.first] += e.second;
             else
               {
                 const Line &l = lines[li->second];
                 for (const auto &le : l.entries)
-                  row[le.first] += e.second * le.second;
+                  reduced[le.first] += e.second * le.second;
                 rhs -= e.second * l.inhomogeneity;
                 scale += std::abs(e.second) * (std::abs(l.inhomogeneity) + l.scale);
                 origin.insert(l.rows.begin(), l.rows.end());
               }
           }
-        unsigned int pivot = dealii::numbers::invalid_unsigned_int;
-        double       best  = 0;
-        for (const auto &e : row)
-          if (std::abs(e.second) > best && eligible(e.first))
-            {
-              best  = std::abs(e.second);
-              pivot = e.first;
-            }
-        if (best <= dependency_tolerance * norm)
-          {
-            std::string on;
-            for (const auto o : origin)
-              on += (on.empty() ? "" : ", ") + std::to_string(o);
-            AssertThrow(std::abs(rhs) <= 1e-10 * scale + abs_floor,
-                        dealii::ExcMessage(
-                          "Inconsistent redundant contact constraints: multiplier row " + std::to_string(r) +
-                          " is a linear combination of the constraint rows {" + on +
-                          "} (ContactAssembler numbers the normal constraint of pair i as row i and the "
-                          "tangential one, if any, as row n_pairs + i; the rows include the Dirichlet/roller constraints condensed into them), but its "
-                          "right-hand side differs from theirs by " + to_string(rhs) + " (values of size " +
-                          to_string(scale) + " entered it): the contact gaps and the prescribed displacements "
-                          "cannot all hold. Check the Dirichlet, roller and point constraints on the nodes of "
-                          "these contact pairs."));
-            dependent_rows.push_back(r);
-            continue;
-          }
-        // the new line u_p = (rhs - sum_{j != p} row_j u_j) / row_p
-        Line l;
-        l.slave             = pivot;
-        const double a      = row[pivot];
-        l.inhomogeneity     = rhs / a;
-        l.scale             = scale / std::abs(a);
-        l.rows              = origin;
-        l.rows.insert(r);
+      }
+
+      /// Add the line u_p = (rhs - sum_{j != p} row_j u_j) / row_p and
+      /// substitute it into the lines that use the pivot p.
+      void
+      add(const std::map<unsigned int, double> &row,
+          const unsigned int                    pivot,
+          const double                          rhs,
+          const double                          scale,
+          std::set<unsigned int>                origin)
+      {
+        Line         l;
+        l.slave         = pivot;
+        const double a  = row.at(pivot);
+        l.inhomogeneity = rhs / a;
+        l.scale         = scale / std::abs(a);
+        l.rows          = std::move(origin);
         for (const auto &e : row)
           if (e.first != pivot && e.second != 0.)
             l.entries[e.first] = -e.second / a;
-        // substitute it into the lines that use the pivot
         const auto us = users.find(pivot);
         if (us != users.end())
           {
@@ -267,8 +169,7 @@ namespace dealvem
                 lt.entries.erase(pe);
                 for (const auto &e : l.entries)
                   {
-                    double &v = lt.entries[e.first];
-                    v += c * e.second;
+                    lt.entries[e.first] += c * e.second;
                     users[e.first].push_back(t);
                   }
                 lt.inhomogeneity += c * l.inhomogeneity;
@@ -283,10 +184,228 @@ namespace dealvem
           users[e.first].push_back(index);
         line_of[pivot] = index;
         lines.push_back(std::move(l));
+      }
+    };
+  } // namespace
+
+
+
+  void
+  ContactConstraints::reinit(const dealii::SparseMatrix<double> &A,
+                             const unsigned int                  n_displacements,
+                             const dealii::Vector<double>       &b,
+                             const double                        length_scale,
+                             const double                        dependency_tolerance,
+                             const dealii::AffineConstraints<double> *displacement_constraints)
+  {
+    AssertThrow(A.m() == A.n() && A.m() == b.size() && n_displacements <= A.m(),
+                dealii::ExcMessage("ContactConstraints: the saddle-point matrix must be square, of the size of "
+                                   "the right-hand side, with at most that many displacements."));
+    n = n_displacements;
+    m = A.m() - n;
+    constraints.clear();
+    test_constraints.clear();
+    test_lines.clear();
+    constraint_rows.clear();
+    dependent_rows.clear();
+    slaves.clear();
+    inactive.clear();
+    tied.clear();
+    symmetric = true;
+
+    // the columns of B^T, from the displacement rows
+    std::vector<std::vector<std::pair<unsigned int, double>>> bt(m);
+    for (unsigned int i = 0; i < n; ++i)
+      for (auto it = A.begin(i); it != A.end(i); ++it)
+        if (it->column() >= n && it->value() != 0.)
+          bt[it->column() - n].emplace_back(i, it->value());
+
+    // classify the multiplier rows: constraint rows (displacement entries,
+    // no D entries), known rows (diagonal only) and tied rows (diagonal and
+    // couplings to other multipliers)
+    std::vector<std::vector<std::pair<unsigned int, double>>> rows(m), couplings(m);
+    std::vector<double>                                       diagonal(m, 0.), bmax(m, 0.);
+    for (unsigned int r = 0; r < m; ++r)
+      {
+        const unsigned int i = n + r;
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          {
+            const auto j = it->column();
+            if (it->value() == 0.)
+              continue;
+            if (j < n)
+              {
+                rows[r].emplace_back(j, it->value());
+                bmax[r] = std::max(bmax[r], std::abs(it->value()));
+              }
+            else if (j == i)
+              diagonal[r] = it->value();
+            else
+              couplings[r].emplace_back(j - n, it->value());
+          }
+        std::sort(rows[r].begin(), rows[r].end());
+        const std::string which = "multiplier row " + std::to_string(r) + " (unknown " + std::to_string(i) + ")";
+        if (rows[r].empty())
+          {
+            AssertThrow(diagonal[r] != 0.,
+                        dealii::ExcMessage("Condensed contact constraints: " + which +
+                                           (couplings[r].empty() ? " is zero" : " has no diagonal entry") +
+                                           ": the saddle-point matrix is singular."));
+          }
+        else
+          {
+            AssertThrow(diagonal[r] == 0. && couplings[r].empty(),
+                        dealii::ExcMessage("Condensed contact constraints: " + which +
+                                           " has both displacement entries and entries of the multiplier block: "
+                                           "not a constraint row."));
+          }
+      }
+    std::vector<double> known(m, 0.);
+    std::vector<bool>   is_known(m, false);
+    for (unsigned int r = 0; r < m; ++r)
+      if (rows[r].empty() && couplings[r].empty())
+        {
+          known[r]    = b[n + r] / diagonal[r];
+          is_known[r] = true;
+          inactive.emplace_back(r, known[r]);
+        }
+    // the test columns: B^T's own, plus the columns of the tied multipliers
+    // that depend on it (a slipping pair's friction force -mu sigma lambda_n
+    // acts along the tangent)
+    std::vector<std::map<unsigned int, double>> test(m);
+    for (unsigned int r = 0; r < m; ++r)
+      if (!rows[r].empty())
+        for (const auto &e : bt[r])
+          test[r][e.first] += e.second;
+    for (unsigned int r = 0; r < m; ++r)
+      if (rows[r].empty() && !couplings[r].empty())
+        {
+          Tied t;
+          t.row   = r;
+          t.value = b[n + r] / diagonal[r];
+          for (const auto &c : couplings[r])
+            {
+              const double factor = -c.second / diagonal[r];
+              if (is_known[c.first])
+                t.value += factor * known[c.first];
+              else
+                {
+                  AssertThrow(!rows[c.first].empty(),
+                              dealii::ExcMessage("Condensed contact constraints: multiplier row " +
+                                                 std::to_string(r) + " couples to the multiplier of row " +
+                                                 std::to_string(c.first) +
+                                                 ", which is itself coupled to further multipliers: only one "
+                                                 "level of multiplier couplings (a friction force proportional "
+                                                 "to a normal force) can be condensed."));
+                  t.entries.emplace_back(c.first, factor);
+                  for (const auto &e : bt[r])
+                    test[c.first][e.first] += factor * e.second;
+                }
+            }
+          tied.push_back(std::move(t));
+        }
+    std::vector<bool> row_symmetric(m, true);
+    for (unsigned int r = 0; r < m; ++r)
+      if (!rows[r].empty())
+        {
+          bool same = (test[r].size() == rows[r].size());
+          auto te   = test[r].begin();
+          for (unsigned int k = 0; same && k < rows[r].size(); ++k, ++te)
+            same = (te->first == rows[r][k].first && std::abs(te->second - rows[r][k].second) <= 1e-12 * bmax[r]);
+          row_symmetric[r] = same;
+          symmetric        = symmetric && same;
+          constraint_rows.push_back(r);
+        }
+    bt.clear();
+
+    // a DoF can be a slave if its row of K couples to other DoFs (DoFs
+    // condensed by the displacement constraints have decoupled rows)
+    const auto eligible = [&](const unsigned int j) {
+      if (displacement_constraints != nullptr)
+        return !displacement_constraints->is_constrained(j);
+      for (auto it = A.begin(j); it != A.end(j); ++it)
+        if (it->column() < n && it->column() != j && it->value() != 0.)
+          return true;
+      return false;
+    };
+
+    // Gauss-Jordan elimination with partial pivoting per row; with
+    // non-symmetric rows the test rows are eliminated alongside with the
+    // same slaves (Petrov-Galerkin condensation)
+    Elimination  trial, test_elimination;
+    const double abs_floor = 1e-12 * length_scale;
+    for (const unsigned int r : constraint_rows)
+      {
+        std::map<unsigned int, double> row, test_row;
+        double                         rhs = b[n + r], scale = std::abs(b[n + r]);
+        std::set<unsigned int>         origin;
+        trial.reduce(rows[r], row, rhs, scale, origin);
+        if (!symmetric)
+          {
+            double                 unused_rhs = 0, unused_scale = 0;
+            std::set<unsigned int> unused_origin;
+            const std::vector<std::pair<unsigned int, double>> t(test[r].begin(), test[r].end());
+            test_elimination.reduce(t, test_row, unused_rhs, unused_scale, unused_origin);
+          }
+        double test_norm = 0;
+        for (const auto &e : test[r])
+          test_norm = std::max(test_norm, std::abs(e.second));
+        unsigned int pivot = dealii::numbers::invalid_unsigned_int;
+        double       best = 0, best_score = 0;
+        for (const auto &e : row)
+          if (eligible(e.first))
+            {
+              best = std::max(best, std::abs(e.second));
+              // symmetric: the largest entry; otherwise the largest product
+              // of the trial and the test entry
+              double score = std::abs(e.second);
+              if (!symmetric)
+                {
+                  const auto te = test_row.find(e.first);
+                  score *= (te == test_row.end() ? 0. : std::abs(te->second));
+                }
+              if (score > best_score)
+                {
+                  best_score = score;
+                  pivot      = e.first;
+                }
+            }
+        if (best <= dependency_tolerance * bmax[r])
+          {
+            std::string on;
+            for (const auto o : origin)
+              on += (on.empty() ? "" : ", ") + std::to_string(o);
+            AssertThrow(std::abs(rhs) <= 1e-10 * scale + abs_floor,
+                        dealii::ExcMessage(
+                          "Inconsistent redundant contact constraints: multiplier row " + std::to_string(r) +
+                          " is a linear combination of the constraint rows {" + on +
+                          "} (ContactAssembler numbers the normal constraint of pair i as row i and the "
+                          "tangential one, if any, as row n_pairs + i; the rows include the Dirichlet/roller constraints condensed into them), but its "
+                          "right-hand side differs from theirs by " + to_string(rhs) + " (values of size " +
+                          to_string(scale) + " entered it): the contact gaps and the prescribed displacements "
+                          "cannot all hold. Check the Dirichlet, roller and point constraints on the nodes of "
+                          "these contact pairs."));
+            AssertThrow(row_symmetric[r],
+                        dealii::ExcMessage("Condensed contact constraints: multiplier row " + std::to_string(r) +
+                                           " is a linear combination of the constraint rows {" + on +
+                                           "} and carries a friction force (a slipping pair): the condensed "
+                                           "solvers cannot split its force among the dependent rows. Use "
+                                           "Solver/Type = UMFPACK or KLU for this model."));
+            dependent_rows.push_back(r);
+            continue;
+          }
+        AssertThrow(symmetric || best_score > dependency_tolerance * best * test_norm,
+                    dealii::ExcMessage("Condensed contact constraints: multiplier row " + std::to_string(r) +
+                                       " (a slipping pair) has no DoF where both its constraint and its "
+                                       "friction-force direction are non-zero after the rows before it were "
+                                       "eliminated. Use Solver/Type = UMFPACK or KLU for this model."));
+        if (!symmetric)
+          test_elimination.add(test_row, pivot, 0., 0., {});
+        trial.add(row, pivot, rhs, scale, origin);
         slaves.emplace_back(r, pivot);
       }
 
-    for (const auto &l : lines)
+    for (const auto &l : trial.lines)
       {
         constraints.add_line(l.slave);
         for (const auto &e : l.entries)
@@ -294,6 +413,27 @@ namespace dealvem
         constraints.set_inhomogeneity(l.slave, l.inhomogeneity);
       }
     constraints.close();
+    if (!symmetric)
+      {
+        for (const auto &l : test_elimination.lines)
+          {
+            test_constraints.add_line(l.slave);
+            for (const auto &e : l.entries)
+              test_constraints.add_entry(l.slave, e.first, e.second);
+            // the difference to the trial line: where the Petrov-Galerkin
+            // condensation departs from the symmetric one
+            std::map<unsigned int, double> difference(l.entries.begin(), l.entries.end());
+            for (const auto &e : trial.lines[trial.line_of.at(l.slave)].entries)
+              difference[e.first] -= e.second;
+            std::vector<std::pair<unsigned int, double>> d;
+            for (const auto &e : difference)
+              if (e.second != 0.)
+                d.emplace_back(e.first, e.second);
+            if (!d.empty())
+              test_lines.emplace_back(l.slave, std::move(d));
+          }
+        test_constraints.close();
+      }
   }
 
 
@@ -306,13 +446,19 @@ namespace dealvem
                                dealii::Vector<double>             &f) const
   {
     AssertDimension(A.m(), n + m);
-    // multiplier values of the inactive rows (their forces go to the rhs)
+    // multiplier values of the inactive rows and the constant parts of the
+    // tied ones (their forces go to the rhs)
     std::vector<double> lambda(m, 0.);
     std::vector<bool>   known(m, false);
     for (const auto &in : inactive)
       {
         lambda[in.first] = in.second;
         known[in.first]  = true;
+      }
+    for (const auto &t : tied)
+      {
+        lambda[t.row] = t.value;
+        known[t.row]  = true;
       }
 
     // the master DoFs of each slave, and the slaves of each master
@@ -354,6 +500,10 @@ namespace dealvem
         for (const auto &e : *line[s.second])
           add_row_of(e.first, s.second);
       }
+    // Petrov-Galerkin: the test masters of a slave get its row too
+    for (const auto &t : test_lines)
+      for (const auto &e : t.second)
+        add_row_of(e.first, t.first);
     for (auto &x : extra)
       {
         std::sort(x.second.begin(), x.second.end());
@@ -408,6 +558,40 @@ namespace dealvem
           }
       }
     constraints.condense(K, f);
+
+    // Z^T K C = C^T K C + (Z - C)^T K C: the test lines that differ from
+    // the trial lines (slipping pairs) add their difference times the
+    // slave's row of K C (and of f - K c) to the masters
+    for (const auto &t : test_lines)
+      {
+        const unsigned int             s = t.first;
+        std::map<unsigned int, double> row;
+        double                         rs = b[s];
+        for (auto it = A.begin(s); it != A.end(s); ++it)
+          {
+            const auto j = it->column();
+            if (j >= n)
+              {
+                if (known[j - n])
+                  rs -= it->value() * lambda[j - n];
+                continue;
+              }
+            if (line[j] == nullptr)
+              row[j] += it->value();
+            else
+              {
+                for (const auto &e : *line[j])
+                  row[e.first] += it->value() * e.second;
+                rs -= it->value() * constraints.get_inhomogeneity(j);
+              }
+          }
+        for (const auto &d : t.second)
+          {
+            for (const auto &e : row)
+              K.add(d.first, e.first, d.second * e.second);
+            f[d.first] += d.second * rs;
+          }
+      }
   }
 
 
@@ -425,12 +609,18 @@ namespace dealvem
     for (unsigned int i = 0; i < n; ++i)
       x[i] = u[i];
     std::vector<bool> known(m, false);
+    std::vector<int>  tied_of(m, -1);
     for (unsigned int r = 0; r < m; ++r)
       x[n + r] = 0;
     for (const auto &in : inactive)
       {
         x[n + in.first] = in.second;
         known[in.first] = true;
+      }
+    for (unsigned int k = 0; k < tied.size(); ++k)
+      {
+        x[n + tied[k].row] = tied[k].value;
+        tied_of[tied[k].row] = k;
       }
     if (constraint_rows.empty())
       return;
@@ -454,6 +644,15 @@ namespace dealvem
               v -= it->value() * u[j];
             else if (known[j - n])
               v -= it->value() * x[j];
+            else if (tied_of[j - n] >= 0)
+              {
+                // a tied multiplier: its constant part is known, the rest
+                // acts through the multipliers it follows
+                v -= it->value() * x[j];
+                for (const auto &e : tied[tied_of[j - n]].entries)
+                  if (column[e.first] >= 0)
+                    M[k].emplace_back(column[e.first], e.second * it->value());
+              }
             else if (column[j - n] >= 0 && it->value() != 0.)
               M[k].emplace_back(column[j - n], it->value());
           }
@@ -504,5 +703,8 @@ namespace dealvem
       for (unsigned int k = 0; k < n_s; ++k)
         for (const auto &e : M[k])
           x[n + constraint_rows[e.first]] += e.second * y[k];
+    for (const auto &t : tied)
+      for (const auto &e : t.entries)
+        x[n + t.row] += e.second * x[n + e.first];
   }
 } // namespace dealvem

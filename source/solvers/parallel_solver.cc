@@ -6,6 +6,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -164,10 +165,11 @@ namespace dealvem
     const std::string where = " on " + std::to_string(n_processes) + " MPI process" + (n_processes > 1 ? "es" : "");
     if (settings.type != LinearSolver::Type::cg_amg)
       return "KLU (Trilinos Amesos, direct, factored on one process)" + where;
+    const std::string krylov = settings.symmetric ? "CG" : "GMRES";
     if (used_p_multigrid)
-      return "CG + two-level p-multigrid (Chebyshev(" + std::to_string(settings.smoother_degree) +
+      return krylov + " + two-level p-multigrid (Chebyshev(" + std::to_string(settings.smoother_degree) +
              ") on k = 2, ML AMG on the Galerkin k = 1 level)" + where;
-    return "CG + ML AMG (" + std::to_string(local_modes.size() == 3 ? 3 : 2) + " near-null-space vectors)" + where;
+    return krylov + " + ML AMG (" + std::to_string(local_modes.size() == 3 ? 3 : 2) + " near-null-space vectors)" + where;
   }
 
 
@@ -263,17 +265,20 @@ namespace dealvem
           }
         setup_time = timer.wall_time();
         dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * b.l2_norm());
-        dealii::SolverCG<dealii::TrilinosWrappers::MPI::Vector> cg(control);
+        using Vector = dealii::TrilinosWrappers::MPI::Vector;
+        dealii::SolverCG<Vector>    cg(control);
+        dealii::SolverGMRES<Vector> gmres(control, dealii::SolverGMRES<Vector>::AdditionalData(100, true));
+        const std::string           krylov = settings.symmetric ? "CG" : "GMRES";
         try
           {
             if (used_p_multigrid)
-              cg.solve(A, x, b, *two_level);
+              settings.symmetric ? cg.solve(A, x, b, *two_level) : gmres.solve(A, x, b, *two_level);
             else
-              cg.solve(A, x, b, amg);
+              settings.symmetric ? cg.solve(A, x, b, amg) : gmres.solve(A, x, b, amg);
           }
         catch (const dealii::SolverControl::NoConvergence &e)
           {
-            AssertThrow(false, dealii::ExcMessage(std::string(used_p_multigrid ? "CG with p-multigrid" : "CG-AMG") +
+            AssertThrow(false, dealii::ExcMessage(krylov + std::string(used_p_multigrid ? " with p-multigrid" : "-AMG") +
                                                   " did not converge: residual " +
                                                   std::to_string(e.last_residual) + " after " +
                                                   std::to_string(e.last_step) + " iterations (target " +
@@ -307,7 +312,7 @@ namespace dealvem
           const double relative = (b_norm > 0 ? r_norm / b_norm : r_norm);
           if (relative <= 10 * settings.relative_tolerance && std::isfinite(relative))
             return;
-          msg << "The iterative solve (CG, " << n_processes << " MPI processes) is inaccurate: its residual |b - Ax| / |b| is "
+          msg << "The iterative solve (" << (settings.symmetric ? "CG" : "GMRES") << ", " << n_processes << " MPI processes) is inaccurate: its residual |b - Ax| / |b| is "
               << relative << ", more than 10 times its relative tolerance " << settings.relative_tolerance
               << ", and its normwise backward error " << eta << " exceeds 1e-10.";
         }

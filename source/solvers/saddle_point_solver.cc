@@ -102,12 +102,15 @@ namespace dealvem
     if (settings.type == Type::gmres_amg)
       return "GMRES + block preconditioner (ML AMG on K + rho B^T B, exact approximate Schur complement)";
     if (settings.type == Type::cg_amg_constraints)
-      return "CG + ML AMG on the stiffness condensed by the active contact constraints (one slave DoF per "
+      return std::string(used_gmres ? "GMRES" : "CG") +
+             " + ML AMG on the stiffness condensed by the active contact constraints (one slave DoF per "
              "constraint, multipliers from the residual" +
+             std::string(used_gmres ? "; slipping pairs: Petrov-Galerkin condensation, not symmetric" : "") +
              std::string(used_stick_preconditioner ? "; stick springs preconditioned by tying them" : "") + ")";
     if (settings.type == Type::direct_constraints)
-      return std::string(used_lu_fallback ? "UMFPACK LU (the condensed matrix is not positive definite)"
-                                          : "CHOLMOD Cholesky") +
+      return std::string(used_gmres       ? "UMFPACK LU (slipping pairs: the condensed matrix is not symmetric)" :
+                         used_lu_fallback ? "UMFPACK LU (the condensed matrix is not positive definite)" :
+                                            "CHOLMOD Cholesky") +
              " of the stiffness condensed by the active contact constraints (one slave DoF per constraint, "
              "multipliers from the residual)";
     return type_name(settings.type) + " (direct, whole saddle-point matrix)";
@@ -331,66 +334,84 @@ namespace dealvem
         n_dropped = contact.get_dependent_rows().size();
         dealii::SparsityPattern      sparsity;
         dealii::SparseMatrix<double> K;
-        dealii::Vector<double>       f, u;
+        dealii::Vector<double>       f;
         contact.condense(A, b, sparsity, K, f);
+        used_gmres = !contact.is_symmetric();
+        dealii::Vector<double> u(n_displacements);
         if (settings.type == Type::direct_constraints)
           {
+            // Cholesky of the symmetric condensed stiffness; LU where it is
+            // not positive definite, or not symmetric (slipping pairs)
             if (!cholesky)
               cholesky = std::make_shared<internal::SparseCholesky>();
-            auto &factor     = *cholesky;
-            used_lu_fallback = !factor.factorize(K);
-            u.reinit(n_displacements);
+            used_lu_fallback = used_gmres || !cholesky->factorize(K);
             if (used_lu_fallback)
               internal::solve_direct(K, u, f, false);
             else
-              factor.solve(u, f);
+              cholesky->solve(u, f);
             iterations = 1;
-            for (unsigned int i = 0; i < n_displacements; ++i)
-              x[i] = u[i];
-            contact.distribute_and_recover_multipliers(A, b, x);
-            stick_rows.clear();
           }
-        else if (!stick_rows.empty())
+        else
           {
-            // stick by penalty: CG on the condensed matrix with the
-            // two-subspace preconditioner
-            const StickPreconditioner preconditioner(K, contact.get_constraints(), stick_rows, modes, length);
+            // CG (GMRES when slipping pairs make the condensed matrix
+            // non-symmetric) with ML AMG, or with the two-subspace
+            // preconditioner of the stick springs
+            if (settings.warm_start && previous.size() == n_displacements)
+              u = previous;
+            std::unique_ptr<StickPreconditioner>      stick;
+            dealii::TrilinosWrappers::SparseMatrix    Kt;
+            Teuchos::ParameterList                    list;
+            std::vector<double>                       null_space;
+            dealii::TrilinosWrappers::PreconditionAMG amg;
+            if (!stick_rows.empty())
+              stick = std::make_unique<StickPreconditioner>(K, contact.get_constraints(), stick_rows, modes, length);
+            else
+              {
+                Kt.reinit(K);
+                internal::set_ml_parameters(&list, modes, K.m(), null_space);
+                amg.initialize(Kt.trilinos_matrix(), list);
+              }
+            used_stick_preconditioner = (stick != nullptr);
             dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * f.l2_norm());
-            dealii::SolverCG<dealii::Vector<double>> cg(control);
-            u.reinit(n_displacements);
             try
               {
-                cg.solve(K, u, f, preconditioner);
+                if (used_gmres)
+                  {
+                    dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(100, true);
+                    dealii::SolverGMRES<dealii::Vector<double>> gmres(control, data);
+                    if (stick)
+                      gmres.solve(K, u, f, *stick);
+                    else
+                      gmres.solve(K, u, f, amg);
+                  }
+                else
+                  {
+                    dealii::SolverCG<dealii::Vector<double>> cg(control);
+                    if (stick)
+                      cg.solve(K, u, f, *stick);
+                    else
+                      cg.solve(K, u, f, amg);
+                  }
               }
             catch (const dealii::SolverControl::NoConvergence &e)
               {
                 AssertThrow(false,
-                            dealii::ExcMessage("CG-AMG constraints (stick penalty) did not converge: residual " +
+                            dealii::ExcMessage(std::string(used_gmres ? "GMRES" : "CG") +
+                                               "-AMG on the condensed contact problem" +
+                                               (stick ? " (stick penalty)" : "") + " did not converge: residual " +
                                                std::to_string(e.last_residual) + " after " +
                                                std::to_string(e.last_step) + " iterations (target " +
                                                std::to_string(control.tolerance()) + ")."));
               }
-            iterations                = control.last_step();
-            used_stick_preconditioner = true;
-            for (unsigned int i = 0; i < n_displacements; ++i)
-              x[i] = u[i];
-            contact.distribute_and_recover_multipliers(A, b, x);
-            stick_rows.clear();
+            iterations = control.last_step();
+            previous   = u;
+            internal::check_residual(K, u, f, settings.relative_tolerance,
+                                     description() + (context.empty() ? "" : ", " + context));
           }
-        else
-          {
-        LinearSolver::Settings linear;
-        linear.type               = LinearSolver::Type::cg_amg;
-        linear.relative_tolerance = settings.relative_tolerance;
-        linear.max_iterations     = settings.max_iterations;
-        LinearSolver cg(linear);
-        cg.set_near_null_space(modes);
-        cg.solve(K, u, f);
-        iterations = cg.last_iterations();
+        stick_rows.clear();
         for (unsigned int i = 0; i < n_displacements; ++i)
           x[i] = u[i];
         contact.distribute_and_recover_multipliers(A, b, x);
-          }
       }
     else if (settings.type != Type::gmres_amg)
       {

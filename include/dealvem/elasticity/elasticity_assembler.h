@@ -162,6 +162,18 @@ namespace dealvem
                  const bool                       with_nodal_loads,
                  dealii::Vector<double>          &r) const;
 
+    /**
+     * Add the rows of the unconstrained cell stiffness matrices of the cells
+     * @p cells to @p rows: for every key d of @p rows (a DoF) and every cell
+     * with the DoF d, rows[d][j] += K_c(d, j). The distributed contact solve
+     * uses it for the Petrov-Galerkin correction of slipping pairs (the row
+     * of the stiffness at a slave DoF, ContactConstraints).
+     */
+    void
+    add_matrix_rows(
+      const std::vector<unsigned int>                                                              &cells,
+      std::map<dealii::types::global_dof_index, std::map<dealii::types::global_dof_index, double>> &rows) const;
+
     /// Assemble only the (unconstrained) load vector: body force and
     /// boundary loads.
     void

@@ -26,21 +26,38 @@ namespace dealvem
    *
    * The multiplier rows are classified from the matrix:
    * - <b>constraint rows</b>: a non-zero row of $B$ and a zero row of $D$;
-   *   the equation $B_r u = g_r$ is enforced and the column of $B^T$ must be
-   *   the row of $B$ (symmetric coupling);
+   *   the equation $B_r u = g_r$ is enforced;
    * - <b>inactive rows</b>: a zero row of $B$ and only a diagonal entry in
    *   $D$: $\lambda_r = g_r / D_{rr}$ (zero for the contact assembler's
    *   $\lambda = 0$ rows);
-   * - anything else (a row of $D$ with off-diagonal entries, or a column
-   *   of $B^T$ that differs from the row of $B$, as the slip rows of
-   *   Coulomb friction give) is not a set of linear constraints of a
-   *   symmetric problem: reinit() throws, naming the row.
+   * - <b>tied rows</b>: a zero row of $B$, a diagonal entry and couplings
+   *   to constraint rows $q$ in $D$: $\lambda_r = (g_r - \sum_q D_{rq}
+   *   \lambda_q)/D_{rr}$, the friction force of a slipping pair,
+   *   $\lambda_t = -\mu\sigma\lambda_n$ (ContactAssembler::assemble_friction());
+   * - anything else (a row with both $B$ and $D$ entries, a tied row that
+   *   follows another tied row) throws, naming the row.
+   *
+   * <b>Test and trial spaces.</b> The force of constraint row $q$ acts on
+   * the displacements along its <em>test column</em>: its column of $B^T$
+   * plus $-D_{rq}/D_{rr}$ times the columns of the tied rows $r$ that
+   * follow it. Where every test column is the row of $B$ (frictionless
+   * contact, sticking pairs) the problem is symmetric and the condensed
+   * matrix is $C^T K C$ for the slave lines $u = C\tilde u + c$. A slipping
+   * pair's test column $B_n^T - \mu\sigma B_t^T$ differs from its row
+   * $B_n$: then the test functions are condensed by their own lines
+   * $v = Z\tilde v$ (the kernel of the test columns, same slave DoFs, found
+   * by the same elimination on the test rows) and the condensed matrix is
+   * the Petrov-Galerkin product $Z^T K C$, no longer symmetric
+   * (is_symmetric() is false), computed as
+   * $C^T K C + (Z - C)^T K C$: only the slaves whose two lines differ add a
+   * correction, their row of $K C$ times the difference of the lines.
    *
    * <b>Choice of the slave DoFs.</b> The constraint rows are taken in order
    * and reduced by the constraints found so far (Gauss-Jordan: every line
    * is kept in terms of DoFs that are not slaves). In the reduced row the
    * eligible entry of largest magnitude (partial pivoting) gives the slave
-   * DoF; eligible are DoFs that are not yet slaves and whose row of $K$ has
+   * DoF (with non-symmetric rows: the largest product of the reduced trial
+   * and test entries, so that both pivots are non-zero); eligible are DoFs that are not yet slaves and whose row of $K$ has
    * an off-diagonal entry (a DoF condensed by a Dirichlet or roller
    * constraint has a zero column in $B$ and a decoupled row in $K$). So the
    * slaves are distinct, not fixed by the displacement constraints, and the
@@ -164,6 +181,59 @@ namespace dealvem
       return inactive;
     }
 
+    /// A multiplier that follows constraint multipliers:
+    /// $\lambda_r = $ value $+ \sum$ entries$_q \lambda_q$.
+    struct Tied
+    {
+      unsigned int                                 row = 0;
+      double                                       value = 0;
+      std::vector<std::pair<unsigned int, double>> entries;
+    };
+
+    const std::vector<Tied> &
+    get_tied_rows() const
+    {
+      return tied;
+    }
+
+    /// The multipliers known before the solve: the inactive ones and the
+    /// constant parts of the tied ones (zero elsewhere), m entries. Their
+    /// forces belong to the right-hand side of the condensed problem.
+    std::vector<double>
+    known_multipliers() const
+    {
+      std::vector<double> lambda(m, 0.);
+      for (const auto &in : inactive)
+        lambda[in.first] = in.second;
+      for (const auto &t : tied)
+        lambda[t.row] = t.value;
+      return lambda;
+    }
+
+    /// Whether every test column is its constraint row (no slipping pair):
+    /// then the condensed matrix is symmetric.
+    bool
+    is_symmetric() const
+    {
+      return symmetric;
+    }
+
+    /// The test lines (homogeneous, the same slaves as get_constraints());
+    /// empty when is_symmetric().
+    const dealii::AffineConstraints<double> &
+    get_test_constraints() const
+    {
+      return test_constraints;
+    }
+
+    /// Per slave whose test line differs from its trial line: the slave and
+    /// the difference of the lines (test minus trial coefficients).
+    const std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>> &
+    get_line_differences() const
+    {
+      return test_lines;
+    }
+
   private:
     unsigned int                                     n = 0;
     unsigned int                                     m = 0;
@@ -174,6 +244,10 @@ namespace dealvem
     std::vector<std::pair<unsigned int, unsigned int>> slaves;
     /// Inactive rows and their multiplier values.
     std::vector<std::pair<unsigned int, double>>      inactive;
+    std::vector<Tied>                                 tied;
+    bool                                              symmetric = true;
+    dealii::AffineConstraints<double>                 test_constraints;
+    std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>> test_lines;
   };
 } // namespace dealvem
 

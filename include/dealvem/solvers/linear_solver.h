@@ -106,6 +106,11 @@ namespace dealvem
       /// p-multigrid: the smoother damps the eigenvalues in
       /// [lambda_max / smoothing_range, lambda_max] of D^{-1} A.
       double         smoothing_range = 15.;
+      /// false: the matrix is not symmetric (the condensed contact problem
+      /// with slipping pairs), the iterative solvers use GMRES (right
+      /// preconditioned, restart 100) instead of CG. ParallelLinearSolver
+      /// reads it.
+      bool           symmetric = true;
     };
 
     /// "UMFPACK", "KLU", "CG-AMG" (case-insensitive); throws otherwise.

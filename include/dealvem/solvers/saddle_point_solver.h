@@ -72,6 +72,10 @@ namespace dealvem
       Type         type               = Type::umfpack;
       double       relative_tolerance = 1e-12;
       unsigned int max_iterations     = 2000;
+      /// CG-AMG: start each Krylov iteration from the condensed displacements
+      /// of the previous solve (an active-set or Newton iteration, a load
+      /// step) instead of from zero, when the sizes agree.
+      bool warm_start = true;
     };
 
     /// "UMFPACK", "KLU", "GMRES-AMG", "CG-AMG" (or its former name "CG-AMG
@@ -168,6 +172,10 @@ namespace dealvem
     /// active sets)
     std::shared_ptr<internal::SparseCholesky> cholesky;
     bool                             used_lu_fallback = false;
+    /// the condensed matrix was not symmetric (slipping pairs): GMRES / LU
+    bool                             used_gmres = false;
+    /// the condensed displacements of the last iterative solve (warm start)
+    dealii::Vector<double>           previous;
     std::string                      context;
   };
 } // namespace dealvem
