@@ -34,8 +34,14 @@
 //      active set grows over several iterations (k = 1, 2); and the tipping
 //      block of tests/contact/active_set.cc (pressure on x < 0.3 only),
 //      where part of the interface lifts off.
-//   e) Coulomb friction refuses the condensed solver with a message (and the
-//      distributed path refuses it too);
+//   e) Coulomb friction (slipping and opening pairs over three load steps,
+//      flat and curved non-matching interfaces, stick by multipliers and by
+//      the penalty, k = 1, 2): every solver type (also KLU and GMRES-AMG)
+//      gives UMFPACK's displacements, multipliers and tangential forces to
+//      1e-8 (direct 1e-10), the same Newton iterations and open/stick/slip
+//      counts per step and the same dissipated energy, serially and
+//      distributed; the saddle-point solvers are refused on the distributed
+//      path;
 //   f) the stick-penalty preconditioner: on a patch test of 24,522 DoFs
 //      (multilevel AMG) the penalty system needs at most 1.3 times the CG
 //      iterations of the stick-by-multipliers one (measured 80 / 76).
@@ -103,6 +109,28 @@ namespace
                    tag + ": same active-set iterations (" + std::to_string(r.active_set_iterations) +
                      ", active pairs per iteration:" + h.str() + ") and final set (" +
                      std::to_string(n_active) + " of " + std::to_string(r.pairs.size()) + ") as UMFPACK");
+    // load steps (Coulomb friction): the same Newton iterations, the same
+    // numbers of open, sticking and slipping pairs, the same dissipation
+    bool   same_steps = (r.steps.size() == ref.steps.size());
+    double de = 0, e = 0;
+    for (unsigned int s = 0; same_steps && s < r.steps.size(); ++s)
+      {
+        const auto &a = r.steps[s], &c = ref.steps[s];
+        same_steps = a.iterations == c.iterations && a.n_open == c.n_open && a.n_stick == c.n_stick &&
+                     a.n_slip == c.n_slip;
+        de = std::max(de, std::abs(a.dissipated_energy - c.dissipated_energy));
+        e  = std::max(e, std::abs(c.dissipated_energy));
+      }
+    if (r.steps.size() > 1 || r.dissipated_energy != 0.)
+      {
+        std::ostringstream states;
+        for (const auto &s : r.steps)
+          states << " " << s.n_open << "/" << s.n_stick << "/" << s.n_slip << " (" << s.iterations << ")";
+        testing::check(same_steps, tag + ": the same Newton iterations and open/stick/slip pairs per load step as "
+                                         "UMFPACK:" + states.str());
+        if (e > 0)
+          testing::check_small(de / e, tol, tag + ": dissipated energy per step against UMFPACK's");
+      }
     std::cout << "      " << r.solver << ": " << r.linear_iterations << " linear iterations in "
               << r.active_set_iterations << " solve(s)" << std::endl;
   }
@@ -113,7 +141,7 @@ namespace
   /// condensed system factored by KLU (direct constraints) and solved by
   /// CG + AMG (1e-10).
   dealvem::ContactProblem::Results
-  compare(const std::string &prm, const std::string &tag, const bool uniform_stress)
+  compare(const std::string &prm, const std::string &tag, const bool uniform_stress, const bool every_type = false)
   {
     using Parallelism = dealvem::ElasticityProblem::Parallelism;
     const auto ref    = testing::run_contact(prm + solver_section("UMFPACK"));
@@ -121,6 +149,11 @@ namespace
     agree(r, ref, 1e-8, tag, 1e-8);
     const auto rc = testing::run_contact(prm + solver_section("direct constraints"));
     agree(rc, ref, 1e-10, tag + " [direct constraints]", 1e-10);
+    if (every_type)
+      {
+        agree(testing::run_contact(prm + solver_section("KLU")), ref, 1e-10, tag + " [KLU]", 1e-10);
+        agree(testing::run_contact(prm + solver_section("GMRES-AMG")), ref, 1e-8, tag + " [GMRES-AMG]", 1e-8);
+      }
     const unsigned int np = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     const std::string  on = " [distributed, " + std::to_string(np) + " process(es), ";
     for (const std::string type : {"direct constraints", "CG-AMG"})
@@ -233,27 +266,53 @@ main(int argc, char **argv)
                      ") at most 1.3 times those with stick by multipliers (" +
                      std::to_string(multipliers.linear_iterations) + ")");
   }
-  // e) Coulomb friction; the solvers the distributed path refuses
+  // e) Coulomb friction: a block pressed and sheared through a rigid plate
+  //    on top (resultant (Q t, -P), Q = 0.8 mu P, 0.53 mu P on the curved
+  //    interface) over three load steps, on a
+  //    non-matching interface (flat: quads against Voronoi cells; curved:
+  //    y = 1 + 0.1 sin(pi x)); the interface ends slip and open while the
+  //    middle sticks. Stick by multipliers and by the penalty, k = 1, 2.
+  //    Every solver type against UMFPACK, serially and distributed.
+  const auto friction = [&](const unsigned int k, const std::string &tangential, const bool curved) {
+    std::ostringstream s;
+    s << "set Number of bodies = 2\n"
+      << testing::block_mesh("structured quads", 0, 0, 1, 1, 5, 3, 0, curved ? 3 : 1)
+      << (curved ? "subsection Mesh\n  set Transformation = x, y*(1 + 0.1*sin(pi*x))\nend\n" : "")
+      << "subsection Material\n  set Young's modulus = 1000\n  set Poisson's ratio = 0.3\nend\n"
+      << "subsection Body 1\n"
+      << testing::block_mesh("voronoi", 0, 1, 1, 2, 4, 3, 10, 3)
+      << (curved ? "subsection Mesh\n  set Transformation = x, y + (2 - y)*0.1*sin(pi*x)\nend\n" : "")
+      << "subsection Material\n  set Young's modulus = 2000\n  set Poisson's ratio = 0.25\nend\nend\n"
+      << "subsection Discretization\n  set Order = " << k << "\nend\n"
+      << "subsection Contact\n  set Pairs = 3 : 12\n  set Tangential = " << tangential
+      << "\n  set Friction coefficient = 0.3\nend\n"
+      << "subsection Load steps\n  set Number of steps = 3\n  set Final time = 1\nend\n"
+      << "subsection Boundary conditions and loads\n  set Function constants = P=10, Q="
+      << (curved ? "1.6" : "2.4") << "\n"
+      << "  set Dirichlet = 2 : xy : 0, 0\n  set Rigid boundary = 13 : Q*t, -P : 0\nend\n"
+      << output_section();
+    return s.str();
+  };
+  for (const unsigned int k : {1u, 2u})
+    for (const std::string tangential : {"coulomb", "coulomb penalty"})
+      for (const bool curved : {false, true})
+        {
+          const auto r = compare(friction(k, tangential, curved),
+                                 "e) Coulomb friction (" + tangential + "), " + (curved ? "curved" : "flat") +
+                                   " interface, k = " + std::to_string(k),
+                                 false, true);
+          unsigned int slip = 0;
+          for (const auto &s : r.steps)
+            slip += s.n_slip;
+          testing::check(slip > 0 && r.dissipated_energy > 0,
+                         "e) pairs slip in some load step (" + std::to_string(slip) + " slipping pair-steps)");
+        }
+  // the solvers the distributed path refuses
   const auto small = [&](const std::string &tangential) {
     return two_blocks(testing::block_mesh("structured quads", 0, 0, 1, 1, 3, 3, 0),
                       testing::block_mesh("structured quads", 0, 1, 1, 2, 4, 4, 10), 1, "unilateral", tangential,
                       flat_supports, "10");
   };
-  testing::check_throws(
-    [&] {
-      testing::run_contact(small("coulomb") +
-                           "subsection Contact\n  set Friction coefficient = 0.3\nend\n" +
-                           solver_section("CG-AMG constraints"));
-    },
-    "Coulomb friction cannot use the 'CG-AMG' contact solver", "e) Coulomb friction is refused");
-  testing::check_throws(
-    [&] {
-      testing::run_contact(small("coulomb") +
-                             "subsection Contact\n  set Friction coefficient = 0.3\nend\n" +
-                             solver_section("UMFPACK"),
-                           MPI_COMM_WORLD, dealvem::ElasticityProblem::Parallelism::distributed);
-    },
-    "coulomb runs only on the serial path", "e) Coulomb friction on the distributed path");
   testing::check_throws(
     [&] {
       testing::run_contact(small("penalty") +
