@@ -454,7 +454,7 @@ namespace dealvem
         dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * f.l2_norm());
         using Vector = dealii::TrilinosWrappers::MPI::Vector;
         dealii::SolverCG<Vector>    cg(control);
-        dealii::SolverGMRES<Vector> gmres(control, dealii::SolverGMRES<Vector>::AdditionalData(100, true));
+        dealii::SolverGMRES<Vector> gmres(control, dealii::SolverGMRES<Vector>::AdditionalData(200, true));
         try
           {
             if (used_gmres)

@@ -443,7 +443,8 @@ namespace dealvem
                                const dealii::Vector<double>       &b,
                                dealii::SparsityPattern            &sparsity,
                                dealii::SparseMatrix<double>       &K,
-                               dealii::Vector<double>             &f) const
+                               dealii::Vector<double>             &f,
+                               const bool                          symmetric_part) const
   {
     AssertDimension(A.m(), n + m);
     // multiplier values of the inactive rows and the constant parts of the
@@ -501,9 +502,10 @@ namespace dealvem
           add_row_of(e.first, s.second);
       }
     // Petrov-Galerkin: the test masters of a slave get its row too
-    for (const auto &t : test_lines)
-      for (const auto &e : t.second)
-        add_row_of(e.first, t.first);
+    if (!symmetric_part)
+      for (const auto &t : test_lines)
+        for (const auto &e : t.second)
+          add_row_of(e.first, t.first);
     for (auto &x : extra)
       {
         std::sort(x.second.begin(), x.second.end());
@@ -562,6 +564,8 @@ namespace dealvem
     // Z^T K C = C^T K C + (Z - C)^T K C: the test lines that differ from
     // the trial lines (slipping pairs) add their difference times the
     // slave's row of K C (and of f - K c) to the masters
+    if (symmetric_part)
+      return;
     for (const auto &t : test_lines)
       {
         const unsigned int             s = t.first;

@@ -267,7 +267,7 @@ namespace dealvem
         dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * b.l2_norm());
         using Vector = dealii::TrilinosWrappers::MPI::Vector;
         dealii::SolverCG<Vector>    cg(control);
-        dealii::SolverGMRES<Vector> gmres(control, dealii::SolverGMRES<Vector>::AdditionalData(100, true));
+        dealii::SolverGMRES<Vector> gmres(control, dealii::SolverGMRES<Vector>::AdditionalData(200, true));
         const std::string           krylov = settings.symmetric ? "CG" : "GMRES";
         try
           {

@@ -365,6 +365,20 @@ namespace dealvem
             dealii::TrilinosWrappers::PreconditionAMG amg;
             if (!stick_rows.empty())
               stick = std::make_unique<StickPreconditioner>(K, contact.get_constraints(), stick_rows, modes, length);
+            else if (used_gmres)
+              {
+                // AMG on the symmetric part C^T K C: GMRES on Z^T K C needs
+                // fewer iterations with it than with AMG on Z^T K C itself
+                // (measured: 96-108 against 100-144 per Newton iteration on a
+                // 56k-DoF sliding patch test)
+                dealii::SparsityPattern      sp_sym;
+                dealii::SparseMatrix<double> K_sym;
+                dealii::Vector<double>       f_sym;
+                contact.condense(A, b, sp_sym, K_sym, f_sym, true);
+                Kt.reinit(K_sym);
+                internal::set_ml_parameters(&list, modes, K.m(), null_space);
+                amg.initialize(Kt.trilinos_matrix(), list);
+              }
             else
               {
                 Kt.reinit(K);
@@ -377,7 +391,7 @@ namespace dealvem
               {
                 if (used_gmres)
                   {
-                    dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(100, true);
+                    dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(200, true);
                     dealii::SolverGMRES<dealii::Vector<double>> gmres(control, data);
                     if (stick)
                       gmres.solve(K, u, f, *stick);

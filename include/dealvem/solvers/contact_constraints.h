@@ -124,7 +124,8 @@ namespace dealvem
              const dealii::Vector<double>       &b,
              dealii::SparsityPattern            &sparsity,
              dealii::SparseMatrix<double>       &K_condensed,
-             dealii::Vector<double>             &f_condensed) const;
+             dealii::Vector<double>             &f_condensed,
+             const bool                          symmetric_part = false) const;
 
     /**
      * Complete @p x (size of @p b): on entry its first n_displacements

@@ -108,7 +108,7 @@ namespace dealvem
       double         smoothing_range = 15.;
       /// false: the matrix is not symmetric (the condensed contact problem
       /// with slipping pairs), the iterative solvers use GMRES (right
-      /// preconditioned, restart 100) instead of CG. ParallelLinearSolver
+      /// preconditioned, restart 200) instead of CG. ParallelLinearSolver
       /// reads it.
       bool           symmetric = true;
     };
