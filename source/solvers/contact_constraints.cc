@@ -401,6 +401,7 @@ namespace dealvem
                                        "eliminated. Use Solver/Type = UMFPACK or KLU for this model."));
         if (!symmetric)
           test_elimination.add(test_row, pivot, 0., 0., {});
+        origin.insert(r);
         trial.add(row, pivot, rhs, scale, origin);
         slaves.emplace_back(r, pivot);
       }

@@ -15,9 +15,13 @@
 //    lambda_0 = mu_0 / 5, lambda_4 = 2 mu_0 / 5 (1e-10), the others as in a);
 // c) row 4 with right-hand side 0.3: "Inconsistent redundant contact
 //    constraints" naming rows 4 and 0;
-// d) a force column that differs from its constraint row (as Coulomb slip
-//    rows give) and a D row with an off-diagonal entry: refused, naming the
-//    row; an unknown solver name lists the new type.
+// d) a force column that differs from its constraint row (1.5 times row 1)
+//    and a tied multiplier row (lambda_2 = -0.3 lambda_0, force along
+//    (u0, u10) = (0.7, -0.7), as a slipping pair's friction force): the
+//    Petrov-Galerkin condensation (CG-AMG, i.e. GMRES, and direct
+//    constraints, i.e. UMFPACK LU) against UMFPACK on the saddle point to
+//    1e-10 in u and lambda; a constraint row with an off-diagonal D entry is
+//    refused, naming the row; an unknown solver name lists the types.
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -45,7 +49,7 @@ namespace
   /// @p bt_change / @p d_coupling spoil the structure for d).
   void
   build(System &s, const std::vector<std::pair<std::map<unsigned int, double>, double>> &rows,
-        const bool bt_change = false, const bool d_coupling = false)
+        const bool bt_change = false, const bool d_coupling = false, const bool tied = false)
   {
     const unsigned int             m = rows.size();
     dealii::DynamicSparsityPattern dsp(n + m);
@@ -62,6 +66,11 @@ namespace
           }
       }
     dsp.add(n, n + 1);
+    // the tied row 2: lambda_2 + 0.3 lambda_0 = 0, its force along
+    // (u0, u10) = (0.7, -0.7) (a friction force following a normal force)
+    dsp.add(n + 2, n);
+    dsp.add(0, n + 2);
+    dsp.add(10, n + 2);
     s.sp.copy_from(dsp);
     s.A.reinit(s.sp);
     s.b.reinit(n + m);
@@ -92,6 +101,12 @@ namespace
       }
     if (d_coupling)
       s.A.set(n, n + 1, 0.3);
+    if (tied)
+      {
+        s.A.set(n + 2, n, 0.3);
+        s.A.set(0, n + 2, 0.7);
+        s.A.set(10, n + 2, -0.7);
+      }
   }
 
   dealii::Vector<double>
@@ -183,16 +198,40 @@ main(int argc, char **argv)
                         "the constraint rows {0}",
                         "c) inconsistent redundant constraints");
 
-  // d)
-  System s4, s5;
+  // d) Petrov-Galerkin: a force column that differs from its row, and a
+  //    tied multiplier row: both condensed solvers against UMFPACK
+  System s4, s5, s6;
   build(s4, base, true, false);
   build(s5, base, false, true);
-  testing::check_throws([&] { solve(s4, SaddlePointSolver::Type::cg_amg_constraints); },
-                        "the force column of multiplier row 1 (unknown 21) is not the constraint row",
-                        "d) non-symmetric coupling refused");
+  build(s6, base, false, false, true);
+  for (const auto *sys : {&s4, &s6})
+    {
+      const std::string what = (sys == &s4 ? "d) force column 1.5 times its row" : "d) tied multiplier row");
+      const auto        r    = solve(*sys, SaddlePointSolver::Type::umfpack);
+      double            ru = 0, rl = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        ru = std::max(ru, std::abs(r[i]));
+      for (unsigned int i = n; i < r.size(); ++i)
+        rl = std::max(rl, std::abs(r[i]));
+      testing::check(rl > 0.1 * ru && (sys == &s4 || std::abs(r[n + 2] + 0.3 * r[n]) < 1e-12 * rl),
+                     what + ": the reference has non-trivial multipliers (and lambda_2 = -0.3 lambda_0)");
+      for (const auto type : {SaddlePointSolver::Type::cg_amg_constraints, SaddlePointSolver::Type::direct_constraints})
+        {
+          const auto y = solve(*sys, type);
+          double     eu = 0, el = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            eu = std::max(eu, std::abs(y[i] - r[i]));
+          for (unsigned int i = n; i < r.size(); ++i)
+            el = std::max(el, std::abs(y[i] - r[i]));
+          testing::check_small(eu / ru, 1e-10, what + ", " + SaddlePointSolver::type_name(type) + ": u against UMFPACK");
+          testing::check_small(el / rl, 1e-10,
+                               what + ", " + SaddlePointSolver::type_name(type) + ": lambda against UMFPACK");
+        }
+    }
   testing::check_throws([&] { solve(s5, SaddlePointSolver::Type::cg_amg_constraints); },
-                        "multiplier row 0 (unknown 20) couples multipliers with each other",
-                        "d) coupled multipliers refused");
+                        "multiplier row 0 (unknown 20) has both displacement entries and entries of the multiplier "
+                        "block",
+                        "d) a constraint row with multiplier couplings refused");
   testing::check_throws([] { SaddlePointSolver::parse_type("foo"); },
                         "expected UMFPACK, KLU, GMRES-AMG, CG-AMG or direct constraints", "d) unknown solver name");
   testing::check(SaddlePointSolver::parse_type("cg-amg CONSTRAINTS") ==
