@@ -254,8 +254,9 @@ namespace dealvem
     add_sparsity(dealii::DynamicSparsityPattern &dsp) const;
 
     /**
-     * With `Tangential = penalty`: the directions of the stick springs that
-     * assemble() adds for the active pairs, the rows c_t = (u_B - u_A).t of
+     * With `Tangential = penalty` (and `coulomb penalty`, where @p active
+     * marks the sticking pairs): the directions of the stick springs that
+     * assemble() (assemble_friction()) adds for those pairs, the rows c_t = (u_B - u_A).t of
      * the pairs over their four DoFs with the displacement constraints
      * condensed in (homogeneous part; a row that the constraints fix
      * entirely is left out). Empty for the other tangential models. The

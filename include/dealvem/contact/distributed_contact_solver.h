@@ -49,8 +49,12 @@ namespace dealvem
    *    summed over the processes in rank order so that every process gets
    *    the same bits and takes the same active-set decisions).
    *
-   * GMRES-AMG (a saddle-point iteration) and the non-symmetric slip rows of
-   * Coulomb friction are refused with a message.
+   * Slipping pairs of Coulomb friction make the condensed matrix
+   * non-symmetric (ContactConstraints, Petrov-Galerkin condensation): each
+   * process adds its cells' part of the correction
+   * $(Z - C)^T K C$ (ElasticityAssembler::add_matrix_rows(), add_residual()),
+   * and the solve is GMRES + ML AMG or Amesos KLU. GMRES-AMG (a
+   * saddle-point iteration) is refused with a message.
    */
   class DistributedContactSolver : public SaddlePointSolver
   {
