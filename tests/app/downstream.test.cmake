@@ -25,6 +25,7 @@
 # consumer is skipped (there is no Release library in such a build; the
 # normal Release suite covers it). Under SANITIZE the install-tree consumers
 # get the sanitizer flags, which only the build tree's targets carry.
+cmake_policy(VERSION 3.13)   # lists keep empty elements (CMP0007)
 set(_sanitize_args "")
 if(SANITIZE)
   # the sanitizer flags travel with the build tree's targets only
@@ -103,7 +104,8 @@ endforeach()
 # name, dealvem_DIR, CMAKE_BUILD_TYPE given (empty: none), build type expected
 set(_consumers "build-tree|${BINARY_DIR}|${CMAKE_BUILD_TYPE}|${CMAKE_BUILD_TYPE}")
 list(APPEND _consumers "install-debug|${_install_dir}||Debug")
-if("release" IN_LIST _installed_variants)
+list(FIND _installed_variants release _has_release)
+if(_has_release GREATER -1)
   list(APPEND _consumers "install-release|${_install_dir}|Release|Release")
 else()
   message(STATUS "SKIP the Release consumer: ${CMAKE_BUILD_TYPE} build tree, no Release library")
