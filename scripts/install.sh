@@ -40,5 +40,5 @@ cmake -S "$ROOT" -B "$DEBUG_BUILD_DIR" -DCMAKE_BUILD_TYPE=Debug -DDEALVEM_WITH_C
   cat "$DEBUG_BUILD_DIR/configure.log"; exit 1; }
 cmake --build "$DEBUG_BUILD_DIR" -j "$JOBS"
 cmake --install "$DEBUG_BUILD_DIR" --prefix "$PREFIX"
-echo "dealvem installed in $PREFIX: $(cd "$PREFIX" && ls lib*/libdealvem*.so | tr '\n' ' ')"
+echo "dealvem installed in $PREFIX:"; find "$PREFIX" -name 'libdealvem*.so' -print
 echo "use it with -Ddealvem_DIR=$(cd "$PREFIX" && ls -d "$PWD"/lib*/cmake/dealvem)"
