@@ -189,6 +189,7 @@ namespace dealvem
   unsigned int
   VEMValues<dim>::n_edges() const
   {
+    Assert(cell != dealii::numbers::invalid_unsigned_int, dealii::ExcMessage("call reinit() first"));
     return dof_handler.get_mesh().cell(cell).edges.size();
   }
 
@@ -198,6 +199,7 @@ namespace dealvem
   dealii::types::boundary_id
   VEMValues<dim>::edge_boundary_id(const unsigned int e) const
   {
+    Assert(cell != dealii::numbers::invalid_unsigned_int, dealii::ExcMessage("call reinit() first"));
     const auto &mesh = dof_handler.get_mesh();
     const auto &c    = mesh.cell(cell);
     AssertIndexRange(e, c.edges.size());

@@ -1,6 +1,11 @@
 // A downstream program: a Voronoi mesh, VEM k = 2 DoFs and one element
 // stiffness, and a deal.II triangulation solved nowhere but transferred
 // (a linear field, reproduced exactly), through the package dealvem::dealvem.
+// Built by tests/app/downstream.test.cmake in Debug and in Release: it
+// checks that the build type's deal.II definitions arrived alone (DEBUG or
+// NDEBUG, not both) and, in Debug, that the debug library libdealvem.g.so
+// is linked: a misuse its Assert()s catch throws instead of crashing.
+#include <deal.II/base/exceptions.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/fe/fe_system.h>
@@ -13,6 +18,7 @@
 #include <dealvem/mesh/triangulation_map.h>
 #include <dealvem/postprocessing/fe_transfer.h>
 #include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/vem_values.h>
 #include <dealvem/vem/virtual_element.h>
 
 #include <cmath>
@@ -21,6 +27,15 @@
 int
 main()
 {
+#if defined(DEBUG) && defined(NDEBUG)
+  std::cout << "build type: both DEBUG and NDEBUG defined (mixed Debug and Release flags)" << std::endl;
+  return 1;
+#elif defined(DEBUG)
+  std::cout << "build type: Debug" << std::endl;
+#else
+  std::cout << "build type: Release" << std::endl;
+#endif
+
   dealvem::PolygonalMesh<2> mesh;
   dealvem::PolygonalMeshGenerators::voronoi(mesh, dealii::Point<2>(0, 0), dealii::Point<2>(1, 1), 20, 5, 1);
   dealvem::VEMDoFHandler<2> dof_handler(mesh);
@@ -31,6 +46,27 @@ main()
   elasticity.reinit(element, dealvem::ElasticMaterial(1000, 0.3));
   std::cout << "downstream: " << mesh.n_cells() << " cells, " << dof_handler.n_dofs() << " dofs, element matrix "
             << elasticity.get_stiffness_matrix().m() << "x" << elasticity.get_stiffness_matrix().n() << std::endl;
+
+#ifdef DEBUG
+  // VEMValues asked for a cell's edges before reinit(): the debug library's
+  // Assert must catch it. deal.II aborts on a failed Assert in Debug mode
+  // unless told to throw instead.
+  dealii::deal_II_exceptions::disable_abort_on_exception();
+  {
+    dealvem::VEMValues<2> vem_values(dof_handler);
+    try
+      {
+        const unsigned int n = vem_values.n_edges();
+        std::cout << "debug: VEMValues::n_edges() before reinit() returned " << n << " without an exception"
+                  << std::endl;
+        return 1;
+      }
+    catch (const dealii::ExceptionBase &)
+      {
+        std::cout << "debug: VEMValues::n_edges() before reinit() throws ExceptionBase" << std::endl;
+      }
+  }
+#endif
 
   // u = (x + 2y, 3x - y) at the VEM nodes, transferred to FE_DGQ(1)^2
   dealii::Triangulation<2> tria;
