@@ -12,7 +12,11 @@
 #   slip     Coulomb friction, the upper block's top moved sideways by
 #            0.02 t under the pressure p, the sides loaded by the uniform
 #            shear mu p: every pair slips (the non-symmetric condensed
-#            system, GMRES).
+#            system, GMRES);
+#   sliding  the slip model's loads at t = 1 without friction (Normal =
+#            tied, Tangential = frictionless, one static solve): the same
+#            constraints as 'slip' (one per pair) without the friction
+#            force, the symmetric condensed solve 'slip' is compared with.
 # Prints per run: DoFs, Newton iterations, Krylov iterations, solve time in
 # all and per Newton iteration, wall time end to end, peak memory, and for
 # np = 2 the largest difference to np = 1 in the interface CSV (pressure
@@ -26,7 +30,7 @@ BUILD_DIR="$(cd "$BUILD_DIR" && pwd)"
 WORK="${WORK:-$BUILD_DIR/benchmarks/friction}"
 SIZES="${SIZES:-100 210}"
 NPS="${NPS:-1 2}"
-MODELS="${MODELS:-tied stick slip}"
+MODELS="${MODELS:-tied stick slip sliding}"
 SOLVERS="${SOLVERS:-CG-AMG}"
 mkdir -p "$WORK"
 cd "$WORK"
@@ -66,12 +70,15 @@ write_prm() { # N model solver name
     echo "  set Pairs = 3 : 12"
     if [ "$model" = tied ]; then
       echo "  set Tangential = multipliers"
+    elif [ "$model" = sliding ]; then
+      echo "  set Normal = tied"
+      echo "  set Tangential = frictionless"
     else
       echo "  set Tangential = coulomb"
       echo "  set Friction coefficient = 0.4"
     fi
     echo "end"
-    if [ "$model" != tied ]; then
+    if [ "$model" = stick ] || [ "$model" = slip ]; then
       echo "subsection Load steps"
       echo "  set Number of steps = 4"
       echo "  set Final time = 1"
@@ -89,7 +96,7 @@ write_prm() { # N model solver name
         echo "  set Dirichlet = 2 : y : 0"
         echo "  set Point constraints = 0, 0 : x : 0"
         echo "  set Traction = 13 : tau*t, -p*t; 10 : 0, -tau*t; 11 : 0, tau*t; 0 : 0, -tau*t; 1 : 0, tau*t; 2 : -tau*t, 0";;
-      slip)
+      slip|sliding)
         echo "  set Function constants = p=10, tau=4"
         echo "  set Dirichlet = 2 : y : 0; 13 : x : 0.02*t"
         echo "  set Point constraints = 0, 0 : x : 0"

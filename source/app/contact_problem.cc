@@ -381,6 +381,7 @@ namespace dealvem
     // 'automatic' is resolved in setup_system(), when the size is known
     solver_tolerance      = prm.get_double("Relative tolerance");
     solver_max_iterations = prm.get_integer("Maximum iterations");
+    solver_warm_start     = prm.get_bool("Warm start");
     prm.leave_subsection();
     InputParsing::check_range(solver_tolerance, 0, 1, "Solver/Relative tolerance", true, true);
     {
@@ -755,6 +756,7 @@ namespace dealvem
       settings.type = SaddlePointSolver::parse_type(solver_type);
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
+    settings.warm_start         = solver_warm_start;
     if (distributed)
       {
         d.partition = std::make_unique<VEMPartition<2>>();

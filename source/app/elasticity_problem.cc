@@ -106,8 +106,8 @@ namespace dealvem
                       "Each name is one algorithm, in one process and under mpirun alike. "
                       "automatic: the choice and its reason are printed; one body: UMFPACK up to 1e4 DoFs "
                       "(where it fits into 'Memory limit'), CG-AMG above; contact: direct constraints up "
-                      "to 1.2e5 DoFs, CG-AMG above, UMFPACK with Coulomb friction (its slip rows are not "
-                      "symmetric); the crossovers are measured in doc/benchmarks.md. "
+                      "to 1.2e5 DoFs, CG-AMG above (with or without Coulomb friction); the crossovers are "
+                      "measured in doc/benchmarks.md. "
                       "UMFPACK / KLU: a direct LU factorization (SuiteSparse / Trilinos Amesos) of the "
                       "stiffness, with contact of the whole saddle-point matrix (one process only). "
                       "CG-AMG: deal.II's SolverCG preconditioned by Trilinos ML algebraic multigrid with "
@@ -116,13 +116,16 @@ namespace dealvem
                       "contact on the stiffness condensed by the active contact constraints (each becomes "
                       "an affine constraint on one slave DoF, multipliers recovered from the residual); "
                       "'CG-AMG constraints' is its former name. direct constraints: the same condensed "
-                      "stiffness factored directly (CHOLMOD's Cholesky in one process, with the ordering "
-                      "of the first factorization reused by later active sets; Amesos KLU under mpirun); "
-                      "one body: UMFPACK. GMRES-AMG: contact only, GMRES on the whole saddle point with a "
-                      "block preconditioner (AMG on the displacement block, exact approximate Schur "
-                      "complement), one process only; one body: CG-AMG. The condensed solvers need "
-                      "symmetric contact rows: Coulomb friction runs on UMFPACK, KLU or GMRES-AMG, in one "
-                      "process.");
+                      "stiffness factored directly (CHOLMOD's Cholesky in one process, a fresh ordering "
+                      "per active set; Amesos KLU under mpirun); one body: UMFPACK. GMRES-AMG: contact "
+                      "only, GMRES on the whole saddle point with a block preconditioner (AMG on the "
+                      "displacement block, exact approximate Schur complement), one process only; one "
+                      "body: CG-AMG. With Coulomb friction, slipping pairs make the condensed matrix "
+                      "non-symmetric (Petrov-Galerkin condensation): CG-AMG then runs GMRES, direct "
+                      "constraints UMFPACK's LU (Amesos KLU under mpirun).");
+    prm.declare_entry("Warm start", "true", Bool(),
+                      "Contact, CG-AMG: start each Krylov solve from the condensed displacements of the "
+                      "previous one (active-set or Newton iteration, load step) instead of from zero.");
     prm.declare_entry("Preconditioner", "automatic", Selection("automatic|AMG|p-multigrid"),
                       "Preconditioner of CG for one body (serial and distributed): automatic (the "
                       "p-multigrid for k = 2, ML AMG for k = 1), AMG (one ML V-cycle on the whole "

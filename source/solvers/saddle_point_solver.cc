@@ -2,6 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/block_linear_operator.h>
 #include <deal.II/lac/block_sparse_matrix.h>
 #include <deal.II/lac/block_sparsity_pattern.h>
@@ -30,6 +31,7 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 namespace dealvem
 {
@@ -99,6 +101,12 @@ namespace dealvem
   std::string
   SaddlePointSolver::description() const
   {
+    const auto seconds = [](const double s) {
+      std::ostringstream o;
+      o.precision(3);
+      o << s << " s";
+      return o.str();
+    };
     if (settings.type == Type::gmres_amg)
       return "GMRES + block preconditioner (ML AMG on K + rho B^T B, exact approximate Schur complement)";
     if (settings.type == Type::cg_amg_constraints)
@@ -106,7 +114,12 @@ namespace dealvem
              " + ML AMG on the stiffness condensed by the active contact constraints (one slave DoF per "
              "constraint, multipliers from the residual" +
              std::string(used_gmres ? "; slipping pairs: Petrov-Galerkin condensation, not symmetric" : "") +
-             std::string(used_stick_preconditioner ? "; stick springs preconditioned by tying them" : "") + ")";
+             std::string(used_stick_preconditioner ? "; stick springs preconditioned by tying them" : "") +
+             (n_amg_setups > 0 ? "; AMG set up " + std::to_string(n_amg_setups) + " time(s) in " +
+                                   seconds(amg_setup_seconds) + ", reused " +
+                                   std::to_string(n_amg_reuses) + " time(s) for an unchanged matrix" :
+                                 "") +
+             ")";
     if (settings.type == Type::direct_constraints)
       return std::string(used_gmres       ? "UMFPACK LU (slipping pairs: the condensed matrix is not symmetric)" :
                          used_lu_fallback ? "UMFPACK LU (the condensed matrix is not positive definite)" :
@@ -311,6 +324,73 @@ namespace dealvem
 
 
 
+  namespace internal
+  {
+    /**
+     * An ML AMG hierarchy with a copy of the matrix it was built on, so that
+     * a later solve with the same matrix (pattern and values, bit for bit)
+     * reuses it: the preconditioner, and so every iterate, is then exactly
+     * the one a fresh set-up would give.
+     */
+    class AMGCache
+    {
+    public:
+      /// Whether @p K is the matrix of the hierarchy; if not, build it.
+      bool
+      prepare(const dealii::SparseMatrix<double> &K, const std::vector<std::vector<double>> &modes)
+      {
+        const auto &sp   = K.get_sparsity_pattern();
+        bool        same = valid && sp.n_rows() == columns.size() && K.n_nonzero_elements() == values.size();
+        std::size_t k    = 0;
+        for (unsigned int i = 0; same && i < sp.n_rows(); ++i)
+          {
+            same = (columns[i] == sp.row_length(i));
+            for (auto it = K.begin(i); same && it != K.end(i); ++it, ++k)
+              same = (it->column() == indices[k] && it->value() == values[k]);
+          }
+        if (same)
+          return true;
+        columns.assign(sp.n_rows(), 0);
+        indices.clear();
+        values.clear();
+        for (unsigned int i = 0; i < sp.n_rows(); ++i)
+          {
+            columns[i] = sp.row_length(i);
+            for (auto it = K.begin(i); it != K.end(i); ++it)
+              {
+                indices.push_back(it->column());
+                values.push_back(it->value());
+              }
+          }
+        valid = false;
+        matrix.reinit(K);
+        list = Teuchos::ParameterList();
+        set_ml_parameters(&list, modes, K.m(), null_space);
+        amg.initialize(matrix.trilinos_matrix(), list);
+        valid = true;
+        return false;
+      }
+
+      const dealii::TrilinosWrappers::PreconditionAMG &
+      preconditioner() const
+      {
+        return amg;
+      }
+
+    private:
+      bool                                      valid = false;
+      std::vector<unsigned int>                 columns;
+      std::vector<unsigned int>                 indices;
+      std::vector<double>                       values;
+      dealii::TrilinosWrappers::SparseMatrix    matrix;
+      Teuchos::ParameterList                    list;
+      std::vector<double>                       null_space;
+      dealii::TrilinosWrappers::PreconditionAMG amg;
+    };
+  } // namespace internal
+
+
+
   void
   SaddlePointSolver::solve(const dealii::SparseMatrix<double> &A,
                            const unsigned int                  n_displacements,
@@ -358,14 +438,10 @@ namespace dealvem
             // preconditioner of the stick springs
             if (settings.warm_start && previous.size() == n_displacements)
               u = previous;
-            std::unique_ptr<StickPreconditioner>      stick;
-            dealii::TrilinosWrappers::SparseMatrix    Kt;
-            Teuchos::ParameterList                    list;
-            std::vector<double>                       null_space;
-            dealii::TrilinosWrappers::PreconditionAMG amg;
+            std::unique_ptr<StickPreconditioner> stick;
             if (!stick_rows.empty())
               stick = std::make_unique<StickPreconditioner>(K, contact.get_constraints(), stick_rows, modes, length);
-            else if (used_gmres)
+            else
               {
                 // AMG on the symmetric part C^T K C: GMRES on Z^T K C needs
                 // fewer iterations with it than with AMG on Z^T K C itself
@@ -374,16 +450,18 @@ namespace dealvem
                 dealii::SparsityPattern      sp_sym;
                 dealii::SparseMatrix<double> K_sym;
                 dealii::Vector<double>       f_sym;
-                contact.condense(A, b, sp_sym, K_sym, f_sym, true);
-                Kt.reinit(K_sym);
-                internal::set_ml_parameters(&list, modes, K.m(), null_space);
-                amg.initialize(Kt.trilinos_matrix(), list);
-              }
-            else
-              {
-                Kt.reinit(K);
-                internal::set_ml_parameters(&list, modes, K.m(), null_space);
-                amg.initialize(Kt.trilinos_matrix(), list);
+                if (used_gmres)
+                  contact.condense(A, b, sp_sym, K_sym, f_sym, true);
+                if (!amg_cache)
+                  amg_cache = std::make_shared<internal::AMGCache>();
+                dealii::Timer setup;
+                if (amg_cache->prepare(used_gmres ? K_sym : K, modes))
+                  ++n_amg_reuses;
+                else
+                  {
+                    ++n_amg_setups;
+                    amg_setup_seconds += setup.wall_time();
+                  }
               }
             used_stick_preconditioner = (stick != nullptr);
             dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * f.l2_norm());
@@ -396,7 +474,7 @@ namespace dealvem
                     if (stick)
                       gmres.solve(K, u, f, *stick);
                     else
-                      gmres.solve(K, u, f, amg);
+                      gmres.solve(K, u, f, amg_cache->preconditioner());
                   }
                 else
                   {
@@ -404,7 +482,7 @@ namespace dealvem
                     if (stick)
                       cg.solve(K, u, f, *stick);
                     else
-                      cg.solve(K, u, f, amg);
+                      cg.solve(K, u, f, amg_cache->preconditioner());
                   }
               }
             catch (const dealii::SolverControl::NoConvergence &e)

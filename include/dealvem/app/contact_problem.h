@@ -258,6 +258,7 @@ namespace dealvem
     std::string                solver_type = "UMFPACK";
     double                     solver_tolerance = 1e-12;
     unsigned int               solver_max_iterations = 2000;
+    bool                       solver_warm_start     = true;
     std::string                output_folder = "output", base_name = "contact";
     bool                       write_vtu = true, write_json = true, write_pictures = true,
                                write_csv = true;

@@ -17,6 +17,7 @@ namespace dealvem
   namespace internal
   {
     class SparseCholesky;
+    class AMGCache;
   }
 
   /**
@@ -171,6 +172,12 @@ namespace dealvem
     /// direct constraints: the factorization (its workspace kept between
     /// active sets)
     std::shared_ptr<internal::SparseCholesky> cholesky;
+    /// CG-AMG: the AMG hierarchy of the last solve, reused while the matrix
+    /// it was built on is the same (pattern and values), e.g. over load steps
+    /// and Newton iterations that keep the closed pairs
+    std::shared_ptr<internal::AMGCache> amg_cache;
+    unsigned int                        n_amg_setups = 0, n_amg_reuses = 0;
+    double                              amg_setup_seconds = 0;
     bool                             used_lu_fallback = false;
     /// the condensed matrix was not symmetric (slipping pairs): GMRES / LU
     bool                             used_gmres = false;
