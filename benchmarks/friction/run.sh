@@ -23,6 +23,8 @@
 # and shear per pair, relative to the largest value).
 #   SIZES="100 210" NPS="1 2" bash benchmarks/friction/run.sh
 # (N = 100: 225,444 DoFs; N = 210: 990,216 DoFs). Run on an idle machine.
+# TOLERANCE (default 1e-12) and WARM_START (true/false, default true) set
+# the Solver section's relative tolerance and Krylov warm start.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"
@@ -107,6 +109,7 @@ write_prm() { # N model solver name
     echo "subsection Solver"
     echo "  set Type = $solver"
     echo "  set Relative tolerance = ${TOLERANCE:-1e-12}"
+    echo "  set Warm start = ${WARM_START:-true}"
     echo "end"
     echo "subsection Output"
     echo "  set Folder = output"
@@ -123,7 +126,7 @@ for n in $SIZES; do
   for model in $MODELS; do
     for solver in $SOLVERS; do
       for np in $NPS; do
-        name="n$n-$model-$(echo "$solver" | tr ' ' '_')-np$np"
+        name="n$n-$model-$(echo "$solver" | tr ' ' '_')-np$np${TAG:-}"
         write_prm "$n" "$model" "$solver" "$name"
         start=$(date +%s.%N)
         mpirun "${FLAGS[@]}" -np "$np" "$BUILD_DIR/bin/dealvem" "$name.prm" > "$name.log" 2>&1 || {
