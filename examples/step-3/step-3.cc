@@ -21,6 +21,7 @@
 // reach. --quick runs the coarse level only (a few seconds less).
 
 // @sect3{Include files}
+#include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -28,7 +29,6 @@
 #include <deal.II/grid/tria.h>
 
 #include <dealvem/app/contact_problem.h>
-#include <dealvem/app/elasticity_problem.h>
 #include <dealvem/mesh/generators.h>
 #include <dealvem/mesh/mesh_io.h>
 #include <dealvem/postprocessing/svg_plots.h>
@@ -199,63 +199,52 @@ namespace Step3
     return h;
   }
 
-  // @sect3{The parameter file}
+  // @sect3{The contact problem in code}
   //
-  // Everything else is ordinary input of the `dealvem` program: body 0 is
-  // the block (the master side of the pair: its flat top gives the normal),
-  // body 1 the cylinder with its boundary ids moved by 10 (arc 10, cut 11).
-  // The block's bottom is fixed. The cylinder is held by nothing but the
-  // contact and by one point constraint against the horizontal rigid motion
-  // that frictionless contact cannot stop; it sits at the centre of the cut,
-  // the reference node of the rigid part. The cut itself is a rigid boundary
-  // part loaded by the resultant (0, -P).
+  // The two bodies, their materials, the contact pair, the boundary
+  // conditions and the options are handed to ContactProblem through its C++
+  // interface (the `dealvem` program fills the same interface from a
+  // parameter file). Body 0 is the block (the master side of the pair: its
+  // flat top gives the normal), body 1 the cylinder with its boundary ids
+  // moved by 10 (arc 10, cut 11). The block's bottom is fixed. The cylinder
+  // is held by nothing but the contact and by one point constraint against
+  // the horizontal rigid motion that frictionless contact cannot stop; it
+  // sits at the centre of the cut, the reference node of the rigid part.
+  // The cut itself is a rigid boundary part loaded by the resultant (0, -P).
   struct TwoBodySetup
   {
-    std::string  master_file, slave_file;
-    double       E_master, E_slave;
-    unsigned int master_id, slave_id, fixed_id, rigid_id;
-    double       load;
-    std::string  x_constraint;
-    unsigned int degree;
-    std::string  base_name;
+    const PolygonalMesh<2> *master, *slave;
+    double                  E_master, E_slave;
+    unsigned int            master_id, slave_id, fixed_id, rigid_id;
+    double                  load;
+    dealii::Point<2>        x_constraint;
+    unsigned int            degree;
+    std::string             base_name;
   };
 
-  std::string
-  parameters(const TwoBodySetup &s)
-  {
-    std::ostringstream p;
-    p << std::setprecision(17);
-    p << "set Number of bodies = 2\n"
-      << "subsection Mesh\n  set Type = vtk file\n  set File name = " << s.master_file << "\nend\n"
-      << "subsection Material\n  set Model = plane strain\n  set Young's modulus = " << s.E_master
-      << "\n  set Poisson's ratio = 0.3\nend\n"
-      << "subsection Body 1\n  subsection Mesh\n    set Type = vtk file\n    set File name = "
-      << s.slave_file << "\n    set Boundary id offset = 10\n  end\n"
-      << "  subsection Material\n    set Young's modulus = " << s.E_slave
-      << "\n    set Poisson's ratio = 0.3\n  end\nend\n"
-      << "subsection Discretization\n  set Order = " << s.degree << "\nend\n"
-      << "subsection Contact\n  set Pairs = " << s.master_id << " : " << s.slave_id
-      << "\n  set Normal = unilateral\n  set Tangential = frictionless\nend\n"
-      << "subsection Boundary conditions and loads\n"
-      << "  set Dirichlet = " << s.fixed_id << " : xy : 0, 0\n"
-      << "  set Rigid boundary = " << s.rigid_id << " : 0, " << -s.load << "\n"
-      << "  set Point constraints = " << s.x_constraint << " : x : 0 : 1\n"
-      << "end\n"
-      << "subsection Output\n  set Folder = output\n  set Base name = " << s.base_name
-      << "\n  set Write VTU = false\n  set Write JSON = false\n  set Write pictures = false\n"
-      << "  set Write CSV = true\nend\n";
-    return p.str();
-  }
-
   ContactProblem::Results
-  solve(const std::string &prm_text)
+  solve(const TwoBodySetup &s)
   {
-    dealii::ParameterHandler prm;
-    ElasticityProblem::declare_parameters(prm);
-    ContactProblem::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text);
     ContactProblem problem;
-    problem.parse_parameters(prm);
+    problem.add_body(*s.master, ElasticMaterial(s.E_master, Hertz::nu, ElasticMaterial::Model::plane_strain));
+    problem.add_body(*s.slave, ElasticMaterial(s.E_slave, Hertz::nu, ElasticMaterial::Model::plane_strain),
+                     10);
+    problem.add_contact_pair(s.master_id, s.slave_id);
+
+    auto &bc = problem.boundary_conditions();
+    bc.add_dirichlet(s.fixed_id, {{true, true}}, std::make_shared<dealii::Functions::ZeroFunction<2>>(2));
+    bc.add_rigid_boundary(s.rigid_id, std::make_shared<dealii::Functions::ConstantFunction<2>>(
+                                        std::vector<double>{0., -s.load}));
+    bc.add_point_constraint(s.x_constraint, 0, std::make_shared<dealii::Functions::ZeroFunction<2>>(1),
+                            /*body=*/1);
+
+    auto &o              = problem.options();
+    o.degree             = s.degree;
+    o.contact.normal     = ContactSettings::Normal::unilateral;
+    o.contact.tangential = ContactSettings::Tangential::frictionless;
+    o.base_name          = s.base_name;
+    o.write_vtu = o.write_json = o.write_pictures = false;
+    o.write_csv                                   = true;
     problem.run();
     return problem.get_results();
   }
@@ -365,16 +354,16 @@ namespace Step3
     const double h     = 0.25 / (1 << level);
     const auto   block = block_mesh(h, Hertz::x_strip);
     const auto   cyl   = cylinder_mesh(h, Hertz::x_strip);
-    const std::string block_file = "hertz-block-" + std::to_string(level) + ".vtk";
-    const std::string cyl_file   = "hertz-cylinder-" + std::to_string(level) + ".vtk";
-    MeshIO::write_vtk(block, block_file);
-    MeshIO::write_vtk(cyl, cyl_file);
+    // the meshes also go to files, for the `dealvem` program and the peer
+    // benchmark (benchmarks/hertz_peer), which read them
+    MeshIO::write_vtk(block, "hertz-block-" + std::to_string(level) + ".vtk");
+    MeshIO::write_vtk(cyl, "hertz-cylinder-" + std::to_string(level) + ".vtk");
     const double h_local =
       std::max(local_edge_length(block, 3, Hertz::a() + 1), local_edge_length(cyl, 0, Hertz::a() + 1));
 
-    TwoBodySetup s{block_file,  cyl_file, Hertz::E_block, Hertz::E_cyl, 3, 10, 2, 11, Hertz::P,
-                   "0, 50", degree, "hertz-" + std::to_string(level) + "-k" + std::to_string(degree)};
-    const auto r = solve(parameters(s));
+    const TwoBodySetup s{&block, &cyl, Hertz::E_block, Hertz::E_cyl, 3, 10, 2, 11, Hertz::P,
+                         dealii::Point<2>(0, 50), degree, "hertz-" + std::to_string(level) + "-k" + std::to_string(degree)};
+    const auto r = solve(s);
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (results)
@@ -409,12 +398,10 @@ namespace Step3
     refine_toward(tria, [](const dealii::Point<2> &p) { return std::abs(p[1]); }, h, 2.);
     PolygonalMesh<2> punch;
     PolygonalMeshGenerators::from_triangulation(punch, tria);
-    MeshIO::write_vtk(block, "punch-block.vtk");
-    MeshIO::write_vtk(punch, "punch.vtk");
     // punch ids after the offset: 12 bottom, 13 top
-    TwoBodySetup s{"punch-block.vtk", "punch.vtk", Hertz::E_block, 1000. * Hertz::E_block, 3, 12, 2, 13, P,
-                   "0, 10", degree, "punch-k" + std::to_string(degree)};
-    const auto r = solve(parameters(s));
+    const TwoBodySetup s{&block, &punch, Hertz::E_block, 1000. * Hertz::E_block, 3, 12, 2, 13, P,
+                         dealii::Point<2>(0, 10), degree, "punch-k" + std::to_string(degree)};
+    const auto r = solve(s);
     if (results)
       *results = r;
     PunchResult result{0, 0, r.total_contact_force.norm() / P - 1., r.n_dofs};

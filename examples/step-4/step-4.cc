@@ -21,6 +21,7 @@
 // k = 1 and 2.
 
 // @sect3{Include files}
+#include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -28,7 +29,6 @@
 #include <deal.II/grid/tria.h>
 
 #include <dealvem/app/contact_problem.h>
-#include <dealvem/app/elasticity_problem.h>
 #include <dealvem/mesh/generators.h>
 #include <dealvem/mesh/mesh_io.h>
 #include <dealvem/postprocessing/svg_plots.h>
@@ -207,46 +207,81 @@ namespace Step4
     return h;
   }
 
-  // @sect3{The parameter file}
+  // @sect3{The loads as functions of time}
   //
-  // $7m$ load steps in the time $t$ of the load expressions: steps 1 to $4m$
-  // press with $P\,(t/4m)^2$ (the contact half-width grows like $\sqrt{P}$,
-  // so by equal amounts per step), steps $4m+1$ to $7m$ add
+  // $7m$ load steps in the time $t$: steps 1 to $4m$ press with
+  // $P\,(t/4m)^2$ (the contact half-width grows like $\sqrt{P}$, so by equal
+  // amounts per step), steps $4m+1$ to $7m$ add
   // $Q = 0.25\,\mu P\,(t/m - 4)$, reaching $Q/(\mu P) = 0.25, 0.5, 0.75$ at
   // the steps $5m$, $6m$, $7m$. The flat cut of the cylinder is a rigid part
   // loaded by $(Q, -P)$ at its centroid $(0, R)$ and by the moment $M = QR$,
   // so that the resultant passes through the centre of the contact (the
   // Cattaneo-Mindlin setting: no tilting moment on the contact). Nothing but
   // friction holds the cylinder horizontally.
-  std::string
-  parameters(const std::string &block_file, const std::string &cylinder_file, const unsigned int degree,
-             const unsigned int m, const std::string &base_name)
+  //
+  // The loads are ordinary deal.II functions whose value depends on
+  // get_time(): ContactProblem sets the time of every load before each
+  // step.
+  class RigidPartLoad : public dealii::Function<2>
   {
-    std::ostringstream p;
-    p << std::setprecision(17);
-    p << "set Number of bodies = 2\n"
-      << "subsection Mesh\n  set Type = vtk file\n  set File name = " << block_file << "\nend\n"
-      << "subsection Material\n  set Model = plane strain\n  set Young's modulus = " << CM::E
-      << "\n  set Poisson's ratio = " << CM::nu << "\nend\n"
-      << "subsection Body 1\n  subsection Mesh\n    set Type = vtk file\n    set File name = " << cylinder_file
-      << "\n    set Boundary id offset = 10\n  end\n"
-      << "  subsection Material\n    set Young's modulus = " << CM::E << "\n    set Poisson's ratio = " << CM::nu
-      << "\n  end\nend\n"
-      << "subsection Discretization\n  set Order = " << degree << "\nend\n"
-      << "subsection Contact\n  set Pairs = 3 : 10\n  set Normal = unilateral\n  set Tangential = coulomb\n"
-      << "  set Friction coefficient = " << CM::mu << "\nend\n"
-      << "subsection Load steps\n  set Number of steps = " << 7 * m << "\n  set Final time = " << 7 * m
-      << "\nend\n"
-      << "subsection Boundary conditions and loads\n"
-      << "  set Function constants = P=" << CM::P << ", mu=" << CM::mu << ", R=" << CM::R << ", m=" << m << "\n"
-      << "  set Dirichlet = 2 : xy : 0, 0\n"
-      << "  set Rigid boundary = 11 : 0.25*mu*P*max(t/m-4, 0), -P*pow(min(t/(4*m), 1), 2) : "
-         "0.25*mu*P*max(t/m-4, 0)*R\n"
-      << "end\n"
-      << "subsection Output\n  set Folder = output\n  set Base name = " << base_name
-      << "\n  set Write VTU = false\n  set Write JSON = true\n  set Write pictures = false\n"
-      << "  set Write CSV = true\nend\n";
-    return p.str();
+  public:
+    /// The force (Q, -P) (two components) or the moment Q R (one).
+    RigidPartLoad(const unsigned int m, const bool moment)
+      : dealii::Function<2>(moment ? 1 : 2)
+      , m(m)
+      , moment(moment)
+    {}
+
+    double
+    value(const dealii::Point<2> &, const unsigned int component) const override
+    {
+      const double t = get_time();
+      const double P = CM::P * std::pow(std::min(t / (4. * m), 1.), 2);
+      const double Q = 0.25 * CM::mu * CM::P * std::max(t / m - 4., 0.);
+      if (moment)
+        return Q * CM::R;
+      return component == 0 ? Q : -P;
+    }
+
+  private:
+    const unsigned int m;
+    const bool         moment;
+  };
+
+  // @sect3{The contact problem in code}
+  //
+  // Body 0 is the block (master side, its top has boundary id 3, its bottom
+  // 2), body 1 the cylinder with its boundary ids moved by 10 (arc 10, cut
+  // 11). Coulomb friction with multipliers (exact stick), the friction
+  // coefficient of CM::mu on the one pair.
+  ContactProblem::Results
+  solve(const PolygonalMesh<2> &block,
+        const PolygonalMesh<2> &cylinder,
+        const unsigned int      degree,
+        const unsigned int      m,
+        const std::string      &base_name)
+  {
+    ContactProblem problem;
+    const ElasticMaterial material(CM::E, CM::nu, ElasticMaterial::Model::plane_strain);
+    problem.add_body(block, material);
+    problem.add_body(cylinder, material, 10);
+    problem.add_contact_pair(3, 10, CM::mu);
+
+    auto &bc = problem.boundary_conditions();
+    bc.add_dirichlet(2, {{true, true}}, std::make_shared<dealii::Functions::ZeroFunction<2>>(2));
+    bc.add_rigid_boundary(11, std::make_shared<RigidPartLoad>(m, false), std::make_shared<RigidPartLoad>(m, true));
+
+    auto &o              = problem.options();
+    o.degree             = degree;
+    o.contact.normal     = ContactSettings::Normal::unilateral;
+    o.contact.tangential = ContactSettings::Tangential::coulomb;
+    o.n_load_steps       = 7 * m;
+    o.final_time         = 7 * m;
+    o.base_name          = base_name;
+    o.write_vtu = o.write_pictures = false;
+    o.write_json = o.write_csv = true;
+    problem.run();
+    return problem.get_results();
   }
 
   // The number of load steps per stage (a quarter of the pressing, a
@@ -258,19 +293,6 @@ namespace Step4
   steps_per_stage(const unsigned int level, const unsigned int degree)
   {
     return (1u << level) * degree;
-  }
-
-  ContactProblem::Results
-  solve(const std::string &prm_text)
-  {
-    dealii::ParameterHandler prm;
-    ElasticityProblem::declare_parameters(prm);
-    ContactProblem::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text);
-    ContactProblem problem;
-    problem.parse_parameters(prm);
-    problem.run();
-    return problem.get_results();
   }
 
   // @sect3{Comparison with Cattaneo and Mindlin}
@@ -354,18 +376,14 @@ namespace Step4
     const double h     = 0.25 / (1 << level);
     const auto   block = block_mesh(h);
     const auto   cyl   = cylinder_mesh(h);
-    const std::string block_file = "cm-block-" + std::to_string(level) + ".vtk";
-    const std::string cyl_file   = "cm-cylinder-" + std::to_string(level) + ".vtk";
-    MeshIO::write_vtk(block, block_file);
-    MeshIO::write_vtk(cyl, cyl_file);
     const double h_local =
       std::max(local_edge_length(block, 3, CM::a() + 1), local_edge_length(cyl, 0, CM::a() + 1));
     Run r;
     r.level   = level;
     r.degree  = degree;
     r.h       = h_local;
-    r.results = solve(parameters(block_file, cyl_file, degree, steps_per_stage(level, degree),
-                                 "cm-" + std::to_string(level) + "-k" + std::to_string(degree)));
+    r.results = solve(block, cyl, degree, steps_per_stage(level, degree),
+                      "cm-" + std::to_string(level) + "-k" + std::to_string(degree));
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.dofs    = r.results.n_dofs;
     const unsigned int m = steps_per_stage(level, degree);

@@ -16,6 +16,7 @@
 #include <dealvem/contact/distributed_contact_solver.h>
 #include <dealvem/contact/friction_solver.h>
 #include <dealvem/contact/rigid_body_support.h>
+#include <dealvem/mesh/generators.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/elasticity/force_balance.h>
 #include <dealvem/postprocessing/error_norms.h>
@@ -211,6 +212,7 @@ namespace dealvem
   void
   ContactProblem::parse_parameters(dealii::ParameterHandler &prm, const std::string &dir)
   {
+    clear();
     prm_directory    = dir;
     const unsigned n = n_bodies(prm);
     // sections of bodies beyond the number of bodies would be ignored
@@ -219,63 +221,55 @@ namespace dealvem
                                          "'Number of bodies' is " + std::to_string(n) + ": section 'Body " +
                                            std::to_string(b) + "' is read only with 'Number of bodies' at least " +
                                            std::to_string(b + 1) + ".");
-    bodies.resize(n);
-    prm.enter_subsection("Mesh");
-    bodies[0].mesh.parse_parameters(prm, "Mesh");
-    prm.leave_subsection();
-    prm.enter_subsection("Exact solution");
-    bodies[0].exact = prm.get("Displacement");
-    prm.leave_subsection();
     prm.enter_subsection("Convergence study");
     n_cycles = prm.get_integer("Refinement cycles");
     prm.leave_subsection();
     prm.enter_subsection("Material");
-    bodies[0].E  = prm.get_double("Young's modulus");
-    bodies[0].nu = prm.get_double("Poisson's ratio");
-    model        = ElasticMaterial::parse_model(prm.get("Model"));
+    const auto model = ElasticMaterial::parse_model(prm.get("Model"));
     prm.leave_subsection();
-    for (unsigned int b = 1; b < n; ++b)
-      {
-        const std::string name = "Body " + std::to_string(b);
-        prm.enter_subsection(name);
-        prm.enter_subsection("Mesh");
-        bodies[b].mesh.parse_parameters(prm, name + "/Mesh");
-        prm.leave_subsection();
-        prm.enter_subsection("Material");
-        bodies[b].E  = prm.get_double("Young's modulus");
-        bodies[b].nu = prm.get_double("Poisson's ratio");
-        prm.leave_subsection();
-        prm.enter_subsection("Exact solution");
-        bodies[b].exact = prm.get("Displacement");
-        if (InputParsing::trim(bodies[b].exact).empty())
-          bodies[b].exact = bodies[0].exact;
-        prm.leave_subsection();
-        prm.leave_subsection();
-      }
+    std::string exact0;
     for (unsigned int b = 0; b < n; ++b)
       {
-        bodies[b].mesh.material_id = b;
-        InputParsing::check_range(bodies[b].E, ElasticMaterial::min_youngs_modulus,
-                                  ElasticMaterial::max_youngs_modulus,
-                                  (b == 0 ? std::string() : "Body " + std::to_string(b) + "/") +
-                                    "Material/Young's modulus",
-                                  false, false, "Choose units that bring E nearer to 1.");
-        (void)ElasticMaterial(bodies[b].E, bodies[b].nu, model);
+        // body 0: the top-level sections; body b: those of 'Body b'
+        const std::string name   = (b == 0 ? std::string() : "Body " + std::to_string(b));
+        const std::string prefix = (b == 0 ? std::string() : name + "/");
+        if (b > 0)
+          prm.enter_subsection(name);
+        Body body;
+        prm.enter_subsection("Mesh");
+        body.mesh.parse_parameters(prm, prefix + "Mesh");
+        prm.leave_subsection();
+        prm.enter_subsection("Material");
+        const double E  = prm.get_double("Young's modulus");
+        const double nu = prm.get_double("Poisson's ratio");
+        prm.leave_subsection();
+        prm.enter_subsection("Exact solution");
+        body.exact = prm.get("Displacement");
+        prm.leave_subsection();
+        if (b > 0)
+          prm.leave_subsection();
+        if (b == 0)
+          exact0 = body.exact;
+        else if (InputParsing::trim(body.exact).empty())
+          body.exact = exact0;
+        InputParsing::check_range(E, ElasticMaterial::min_youngs_modulus, ElasticMaterial::max_youngs_modulus,
+                                  prefix + "Material/Young's modulus", false, false,
+                                  "Choose units that bring E nearer to 1.");
+        body.material      = ElasticMaterial(E, nu, model);
+        body.mesh.material_id = b;
+        bodies.push_back(std::move(body));
       }
 
     prm.enter_subsection("Discretization");
-    degree = prm.get_integer("Order");
-    gamma  = prm.get_double("Stabilization factor");
-    stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
-                     prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
-                                                              Stabilization::automatic);
+    opt.degree               = prm.get_integer("Order");
+    opt.stabilization_factor = prm.get_double("Stabilization factor");
+    opt.stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
+                         prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
+                                                                  Stabilization::automatic);
     prm.leave_subsection();
-    InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
     bc.parse_parameters(prm);
 
     prm.enter_subsection("Contact");
-    contact_pairs.clear();
-    std::vector<double> pair_friction;
     for (const auto &entry : InputParsing::split(prm.get("Pairs"), ';'))
       {
         const std::string name   = "Contact/Pairs entry '" + entry + "'";
@@ -291,77 +285,32 @@ namespace dealvem
             InputParsing::check_range(mu, 0, 1e6, name + " (friction coefficient)", false, false,
                                       "The Coulomb friction coefficient is a number >= 0.");
           }
-        pair_friction.push_back(mu);
         const unsigned int a = InputParsing::parse_unsigned(fields[0], name);
         const unsigned int s = InputParsing::parse_unsigned(fields[1], name);
         AssertThrow(a < 255 && s < 255 && a != s,
                     dealii::ExcMessage("Parameter '" + name + "': two different boundary ids below 255 expected."));
-        for (const auto &other : contact_pairs)
-          for (const unsigned int id : {other.first, other.second})
-            AssertThrow(id != a && id != s,
-                        dealii::ExcMessage("Parameter '" + name + "': boundary id " + std::to_string(id) +
-                                           " is already part of the contact pair " +
-                                           std::to_string(other.first) + " : " + std::to_string(other.second) +
-                                           "; a boundary part can belong to one contact pair only."));
-        contact_pairs.emplace_back(a, s);
+        add_contact_pair(a, s, mu, "Parameter '" + name + "'");
       }
-    contact_settings.normal     = ContactSettings::parse_normal(prm.get("Normal"));
-    contact_settings.tangential = ContactSettings::parse_tangential(prm.get("Tangential"));
-    contact_settings.friction_coefficient  = prm.get_double("Friction coefficient");
-    contact_settings.friction_coefficients = pair_friction;
-    InputParsing::check_range(contact_settings.friction_coefficient, 0, 1e6, "Contact/Friction coefficient",
-                              false, false, "The Coulomb friction coefficient is a number >= 0.");
-    if (!contact_settings.is_coulomb())
-      {
-        AssertThrow(contact_settings.friction_coefficient == 0,
-                    dealii::ExcMessage("Parameter 'Contact/Friction coefficient' is " +
-                                       std::to_string(contact_settings.friction_coefficient) +
-                                       ", but 'Contact/Tangential' is '" + prm.get("Tangential") +
-                                       "': a friction coefficient needs 'Tangential = coulomb' or "
-                                       "'coulomb penalty'."));
-        for (unsigned int i = 0; i < pair_friction.size(); ++i)
-          AssertThrow(pair_friction[i] < 0,
-                      dealii::ExcMessage("Parameter 'Contact/Pairs': the entry of interface " + std::to_string(i) +
-                                         " gives a friction coefficient, but 'Contact/Tangential' is '" +
-                                         prm.get("Tangential") +
-                                         "': a friction coefficient needs 'Tangential = coulomb' or "
-                                         "'coulomb penalty'."));
-      }
-    else
-      AssertThrow(contact_settings.normal == ContactSettings::Normal::unilateral,
-                  dealii::ExcMessage("Parameter 'Contact/Tangential' is '" + prm.get("Tangential") +
-                                     "' (Coulomb friction) but 'Contact/Normal' is 'tied': friction needs "
-                                     "unilateral normal contact, where a pair can open and the pressure "
-                                     "bounds the friction force. Use 'Normal = unilateral', or "
-                                     "'Tangential = multipliers' for a tied interface that sticks."));
-    contact_settings.penalty    = prm.get_double("Penalty");
-    contact_settings.penalty_factor           = prm.get_double("Penalty factor");
-    contact_settings.max_active_set_iterations = prm.get_integer("Maximum active set iterations");
-    contact_settings.accelerate_active_set     = prm.get_bool("Active set acceleration");
-    insertion_settings.merge_fraction            = prm.get_double("Merge fraction");
-    insertion_settings.search_distance           = prm.get_double("Search distance");
-    insertion_settings.coordinate_precision      = prm.get_double("Coordinate precision");
-    insertion_settings.close_discretisation_gaps = prm.get_bool("Close discretisation gaps");
-    const std::string tangential_name            = prm.get("Tangential");
+    auto &cs          = opt.contact;
+    cs.normal         = ContactSettings::parse_normal(prm.get("Normal"));
+    cs.tangential     = ContactSettings::parse_tangential(prm.get("Tangential"));
+    cs.friction_coefficient      = prm.get_double("Friction coefficient");
+    cs.penalty                   = prm.get_double("Penalty");
+    cs.penalty_factor            = prm.get_double("Penalty factor");
+    cs.max_active_set_iterations = prm.get_integer("Maximum active set iterations");
+    cs.accelerate_active_set     = prm.get_bool("Active set acceleration");
+    opt.insertion.merge_fraction            = prm.get_double("Merge fraction");
+    opt.insertion.search_distance           = prm.get_double("Search distance");
+    opt.insertion.coordinate_precision      = prm.get_double("Coordinate precision");
+    opt.insertion.close_discretisation_gaps = prm.get_bool("Close discretisation gaps");
+    const std::string tangential_name       = prm.get("Tangential");
     prm.leave_subsection();
-    if (root && contact_settings.tangential != ContactSettings::Tangential::penalty &&
-        contact_settings.tangential != ContactSettings::Tangential::coulomb_penalty)
+    if (root && cs.tangential != ContactSettings::Tangential::penalty &&
+        cs.tangential != ContactSettings::Tangential::coulomb_penalty)
       for (const auto &e : InputParsing::changed_entries(prm, "Contact"))
         if (e == "Contact/Penalty" || e == "Contact/Penalty factor")
           std::cout << "warning: the parameter file sets '" << e << "', but 'Contact/Tangential' is '"
                     << tangential_name << "', which uses no stick penalty; the setting has no effect." << std::endl;
-    // the penalty itself is bounded relative to E_min / h_min once the
-    // interfaces are known (setup_system()); its factor is dimensionless
-    InputParsing::check_range(contact_settings.penalty, 0, std::numeric_limits<double>::max(), "Contact/Penalty",
-                              false, false, "0 selects the default rule 'Penalty factor' * E_min / h_min.");
-    InputParsing::check_range(contact_settings.penalty_factor, ContactScales::min_penalty_factor,
-                              ContactScales::max_penalty_factor, "Contact/Penalty factor", false, false,
-                              "The stick penalty is this factor times E_min / h_min: a much smaller one leaves "
-                              "the stick direction nearly free, a larger one makes the system too "
-                              "ill-conditioned for correct pressures.");
-    AssertThrow(n == 1 || !contact_pairs.empty(),
-                dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
-                                   std::to_string(n) + " bodies: name at least one contact pair."));
 
     prm.enter_subsection("Load steps");
     {
@@ -369,42 +318,201 @@ namespace dealvem
       AssertThrow(steps >= 1 && steps <= 100000,
                   dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(steps) +
                                      ": it must be at least 1 (and at most 100000)."));
-      n_steps = steps;
+      opt.n_load_steps = steps;
     }
-    final_time = prm.get_double("Final time");
+    opt.final_time = prm.get_double("Final time");
     prm.leave_subsection();
-    InputParsing::check_range(final_time, 0, 1e300, "Load steps/Final time", true, false,
-                              "The load steps run from t = 0 to the final time.");
 
     prm.enter_subsection("Solver");
-    solver_type = prm.get("Type");
+    opt.solver = prm.get("Type");
     // 'automatic' is resolved in setup_system(), when the size is known
-    solver_tolerance      = prm.get_double("Relative tolerance");
-    solver_max_iterations = prm.get_integer("Maximum iterations");
-    solver_warm_start     = prm.get_bool("Warm start");
+    opt.solver_tolerance      = prm.get_double("Relative tolerance");
+    opt.solver_max_iterations = prm.get_integer("Maximum iterations");
+    opt.warm_start            = prm.get_bool("Warm start");
     prm.leave_subsection();
-    InputParsing::check_range(solver_tolerance, 0, 1, "Solver/Relative tolerance", true, true);
+
+    prm.enter_subsection("Output");
+    opt.output_folder  = prm.get("Folder");
+    opt.base_name      = prm.get("Base name");
+    opt.write_vtu      = prm.get_bool("Write VTU");
+    opt.write_json     = prm.get_bool("Write JSON");
+    opt.write_pictures = prm.get_bool("Write pictures");
+    opt.write_csv      = prm.get_bool("Write CSV");
+    prm.leave_subsection();
+
+    check_setup();
     {
       std::vector<const MeshParameters *> meshes;
       for (const auto &b : bodies)
         meshes.push_back(&b.mesh);
-      InputParsing::check_run_size(meshes, n_cycles, degree, prm.get_bool("Allow large runs"), prm_directory,
-                                   solver_type == "UMFPACK" || solver_type == "KLU" ?
+      InputParsing::check_run_size(meshes, n_cycles, opt.degree, prm.get_bool("Allow large runs"), prm_directory,
+                                   opt.solver == "UMFPACK" || opt.solver == "KLU" ?
                                      InputParsing::SolverKind::direct :
                                      InputParsing::SolverKind::iterative,
                                    prm.get_double("Memory limit"));
     }
+    create_output_folder(opt.output_folder);
+  }
 
-    prm.enter_subsection("Output");
-    output_folder  = prm.get("Folder");
-    base_name      = prm.get("Base name");
-    write_vtu      = prm.get_bool("Write VTU");
-    write_json     = prm.get_bool("Write JSON");
-    write_pictures = prm.get_bool("Write pictures");
-    write_csv      = prm.get_bool("Write CSV");
-    prm.leave_subsection();
-    check_output_names(output_folder, base_name);
-    create_output_folder(output_folder);
+
+
+  unsigned int
+  ContactProblem::add_body(const PolygonalMesh<2> &mesh,
+                           const ElasticMaterial  &material,
+                           const unsigned int      boundary_id_offset)
+  {
+    const unsigned int b = bodies.size();
+    AssertThrow(b < dealii::numbers::invalid_material_id,
+                dealii::ExcMessage("ContactProblem::add_body(): at most 255 bodies (material ids 0..254)."));
+    AssertThrow(mesh.n_cells() > 0,
+                dealii::ExcMessage("ContactProblem::add_body(): the mesh of body " + std::to_string(b) +
+                                   (mesh.name.empty() ? std::string() : " ('" + mesh.name + "')") +
+                                   " has no cells."));
+    AssertThrow(bodies.empty() || bodies[0].material.model() == material.model(),
+                dealii::ExcMessage("ContactProblem::add_body(): body " + std::to_string(b) + " is in " +
+                                   ElasticMaterial::model_name(material.model()) + ", body 0 in " +
+                                   ElasticMaterial::model_name(bodies[0].material.model()) +
+                                   ": all bodies of a problem share the model."));
+    Body body;
+    auto given = std::make_shared<PolygonalMesh<2>>(mesh);
+    MeshParameters::shift_boundary_ids(*given, boundary_id_offset,
+                                       "ContactProblem::add_body(): body " + std::to_string(b) +
+                                         ", boundary id offset " + std::to_string(boundary_id_offset));
+    body.given    = given;
+    body.material = material;
+    body.mesh.material_id = b;
+    bodies.push_back(std::move(body));
+    return b;
+  }
+
+
+
+  unsigned int
+  ContactProblem::add_body(const dealii::Triangulation<2, 2> &tria,
+                           const ElasticMaterial             &material,
+                           const unsigned int                 boundary_id_offset)
+  {
+    PolygonalMesh<2> mesh;
+    PolygonalMeshGenerators::from_triangulation(mesh, tria);
+    mesh.name = "body " + std::to_string(bodies.size());
+    return add_body(mesh, material, boundary_id_offset);
+  }
+
+
+
+  void
+  ContactProblem::add_contact_pair(const dealii::types::boundary_id master,
+                                   const dealii::types::boundary_id slave,
+                                   const double                     friction_coefficient,
+                                   const std::string               &name)
+  {
+    const std::string who = name.empty() ? "ContactProblem::add_contact_pair(" + std::to_string(int(master)) +
+                                             ", " + std::to_string(int(slave)) + ")" :
+                                           name;
+    AssertThrow(master <= InputParsing::max_boundary_id &&
+                  slave <= InputParsing::max_boundary_id && master != slave,
+                dealii::ExcMessage(who + ": two different boundary ids below 255 expected."));
+    AssertThrow(std::isfinite(friction_coefficient) && friction_coefficient <= 1e6,
+                dealii::ExcMessage(who + ": the friction coefficient " + std::to_string(friction_coefficient) +
+                                   " is not a number from 0 to 1e6 (negative: the default of the contact settings)."));
+    for (const auto &other : contact_pairs)
+      for (const unsigned int id : {other.first, other.second})
+        AssertThrow(id != master && id != slave,
+                    dealii::ExcMessage(who + ": boundary id " + std::to_string(id) +
+                                       " is already part of the contact pair " + std::to_string(other.first) +
+                                       " : " + std::to_string(other.second) +
+                                       "; a boundary part can belong to one contact pair only."));
+    contact_pairs.emplace_back(master, slave);
+    pair_friction.push_back(friction_coefficient < 0 ? -1. : friction_coefficient);
+  }
+
+
+
+  void
+  ContactProblem::clear()
+  {
+    bodies.clear();
+    contact_pairs.clear();
+    pair_friction.clear();
+    bc.clear();
+    n_cycles = 1;
+    prm_directory.clear();
+  }
+
+
+
+  void
+  ContactProblem::check_setup() const
+  {
+    AssertThrow(!bodies.empty(),
+                dealii::ExcMessage("ContactProblem: no body; add one with add_body() or read a parameter file."));
+    AssertThrow(opt.degree == 1 || opt.degree == 2,
+                dealii::ExcMessage("Parameter 'Discretization/Order' is " + std::to_string(opt.degree) +
+                                   ": the order k of the virtual elements must be 1 or 2."));
+    InputParsing::check_range(opt.stabilization_factor, 1e-6, 1e6, "Discretization/Stabilization factor");
+    const auto &cs = opt.contact;
+    InputParsing::check_range(cs.friction_coefficient, 0, 1e6, "Contact/Friction coefficient", false, false,
+                              "The Coulomb friction coefficient is a number >= 0.");
+    const std::string tangential_name = ContactSettings::tangential_name(cs.tangential);
+    if (!cs.is_coulomb())
+      {
+        std::ostringstream mu;
+        mu << cs.friction_coefficient;
+        AssertThrow(cs.friction_coefficient == 0,
+                    dealii::ExcMessage("Parameter 'Contact/Friction coefficient' is " + mu.str() +
+                                       ", but 'Contact/Tangential' is '" +
+                                       tangential_name +
+                                       "': a friction coefficient needs 'Tangential = coulomb' or "
+                                       "'coulomb penalty'."));
+        for (unsigned int i = 0; i < pair_friction.size(); ++i)
+          AssertThrow(pair_friction[i] < 0,
+                      dealii::ExcMessage("Parameter 'Contact/Pairs': the entry of interface " + std::to_string(i) +
+                                         " gives a friction coefficient, but 'Contact/Tangential' is '" +
+                                         tangential_name +
+                                         "': a friction coefficient needs 'Tangential = coulomb' or "
+                                         "'coulomb penalty'."));
+      }
+    else
+      AssertThrow(cs.normal == ContactSettings::Normal::unilateral,
+                  dealii::ExcMessage("Parameter 'Contact/Tangential' is '" + tangential_name +
+                                     "' (Coulomb friction) but 'Contact/Normal' is 'tied': friction needs "
+                                     "unilateral normal contact, where a pair can open and the pressure "
+                                     "bounds the friction force. Use 'Normal = unilateral', or "
+                                     "'Tangential = multipliers' for a tied interface that sticks."));
+    // the penalty itself is bounded relative to E_min / h_min once the
+    // interfaces are known (setup_system()); its factor is dimensionless
+    InputParsing::check_range(cs.penalty, 0, std::numeric_limits<double>::max(), "Contact/Penalty", false, false,
+                              "0 selects the default rule 'Penalty factor' * E_min / h_min.");
+    InputParsing::check_range(cs.penalty_factor, ContactScales::min_penalty_factor,
+                              ContactScales::max_penalty_factor, "Contact/Penalty factor", false, false,
+                              "The stick penalty is this factor times E_min / h_min: a much smaller one leaves "
+                              "the stick direction nearly free, a larger one makes the system too "
+                              "ill-conditioned for correct pressures.");
+    AssertThrow(cs.max_active_set_iterations >= 1,
+                dealii::ExcMessage("Parameter 'Contact/Maximum active set iterations' must be at least 1."));
+    InputParsing::check_range(opt.insertion.merge_fraction, 1e-6, 0.49, "Contact/Merge fraction");
+    InputParsing::check_range(opt.insertion.search_distance, 0, 1e300, "Contact/Search distance", false, false);
+    InputParsing::check_range(opt.insertion.coordinate_precision, 0, 0.01, "Contact/Coordinate precision", false,
+                              false);
+    AssertThrow(bodies.size() == 1 || !contact_pairs.empty(),
+                dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
+                                   std::to_string(bodies.size()) + " bodies: name at least one contact pair."));
+    AssertThrow(opt.n_load_steps >= 1 && opt.n_load_steps <= 100000,
+                dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(opt.n_load_steps) +
+                                   ": it must be at least 1 (and at most 100000)."));
+    InputParsing::check_range(opt.final_time, 0, 1e300, "Load steps/Final time", true, false,
+                              "The load steps run from t = 0 to the final time.");
+    InputParsing::check_range(opt.solver_tolerance, 0, 1, "Solver/Relative tolerance", true, true);
+    AssertThrow(opt.solver_max_iterations >= 1,
+                dealii::ExcMessage("Parameter 'Solver/Maximum iterations' must be at least 1."));
+    if (opt.solver != "automatic")
+      (void)SaddlePointSolver::parse_type(opt.solver);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      AssertThrow(bodies[b].given == nullptr || n_cycles == 1,
+                  dealii::ExcMessage("ContactProblem: body " + std::to_string(b) +
+                                     " was given as a mesh, which has no refinement cycles; refine it in "
+                                     "your program and run once per mesh."));
+    check_output_names(opt.output_folder, opt.base_name);
   }
 
 
@@ -412,6 +520,9 @@ namespace dealvem
   void
   ContactProblem::run()
   {
+    check_setup();
+    contact_settings                       = opt.contact;
+    contact_settings.friction_coefficients = pair_friction;
     // with several MPI processes every process computes the same
     // postprocessing from the gathered solution; process 0 alone prints and
     // writes (the flags and std::cout are restored on the way out, also
@@ -432,28 +543,28 @@ namespace dealvem
       std::array<bool, 4>     flags;
       Silence(ContactProblem &p)
         : p(p)
-        , flags{{p.write_vtu, p.write_csv, p.write_json, p.write_pictures}}
+        , flags{{p.opt.write_vtu, p.opt.write_csv, p.opt.write_json, p.opt.write_pictures}}
       {
         if (p.root)
           return;
         old = std::cout.rdbuf(&sink);
-        p.write_vtu = p.write_csv = p.write_json = p.write_pictures = false;
+        p.opt.write_vtu = p.opt.write_csv = p.opt.write_json = p.opt.write_pictures = false;
       }
       ~Silence()
       {
         if (old != nullptr)
           std::cout.rdbuf(old);
-        p.write_vtu      = flags[0];
-        p.write_csv      = flags[1];
-        p.write_json     = flags[2];
-        p.write_pictures = flags[3];
+        p.opt.write_vtu      = flags[0];
+        p.opt.write_csv      = flags[1];
+        p.opt.write_json     = flags[2];
+        p.opt.write_pictures = flags[3];
       }
     } silence(*this);
     if (root)
-      std::filesystem::create_directories(output_folder);
+      std::filesystem::create_directories(opt.output_folder);
     // the files under the output prefix belong to this run only: those of
     // an earlier run go first (process 0 writes every file)
-    RunFiles run_files(output_folder, base_name, root, write_vtu || write_csv || write_json || write_pictures);
+    RunFiles run_files(opt.output_folder, opt.base_name, root, opt.write_vtu || opt.write_csv || opt.write_json || opt.write_pictures);
     std::cout << run_files.removal_note(run_files.start());
     try
       {
@@ -601,14 +712,14 @@ namespace dealvem
     data.reset();
     results = Results();
     data    = std::make_unique<CycleData>();
-    data->prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
+    data->prefix = output_prefix(opt.output_folder, opt.base_name, cycle, n_cycles);
 
     make_meshes(cycle);
     insert_nodes();
     setup_system();
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    for (unsigned int step = 1; step <= opt.n_load_steps; ++step)
       {
-        const double time = final_time * step / n_steps;
+        const double time = opt.final_time * step / opt.n_load_steps;
         assemble_system(time);
         solve(step, time);
         process_step(step, time);
@@ -628,14 +739,17 @@ namespace dealvem
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         PolygonalMesh<2> body_mesh;
-        bodies[b].mesh.create_mesh(body_mesh, cycle, prm_directory);
+        if (bodies[b].given)
+          body_mesh = *bodies[b].given;
+        else
+          bodies[b].mesh.create_mesh(body_mesh, cycle, prm_directory);
         for (unsigned int c = 0; c < body_mesh.n_cells(); ++c)
           body_mesh.set_material_id(c, b);
         if (b == 0)
           mesh = body_mesh;
         else
           mesh.append(body_mesh);
-        data->materials.emplace(b, ElasticMaterial(bodies[b].E, bodies[b].nu, model));
+        data->materials.emplace(b, bodies[b].material);
       }
     mesh.name               = "bodies";
     data->original_vertices = mesh.get_vertices();
@@ -652,8 +766,8 @@ namespace dealvem
     PolygonalMesh<2>          &mesh       = results.mesh;
     auto                      &interfaces = results.interfaces;
     for (unsigned int i = 0; i < contact_pairs.size(); ++i)
-      interfaces.push_back(NodeInsertion::insert(mesh, contact_pairs[i].first, contact_pairs[i].second, degree,
-                                                 insertion_settings, i));
+      interfaces.push_back(NodeInsertion::insert(mesh, contact_pairs[i].first, contact_pairs[i].second, opt.degree,
+                                                 opt.insertion, i));
     // a later interface may have moved a vertex shared with an earlier one
     for (auto &itf : interfaces)
       NodeInsertion::update_geometry(mesh, itf);
@@ -681,7 +795,7 @@ namespace dealvem
   {
     CycleData &d = *data;
     d.dof_handler.reinit(results.mesh);
-    d.dof_handler.distribute_dofs(degree);
+    d.dof_handler.distribute_dofs(opt.degree);
 
     std::vector<double> moduli;
     for (const auto &m : d.materials)
@@ -695,7 +809,7 @@ namespace dealvem
     d.contact = std::make_unique<ContactAssembler<2>>(d.dof_handler, d.pairs, contact_settings, results.penalty);
 
     bc.check_boundary_ids(results.mesh);
-    bc.set_time(final_time / n_steps);
+    bc.set_time(opt.final_time / opt.n_load_steps);
     d.constraints.clear();
     bc.apply_constraints(d.dof_handler, d.constraints);
     d.constraints.close();
@@ -730,7 +844,7 @@ namespace dealvem
     }
 
     SaddlePointSolver::Settings settings;
-    if (solver_type == "automatic")
+    if (opt.solver == "automatic")
       {
         // the condensed solves need symmetric contact rows; Coulomb's slip
         // rows are not: the whole saddle point by UMFPACK
@@ -753,10 +867,10 @@ namespace dealvem
                     << why.str() << std::endl;
       }
     else
-      settings.type = SaddlePointSolver::parse_type(solver_type);
-    settings.relative_tolerance = solver_tolerance;
-    settings.max_iterations     = solver_max_iterations;
-    settings.warm_start         = solver_warm_start;
+      settings.type = SaddlePointSolver::parse_type(opt.solver);
+    settings.relative_tolerance = opt.solver_tolerance;
+    settings.max_iterations     = opt.solver_max_iterations;
+    settings.warm_start         = opt.warm_start;
     if (distributed)
       {
         d.partition = std::make_unique<VEMPartition<2>>();
@@ -801,7 +915,7 @@ namespace dealvem
     d.constraints.clear();
     bc.apply_constraints(d.dof_handler, d.constraints);
     d.constraints.close();
-    d.assembler = std::make_unique<ElasticityAssembler<2>>(d.dof_handler, d.materials, gamma, stabilization);
+    d.assembler = std::make_unique<ElasticityAssembler<2>>(d.dof_handler, d.materials, opt.stabilization_factor, opt.stabilization);
     ElasticityAssembler<2> &assembler = *d.assembler;
     bc.add_loads(assembler);
     // the first n unknowns of the saddle-point system are the displacements
@@ -876,19 +990,19 @@ namespace dealvem
       }
     catch (...)
       {
-        if (n_steps > 1)
+        if (opt.n_load_steps > 1)
           {
-            std::cout << "  load step " << step << " of " << n_steps << " (t = " << time
+            std::cout << "  load step " << step << " of " << opt.n_load_steps << " (t = " << time
                       << ") failed; the results of the " << step - 1 << " converged step(s) are kept";
-            if (write_vtu || write_csv)
+            if (opt.write_vtu || opt.write_csv)
               std::cout << " (" << d.prefix << "-step-*, " << d.prefix << ".pvd)";
             std::cout << "." << std::endl;
-            if (write_json)
+            if (opt.write_json)
               {
                 JsonSummary json;
                 json.set("program", "dealvem");
                 json.set("problem", "contact");
-                json.set("load_steps.requested", double(n_steps));
+                json.set("load_steps.requested", double(opt.n_load_steps));
                 json.set("load_steps.converged", double(step - 1));
                 json.set("load_steps.failed_step", double(step));
                 json.set("load_steps.failed_time", time);
@@ -1081,9 +1195,9 @@ namespace dealvem
     verify_step(step, time, tangential_force, step_result);
     results.steps.push_back(step_result);
 
-    if (n_steps > 1 || friction)
+    if (opt.n_load_steps > 1 || friction)
       {
-        std::cout << "  load step " << step << " of " << n_steps << ", t = " << time << ": "
+        std::cout << "  load step " << step << " of " << opt.n_load_steps << ", t = " << time << ": "
                   << as.n_iterations << (friction ? " Newton" : " active-set") << " iteration(s), "
                   << step_result.n_open << " open / " << step_result.n_stick
                   << (friction ? " stick / " : " closed") ;
@@ -1101,7 +1215,7 @@ namespace dealvem
           }
         std::cout << std::endl;
       }
-    if (n_steps > 1)
+    if (opt.n_load_steps > 1)
       output_step(step);
   }
 
@@ -1122,7 +1236,7 @@ namespace dealvem
     const auto      &x     = d.x;
     const auto      &pairs = d.pairs;
     std::ostringstream where;
-    where << (n_steps > 1 ? "load step " + std::to_string(step) + " of " + std::to_string(n_steps) : "the contact problem")
+    where << (opt.n_load_steps > 1 ? "load step " + std::to_string(step) + " of " + std::to_string(opt.n_load_steps) : "the contact problem")
           << " (t = " << time << ", " << d.as.n_iterations
           << (d.friction_solver ? " Newton" : " active-set") << " iteration(s), solver " << d.solver->description()
           << ")";
@@ -1149,7 +1263,7 @@ namespace dealvem
       u[i] = x[i];
     const bool   direct    = (d.solver->get_type() == SaddlePointSolver::Type::umfpack ||
                          d.solver->get_type() == SaddlePointSolver::Type::klu);
-    const double tolerance = direct ? 0. : solver_tolerance;
+    const double tolerance = direct ? 0. : opt.solver_tolerance;
     const auto   balance =
       (d.partition ? ForceBalance::compute(*d.assembler, d.constraints, u, contact_forces, tolerance,
                                            &d.partition->locally_owned_cells(), mpi_communicator, couplings) :
@@ -1190,9 +1304,9 @@ namespace dealvem
   ContactProblem::output_step(const unsigned int step) const
   {
     const CycleData &d = *data;
-    if (write_csv)
+    if (opt.write_csv)
       write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
-    if (write_vtu)
+    if (opt.write_vtu)
       {
         StressRecovery<2> step_stresses(d.dof_handler, d.materials, results.solution);
         write_vtu_file(step_prefix(d.prefix, step) + ".vtu", d.dof_handler, results.solution, step_stresses);
@@ -1250,7 +1364,7 @@ namespace dealvem
                       dealii::ExcMessage("Parameter '" + name + "' needs two expressions 'ux, uy'."));
           // the solution is the one of the last load step, at t = final time
           InputParsing::ParsedFunction exact(parts, bc.get_constants(), name);
-          exact.set_time(final_time);
+          exact.set_time(opt.final_time);
           results.errors[b] = compute_errors(d.dof_handler, d.materials, results.solution, exact,
                                              dealii::types::material_id(b));
           for (const double v : {results.errors[b].l2, results.errors[b].h1_seminorm, results.errors[b].energy})
@@ -1293,22 +1407,22 @@ namespace dealvem
         results.peak_memory_MB.push_back(kB / 1024.);
     }
     print_report();
-    if (write_csv)
+    if (opt.write_csv)
       {
         write_interface_csv(data->prefix + "-interface.csv", results.pairs);
         std::cout << "  interface results: " << data->prefix << "-interface.csv" << std::endl;
       }
-    if (write_vtu)
+    if (opt.write_vtu)
       {
         write_vtu_file(data->prefix + ".vtu", data->dof_handler, results.solution, *data->stresses);
         std::cout << "  ParaView file (all bodies, field body_id): " << data->prefix << ".vtu" << std::endl;
-        if (n_steps > 1)
+        if (opt.n_load_steps > 1)
           std::cout << "  load steps: " << data->prefix << "-step-NNN.vtu, -interface.csv; time series " << data->prefix
                     << ".pvd" << std::endl;
       }
-    if (write_pictures)
+    if (opt.write_pictures)
       write_pictures_files();
-    if (write_json)
+    if (opt.write_json)
       write_json_summary();
   }
 
@@ -1531,7 +1645,7 @@ namespace dealvem
     json.set("cells", double(mesh.n_cells()));
     json.set("dofs", double(n));
     json.set("multipliers", double(m));
-    json.set("order", double(degree));
+    json.set("order", double(opt.degree));
     json.set("solver", d.solver->description());
     json.set("mpi.processes", double(n_processes));
     for (unsigned int p = 0; p < results.peak_memory_MB.size(); ++p)
@@ -1578,12 +1692,12 @@ namespace dealvem
           json.set(k + "H1", e.h1_seminorm / std::max(e.h1_exact, 1e-300));
           json.set(k + "energy", e.energy / std::max(e.energy_exact, 1e-300));
         }
-    if (friction || n_steps > 1)
+    if (friction || opt.n_load_steps > 1)
       {
         json.set("contact.tangential", friction ? "coulomb" : "stick or frictionless");
-        json.set("load_steps.requested", double(n_steps));
+        json.set("load_steps.requested", double(opt.n_load_steps));
         json.set("load_steps.converged", double(results.steps.size()));
-        json.set("load_steps.final_time", final_time);
+        json.set("load_steps.final_time", opt.final_time);
         json.set("contact.dissipated_energy", results.dissipated_energy);
         for (const auto &sr : results.steps)
           {

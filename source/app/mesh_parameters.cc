@@ -157,16 +157,7 @@ namespace dealvem
     if (type.find("file") == std::string::npos)
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         mesh.set_material_id(c, material_id);
-    if (boundary_id_offset > 0)
-      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
-        if (mesh.edge(e).at_boundary())
-          {
-            const unsigned int id = mesh.edge(e).boundary_id + boundary_id_offset;
-            AssertThrow(id < dealii::numbers::internal_face_boundary_id,
-                        dealii::ExcMessage("Boundary id offset: id " + std::to_string(id) +
-                                           " is out of range (0..254)."));
-            mesh.set_edge_boundary_id(e, dealii::types::boundary_id(id));
-          }
+    shift_boundary_ids(mesh, boundary_id_offset);
     if (!InputParsing::trim(transformation).empty())
       {
         const InputParsing::ParsedFunction f(InputParsing::split(transformation, ','),
@@ -202,5 +193,21 @@ namespace dealvem
     else
       s << ", " << nx << " x " << ny;
     return s.str();
+  }
+
+
+  void
+  MeshParameters::shift_boundary_ids(PolygonalMesh<2> &mesh, const unsigned int offset, const std::string &what)
+  {
+    if (offset == 0)
+      return;
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      if (mesh.edge(e).at_boundary())
+        {
+          const unsigned int id = mesh.edge(e).boundary_id + offset;
+          AssertThrow(id <= InputParsing::max_boundary_id,
+                      dealii::ExcMessage(what + ": id " + std::to_string(id) + " is out of range (0..254)."));
+          mesh.set_edge_boundary_id(e, dealii::types::boundary_id(id));
+        }
   }
 } // namespace dealvem

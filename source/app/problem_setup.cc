@@ -5,7 +5,11 @@
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/elasticity/boundary_conditions.h>
 
+#include <deal.II/base/function.h>
+
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace dealvem
@@ -18,7 +22,7 @@ namespace dealvem
     parse_id(const std::string &s, const std::string &parameter)
     {
       const unsigned int id = InputParsing::parse_unsigned(s, parameter);
-      AssertThrow(id < dealii::numbers::internal_face_boundary_id,
+      AssertThrow(id <= InputParsing::max_boundary_id,
                   dealii::ExcMessage("Parameter '" + parameter + "': boundary id " + s +
                                      " is out of range (0..254)."));
       return dealii::types::boundary_id(id);
@@ -35,7 +39,218 @@ namespace dealvem
                                             "' must be x or y."));
       return 0;
     }
+
+    // A function given in code, with the checks a parsed expression has:
+    // every value it returns must be finite, or the error names the
+    // condition, the point and the time. set_time() reaches the function.
+    class CheckedFunction : public dealii::Function<2>
+    {
+    public:
+      CheckedFunction(const std::shared_ptr<dealii::Function<2>> &function, const std::string &name)
+        : dealii::Function<2>(function->n_components, function->get_time())
+        , function(function)
+        , name(name)
+      {}
+
+      double
+      value(const dealii::Point<2> &p, const unsigned int component = 0) const override
+      {
+        const double v = function->value(p, component);
+        if (!std::isfinite(v))
+          report(p, component, v);
+        return v;
+      }
+
+      void
+      vector_value(const dealii::Point<2> &p, dealii::Vector<double> &values) const override
+      {
+        function->vector_value(p, values);
+        for (unsigned int c = 0; c < values.size(); ++c)
+          if (!std::isfinite(values[c]))
+            report(p, c, values[c]);
+      }
+
+      void
+      set_time(const double t) override
+      {
+        dealii::Function<2>::set_time(t);
+        function->set_time(t);
+      }
+
+    private:
+      [[noreturn]] void
+      report(const dealii::Point<2> &p, const unsigned int component, const double v) const
+      {
+        std::ostringstream msg;
+        msg << name << ": the function returns " << v << " for component " << component << " at (" << p[0]
+            << ", " << p[1] << "), t = " << get_time() << "; every value must be finite.";
+        AssertThrow(false, dealii::ExcMessage(msg.str()));
+        std::abort();
+      }
+
+      std::shared_ptr<dealii::Function<2>> function;
+      std::string                          name;
+    };
+
+    // A parsed expression checks itself; anything else gets the wrapper.
+    std::shared_ptr<dealii::Function<2>>
+    checked(const std::shared_ptr<dealii::Function<2>> &f,
+            const unsigned int                          n_components,
+            const std::string                          &name)
+    {
+      AssertThrow(f != nullptr, dealii::ExcMessage(name + ": the function is a null pointer."));
+      AssertThrow(f->n_components == n_components,
+                  dealii::ExcMessage(name + ": the function has " + std::to_string(f->n_components) +
+                                     " component(s), " + std::to_string(n_components) + " expected."));
+      if (dynamic_cast<const InputParsing::ParsedFunction *>(f.get()) != nullptr)
+        return f;
+      return std::make_shared<CheckedFunction>(f, name);
+    }
+
+    void
+    check_id(const dealii::types::boundary_id id, const std::string &name)
+    {
+      AssertThrow(id <= InputParsing::max_boundary_id,
+                  dealii::ExcMessage(name + ": boundary id " + std::to_string(int(id)) +
+                                     " is out of range (0..254)."));
+    }
+
+    std::string
+    default_name(const std::string &given, const std::string &what, const dealii::types::boundary_id id)
+    {
+      return given.empty() ? what + " on boundary id " + std::to_string(int(id)) : given;
+    }
   } // namespace
+
+
+
+  void
+  BoundaryConditionParameters::clear()
+  {
+    constants.clear();
+    dirichlet.clear();
+    rollers.clear();
+    tractions.clear();
+    pressures.clear();
+    points.clear();
+    rigid_boundaries.clear();
+    body_force.reset();
+    body_force_name.clear();
+  }
+
+
+
+  void
+  BoundaryConditionParameters::add_dirichlet(const dealii::types::boundary_id            id,
+                                             const std::array<bool, 2>                   &mask,
+                                             const std::shared_ptr<dealii::Function<2>> &displacement,
+                                             const std::string                           &name)
+  {
+    Dirichlet d;
+    d.name = default_name(name, "Dirichlet condition", id);
+    check_id(id, d.name);
+    AssertThrow(mask[0] || mask[1], dealii::ExcMessage(d.name + ": the component mask selects no component."));
+    d.id       = id;
+    d.mask     = mask;
+    d.function = checked(displacement, 2, d.name);
+    dirichlet.push_back(std::move(d));
+  }
+
+
+
+  void
+  BoundaryConditionParameters::add_roller(const dealii::types::boundary_id id, const std::string &name)
+  {
+    const std::string n = default_name(name, "Roller condition", id);
+    check_id(id, n);
+    rollers.push_back({n, id});
+  }
+
+
+
+  void
+  BoundaryConditionParameters::add_traction(const dealii::types::boundary_id            id,
+                                            const std::shared_ptr<dealii::Function<2>> &traction,
+                                            const std::string                           &name)
+  {
+    Load l;
+    l.name = default_name(name, "Traction", id);
+    check_id(id, l.name);
+    l.id       = id;
+    l.function = checked(traction, 2, l.name);
+    tractions.push_back(std::move(l));
+  }
+
+
+
+  void
+  BoundaryConditionParameters::add_pressure(const dealii::types::boundary_id            id,
+                                            const std::shared_ptr<dealii::Function<2>> &pressure,
+                                            const std::string                           &name)
+  {
+    Load l;
+    l.name = default_name(name, "Pressure", id);
+    check_id(id, l.name);
+    l.id       = id;
+    l.function = checked(pressure, 1, l.name);
+    pressures.push_back(std::move(l));
+  }
+
+
+
+  void
+  BoundaryConditionParameters::add_point_constraint(const dealii::Point<2>                      &point,
+                                                    const unsigned int                           component,
+                                                    const std::shared_ptr<dealii::Function<2>> &value,
+                                                    const dealii::types::material_id             body,
+                                                    const std::string                           &name)
+  {
+    PointConstraint pc;
+    {
+      std::ostringstream n;
+      n << "Point constraint at (" << point[0] << ", " << point[1] << ")";
+      pc.name = name.empty() ? n.str() : name;
+    }
+    AssertThrow(component < 2,
+                dealii::ExcMessage(pc.name + ": component " + std::to_string(component) + " must be 0 (x) or 1 (y)."));
+    AssertThrow(std::isfinite(point[0]) && std::isfinite(point[1]),
+                dealii::ExcMessage(pc.name + ": the point is not finite."));
+    pc.point     = point;
+    pc.component = component;
+    pc.value     = checked(value, 1, pc.name);
+    pc.body      = body;
+    points.push_back(std::move(pc));
+  }
+
+
+
+  void
+  BoundaryConditionParameters::add_rigid_boundary(const dealii::types::boundary_id            id,
+                                                  const std::shared_ptr<dealii::Function<2>> &force,
+                                                  const std::shared_ptr<dealii::Function<2>> &moment,
+                                                  const std::string                           &name)
+  {
+    RigidBoundary r;
+    r.name = default_name(name, "Rigid boundary", id);
+    check_id(id, r.name);
+    for (const auto &other : rigid_boundaries)
+      AssertThrow(other.id != id, dealii::ExcMessage(r.name + ": boundary id " + std::to_string(int(id)) +
+                                                     " is rigid already ('" + other.name + "')."));
+    r.id     = id;
+    r.force  = checked(force, 2, r.name);
+    r.moment = moment ? checked(moment, 1, r.name) : std::make_shared<dealii::Functions::ZeroFunction<2>>(1);
+    rigid_boundaries.push_back(std::move(r));
+  }
+
+
+
+  void
+  BoundaryConditionParameters::set_body_force(const std::shared_ptr<dealii::Function<2>> &force,
+                                              const std::string                           &name)
+  {
+    body_force_name = name.empty() ? std::string("Body force") : name;
+    body_force      = force ? checked(force, 2, body_force_name) : nullptr;
+  }
 
 
 
@@ -87,6 +302,7 @@ namespace dealvem
   BoundaryConditionParameters::parse_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection(section);
+    clear();
     constants = InputParsing::parse_constants(prm.get("Function constants"),
                                               section + "/Function constants");
     dirichlet.clear();
@@ -110,17 +326,13 @@ namespace dealvem
         std::vector<std::string> full = (d.mask[0] && d.mask[1]) ? exprs :
                                         (d.mask[0] ? std::vector<std::string>{exprs[0], "0"} :
                                                      std::vector<std::string>{"0", exprs[0]});
-        d.function = std::make_unique<InputParsing::ParsedFunction>(full, constants, name);
-        dirichlet.push_back(std::move(d));
+        add_dirichlet(d.id, d.mask, std::make_shared<InputParsing::ParsedFunction>(full, constants, name), name);
       }
-    rollers.clear();
     for (const auto &s : InputParsing::split(prm.get("Roller"), ','))
       {
         const std::string name = section + "/Roller entry '" + s + "'";
-        rollers.push_back({name, parse_id(s, name)});
+        add_roller(parse_id(s, name), name);
       }
-    tractions.clear();
-    pressures.clear();
     for (const bool is_pressure : {false, true})
       for (const auto &entry : InputParsing::split(prm.get(is_pressure ? "Pressure" : "Traction"), ';'))
         {
@@ -130,17 +342,17 @@ namespace dealvem
           AssertThrow(fields.size() == 2,
                       dealii::ExcMessage("Parameter '" + name + "': expected 'id : " +
                                          (is_pressure ? "p" : "gx, gy") + "'."));
-          Load l;
-          l.name           = name;
-          l.id             = parse_id(fields[0], name);
+          const auto id    = parse_id(fields[0], name);
           const auto exprs = InputParsing::split(fields[1], ',');
           AssertThrow(exprs.size() == (is_pressure ? 1u : 2u),
                       dealii::ExcMessage("Parameter '" + name + "': expected " +
                                          (is_pressure ? "one expression." : "two expressions gx, gy.")));
-          l.function = std::make_unique<InputParsing::ParsedFunction>(exprs, constants, name);
-          (is_pressure ? pressures : tractions).push_back(std::move(l));
+          const auto f = std::make_shared<InputParsing::ParsedFunction>(exprs, constants, name);
+          if (is_pressure)
+            add_pressure(id, f, name);
+          else
+            add_traction(id, f, name);
         }
-    points.clear();
     for (const auto &entry : InputParsing::split(prm.get("Point constraints"), ';'))
       {
         const std::string name   = section + "/Point constraints entry '" + entry + "'";
@@ -151,56 +363,51 @@ namespace dealvem
                                        "'x, y : component : value : body'."));
         const auto xy = InputParsing::split(fields[0], ',');
         AssertThrow(xy.size() == 2, dealii::ExcMessage("Parameter '" + name + "': expected a point 'x, y'."));
-        PointConstraint pc;
-        pc.name      = name;
-        pc.point     = dealii::Point<2>(InputParsing::parse_double(xy[0], name),
-                                    InputParsing::parse_double(xy[1], name));
-        pc.component = parse_component(fields[1], name);
-        pc.value     = std::make_unique<InputParsing::ParsedFunction>(std::vector<std::string>{fields[2]},
-                                                                  constants, name);
-        pc.body      = dealii::numbers::invalid_material_id;
+        const dealii::Point<2> point(InputParsing::parse_double(xy[0], name),
+                                     InputParsing::parse_double(xy[1], name));
+        const unsigned int     component = parse_component(fields[1], name);
+        const auto             value =
+          std::make_shared<InputParsing::ParsedFunction>(std::vector<std::string>{fields[2]}, constants, name);
+        dealii::types::material_id body = dealii::numbers::invalid_material_id;
         if (fields.size() == 4)
           {
-            const unsigned int body = InputParsing::parse_unsigned(fields[3], name + " (body)");
-            AssertThrow(body < dealii::numbers::invalid_material_id,
+            const unsigned int b = InputParsing::parse_unsigned(fields[3], name + " (body)");
+            AssertThrow(b < dealii::numbers::invalid_material_id,
                         dealii::ExcMessage("Parameter '" + name + "': body " + fields[3] +
                                            " is out of range (0..254)."));
-            pc.body = dealii::types::material_id(body);
+            body = dealii::types::material_id(b);
           }
-        points.push_back(std::move(pc));
+        add_point_constraint(point, component, value, body, name);
       }
-    rigid_boundaries.clear();
     for (const auto &entry : InputParsing::split(prm.get("Rigid boundary"), ';'))
       {
         const std::string name   = section + "/Rigid boundary entry '" + entry + "'";
         const auto        fields = InputParsing::split(entry, ':', true);
         AssertThrow(fields.size() == 2 || fields.size() == 3,
                     dealii::ExcMessage("Parameter '" + name + "': expected 'id : Fx, Fy' or 'id : Fx, Fy : M'."));
-        RigidBoundary r;
-        r.name           = name;
-        r.id             = parse_id(fields[0], name);
+        const auto id    = parse_id(fields[0], name);
         const auto exprs = InputParsing::split(fields[1], ',');
         AssertThrow(exprs.size() == 2,
                     dealii::ExcMessage("Parameter '" + name + "': expected two expressions Fx, Fy."));
-        r.force = std::make_unique<InputParsing::ParsedFunction>(exprs, constants, name);
+        const auto force = std::make_shared<InputParsing::ParsedFunction>(exprs, constants, name);
         AssertThrow(fields.size() == 2 || !fields[2].empty(),
                     dealii::ExcMessage("Parameter '" + name + "': the moment after the second ':' is empty."));
-        r.moment = std::make_unique<InputParsing::ParsedFunction>(
+        const auto moment = std::make_shared<InputParsing::ParsedFunction>(
           std::vector<std::string>{fields.size() == 3 ? fields[2] : std::string("0")}, constants, name);
         for (const auto &other : rigid_boundaries)
-          AssertThrow(other.id != r.id,
+          AssertThrow(other.id != id,
                       dealii::ExcMessage("Parameter '" + name + "': boundary id " + fields[0] +
                                          " is rigid already (entry '" + other.name + "')."));
-        rigid_boundaries.push_back(std::move(r));
+        add_rigid_boundary(id, force, moment, name);
       }
-    body_force.reset();
     const std::string bf = prm.get("Body force");
     if (!InputParsing::trim(bf).empty())
       {
         const auto exprs = InputParsing::split(bf, ',');
         AssertThrow(exprs.size() == 2,
                     dealii::ExcMessage("Parameter '" + section + "/Body force': expected 'fx, fy'."));
-        body_force = std::make_unique<InputParsing::ParsedFunction>(exprs, constants, section + "/Body force");
+        set_body_force(std::make_shared<InputParsing::ParsedFunction>(exprs, constants, section + "/Body force"),
+                       section + "/Body force");
       }
     prm.leave_subsection();
   }
@@ -344,7 +551,9 @@ namespace dealvem
   BoundaryConditionParameters::time_dependent_entries() const
   {
     std::vector<std::string> names;
-    const auto check = [&names](const InputParsing::ParsedFunction *f) {
+    const auto check = [&names](const dealii::Function<2> *function) {
+      // functions given in code are not parsed: the time they use is unknown
+      const auto *f = dynamic_cast<const InputParsing::ParsedFunction *>(function);
       if (f != nullptr)
         for (const auto &e : f->get_expressions())
           if (InputParsing::uses_variable(e, "t"))

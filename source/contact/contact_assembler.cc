@@ -49,6 +49,35 @@ namespace dealvem
 
 
 
+  std::string
+  ContactSettings::normal_name(const Normal n)
+  {
+    return n == Normal::tied ? "tied" : "unilateral";
+  }
+
+
+
+  std::string
+  ContactSettings::tangential_name(const Tangential t)
+  {
+    switch (t)
+      {
+        case Tangential::frictionless:
+          return "frictionless";
+        case Tangential::penalty:
+          return "penalty";
+        case Tangential::multipliers:
+          return "multipliers";
+        case Tangential::coulomb:
+          return "coulomb";
+        case Tangential::coulomb_penalty:
+          return "coulomb penalty";
+      }
+    return "?";
+  }
+
+
+
   template <int dim>
   ContactAssembler<dim>::ContactAssembler(const VEMDoFHandler<dim>            &dof_handler,
                                           const std::vector<ContactNodePair> &pairs,

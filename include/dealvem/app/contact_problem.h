@@ -25,6 +25,12 @@
 #include <string>
 #include <vector>
 
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class Triangulation;
+}
+
 namespace dealvem
 {
   /**
@@ -59,13 +65,71 @@ namespace dealvem
    * ML AMG (or Amesos KLU for UMFPACK/KLU) solves it. The displacements and
    * multipliers are then known on every process, so the stresses and
    * pressures are computed as in the serial path and process 0 alone prints
-   * and writes the files. Coulomb friction and GMRES-AMG are refused with
-   * more than one process.
+   * and writes the files.
+   *
+   * <h3>In code</h3>
+   * The parameter file is one client of a C++ interface that any program
+   * can use instead: add_body() takes a PolygonalMesh or a deal.II
+   * Triangulation and an ElasticMaterial, add_contact_pair() names the
+   * boundary parts in contact, boundary_conditions() takes
+   * dealii::Function objects, options() holds the discretization, contact,
+   * node insertion, solver, load step and output settings; run() checks the
+   * whole set-up (check_setup()) and solves. For example:
+   * @code
+   * ContactProblem problem;
+   * problem.add_body(block_mesh, ElasticMaterial(210000, 0.3));  // body 0
+   * problem.add_body(punch_tria, ElasticMaterial(70000, 0.3));   // body 1
+   * problem.add_contact_pair(3, 12);                               // master : slave
+   * problem.boundary_conditions().add_dirichlet(
+   *   2, {{true, true}}, std::make_shared<dealii::Functions::ZeroFunction<2>>(2));
+   * problem.boundary_conditions().add_pressure(
+   *   13, std::make_shared<dealii::Functions::ConstantFunction<2>>(10.));
+   * problem.options().contact.tangential = ContactSettings::Tangential::frictionless;
+   * problem.run();
+   * const auto &r = problem.get_results();
+   * @endcode
+   * The bodies' boundary ids must be distinct across bodies (shift them
+   * before adding a mesh; the parameter file's "Boundary id offset" does
+   * this). Examples step-3 and step-4 set up their problems this way.
    */
   class ContactProblem
   {
   public:
+    /// The number of bodies the parameter file can describe (sections
+    /// "Body 1" to "Body 3"); add_body() takes up to 255.
     static constexpr unsigned int max_bodies = 4;
+
+    /// Everything but the bodies, the contact pairs and the boundary
+    /// conditions: the settings of sections "Discretization", "Contact",
+    /// "Solver", "Load steps" and "Output" of the parameter file.
+    struct Options
+    {
+      /// Order k of the virtual elements (1 or 2).
+      unsigned int  degree               = 2;
+      /// Stabilization rule and factor (see ElasticityOperator).
+      Stabilization stabilization        = Stabilization::automatic;
+      double        stabilization_factor = 1.0;
+      /// Normal and tangential model, penalty, friction coefficient of the
+      /// pairs that give none, active-set limits. (The per-pair friction
+      /// coefficients come from add_contact_pair().)
+      ContactSettings         contact;
+      NodeInsertion::Settings insertion;
+      /// A name of parameter 'Solver/Type' (SaddlePointSolver::parse_type()),
+      /// or "automatic": the direct condensed solve up to
+      /// InputParsing::contact_direct_solver_max_dofs, CG-AMG above.
+      std::string  solver                = "automatic";
+      double       solver_tolerance      = 1e-12;
+      unsigned int solver_max_iterations = 10000;
+      bool         warm_start            = true;
+      /// Quasi-static load steps t = final_time * k / n_load_steps.
+      unsigned int n_load_steps = 1;
+      double       final_time   = 1;
+      /// Output files under output_folder/base_name; with all four false
+      /// nothing is written (the results stay in get_results()).
+      std::string output_folder = "output";
+      std::string base_name     = "contact";
+      bool        write_vtu = true, write_json = true, write_pictures = true, write_csv = true;
+    };
 
     /// The distributed path runs when @p comm has more than one process
     /// (Parallelism::automatic), or always (distributed), or never (serial).
@@ -82,8 +146,87 @@ namespace dealvem
     static unsigned int
     n_bodies(dealii::ParameterHandler &prm);
 
+    /// Set the problem up from a parameter file: bodies, pairs,
+    /// conditions and options (replacing anything set before).
     void
     parse_parameters(dealii::ParameterHandler &prm, const std::string &prm_directory = "");
+
+    /// @name Setting the problem up in code
+    /// @{
+
+    /**
+     * Add a body meshed by @p mesh, of the material @p material; returns
+     * its index, which becomes the material id of its cells. The mesh is
+     * copied, its boundary ids raised by @p boundary_id_offset (the ids
+     * must differ from body to body). All bodies must share the material
+     * model (plane strain or plane stress). Up to 255 bodies.
+     */
+    unsigned int
+    add_body(const PolygonalMesh<2> &mesh,
+             const ElasticMaterial  &material,
+             const unsigned int      boundary_id_offset = 0);
+
+    /// The same for the active cells of a deal.II triangulation (converted
+    /// by PolygonalMeshGenerators::from_triangulation()).
+    unsigned int
+    add_body(const dealii::Triangulation<2, 2> &tria,
+             const ElasticMaterial             &material,
+             const unsigned int                 boundary_id_offset = 0);
+
+    /// Number of bodies added (or read from the parameter file).
+    unsigned int
+    n_bodies() const
+    {
+      return bodies.size();
+    }
+
+    /**
+     * Declare the boundary parts @p master and @p slave (of two different
+     * bodies) an interface, with its own Coulomb friction coefficient
+     * @p friction_coefficient (negative: options().contact's). Pairs are
+     * numbered in the order they are added (the interface index of the
+     * results). @p name names the pair in error messages.
+     */
+    void
+    add_contact_pair(const dealii::types::boundary_id master,
+                     const dealii::types::boundary_id slave,
+                     const double                     friction_coefficient = -1,
+                     const std::string               &name                 = "");
+
+    /// The boundary conditions and loads (add to them in code).
+    BoundaryConditionParameters &
+    boundary_conditions()
+    {
+      return bc;
+    }
+
+    /// The settings (change them in code before run()).
+    Options &
+    options()
+    {
+      return opt;
+    }
+
+    const Options &
+    options() const
+    {
+      return opt;
+    }
+
+    /**
+     * Check the set-up as a whole and stop with a message naming the
+     * setting (its parameter name) at the first error: at least one body,
+     * a contact pair when there are several, consistent friction settings,
+     * values in range. run() calls it; parse_parameters() too.
+     */
+    void
+    check_setup() const;
+
+    /// Remove the bodies, pairs and conditions (the options stay).
+    void
+    clear();
+
+    /// @}
 
     /// Solve (every refinement cycle of the convergence study; results()
     /// then holds the last cycle, convergence_history() the errors of all).
@@ -242,31 +385,23 @@ namespace dealvem
 
     struct Body
     {
-      MeshParameters mesh;
-      double         E = 1000, nu = 0.3;
-      std::string    exact; ///< exact displacement 'ux, uy' (may be empty)
+      /// The mesh from the parameter file (used when @p given is null).
+      MeshParameters                          mesh;
+      std::shared_ptr<const PolygonalMesh<2>> given;
+      ElasticMaterial                         material;
+      std::string                             exact; ///< exact displacement 'ux, uy' (may be empty)
     };
     std::vector<Body>          bodies;
-    ElasticMaterial::Model     model = ElasticMaterial::Model::plane_strain;
-    unsigned int               degree = 2;
-    double                     gamma  = 1.0;
-    Stabilization              stabilization = Stabilization::automatic;
     BoundaryConditionParameters bc;
     std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> contact_pairs;
+    /// Friction coefficient per pair (negative: opt.contact's).
+    std::vector<double>        pair_friction;
+    Options                    opt;
+    /// The contact settings of the run: opt.contact with the pairs'
+    /// friction coefficients (made by run()).
     ContactSettings            contact_settings;
-    NodeInsertion::Settings    insertion_settings;
-    std::string                solver_type = "UMFPACK";
-    double                     solver_tolerance = 1e-12;
-    unsigned int               solver_max_iterations = 2000;
-    bool                       solver_warm_start     = true;
-    std::string                output_folder = "output", base_name = "contact";
-    bool                       write_vtu = true, write_json = true, write_pictures = true,
-                               write_csv = true;
     std::string                prm_directory;
     unsigned int               n_cycles = 1;
-    /// Load steps: t = final_time * step / n_steps, step = 1..n_steps.
-    unsigned int               n_steps    = 1;
-    double                     final_time = 1;
     Results                    results;
     std::vector<std::vector<ErrorNorms>> convergence;
     MPI_Comm                   mpi_communicator;

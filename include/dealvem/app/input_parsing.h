@@ -33,6 +33,11 @@ namespace dealvem
    */
   namespace InputParsing
   {
+    /// The largest boundary id the input accepts (ids 0..254, as in the
+    /// parameter files' patterns and gmsh's physical tags the program
+    /// reads).
+    constexpr unsigned int max_boundary_id = 254;
+
     /// Split @p s at the character @p sep where it is not inside
     /// parentheses; trims white space; drops empty pieces if
     /// @p keep_empty is false.

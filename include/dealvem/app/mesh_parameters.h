@@ -62,6 +62,13 @@ namespace dealvem
                 const unsigned int refinement,
                 const std::string &base_directory = "") const;
 
+    /// Add @p offset to the boundary id of every boundary edge of @p mesh
+    /// (an id beyond 254 is an error naming @p what).
+    static void
+    shift_boundary_ids(PolygonalMesh<2>  &mesh,
+                       const unsigned int offset,
+                       const std::string &what = "Boundary id offset");
+
     /// A one-line description, e.g. "voronoi, 64 cells, 20 Lloyd iterations".
     std::string
     description() const;

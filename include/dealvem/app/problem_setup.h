@@ -5,6 +5,7 @@
 #ifndef dealvem_app_problem_setup_h
 #define dealvem_app_problem_setup_h
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
@@ -49,6 +50,16 @@ namespace dealvem
    * so does an entry on a boundary id the mesh does not have
    * (check_boundary_ids()), an expression that is not finite where it is
    * evaluated, and a constraint that conflicts with an earlier one.
+   *
+   * <h3>In code</h3>
+   * The same lists can be filled without a parameter file, with any
+   * dealii::Function<2> (add_dirichlet(), add_roller(), add_traction(),
+   * add_pressure(), add_point_constraint(), add_rigid_boundary(),
+   * set_body_force()); parse_parameters() is one client of these. Each
+   * condition gets a name for the messages (by default "Dirichlet condition
+   * on boundary id 3" and so on); a function that returns a non-finite value
+   * is refused with that name, the point and the time. Functions are shared,
+   * not copied: set_time() of the load steps calls their set_time().
    */
   class BoundaryConditionParameters
   {
@@ -56,8 +67,70 @@ namespace dealvem
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
+    /// Read the section (replacing everything set before).
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /// Remove every condition and load (and the function constants).
+    void
+    clear();
+
+    /**
+     * Prescribe the displacement components selected by @p mask (two
+     * components, x and y) on the boundary edges with id @p id to the
+     * values of @p displacement (a function with two components; the
+     * unselected one is not used).
+     */
+    void
+    add_dirichlet(const dealii::types::boundary_id         id,
+                  const std::array<bool, 2>                 &mask,
+                  const std::shared_ptr<dealii::Function<2>> &displacement,
+                  const std::string                         &name = "");
+
+    /// Zero normal displacement on the straight boundary part @p id.
+    void
+    add_roller(const dealii::types::boundary_id id, const std::string &name = "");
+
+    /// A traction (force per length; a function with two components) on
+    /// the boundary edges with id @p id.
+    void
+    add_traction(const dealii::types::boundary_id         id,
+                 const std::shared_ptr<dealii::Function<2>> &traction,
+                 const std::string                         &name = "");
+
+    /// A normal pressure (one component; positive pushes into the body).
+    void
+    add_pressure(const dealii::types::boundary_id         id,
+                 const std::shared_ptr<dealii::Function<2>> &pressure,
+                 const std::string                         &name = "");
+
+    /**
+     * Constrain component @p component (0: x, 1: y) of the mesh vertex at
+     * @p point to the value of @p value (one component) there; where
+     * vertices of several bodies lie at @p point, @p body (a material id)
+     * selects one.
+     */
+    void
+    add_point_constraint(const dealii::Point<2>                    &point,
+                         const unsigned int                         component,
+                         const std::shared_ptr<dealii::Function<2>> &value,
+                         const dealii::types::material_id           body = dealii::numbers::invalid_material_id,
+                         const std::string                         &name = "");
+
+    /**
+     * Make the boundary part @p id one rigid body loaded by @p force (two
+     * components) at its arc-length centroid and the moment @p moment (one
+     * component; null: none) about it, both evaluated at the centroid.
+     */
+    void
+    add_rigid_boundary(const dealii::types::boundary_id         id,
+                       const std::shared_ptr<dealii::Function<2>> &force,
+                       const std::shared_ptr<dealii::Function<2>> &moment = nullptr,
+                       const std::string                         &name   = "");
+
+    /// The body force (force per area; two components); null: none.
+    void
+    set_body_force(const std::shared_ptr<dealii::Function<2>> &force, const std::string &name = "");
 
     /// The bound of displacements, prescribed (apply_constraints()) or
     /// computed (checked by the problems after each solve), relative to the
@@ -118,7 +191,7 @@ namespace dealvem
       std::string                                   name;
       dealii::types::boundary_id                   id;
       std::array<bool, 2>                          mask;
-      std::unique_ptr<InputParsing::ParsedFunction> function;
+      std::shared_ptr<dealii::Function<2>>          function;
     };
     struct Roller
     {
@@ -129,22 +202,22 @@ namespace dealvem
     {
       std::string                                   name;
       dealii::types::boundary_id                   id;
-      std::unique_ptr<InputParsing::ParsedFunction> function;
+      std::shared_ptr<dealii::Function<2>>          function;
     };
     struct PointConstraint
     {
       std::string                                   name;
       dealii::Point<2>                              point;
       unsigned int                                  component;
-      std::unique_ptr<InputParsing::ParsedFunction> value;
+      std::shared_ptr<dealii::Function<2>>          value;
       dealii::types::material_id                    body;
     };
     struct RigidBoundary
     {
       std::string                                   name;
       dealii::types::boundary_id                   id;
-      std::unique_ptr<InputParsing::ParsedFunction> force;
-      std::unique_ptr<InputParsing::ParsedFunction> moment;
+      std::shared_ptr<dealii::Function<2>>          force;
+      std::shared_ptr<dealii::Function<2>>          moment;
     };
 
     std::map<std::string, double>                  constants;
@@ -153,7 +226,8 @@ namespace dealvem
     std::vector<Load>                              tractions, pressures;
     std::vector<PointConstraint>                   points;
     std::vector<RigidBoundary>                     rigid_boundaries;
-    std::unique_ptr<InputParsing::ParsedFunction>  body_force;
+    std::shared_ptr<dealii::Function<2>>           body_force;
+    std::string                                    body_force_name;
   };
 } // namespace dealvem
 

@@ -89,6 +89,12 @@ namespace dealvem
     parse_normal(const std::string &s);
     static Tangential
     parse_tangential(const std::string &s);
+
+    /// The parameter names of the models (inverse of the parse functions).
+    static std::string
+    normal_name(const Normal n);
+    static std::string
+    tangential_name(const Tangential t);
   };
 
 
