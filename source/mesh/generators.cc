@@ -477,7 +477,7 @@ namespace dealvem
                   for (unsigned int j = 0; j < leaves.size(); ++j)
                     {
                       const unsigned int next = (j < inside.size() ? inside[j] : b);
-                      boundary_pieces.push_back({{prev, next}, leaves[j]->boundary_id()});
+                      boundary_pieces.emplace_back(std::array<unsigned int, 2>{{prev, next}}, leaves[j]->boundary_id());
                       prev = next;
                     }
                 }
