@@ -286,7 +286,15 @@ namespace
 
     PolygonalMesh<2>    mesh;
     TriangulationMap<2> map;
-    PolygonalMeshGenerators::from_triangulation(mesh, tria, map);
+    try
+      {
+        PolygonalMeshGenerators::from_triangulation(mesh, tria, map);
+      }
+    catch (const std::exception &e)
+      {
+        testing::check(false, name + ": from_triangulation throws: " + testing::collapse_white_space(e.what()));
+        return;
+      }
     testing::check(mesh.n_cells() == tria.n_active_cells(),
                    name + ": " + std::to_string(mesh.n_cells()) + " polygons for " +
                      std::to_string(tria.n_active_cells()) + " active cells");
@@ -443,9 +451,16 @@ main()
       cell->set_material_id(7);
     refine_near(tria, [](const Point<2> &p) { return std::abs(p.norm() - 0.4); }, 0.2, 2);
     PolygonalMesh<2> mesh;
-    PolygonalMeshGenerators::from_triangulation(mesh, tria);
-    testing::check(mesh.get_material_ids() == std::vector<dealii::types::material_id>{7},
-                   "plate_with_a_hole with material id 7: every polygon has id 7");
+    try
+      {
+        PolygonalMeshGenerators::from_triangulation(mesh, tria);
+        testing::check(mesh.get_material_ids() == std::vector<dealii::types::material_id>{7},
+                       "plate_with_a_hole with material id 7: every polygon has id 7");
+      }
+    catch (const std::exception &e)
+      {
+        testing::check(false, "plate_with_a_hole with material id 7: from_triangulation throws");
+      }
   }
   // a square with a cylindrical hole (PolarManifold on the hole only, the
   // interior flat), refined toward the hole: hanging vertices on the chords
