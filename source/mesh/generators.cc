@@ -353,6 +353,68 @@ namespace dealvem
 
 
 
+    namespace
+    {
+      // Whether a vertex of the triangulation belongs to an active cell.
+      std::vector<bool>
+      vertices_of_active_cells(const dealii::Triangulation<2, 2> &tria)
+      {
+        std::vector<bool> used(tria.n_vertices(), false);
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            used[cell->vertex_index(v)] = true;
+        return used;
+      }
+
+      // The pieces of a face of an active cell as the finer cells behind it
+      // see them: the vertices strictly inside the face in the order from
+      // face->vertex_index(0) to face->vertex_index(1) (appended to
+      // @p inside), and the leaf faces between consecutive vertices
+      // (appended to @p leaves). A face is split where it has children whose
+      // shared vertex an active cell uses, recursively; the vertex is where
+      // the manifold of the face put it, on the chord or not.
+      template <typename FaceIterator>
+      void
+      collect_face_pieces(const FaceIterator &face, const std::vector<bool> &active_vertex,
+                          std::vector<unsigned int> &inside, std::vector<FaceIterator> &leaves)
+      {
+        if (face->has_children())
+          {
+            AssertThrow(face->n_children() == 2, dealii::ExcInternalError());
+            FaceIterator first = face->child(0), second = face->child(1);
+            if (first->vertex_index(0) != face->vertex_index(0) && first->vertex_index(1) != face->vertex_index(0))
+              std::swap(first, second);
+            const unsigned int shared =
+              (first->vertex_index(0) == face->vertex_index(0) ? first->vertex_index(1) : first->vertex_index(0));
+            AssertThrow(second->vertex_index(0) == shared || second->vertex_index(1) == shared,
+                        dealii::ExcInternalError());
+            if (active_vertex[shared])
+              {
+                // each child in the direction of its parent
+                auto add_child = [&](const FaceIterator &child, const unsigned int start) {
+                  std::vector<unsigned int> piece;
+                  std::vector<FaceIterator> piece_leaves;
+                  collect_face_pieces(child, active_vertex, piece, piece_leaves);
+                  if (child->vertex_index(0) != start)
+                    {
+                      std::reverse(piece.begin(), piece.end());
+                      std::reverse(piece_leaves.begin(), piece_leaves.end());
+                    }
+                  inside.insert(inside.end(), piece.begin(), piece.end());
+                  leaves.insert(leaves.end(), piece_leaves.begin(), piece_leaves.end());
+                };
+                add_child(first, face->vertex_index(0));
+                inside.push_back(shared);
+                add_child(second, shared);
+                return;
+              }
+          }
+        leaves.push_back(face);
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     from_triangulation(PolygonalMesh<dim> &mesh, const dealii::Triangulation<dim, dim> &tria)
@@ -361,28 +423,77 @@ namespace dealvem
       mesh.name = "deal.II triangulation";
       for (const auto &v : tria.get_vertices())
         mesh.add_vertex(v);
+      const std::vector<bool> active_vertex = vertices_of_active_cells(tria);
+      using FaceIterator = typename dealii::Triangulation<dim, dim>::face_iterator;
+      std::vector<unsigned int> corners, loop, inside;
+      std::vector<FaceIterator> leaves;
+      std::vector<std::pair<std::array<unsigned int, 2>, dealii::types::boundary_id>> boundary_pieces;
       for (const auto &cell : tria.active_cell_iterators())
         {
-          std::vector<unsigned int> loop;
+          // the cell's vertices around the cell (deal.II numbers the
+          // vertices of a quadrilateral lexicographically)
+          corners.clear();
           if (cell->n_vertices() == 4)
-            loop = {cell->vertex_index(0), cell->vertex_index(1), cell->vertex_index(3),
-                    cell->vertex_index(2)};
+            corners = {cell->vertex_index(0), cell->vertex_index(1), cell->vertex_index(3), cell->vertex_index(2)};
           else
-            for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-              loop.push_back(cell->vertex_index(v));
-          double a = 0;
+            for (const unsigned int v : cell->vertex_indices())
+              corners.push_back(cell->vertex_index(v));
+
+          // walk the faces from corner to corner; a face that has children
+          // (the neighbour behind it is finer) contributes the vertices of
+          // the children in between: the hanging vertices, wherever the
+          // manifold placed them
+          loop.clear();
+          boundary_pieces.clear();
+          const unsigned int n = corners.size();
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const unsigned int a = corners[i], b = corners[(i + 1) % n];
+              unsigned int       f = dealii::numbers::invalid_unsigned_int;
+              for (const unsigned int g : cell->face_indices())
+                if ((cell->face(g)->vertex_index(0) == a && cell->face(g)->vertex_index(1) == b) ||
+                    (cell->face(g)->vertex_index(0) == b && cell->face(g)->vertex_index(1) == a))
+                  f = g;
+              AssertThrow(f != dealii::numbers::invalid_unsigned_int,
+                          dealii::ExcMessage("from_triangulation: cell " + std::to_string(cell->active_cell_index()) +
+                                             " has no face joining its vertices " + std::to_string(a) + " and " +
+                                             std::to_string(b) + "."));
+              const FaceIterator face = cell->face(f);
+              inside.clear();
+              leaves.clear();
+              collect_face_pieces(face, active_vertex, inside, leaves);
+              if (face->vertex_index(0) != a)
+                {
+                  std::reverse(inside.begin(), inside.end());
+                  std::reverse(leaves.begin(), leaves.end());
+                }
+              loop.push_back(a);
+              loop.insert(loop.end(), inside.begin(), inside.end());
+              if (face->at_boundary())
+                {
+                  // every piece carries the boundary id of its own face
+                  // (children of a boundary face have their ids)
+                  unsigned int prev = a;
+                  for (unsigned int j = 0; j < leaves.size(); ++j)
+                    {
+                      const unsigned int next = (j < inside.size() ? inside[j] : b);
+                      boundary_pieces.emplace_back(std::array<unsigned int, 2>{{prev, next}}, leaves[j]->boundary_id());
+                      prev = next;
+                    }
+                }
+            }
+
+          double area = 0;
           for (unsigned int i = 0; i < loop.size(); ++i)
             {
               const P &p = mesh.vertex(loop[i]), &q = mesh.vertex(loop[(i + 1) % loop.size()]);
-              a += p[0] * q[1] - q[0] * p[1];
+              area += p[0] * q[1] - q[0] * p[1];
             }
-          if (a < 0)
+          if (area < 0)
             std::reverse(loop.begin(), loop.end());
           mesh.add_cell(loop, cell->material_id());
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
-              mesh.set_boundary_id(cell->face(f)->vertex_index(0), cell->face(f)->vertex_index(1),
-                                   cell->face(f)->boundary_id());
+          for (const auto &piece : boundary_pieces)
+            mesh.set_boundary_id(piece.first[0], piece.first[1], piece.second);
         }
       mesh.finalize();
     }

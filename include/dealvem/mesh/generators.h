@@ -105,8 +105,28 @@ namespace dealvem
     /**
      * Convert the active cells of a deal.II triangulation (from
      * GridGenerator, GridIn, gmsh files, adaptively refined meshes) into
-     * polygons. Boundary ids and material ids are copied; hanging vertices
-     * of refined meshes become extra vertices of the coarse neighbours.
+     * polygons, one per active cell in the order of
+     * Triangulation::active_cell_iterators(). Boundary ids and material ids
+     * are copied.
+     *
+     * Each polygon is made by walking the faces of its cell in
+     * counter-clockwise order. Where a face has children (the neighbour
+     * behind it is finer), the vertex the two children share is inserted
+     * between the face's ends, recursively for a face refined more than
+     * once. So the hanging vertices of a locally refined triangulation
+     * become vertices of the coarse polygons wherever the manifold of the
+     * face placed them: on the straight chord (flat manifold), on a circle
+     * (SphericalManifold, PolarManifold) or anywhere inside
+     * (TransfiniteInterpolationManifold); the coarse polygon then has five
+     * or more vertices and the polygonal mesh is conforming. The pieces of
+     * a refined boundary face get the boundary ids of the child faces.
+     *
+     * The polygons join the triangulation's vertices by straight edges: the
+     * area of a polygon is the measure of its straight-sided cell plus the
+     * signed triangle $(a, m, b)$ of every hanging vertex $m$ on a face
+     * $(a, b)$. (finalize() also inserts vertices that lie on a neighbour's
+     * straight edge; the face walk does not depend on that.) Tutorial
+     * step-7 refines adaptively with this function.
      */
     template <int dim>
     void

@@ -37,7 +37,15 @@ namespace dealvem
    *
    * Hanging vertices of a locally refined triangulation are ordinary
    * vertices of the polygons of the coarse neighbours (which then have five
-   * or more vertices); the maps are unaffected.
+   * or more vertices): from_triangulation() reads them from the children
+   * of the coarse cell's faces, wherever the manifold put them, on the
+   * chord of the coarse face or off it. A hanging vertex is a vertex of the
+   * fine cells, so it has its mesh vertex like any other; the maps are
+   * unaffected. FETransfer::interpolate_to_discontinuous() is exact on
+   * such polygons as on any other; FETransfer::interpolate_to_continuous()
+   * refuses triangulations with hanging nodes (the VEM trace on a coarse
+   * edge with a hanging vertex is two polynomial pieces, an FE_Q trace
+   * with a hanging-node constraint one polynomial). Tutorial step-7.
    *
    * The object holds the triangulation and the mesh through
    * dealii::SmartPointer, remembers the mesh's revision and watches the
