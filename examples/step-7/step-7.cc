@@ -24,17 +24,15 @@
 // the default run needs more DoFs than stated in main() or F != P.
 
 // @sect3{Include files}
+#include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
 #include <dealvem/app/contact_problem.h>
-#include <dealvem/app/elasticity_problem.h>
 #include <dealvem/mesh/generators.h>
-#include <dealvem/mesh/mesh_io.h>
 #include <dealvem/mesh/triangulation_map.h>
 #include <dealvem/postprocessing/svg_plots.h>
 
@@ -188,48 +186,34 @@ namespace Step7
     dealii::Triangulation<2> tria;
     PolygonalMesh<2>         mesh;
     TriangulationMap<2>      map;
-    std::string              file;
   };
 
-  // The two bodies are written as VTK files and handed to ContactProblem
-  // through parameter text, as in step-3: body 0 the block (the master side,
-  // top id 3), body 1 the cylinder with its ids moved by 10 (arc 10, cut 11);
-  // the block's bottom is fixed, the cut is a rigid boundary part loaded by
-  // (0, -P), a point constraint at the centre of the cut removes the
-  // horizontal rigid motion. This function is all the program knows about
-  // how the problem is solved.
+  // The two bodies go to ContactProblem through its C++ interface, as in
+  // step-3: body 0 the block (the master side, top id 3), body 1 the
+  // cylinder with its ids moved by 10 (arc 10, cut 11); the block's bottom
+  // is fixed, the cut is a rigid boundary part loaded by (0, -P), a point
+  // constraint at the centre of the cut removes the horizontal rigid
+  // motion. This function is all the program knows about how the problem is
+  // solved.
   ContactProblem::Results
   solve_contact(const std::vector<Body *> &bodies, const unsigned int degree, const std::string &base_name)
   {
-    for (Body *b : bodies)
-      MeshIO::write_vtk(b->mesh, b->file);
-    std::ostringstream p;
-    p << std::setprecision(17);
-    p << "set Number of bodies = 2\n"
-      << "subsection Mesh\n  set Type = vtk file\n  set File name = " << bodies[0]->file << "\nend\n"
-      << "subsection Material\n  set Model = plane strain\n  set Young's modulus = " << Hertz::E_block
-      << "\n  set Poisson's ratio = 0.3\nend\n"
-      << "subsection Body 1\n  subsection Mesh\n    set Type = vtk file\n    set File name = " << bodies[1]->file
-      << "\n    set Boundary id offset = 10\n  end\n"
-      << "  subsection Material\n    set Young's modulus = " << Hertz::E_cyl
-      << "\n    set Poisson's ratio = 0.3\n  end\nend\n"
-      << "subsection Discretization\n  set Order = " << degree << "\nend\n"
-      << "subsection Contact\n  set Pairs = 3 : 10\n  set Normal = unilateral\n  set Tangential = frictionless\nend\n"
-      << "subsection Boundary conditions and loads\n"
-      << "  set Dirichlet = 2 : xy : 0, 0\n"
-      << "  set Rigid boundary = 11 : 0, " << -Hertz::P << "\n"
-      << "  set Point constraints = 0, 50 : x : 0 : 1\n"
-      << "end\n"
-      << "subsection Output\n  set Folder = output\n  set Base name = " << base_name
-      << "\n  set Write VTU = false\n  set Write JSON = false\n  set Write pictures = false\n"
-      << "  set Write CSV = false\nend\n";
-
-    dealii::ParameterHandler prm;
-    ElasticityProblem::declare_parameters(prm);
-    ContactProblem::declare_parameters(prm);
-    prm.parse_input_from_string(p.str());
     ContactProblem problem;
-    problem.parse_parameters(prm);
+    problem.add_body(bodies[0]->mesh, ElasticMaterial(Hertz::E_block, 0.3, ElasticMaterial::Model::plane_strain));
+    problem.add_body(bodies[1]->mesh, ElasticMaterial(Hertz::E_cyl, 0.3, ElasticMaterial::Model::plane_strain), 10);
+    problem.add_contact_pair(3, 10);
+    auto &bc = problem.boundary_conditions();
+    bc.add_dirichlet(2, {{true, true}}, std::make_shared<dealii::Functions::ZeroFunction<2>>(2));
+    bc.add_rigid_boundary(11, std::make_shared<dealii::Functions::ConstantFunction<2>>(
+                                std::vector<double>{0., -Hertz::P}));
+    bc.add_point_constraint(dealii::Point<2>(0, 50), 0, std::make_shared<dealii::Functions::ZeroFunction<2>>(1),
+                            /*body=*/1);
+    auto &o              = problem.options();
+    o.degree             = degree;
+    o.contact.normal     = ContactSettings::Normal::unilateral;
+    o.contact.tangential = ContactSettings::Tangential::frictionless;
+    o.base_name          = base_name;
+    o.write_vtu = o.write_json = o.write_pictures = o.write_csv = false;
     problem.run();
     return problem.get_results();
   }
@@ -541,8 +525,6 @@ namespace Step7
                const bool raw_too, const unsigned int max_cycles)
   {
     Body block, cylinder;
-    block.file    = "step-7-block.vtk";
-    cylinder.file = "step-7-cylinder.vtk";
     make_block(block.tria);
     make_cylinder(cylinder.tria, 2);
     const std::vector<Body *> bodies = {&block, &cylinder};
@@ -570,8 +552,6 @@ namespace Step7
   {
     const auto start = std::chrono::steady_clock::now();
     Body       block, cylinder;
-    block.file    = "step-7-graded-block.vtk";
-    cylinder.file = "step-7-graded-cylinder.vtk";
     make_graded_meshes(block.tria, cylinder.tria, h);
     const std::vector<Body *> bodies = {&block, &cylinder};
     for (Body *b : bodies)
