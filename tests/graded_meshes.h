@@ -26,23 +26,7 @@ namespace testing
                 const double                                               h,
                 const std::function<double(const dealii::Point<2> &)> &distance)
   {
-    for (bool any = true; any;)
-      {
-        any = false;
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            double size = 0;
-            for (unsigned int l = 0; l < 4; ++l)
-              size = std::max(size, cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
-            if (size > 1.3 * h && distance(cell->center()) < 2. * size)
-              {
-                cell->set_refine_flag();
-                any = true;
-              }
-          }
-        if (any)
-          tria.execute_coarsening_and_refinement();
-      }
+    dealvem::PolygonalMeshGenerators::refine_toward(tria, distance, h, 2.);
   }
 
   /// The block [-100,100]x[-100,0] (ids 0 left, 1 right, 2 bottom, 3 top),

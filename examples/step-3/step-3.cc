@@ -85,40 +85,16 @@ namespace Step3
 
   // @sect3{Meshes}
   //
-  // Both bodies start from a coarse deal.II triangulation. Cells are refined
-  // while their longest edge exceeds the target size $h$ by more than 30 %
-  // (so that both bodies end up near $h$ although their coarse meshes have
-  // unrelated sizes) and their centre lies
-  // within @p layers cell sizes of the contact strip (given by a distance
-  // function). deal.II keeps neighbouring cells within one level of each
-  // other, so the mesh grades from $h$ at the contact to the coarse size
-  // away from it; the hanging vertices that this leaves become ordinary
-  // (collinear) polygon vertices in PolygonalMeshGenerators::from_triangulation().
-  void
-  refine_toward(dealii::Triangulation<2>                             &tria,
-                const std::function<double(const dealii::Point<2> &)> &distance,
-                const double                                          h,
-                const double                                          layers)
-  {
-    for (;;)
-      {
-        bool any = false;
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            double size = 0;
-            for (unsigned int l = 0; l < 4; ++l)
-              size = std::max(size, cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
-            if (size > 1.3 * h && distance(cell->center()) < layers * size)
-              {
-                cell->set_refine_flag();
-                any = true;
-              }
-          }
-        if (!any)
-          break;
-        tria.execute_coarsening_and_refinement();
-      }
-  }
+  // Both bodies start from a coarse deal.II triangulation.
+  // PolygonalMeshGenerators::refine_toward() refines cells while their
+  // longest edge exceeds the target size $h$ by more than 30 % (so that both
+  // bodies end up near $h$ although their coarse meshes have unrelated
+  // sizes) and their centre lies within `layers` cell sizes of the contact
+  // strip (given by a distance function). deal.II keeps neighbouring cells
+  // within one level of each other, so the mesh grades from $h$ at the
+  // contact to the coarse size away from it; the hanging vertices that this
+  // leaves become vertices of the coarse polygons in
+  // PolygonalMeshGenerators::from_triangulation().
 
   // Distance to the segment $|x| \le s$, $y = y_0$.
   double
@@ -139,7 +115,7 @@ namespace Step3
                                                       dealii::Point<2>(100, 0), true);
     for (const auto &cell : tria.active_cell_iterators()) // colorize also numbers the cells
       cell->set_material_id(0);
-    refine_toward(tria, [s](const dealii::Point<2> &p) { return distance_to_segment(p, s, 0.); }, h, 2.);
+    PolygonalMeshGenerators::refine_toward(tria, [s](const dealii::Point<2> &p) { return distance_to_segment(p, s, 0.); }, h, 2.);
     PolygonalMesh<2> mesh;
     PolygonalMeshGenerators::from_triangulation(mesh, tria);
     return mesh;
@@ -174,7 +150,7 @@ namespace Step3
       const double ye = Hertz::R - std::sqrt(Hertz::R * Hertz::R - s * s);
       return std::min(p.distance(Point<2>(-s, ye)), p.distance(Point<2>(s, ye)));
     };
-    refine_toward(tria, distance, h, 2.);
+    PolygonalMeshGenerators::refine_toward(tria, distance, h, 2.);
     PolygonalMesh<2> mesh;
     PolygonalMeshGenerators::from_triangulation(mesh, tria);
     return mesh;
@@ -395,7 +371,7 @@ namespace Step3
                                                       dealii::Point<2>(b, b), true);
     for (const auto &cell : tria.active_cell_iterators())
       cell->set_material_id(0);
-    refine_toward(tria, [](const dealii::Point<2> &p) { return std::abs(p[1]); }, h, 2.);
+    PolygonalMeshGenerators::refine_toward(tria, [](const dealii::Point<2> &p) { return std::abs(p[1]); }, h, 2.);
     PolygonalMesh<2> punch;
     PolygonalMeshGenerators::from_triangulation(punch, tria);
     // punch ids after the offset: 12 bottom, 13 top

@@ -105,32 +105,10 @@ namespace Step4
 
   // @sect3{Meshes}
   //
-  // As in step-3: deal.II quadrilaterals refined while their longest edge
+  // As in step-3: deal.II quadrilaterals refined by
+  // PolygonalMeshGenerators::refine_toward() while their longest edge
   // exceeds $1.3h$ and their centre lies within two cell sizes of the
   // contact strip, converted to polygons.
-  void
-  refine_toward(dealii::Triangulation<2>                             &tria,
-                const std::function<double(const dealii::Point<2> &)> &distance,
-                const double                                          h)
-  {
-    for (bool any = true; any;)
-      {
-        any = false;
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            double size = 0;
-            for (unsigned int l = 0; l < 4; ++l)
-              size = std::max(size, cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
-            if (size > 1.3 * h && distance(cell->center()) < 2. * size)
-              {
-                cell->set_refine_flag();
-                any = true;
-              }
-          }
-        if (any)
-          tria.execute_coarsening_and_refinement();
-      }
-  }
 
   // The block $[-250,250]\times[-250,0]$ (ids 0 left, 1 right, 2 bottom,
   // 3 top), refined toward $|x| \le$ x_strip on its top.
@@ -142,7 +120,7 @@ namespace Step4
                                                       dealii::Point<2>(250, 0), true);
     for (const auto &cell : tria.active_cell_iterators())
       cell->set_material_id(0);
-    refine_toward(
+    PolygonalMeshGenerators::refine_toward(
       tria,
       [](const dealii::Point<2> &p) {
         const double dx = std::max(std::abs(p[0]) - CM::x_strip, 0.);
@@ -168,7 +146,7 @@ namespace Step4
     tria.set_manifold(0, dealii::SphericalManifold<2>(centre));
     tria.refine_global(3);
     const double s = CM::x_strip;
-    refine_toward(
+    PolygonalMeshGenerators::refine_toward(
       tria,
       [&](const Point<2> &p) {
         const auto   q = p - centre;

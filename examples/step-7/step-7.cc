@@ -117,41 +117,18 @@ namespace Step7
     tria.refine_global(n_global_refinements);
   }
 
-  // The graded meshes of step-3 for the comparison: cells refined while
-  // their longest edge exceeds 1.3 h and their centre lies within two cell
-  // sizes of the contact strip |x| <= 8 (see step-3 for the details).
-  void
-  refine_toward(dealii::Triangulation<2>                                    &tria,
-                const std::function<double(const dealii::Point<2> &)> &distance,
-                const double                                                  h)
-  {
-    for (;;)
-      {
-        bool any = false;
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            double size = 0;
-            for (unsigned int l = 0; l < 4; ++l)
-              size = std::max(size, cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
-            if (size > 1.3 * h && distance(cell->center()) < 2. * size)
-              {
-                cell->set_refine_flag();
-                any = true;
-              }
-          }
-        if (!any)
-          break;
-        tria.execute_coarsening_and_refinement();
-      }
-  }
 
+  // The graded meshes of step-3 for the comparison: cells refined by
+  // PolygonalMeshGenerators::refine_toward() while their longest edge
+  // exceeds 1.3 h and their centre lies within two cell sizes of the
+  // contact strip |x| <= 8 (see step-3 for the details).
   void
   make_graded_meshes(dealii::Triangulation<2> &block, dealii::Triangulation<2> &cylinder, const double h)
   {
     using dealii::Point;
     constexpr double s = 8.;
     make_block(block);
-    refine_toward(
+    PolygonalMeshGenerators::refine_toward(
       block,
       [](const Point<2> &p) {
         const double dx = std::max(std::abs(p[0]) - s, 0.);
@@ -160,7 +137,7 @@ namespace Step7
       h);
     make_cylinder(cylinder, 3);
     const Point<2> centre(0, Hertz::R);
-    refine_toward(
+    PolygonalMeshGenerators::refine_toward(
       cylinder,
       [&](const Point<2> &p) {
         const auto   q = p - centre;

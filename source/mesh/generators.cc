@@ -1256,6 +1256,38 @@ namespace dealvem
       mesh.name = filename;
     }
 
+    void
+    refine_toward(dealii::Triangulation<2, 2>                            &tria,
+                  const std::function<double(const dealii::Point<2> &)> &distance,
+                  const double                                           h,
+                  const double                                           layers)
+    {
+      AssertThrow(h > 0 && std::isfinite(h),
+                  dealii::ExcMessage("refine_toward(): the target size h must be positive, not " +
+                                     std::to_string(h) + "."));
+      AssertThrow(layers > 0 && std::isfinite(layers),
+                  dealii::ExcMessage("refine_toward(): the number of layers must be positive."));
+      for (;;)
+        {
+          bool any = false;
+          for (const auto &cell : tria.active_cell_iterators())
+            {
+              double size = 0;
+              for (unsigned int l = 0; l < dealii::GeometryInfo<2>::lines_per_cell; ++l)
+                size = std::max(size, cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
+              if (size > 1.3 * h && distance(cell->center()) < layers * size)
+                {
+                  cell->set_refine_flag();
+                  any = true;
+                }
+            }
+          if (!any)
+            break;
+          tria.execute_coarsening_and_refinement();
+        }
+    }
+
+
     template void structured_quads(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int);
     template void structured_triangles(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int);
     template void perturbed_quads(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int,

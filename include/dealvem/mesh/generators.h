@@ -9,6 +9,8 @@
 
 #include <dealvem/mesh/polygonal_mesh.h>
 
+#include <functional>
+
 namespace dealii
 {
   template <int dim, int spacedim>
@@ -144,6 +146,21 @@ namespace dealvem
     from_triangulation(PolygonalMesh<dim>                    &mesh,
                        const dealii::Triangulation<dim, dim> &tria,
                        TriangulationMap<dim>                 &map);
+
+    /**
+     * Refine @p tria toward a zone, the way graded contact meshes are made:
+     * an active cell is refined while its longest edge exceeds 1.3 @p h and
+     * its centre lies closer to the zone than @p layers times that edge
+     * (@p distance: the distance of a point to the zone), until no cell is
+     * left to refine. Cells then halve layer by layer away from the zone;
+     * the hanging vertices this leaves become vertices of the coarse
+     * neighbours in from_triangulation().
+     */
+    void
+    refine_toward(dealii::Triangulation<2, 2>                            &tria,
+                  const std::function<double(const dealii::Point<2> &)> &distance,
+                  const double                                           h,
+                  const double                                           layers = 2.);
 
     /// Read a mesh file with deal.II's GridIn (format from the extension:
     /// .msh, .inp, .ucd, .vtk of deal.II's own kind, ...), refine the
