@@ -280,8 +280,9 @@ namespace Step6
         constraints.distribute(solution);
         sets_solved_with.push_back(state.active);
         // 3. The update of the active set.
-        const unsigned int n_active  = std::count(state.active.begin(), state.active.end(), true);
-        const bool         converged = update->update(state, *contact, solution);
+        const unsigned int n_active      = std::count(state.active.begin(), state.active.end(), true);
+        const unsigned int n_accelerated = state.n_accelerated;
+        const bool         converged     = update->update(state, *contact, solution);
         std::cout << "   iteration " << iteration << ": " << std::setw(2) << n_active << " active pairs, "
                   << "complementarity residual " << std::scientific << std::setprecision(2) << state.residual
                   << std::defaultfloat;
@@ -289,6 +290,7 @@ namespace Step6
           std::cout << ", the set repeats: converged" << std::endl;
         else
           std::cout << "; next set: " << state.n_closed << " closed, " << state.n_opened << " opened"
+                    << (state.n_accelerated > n_accelerated ? " (corrected by the acceleration)" : "")
                     << std::endl;
         // 4. The active set and the pressure of this iteration, for ParaView.
         output_results(iteration);
@@ -305,7 +307,8 @@ namespace Step6
   // $-\lambda_i/w_i$ there; k = 2 midpoint pairs have no vertex and are
   // not shown. The set written is the one this iteration solved with. The
   // pressure at every pair also goes into a line plot, one curve per
-  // iteration (written by run() as step-6-k<k>-pressure.svg).
+  // iteration from the second on (written by run() as
+  // step-6-k<k>-pressure.svg).
   void
   PressedBody::output_results(const unsigned int iteration)
   {
@@ -326,7 +329,11 @@ namespace Step6
     write_vtu_file("step-6-k" + std::to_string(degree) + "-" + std::to_string(iteration) + ".vtu", dof_handler, u,
                    stresses, {{"active_set", active}, {"contact_pressure", pressure}});
 
-    // the pressure at every pair (midpoints included), sorted along x
+    // the pressure at every pair (midpoints included), sorted along x; not
+    // for the first iteration, whose few closed pairs carry the whole load
+    // at pressures that would flatten the other curves
+    if (iteration == 1)
+      return;
     SVGPlots::Series series;
     series.name = "iteration " + std::to_string(iteration);
     for (unsigned int i = 0; i < pairs.size(); ++i)

@@ -97,10 +97,10 @@ namespace dealvem
     };
 
     /**
-     * @p pairs (kept by reference: they must outlive this object, e.g.
-     * ContactAssembler::get_pairs()), @p settings (normal model, iteration
-     * limit, acceleration) and the constant @p c of the complementarity
-     * function (units $E/h$, ContactScales::complementarity_constant()).
+     * @p pairs (copied; e.g. ContactAssembler::get_pairs()), @p settings
+     * (normal model, iteration limit, acceleration) and the constant @p c
+     * of the complementarity function (units $E/h$,
+     * ContactScales::complementarity_constant()).
      */
     ActiveSetUpdate(const std::vector<ContactNodePair> &pairs,
                     const ContactSettings              &settings,
@@ -184,7 +184,7 @@ namespace dealvem
     static std::string
     history_string(const State &state);
 
-    const std::vector<ContactNodePair>    &pairs;
+    std::vector<ContactNodePair>           pairs;
     ContactSettings                        settings;
     double                                 c;
     const RigidBodySupport                *support = nullptr;

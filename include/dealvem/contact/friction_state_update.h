@@ -99,8 +99,7 @@ namespace dealvem
     };
 
     /**
-     * @p pairs (kept by reference: they must outlive this object),
-     * @p settings (Coulomb model, friction coefficients, iteration limit),
+     * @p pairs (copied), @p settings (Coulomb model, friction coefficients, iteration limit),
      * the constant @p c of the complementarity functions (units $E/h$) and
      * the tangential penalty $\varepsilon_t$ (used by the penalty variant;
      * ContactAssembler::get_penalty()).
@@ -174,7 +173,7 @@ namespace dealvem
     }
 
   private:
-    const std::vector<ContactNodePair> &pairs;
+    std::vector<ContactNodePair>        pairs;
     ContactSettings                     settings;
     double                              c;
     double                              penalty;
