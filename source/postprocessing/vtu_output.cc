@@ -24,7 +24,8 @@ namespace dealvem
                 const dealii::Vector<double>    &u,
                 const StressRecovery<dim>       &s,
                 const std::vector<unsigned int> *cell_list,
-                const unsigned int               subdomain)
+                const unsigned int               subdomain,
+                const std::vector<std::pair<std::string, std::vector<double>>> &extra = {})
     {
       const auto &mesh = dof_handler.get_mesh();
       std::vector<unsigned int> cells;
@@ -101,6 +102,26 @@ namespace dealvem
           }
       }
 
+      // further point fields: one finite value per mesh vertex, a name that
+      // is new and fits an XML attribute
+      for (unsigned int f = 0; f < extra.size(); ++f)
+        {
+          const std::string &name = extra[f].first;
+          const std::string  what = "Cannot write the VTU file '" + filename + "': the point field '" + name + "'";
+          AssertThrow(!name.empty() && name.find_first_of("\"<>&'") == std::string::npos,
+                      dealii::ExcMessage(what + " needs a non-empty name without quotes, '<', '>' or '&'."));
+          for (unsigned int g = 0; g < f; ++g)
+            AssertThrow(extra[g].first != name, dealii::ExcMessage(what + " is given twice."));
+          AssertThrow(name != "displacement" && name != "stress" && name != "von_mises",
+                      dealii::ExcMessage(what + " has the name of a field that is always written."));
+          AssertThrow(extra[f].second.size() == mesh.n_vertices(),
+                      dealii::ExcMessage(what + " has " + std::to_string(extra[f].second.size()) +
+                                         " values for " + std::to_string(mesh.n_vertices()) + " mesh vertices."));
+          for (const unsigned int v : vertices)
+            AssertThrow(std::isfinite(extra[f].second[v]),
+                        dealii::ExcMessage(what + " is not finite at vertex " + std::to_string(v) + "."));
+        }
+
       OutputFile    file(filename);
       std::ostream &out = file.stream();
       out << std::setprecision(14);
@@ -143,6 +164,12 @@ namespace dealvem
       out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n";
       for (const unsigned int v : vertices)
         out << s.vertex_von_mises(v) << "\n";
+      for (const auto &field : extra)
+        {
+          out << "</DataArray>\n<DataArray type=\"Float64\" Name=\"" << field.first << "\" format=\"ascii\">\n";
+          for (const unsigned int v : vertices)
+            out << field.second[v] << "\n";
+        }
       out << "</DataArray>\n</PointData>\n";
 
       out << "<CellData>\n<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\" format=\"ascii\">\n";
@@ -181,6 +208,19 @@ namespace dealvem
                  const StressRecovery<dim>    &s)
   {
     write_cells(filename, dof_handler, u, s, nullptr, dealii::numbers::invalid_unsigned_int);
+  }
+
+
+
+  template <int dim>
+  void
+  write_vtu_file(const std::string                                             &filename,
+                 const VEMDoFHandler<dim>                                      &dof_handler,
+                 const dealii::Vector<double>                                  &u,
+                 const StressRecovery<dim>                                     &s,
+                 const std::vector<std::pair<std::string, std::vector<double>>> &point_data)
+  {
+    write_cells(filename, dof_handler, u, s, nullptr, dealii::numbers::invalid_unsigned_int, point_data);
   }
 
 
@@ -229,6 +269,9 @@ namespace dealvem
   template void
   write_vtu_file(const std::string &, const VEMDoFHandler<2> &, const dealii::Vector<double> &,
                  const StressRecovery<2> &);
+  template void
+  write_vtu_file(const std::string &, const VEMDoFHandler<2> &, const dealii::Vector<double> &,
+                 const StressRecovery<2> &, const std::vector<std::pair<std::string, std::vector<double>>> &);
   template void
   write_vtu_piece(const std::string &, const VEMDoFHandler<2> &, const dealii::Vector<double> &,
                   const StressRecovery<2> &, const std::vector<unsigned int> &, const unsigned int);

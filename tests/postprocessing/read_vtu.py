@@ -27,6 +27,12 @@ for data, names in ((grid.GetPointData(), ["displacement", "stress", "von_mises"
             continue
         lo, hi = array.GetRange(-1 if array.GetNumberOfComponents() > 1 else 0)
         print("array", name, array.GetNumberOfComponents(), lo, hi)
+# further point arrays (write_vtu_file's point_data)
+for i in range(grid.GetPointData().GetNumberOfArrays()):
+    array = grid.GetPointData().GetArray(i)
+    if array.GetName() not in ("displacement", "stress", "von_mises"):
+        lo, hi = array.GetRange(0)
+        print("extra point array", array.GetName(), array.GetNumberOfComponents(), lo, hi)
 if missing:
     print("missing arrays:", missing)
     sys.exit(1)

@@ -6,7 +6,8 @@
 // the constant stress C eps in every cell (StressRecovery, 1e-12 relative);
 // its VTU file is read back by VTK (Debian's /usr/bin/python3 with
 // python3-vtk9; the reader ParaView uses)
-// with the right numbers of points, polygon cells and arrays; the JSON
+// with the right numbers of points, polygon cells and arrays (and a further
+// point field under its name and range; one of the wrong size refused); the JSON
 // summary nests keys and escapes strings as expected.
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/postprocessing/stress_recovery.h>
@@ -86,6 +87,29 @@ main()
       testing::check(text.find("points " + std::to_string(mesh.n_vertices()) + "\n") != std::string::npos &&
                        text.find("polygon cells " + std::to_string(mesh.n_cells()) + "\n") != std::string::npos,
                      file + ": numbers of points and polygon cells");
+
+      // a further point field (the x coordinate of each vertex, range [0, 2])
+      // is read back under its name; one of the wrong size is refused
+      std::vector<double> vertex_x(mesh.n_vertices());
+      for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+        vertex_x[v] = mesh.vertex(v)[0];
+      const std::string extra_file = "extra-k" + std::to_string(k) + ".vtu";
+      write_vtu_file(extra_file, dof_handler, x, s, {{"vertex_x", vertex_x}});
+      const std::string extra_cmd = "/usr/bin/python3 " + testing::source_dir() +
+                                    "/tests/postprocessing/read_vtu.py " + extra_file + " > " + extra_file +
+                                    ".txt 2>&1";
+      testing::check(std::system(extra_cmd.c_str()) == 0, extra_file + ": read back by VTK's XML reader");
+      std::ifstream extra_in(extra_file + ".txt");
+      std::string   extra_text;
+      while (std::getline(extra_in, line))
+        extra_text += line + "\n";
+      testing::check(extra_text.find("extra point array vertex_x 1 0.0 2.0\n") != std::string::npos,
+                     extra_file + ": the point field vertex_x with the range [0, 2] (" + extra_text + ")");
+      vertex_x.pop_back();
+      testing::check_throws([&] { write_vtu_file("short.vtu", dof_handler, x, s, {{"vertex_x", vertex_x}}); },
+                            "the point field 'vertex_x' has " + std::to_string(mesh.n_vertices() - 1) +
+                              " values for " + std::to_string(mesh.n_vertices()) + " mesh vertices",
+                            "k=" + std::to_string(k) + ": a point field of the wrong size is refused");
 
       // a displacement that overflowed: the file is refused, naming the
       // field and the vertex, and nothing is written

@@ -9,6 +9,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <dealvem/contact/active_set_update.h>
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/contact/rigid_body_support.h>
@@ -67,6 +68,15 @@ namespace dealvem
    * is the same complementarity solution: only the path is shorter
    * (Hertz, step-3's meshes: k = 1 from 8/10/10 to 4/4/5 iterations, k = 2
    * from 8/9/11 to 5/5/6). Cycle detection applies to plain steps.
+   *
+   * <h3>Driver and rule</h3>
+   * solve() only owns the loop: per iteration it adds the contact blocks
+   * of the current set (ContactAssembler::assemble()), solves with the
+   * SaddlePointSolver and hands the solution to ActiveSetUpdate::update(),
+   * which holds every rule above (first set, update, acceleration,
+   * convergence, cycles, iteration limit, equilibrium). A program that
+   * wants the loop in its own hands (examples/step-6, a Newton method)
+   * calls ActiveSetUpdate directly and gets the same iterates.
    */
   template <int dim>
   class ActiveSetSolver
@@ -92,12 +102,6 @@ namespace dealvem
                     const ContactSettings                   &settings,
                     const double                             c);
 
-    /**
-     * @p system_matrix and @p system_rhs hold the elasticity part (size
-     * n_dofs + n_multipliers, assembled with the constraints). @p matrix
-     * (same sparsity) is used as work space. On return @p x holds the
-     * displacements followed by the multipliers.
-     */
     /// Check every active set against the rigid-body motions (see above).
     void
     set_support(const RigidBodySupport *support)
@@ -121,6 +125,12 @@ namespace dealvem
     static std::vector<std::vector<unsigned int>>
     pair_neighbours(const std::vector<NodeInsertion::Interface> &interfaces);
 
+    /**
+     * @p system_matrix and @p system_rhs hold the elasticity part (size
+     * n_dofs + n_multipliers, assembled with the constraints). @p matrix
+     * (same sparsity) is used as work space. On return @p x holds the
+     * displacements followed by the multipliers.
+     */
     Result
     solve(const dealii::SparseMatrix<double> &system_matrix,
           const dealii::Vector<double>       &system_rhs,
@@ -128,16 +138,6 @@ namespace dealvem
           dealii::Vector<double>             &x);
 
   private:
-    /// Apply the two corrections (see the class documentation) to the
-    /// plain proposal @p next from the active set @p active; returns
-    /// whether a release extrapolation was applied, and marks its pairs in
-    /// @p extrapolated.
-    bool
-    accelerate(const std::vector<bool>   &active,
-               const std::vector<double> &gaps,
-               std::vector<bool>         &next,
-               std::vector<bool>         &extrapolated) const;
-
     const ContactAssembler<dim>             &contact;
     const dealii::AffineConstraints<double> &constraints;
     SaddlePointSolver                       &solver;

@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/friction_state_update.h>
 #include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
@@ -69,6 +70,12 @@ namespace dealvem
    * has no static equilibrium (for example a tangential load above $\mu$
    * times the normal load on a body held only by friction) and solve()
    * throws a message saying so.
+   *
+   * <h3>Driver and rule</h3>
+   * solve() only owns the loop (assemble_friction() for the current
+   * states, the linear solve); every rule above lives in
+   * FrictionStateUpdate, which a program or a Newton method for finite
+   * strain can call from its own loop.
    */
   template <int dim>
   class FrictionSolver

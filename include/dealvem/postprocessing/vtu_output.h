@@ -11,6 +11,7 @@
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealvem
@@ -31,6 +32,23 @@ namespace dealvem
                  const VEMDoFHandler<dim>     &dof_handler,
                  const dealii::Vector<double> &solution,
                  const StressRecovery<dim>    &stresses);
+
+  /**
+   * The same, with further scalar point data: each entry of
+   * @p point_data is a field name and one value per mesh vertex (for
+   * example the active set of a contact iteration, 1 at the vertices of
+   * active pairs, as examples/step-6 writes it). Throws if a name is empty,
+   * repeats, clashes with the fields above or holds a character XML
+   * attributes cannot take, if a field has the wrong size, or if a value
+   * is not finite.
+   */
+  template <int dim>
+  void
+  write_vtu_file(const std::string                                             &filename,
+                 const VEMDoFHandler<dim>                                      &dof_handler,
+                 const dealii::Vector<double>                                  &solution,
+                 const StressRecovery<dim>                                     &stresses,
+                 const std::vector<std::pair<std::string, std::vector<double>>> &point_data);
 
   /**
    * One piece of a parallel output: the cells @p cells (the locally owned

@@ -1,0 +1,195 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_contact_active_set_update_h
+#define dealvem_contact_active_set_update_h
+
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/node_insertion.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  class RigidBodySupport;
+
+  /**
+   * The rule of the primal-dual active set method for normal contact (tied
+   * or unilateral, frictionless or with a stick penalty), with no loop and
+   * no linear solve: given the solution of the system assembled for the
+   * current active set, update() proposes the next set, says whether the
+   * iteration has converged and stops with a message when it cycles or
+   * runs out of iterations. The loop around it (assemble the contact blocks
+   * for State::active, solve, call update()) belongs to the caller:
+   * ActiveSetSolver::solve() is one such driver, the tutorial step-6 writes
+   * the loop out, and a Newton method for finite strain can own the loop
+   * and call update() once per Newton step.
+   *
+   * <h3>The rule</h3>
+   * With the compressive pressure $p_i = -\lambda_i/w_i$ of pair $i$
+   * (multiplier $\lambda_i$, tributary weight $w_i$) and its gap $g_i$,
+   * the conditions $g_i\ge 0$, $p_i\ge 0$, $g_ip_i = 0$ are equivalent to
+   * $C_i = p_i - \max(0,\ p_i - c\,g_i) = 0$ for any $c > 0$. A semismooth
+   * Newton step on $C$ is the active-set step: solve with $g_i = 0$ on
+   * $\mathcal A = \{i : p_i - c\,g_i > 0\}$ (evaluated at the last iterate)
+   * and $\lambda_i = 0$ elsewhere (Hintermüller, Ito and Kunisch, SIAM J.
+   * Optim. 13, 2002; Hüeber and Wohlmuth, 2005). Values below $10^{-10}$
+   * of the largest $|p_i|$, $c|g_i|$ count as zero. The iteration has
+   * converged when the proposed set equals the set just solved with; the
+   * solution then satisfies $C = 0$ (residual()).
+   *
+   * The first set (initial_state()) holds the pairs whose initial gap is
+   * closed; with a RigidBodySupport, further pairs of smallest gap are
+   * closed until every body is held. The acceleration of ActiveSetSolver
+   * (see there) is applied to the proposed set when
+   * ContactSettings::accelerate_active_set is set and the pairs'
+   * neighbours are known (set_pair_neighbours()); convergence is always
+   * judged on the plain proposal.
+   *
+   * <h3>Failures</h3>
+   * A plain step back to a set from which a plain step was taken before
+   * means the iteration cycles: update() throws, naming the iteration, the
+   * history of set sizes and the pairs (index and slave location) that
+   * switch between the two sets. It also throws when the iteration limit
+   * ContactSettings::max_active_set_iterations is reached, and, with a
+   * RigidBodySupport, when the proposed set leaves a body free (no static
+   * equilibrium).
+   */
+  template <int dim>
+  class ActiveSetUpdate
+  {
+  public:
+    /**
+     * What the iteration carries from one step to the next. The driver
+     * owns it: initial_state() makes it, update() advances it.
+     */
+    struct State
+    {
+      /// The set to solve with next (per pair: normal constraint enforced).
+      std::vector<bool> active;
+      /// Updates taken so far (= linear solves of the driver).
+      unsigned int n_iterations = 0;
+      /// Per update, the number of active pairs of the set solved with.
+      std::vector<unsigned int> n_active_history;
+      /// True once the set repeats (or at once for tied contact).
+      bool converged = false;
+      /// Pairs the last update closed (inactive to active) and opened.
+      unsigned int n_closed = 0, n_opened = 0;
+      /// The complementarity residual residual() of the last solution.
+      double residual = 0;
+      /// Pairs with an open initial gap closed by initial_state() so that
+      /// every body is held.
+      unsigned int n_closed_for_support = 0;
+      /// Steps whose proposed set the acceleration corrected.
+      unsigned int n_accelerated = 0;
+
+      /// Sets from which a plain step was taken (cycle detection).
+      std::set<std::vector<bool>> visited;
+      /// Pairs released by the release extrapolation, and whether it is
+      /// still switched on.
+      std::vector<bool> extrapolated;
+      bool              extrapolate = false;
+    };
+
+    /**
+     * @p pairs (copied; e.g. ContactAssembler::get_pairs()), @p settings
+     * (normal model, iteration limit, acceleration) and the constant @p c
+     * of the complementarity function (units $E/h$,
+     * ContactScales::complementarity_constant()).
+     */
+    ActiveSetUpdate(const std::vector<ContactNodePair> &pairs,
+                    const ContactSettings              &settings,
+                    const double                        c);
+
+    /// Check the first set and every proposed set against the rigid-body
+    /// motions (see the class documentation); @p support may be nullptr.
+    void
+    set_support(const RigidBodySupport *support)
+    {
+      this->support = support;
+    }
+
+    /**
+     * The neighbours of each pair along its interface, for the
+     * acceleration (ActiveSetSolver::pair_neighbours() builds them). Without
+     * them only the first correction (a step that would more than double
+     * the set) is applied.
+     */
+    void
+    set_pair_neighbours(const std::vector<std::vector<unsigned int>> &neighbours)
+    {
+      this->neighbours = neighbours;
+    }
+
+    /**
+     * The state to start from: every pair active for tied contact;
+     * otherwise the pairs with initial gap $\le 10^{-12}$ times the largest
+     * weight, and with a support those of smallest gap until every body is
+     * held (throws if not even all pairs hold them).
+     */
+    State
+    initial_state() const;
+
+    /**
+     * One step of the rule: @p gaps and @p multipliers are $g_i$ and the
+     * normal multipliers $\lambda_i$ (nodal forces, negative in
+     * compression) of the solution computed with @p state.active. Records
+     * the step in @p state, replaces State::active by the next set unless
+     * the iteration has converged, and returns State::converged. Throws on
+     * a cycle, at the iteration limit, and (with a support) when the next
+     * set holds no equilibrium.
+     */
+    bool
+    update(State &state, const std::vector<double> &gaps, const std::vector<double> &multipliers) const;
+
+    /**
+     * The same from the solution vector @p x of the saddle-point system
+     * (displacements followed by the multipliers of @p contact, whose pairs
+     * must be those of this object).
+     */
+    bool
+    update(State &state, const ContactAssembler<dim> &contact, const dealii::Vector<double> &x) const;
+
+    /**
+     * The complementarity residual $\max_i |p_i - \max(0, p_i - c\,g_i)|$
+     * (units of pressure) of the gaps and normal multipliers: zero exactly
+     * at a solution of the contact conditions.
+     */
+    double
+    residual(const std::vector<double> &gaps, const std::vector<double> &multipliers) const;
+
+    /// The constant $c$.
+    double
+    get_constant() const
+    {
+      return c;
+    }
+
+  private:
+    /// Apply the two corrections of the acceleration to the plain proposal
+    /// @p next from the active set @p active; returns whether a release
+    /// extrapolation was applied, and marks its pairs in @p extrapolated.
+    bool
+    accelerate(const std::vector<bool>   &active,
+               const std::vector<double> &gaps,
+               std::vector<bool>         &next,
+               std::vector<bool>         &extrapolated) const;
+
+    /// " 12 14 13": the set sizes solved with so far, for messages.
+    static std::string
+    history_string(const State &state);
+
+    std::vector<ContactNodePair>           pairs;
+    ContactSettings                        settings;
+    double                                 c;
+    const RigidBodySupport                *support = nullptr;
+    std::vector<std::vector<unsigned int>> neighbours;
+  };
+} // namespace dealvem
+
+#endif

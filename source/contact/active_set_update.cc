@@ -1,0 +1,352 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <dealvem/contact/active_set_update.h>
+#include <dealvem/contact/rigid_body_support.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace dealvem
+{
+  template <int dim>
+  ActiveSetUpdate<dim>::ActiveSetUpdate(const std::vector<ContactNodePair> &pairs,
+                                        const ContactSettings              &settings,
+                                        const double                        c)
+    : pairs(pairs)
+    , settings(settings)
+    , c(c)
+  {
+    AssertThrow(c > 0 && std::isfinite(c),
+                dealii::ExcMessage("The active-set constant must be positive (and finite), not " +
+                                   std::to_string(c) + "."));
+  }
+
+
+
+  template <int dim>
+  typename ActiveSetUpdate<dim>::State
+  ActiveSetUpdate<dim>::initial_state() const
+  {
+    State      state;
+    const bool tied = (settings.normal == ContactSettings::Normal::tied);
+    state.active.resize(pairs.size());
+    // tolerance for "closed" gaps, relative to the interface size
+    double length = 0;
+    for (const auto &p : pairs)
+      length = std::max(length, p.weight);
+    const double gap_tol = 1e-12 * length;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      state.active[i] = tied || pairs[i].initial_gap <= gap_tol;
+    if (support != nullptr && !tied && !support->holds(state.active))
+      {
+        state.n_closed_for_support = support->close_smallest_gaps(state.active);
+        const std::string free     = support->free_motions(state.active);
+        AssertThrow(free.empty(),
+                    dealii::ExcMessage("Contact: even with every contact pair closed, these rigid-body motions "
+                                       "are free: " + free +
+                                       ". Add Dirichlet, roller or point constraints (with frictionless contact, "
+                                       "each body must be held against sliding along the interface)."));
+      }
+    state.extrapolate = settings.accelerate_active_set;
+    state.extrapolated.assign(pairs.size(), false);
+    return state;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ActiveSetUpdate<dim>::history_string(const State &state)
+  {
+    std::ostringstream log;
+    for (const auto n : state.n_active_history)
+      log << " " << n;
+    return log.str();
+  }
+
+
+
+  template <int dim>
+  double
+  ActiveSetUpdate<dim>::residual(const std::vector<double> &gaps, const std::vector<double> &multipliers) const
+  {
+    AssertThrow(gaps.size() == pairs.size() && multipliers.size() == pairs.size(),
+                dealii::ExcMessage("ActiveSetUpdate: " + std::to_string(gaps.size()) + " gaps and " +
+                                   std::to_string(multipliers.size()) + " multipliers given for " +
+                                   std::to_string(pairs.size()) + " contact pairs."));
+    double r = 0;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const double p = -multipliers[i] / pairs[i].weight;
+        r              = std::max(r, std::abs(p - std::max(0., p - c * gaps[i])));
+      }
+    return r;
+  }
+
+
+
+  template <int dim>
+  bool
+  ActiveSetUpdate<dim>::accelerate(const std::vector<bool>   &active,
+                                   const std::vector<double> &gaps,
+                                   std::vector<bool>         &next,
+                                   std::vector<bool>         &extrapolated) const
+  {
+    const unsigned int n     = pairs.size();
+    auto               holds = [&](const std::vector<bool> &set) { return support == nullptr || support->holds(set); };
+
+    // 1. a step that more than doubles the set adds the deeper half only
+    unsigned int n_active = 0, n_added = 0;
+    double       deepest  = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        n_active += active[i];
+        if (next[i] && !active[i])
+          {
+            ++n_added;
+            deepest = std::max(deepest, -gaps[i]);
+          }
+      }
+    if (n_added > n_active && deepest > 0)
+      {
+        std::vector<bool> deeper = next;
+        for (unsigned int i = 0; i < n; ++i)
+          if (next[i] && !active[i] && -gaps[i] < 0.5 * deepest)
+            deeper[i] = false;
+        if (holds(deeper))
+          next = deeper;
+        return false;
+      }
+
+    // 2. a releasing step releases each run of released pairs once more
+    // inwards, over the run's length
+    if (neighbours.size() != n)
+      return false;
+    std::vector<bool> released(n), seen(n, false), extra(n, false);
+    bool              any = false;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        released[i] = active[i] && !next[i];
+        any         = any || released[i];
+      }
+    if (!any)
+      return false;
+    std::vector<unsigned int>                    run, stack;
+    std::vector<std::pair<unsigned int, double>> front;
+    for (unsigned int i = 0; i < n; ++i)
+      if (released[i] && !seen[i])
+        {
+          // the run of released pairs through i: its length is the sum of
+          // the tributary lengths of its pairs
+          run.assign(1, i);
+          stack.assign(1, i);
+          seen[i] = true;
+          while (!stack.empty())
+            {
+              const unsigned int j = stack.back();
+              stack.pop_back();
+              for (const auto k : neighbours[j])
+                if (released[k] && !seen[k])
+                  {
+                    seen[k] = true;
+                    run.push_back(k);
+                    stack.push_back(k);
+                  }
+            }
+          double length = 0;
+          for (const auto j : run)
+            length += pairs[j].weight;
+          // walk from the run into the pairs that stay active
+          front.clear();
+          for (const auto j : run)
+            front.emplace_back(j, 0.);
+          while (!front.empty())
+            {
+              const auto [j, distance] = front.back();
+              front.pop_back();
+              for (const auto k : neighbours[j])
+                if (next[k] && !extra[k])
+                  {
+                    const double d = distance + (pairs[k].slave_location - pairs[j].slave_location).norm();
+                    if (d <= length)
+                      {
+                        extra[k] = true;
+                        front.emplace_back(k, d);
+                      }
+                  }
+            }
+        }
+    std::vector<bool> corrected = next;
+    bool              changed   = false;
+    for (unsigned int i = 0; i < n; ++i)
+      if (extra[i])
+        {
+          corrected[i] = false;
+          changed      = true;
+        }
+    // never release a whole interface's contact, nor a body's hold
+    bool kept = false;
+    for (unsigned int i = 0; i < n; ++i)
+      kept = kept || corrected[i];
+    if (!changed || !kept || !holds(corrected))
+      return false;
+    next = corrected;
+    for (unsigned int i = 0; i < n; ++i)
+      if (extra[i])
+        extrapolated[i] = true;
+    return true;
+  }
+
+
+
+  template <int dim>
+  bool
+  ActiveSetUpdate<dim>::update(State                     &state,
+                               const std::vector<double> &gaps,
+                               const std::vector<double> &multipliers) const
+  {
+    const unsigned int n_pairs = pairs.size();
+    AssertThrow(state.active.size() == n_pairs,
+                dealii::ExcMessage("ActiveSetUpdate: the state has " + std::to_string(state.active.size()) +
+                                   " pairs, the contact " + std::to_string(n_pairs) +
+                                   " (make it with initial_state())."));
+    AssertThrow(!state.converged,
+                dealii::ExcMessage("ActiveSetUpdate: update() called on a converged state."));
+    state.residual = residual(gaps, multipliers); // (checks the sizes)
+    if (state.extrapolated.size() != n_pairs)
+      state.extrapolated.assign(n_pairs, false);
+
+    ++state.n_iterations;
+    const unsigned int it       = state.n_iterations;
+    unsigned int       n_active = 0;
+    for (const bool a : state.active)
+      n_active += a;
+    state.n_active_history.push_back(n_active);
+    state.n_closed = state.n_opened = 0;
+    if (settings.normal == ContactSettings::Normal::tied)
+      {
+        state.converged = true;
+        return true;
+      }
+
+    // the plain proposal; the scale of the test quantities, to ignore
+    // round-off sized values
+    std::vector<bool> next(n_pairs);
+    double            scale = 0;
+    for (unsigned int i = 0; i < n_pairs; ++i)
+      scale = std::max({scale, std::abs(multipliers[i]) / pairs[i].weight, c * std::abs(gaps[i])});
+    for (unsigned int i = 0; i < n_pairs; ++i)
+      {
+        const double mu = -multipliers[i];
+        next[i]         = (mu / pairs[i].weight - c * gaps[i] > 1e-10 * scale);
+      }
+    if (next == state.active)
+      {
+        state.converged = true;
+        return true;
+      }
+    // a pair released by extrapolation that penetrates again: the edge is
+    // found, plain steps from here on
+    for (unsigned int i = 0; i < n_pairs && state.extrapolate; ++i)
+      if (state.extrapolated[i] && next[i])
+        state.extrapolate = false;
+    bool                    plain    = true;
+    const std::vector<bool> proposed = next;
+    if (settings.accelerate_active_set)
+      {
+        std::vector<bool> marks(n_pairs, false);
+        if (accelerate(state.active, gaps, next, marks) && !state.extrapolate)
+          next = proposed; // extrapolation switched off: keep the plain set
+        else
+          for (unsigned int i = 0; i < n_pairs; ++i)
+            state.extrapolated[i] = state.extrapolated[i] || marks[i];
+        if (next != proposed)
+          {
+            plain = false;
+            ++state.n_accelerated;
+          }
+        // a corrected set seen before falls back to the plain one
+        if (!plain && state.visited.count(next) > 0)
+          {
+            next  = proposed;
+            plain = true;
+            --state.n_accelerated;
+          }
+      }
+    if (support != nullptr)
+      {
+        const std::string free = support->free_motions(next);
+        AssertThrow(free.empty(),
+                    dealii::ExcMessage(
+                      "No static equilibrium: in active-set iteration " + std::to_string(it) +
+                      " every contact pair that held these rigid-body motions came out in tension or "
+                      "open: " + free + " (active pairs per iteration:" + history_string(state) +
+                      "). The loads pull the body off its contact partner, or the bodies are too far "
+                      "apart for the load to close the gap; hold the body by Dirichlet, roller or point "
+                      "constraints, or check the sign of the loads."));
+      }
+    if (plain && state.visited.count(next) > 0)
+      {
+        // name the pairs that switch between the set solved with and the
+        // one visited before
+        std::ostringstream switching;
+        unsigned int       n_switching = 0;
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (next[i] != state.active[i])
+            {
+              if (n_switching < 10)
+                switching << (n_switching > 0 ? ", " : "") << "pair " << i << " at (" << pairs[i].slave_location
+                          << ") " << (next[i] ? "closes" : "opens");
+              ++n_switching;
+            }
+        if (n_switching > 10)
+          switching << " and " << n_switching - 10 << " more";
+        AssertThrow(false,
+                    dealii::ExcMessage("The contact active set cycles: the set of iteration " +
+                                       std::to_string(it + 1) +
+                                       " was already visited (active pairs per iteration:" +
+                                       history_string(state) + "; switching back: " + switching.str() +
+                                       "). Try another active-set constant or finer meshes."));
+      }
+    if (plain)
+      state.visited.insert(state.active);
+    for (unsigned int i = 0; i < n_pairs; ++i)
+      {
+        state.n_closed += (next[i] && !state.active[i]);
+        state.n_opened += (!next[i] && state.active[i]);
+      }
+    state.active = next;
+    AssertThrow(it < settings.max_active_set_iterations,
+                dealii::ExcMessage("The contact active set did not settle within " +
+                                   std::to_string(settings.max_active_set_iterations) +
+                                   " iterations (active pairs per iteration:" + history_string(state) +
+                                   "). Increase 'Maximum active set iterations' or check the "
+                                   "loads and supports."));
+    return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  ActiveSetUpdate<dim>::update(State                        &state,
+                               const ContactAssembler<dim>  &contact,
+                               const dealii::Vector<double> &x) const
+  {
+    AssertThrow(contact.n_pairs() == pairs.size() && x.size() >= contact.n_multipliers(),
+                dealii::ExcMessage("ActiveSetUpdate: the contact assembler has " +
+                                   std::to_string(contact.n_pairs()) + " pairs, this update " +
+                                   std::to_string(pairs.size()) + ", and the solution " +
+                                   std::to_string(x.size()) + " entries."));
+    const unsigned int  n = x.size() - contact.n_multipliers();
+    std::vector<double> multipliers(pairs.size());
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      multipliers[i] = x[n + i];
+    return update(state, contact.gaps(x), multipliers);
+  }
+
+  template class ActiveSetUpdate<2>;
+} // namespace dealvem
