@@ -31,6 +31,7 @@
 
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/elasticity/boundary_conditions.h>
+#include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/generators.h>
@@ -241,18 +242,22 @@ namespace Step1
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
         vem_values.reinit(c);
-        const ElasticMaterial &material = materials.at(vem_values.material_id());
-        const double           lambda = material.lambda(), mu = material.mu();
-        const unsigned int     n = vem_values.dofs_per_cell();
+        // The material enters through its constitutive law only: the
+        // tangent C = d sigma / d eps (for the isotropic ElasticMaterial
+        // lambda I x I + 2 mu II, so that eps_i : C : eps_j is
+        // lambda div_i div_j + 2 mu eps_i : eps_j, the form of step-8).
+        const ConstitutiveLaw<2> &law = materials.at(vem_values.material_id());
+        const dealii::SymmetricTensor<4, 2> C = law.tangent(dealii::SymmetricTensor<2, 2>());
+        const unsigned int                  n = vem_values.dofs_per_cell();
         cell_matrix.reinit(n, n);
         cell_rhs.reinit(n);
         for (unsigned int q = 0; q < vem_values.n_quadrature_points(); ++q)
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              cell_matrix(i, j) += (lambda * vem_values.shape_divergence(i, q) * vem_values.shape_divergence(j, q) +
-                                    2 * mu * (vem_values.shape_symmetric_gradient(i, q) *
-                                              vem_values.shape_symmetric_gradient(j, q))) *
-                                   vem_values.JxW(q);
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const dealii::SymmetricTensor<2, 2> sigma_j = C * vem_values.shape_symmetric_gradient(j, q);
+              for (unsigned int i = 0; i < n; ++i)
+                cell_matrix(i, j) += (vem_values.shape_symmetric_gradient(i, q) * sigma_j) * vem_values.JxW(q);
+            }
         ElasticityOperator<2>::add_stabilization(vem_values.get_element(), cell_matrix, gamma);
 
         for (unsigned int e = 0; e < vem_values.n_edges(); ++e)

@@ -32,6 +32,7 @@
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/elasticity/boundary_conditions.h>
 #include <dealvem/elasticity/elasticity_operator.h>
+#include <dealvem/elasticity/material_library.h>
 #include <dealvem/mesh/generators.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/vtu_output.h>
@@ -152,12 +153,12 @@ namespace Step2
   {
     settings.normal     = ContactSettings::Normal::unilateral;
     settings.tangential = ContactSettings::Tangential::penalty;
-    // the library's one rule for the constants: E_min / h_min with h_min the
-    // shortest paired sub-edge; the penalty is settings.penalty_factor
-    // (1000) times it, the active-set constant c is it
-    scales  = std::make_unique<ContactScales>(std::vector<double>{materials.at(0).youngs_modulus(),
-                                                                  materials.at(1).youngs_modulus()},
-                                             interfaces);
+    // the library's one rule for the constants: E_min / h_min with E_min the
+    // smallest characteristic stiffness of the laws (Young's modulus for
+    // ElasticMaterial) and h_min the shortest paired sub-edge; the penalty
+    // is settings.penalty_factor (1000) times it, the active-set constant c
+    // is it
+    scales  = std::make_unique<ContactScales>(MaterialLibrary<2>(materials), interfaces);
     contact = std::make_unique<ContactAssembler<2>>(dof_handler, pairs, settings, scales->penalty(settings));
 
     constraints.clear();

@@ -5,6 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/elasticity/material_library.h>
 
 #include <algorithm>
 #include <cmath>
@@ -483,6 +484,13 @@ namespace dealvem
                 dealii::ExcMessage("ContactScales: node insertion paired no interface edge, so the contact "
                                    "scale E_min / h_min is undefined."));
   }
+
+
+
+  ContactScales::ContactScales(const MaterialLibrary<2>                    &laws,
+                               const std::vector<NodeInsertion::Interface> &interfaces)
+    : ContactScales(std::vector<double>{laws.min_characteristic_stiffness()}, interfaces)
+  {}
 
 
 

@@ -16,20 +16,40 @@
 namespace dealvem
 {
   template <int dim>
-  ElasticityAssembler<dim>::ElasticityAssembler(
-    const VEMDoFHandler<dim>                                    &dof_handler,
-    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-    const double                                                 gamma,
-    const Stabilization                                          stabilization)
+  ElasticityAssembler<dim>::ElasticityAssembler(const VEMDoFHandler<dim>   &dof_handler,
+                                                const MaterialLibrary<dim> &laws,
+                                                const double                gamma,
+                                                const Stabilization         stabilization)
     : dof_handler(dof_handler)
-    , materials(materials)
+    , laws(laws)
     , gamma(gamma)
     , stabilization(stabilization)
   {
     AssertThrow(gamma > 0 && std::isfinite(gamma),
                 dealii::ExcMessage("The stabilization factor gamma must be positive, got " +
                                    std::to_string(gamma) + "."));
+    for (const auto &l : laws.get_laws())
+      {
+        AssertThrow(l.second->is_linear(),
+                    dealii::ExcMessage("ElasticityAssembler: the constitutive law '" + l.second->get_name() +
+                                       "' of material id " + std::to_string(l.first) +
+                                       " is not linear; the assembler builds the stiffness of linear laws "
+                                       "only (see ElasticityOperator)."));
+        if (const auto *m = dynamic_cast<const ElasticMaterial *>(l.second.get()))
+          materials.emplace(l.first, *m);
+      }
   }
+
+
+
+  template <int dim>
+  ElasticityAssembler<dim>::ElasticityAssembler(
+    const VEMDoFHandler<dim>                                    &dof_handler,
+    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
+    const double                                                 gamma,
+    const Stabilization                                          stabilization)
+    : ElasticityAssembler(dof_handler, MaterialLibrary<dim>(materials), gamma, stabilization)
+  {}
 
 
 
@@ -86,15 +106,30 @@ namespace dealvem
 
 
   template <int dim>
-  const ElasticMaterial &
-  ElasticityAssembler<dim>::get_material(const unsigned int c) const
+  const ConstitutiveLaw<dim> &
+  ElasticityAssembler<dim>::get_law(const unsigned int c) const
   {
     const auto id = dof_handler.get_mesh().cell(c).material_id;
-    const auto it = materials.find(id);
-    AssertThrow(it != materials.end(),
+    AssertThrow(laws.has_law(id),
                 dealii::ExcMessage("Cell " + std::to_string(c) + " of mesh '" +
                                    dof_handler.get_mesh().name + "' has material id " +
                                    std::to_string(id) + ", for which no material is defined."));
+    return laws.get_law(id);
+  }
+
+
+
+  template <int dim>
+  const ElasticMaterial &
+  ElasticityAssembler<dim>::get_material(const unsigned int c) const
+  {
+    const ConstitutiveLaw<dim> &law = get_law(c);
+    const auto                  id  = dof_handler.get_mesh().cell(c).material_id;
+    const auto                  it  = materials.find(id);
+    AssertThrow(it != materials.end(),
+                dealii::ExcMessage("Cell " + std::to_string(c) + " has material id " + std::to_string(id) +
+                                   ", whose constitutive law '" + law.get_name() +
+                                   "' is not an ElasticMaterial; use get_law()."));
     return it->second;
   }
 
@@ -186,7 +221,7 @@ namespace dealvem
       {
         const unsigned int c = cells ? (*cells)[i] : i;
         vem_values.reinit(c);
-        elasticity.reinit(vem_values.get_element(), get_material(c), gamma, stabilization);
+        elasticity.reinit(vem_values.get_element(), get_law(c), gamma, stabilization);
         local_load(vem_values, F);
         constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), F,
                                                vem_values.get_dof_indices(), matrix, rhs);
@@ -224,7 +259,7 @@ namespace dealvem
     for (const unsigned int c : cells)
       {
         vem_values.reinit(c);
-        elasticity.reinit(vem_values.get_element(), get_material(c), gamma, stabilization);
+        elasticity.reinit(vem_values.get_element(), get_law(c), gamma, stabilization);
         local_load(vem_values, F);
         const auto &indices = vem_values.get_dof_indices();
         u_c.reinit(indices.size());
@@ -260,7 +295,7 @@ namespace dealvem
           needed = needed || rows.count(d) > 0;
         if (!needed)
           continue;
-        elasticity.reinit(vem_values.get_element(), get_material(c), gamma, stabilization);
+        elasticity.reinit(vem_values.get_element(), get_law(c), gamma, stabilization);
         const auto &K = elasticity.get_stiffness_matrix();
         for (unsigned int i = 0; i < indices.size(); ++i)
           {

@@ -43,7 +43,7 @@ namespace dealvem
       dealii::Vector<double> F;
       const auto             add_cell = [&](const unsigned int c) {
         vem_values.reinit(c);
-        elasticity.reinit(vem_values.get_element(), assembler.get_material(c), assembler.get_gamma(),
+        elasticity.reinit(vem_values.get_element(), assembler.get_law(c), assembler.get_gamma(),
                           assembler.get_stabilization());
         assembler.local_load(vem_values, F);
         const auto &indices = vem_values.get_dof_indices();

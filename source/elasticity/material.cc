@@ -65,14 +65,60 @@ namespace dealvem
     return nu * (s[0][0] + s[1][1]);
   }
 
+  dealii::SymmetricTensor<4, 2>
+  ElasticMaterial::tangent(const dealii::SymmetricTensor<2, 2> &) const
+  {
+    const double                  l = lambda(), m = mu();
+    dealii::SymmetricTensor<4, 2> C;
+    C[0][0][0][0] = C[1][1][1][1] = l + 2. * m;
+    C[0][0][1][1] = C[1][1][0][0] = l;
+    C[0][1][0][1]                 = m;
+    return C;
+  }
+
+
+
+  bool
+  ElasticMaterial::is_linear() const
+  {
+    return true;
+  }
+
+
+
+  double
+  ElasticMaterial::characteristic_stiffness() const
+  {
+    return E;
+  }
+
+
+
+  std::string
+  ElasticMaterial::get_name() const
+  {
+    std::ostringstream s;
+    s << "linear isotropic (E = " << E << ", nu = " << nu << ", " << model_name(model_) << ")";
+    return s.str();
+  }
+
+
+
+  std::unique_ptr<ConstitutiveLaw<2>>
+  ElasticMaterial::clone() const
+  {
+    return std::make_unique<ElasticMaterial>(*this);
+  }
+
+
+
   double
   ElasticMaterial::von_mises(const dealii::SymmetricTensor<2, 2> &s, const double szz)
   {
-    const double sxx = s[0][0], syy = s[1][1], sxy = s[0][1];
-    return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) +
-                            (szz - sxx) * (szz - sxx)) +
-                     3. * sxy * sxy);
+    return von_mises_stress(s, szz);
   }
+
+
 
   std::string
   ElasticMaterial::model_name(const Model m)

@@ -16,12 +16,12 @@ namespace dealvem
     // material id @p body (any if invalid_material_id)
     template <int dim>
     ErrorNorms
-    errors_on_cells(const VEMDoFHandler<dim>                                    &dof_handler,
-                    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-                    const dealii::Vector<double>                                &solution,
-                    const dealii::Function<dim>                                 &exact,
-                    const dealii::types::material_id                             body,
-                    const std::vector<unsigned int>                             *cells)
+    errors_on_cells(const VEMDoFHandler<dim>        &dof_handler,
+                    const MaterialLibrary<dim>      &laws,
+                    const dealii::Vector<double>    &solution,
+                    const dealii::Function<dim>     &exact,
+                    const dealii::types::material_id body,
+                    const std::vector<unsigned int> *cells)
   {
     AssertThrow(exact.n_components == 2, dealii::ExcMessage("The exact displacement needs 2 components."));
     const auto        &mesh = dof_handler.get_mesh();
@@ -36,7 +36,11 @@ namespace dealvem
         const unsigned int c = cells ? (*cells)[cell] : cell;
         if (body != dealii::numbers::invalid_material_id && mesh.cell(c).material_id != body)
           continue;
-        const auto &material = materials.at(mesh.cell(c).material_id);
+        const ConstitutiveLaw<dim> &material = laws.get_law(mesh.cell(c).material_id);
+        AssertThrow(material.is_linear(),
+                    dealii::ExcMessage("compute_errors(): the constitutive law '" + material.get_name() +
+                                       "' of material id " + std::to_string(mesh.cell(c).material_id) +
+                                       " is not linear, so the energy norm of an error is undefined."));
         element.reinit(mesh.cell_vertices(c));
         dof_handler.get_dof_values(c, solution, local);
         element.project(local, coef);
@@ -81,13 +85,39 @@ namespace dealvem
 
   template <int dim>
   ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>         &dof_handler,
+                 const MaterialLibrary<dim>       &laws,
+                 const dealii::Vector<double>     &solution,
+                 const dealii::Function<dim>      &exact,
+                 const dealii::types::material_id body)
+  {
+    return errors_on_cells(dof_handler, laws, solution, exact, body, nullptr);
+  }
+
+
+
+  template <int dim>
+  ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>        &dof_handler,
+                 const MaterialLibrary<dim>      &laws,
+                 const dealii::Vector<double>    &solution,
+                 const dealii::Function<dim>     &exact,
+                 const std::vector<unsigned int> &cells)
+  {
+    return errors_on_cells(dof_handler, laws, solution, exact, dealii::numbers::invalid_material_id, &cells);
+  }
+
+
+
+  template <int dim>
+  ErrorNorms
   compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
                  const std::map<dealii::types::material_id, ElasticMaterial> &materials,
                  const dealii::Vector<double>                                &solution,
                  const dealii::Function<dim>                                 &exact,
                  const dealii::types::material_id                             body)
   {
-    return errors_on_cells(dof_handler, materials, solution, exact, body, nullptr);
+    return errors_on_cells(dof_handler, MaterialLibrary<dim>(materials), solution, exact, body, nullptr);
   }
 
 
@@ -100,8 +130,8 @@ namespace dealvem
                  const dealii::Function<dim>                                 &exact,
                  const std::vector<unsigned int>                             &cells)
   {
-    return errors_on_cells(dof_handler, materials, solution, exact, dealii::numbers::invalid_material_id,
-                           &cells);
+    return errors_on_cells(dof_handler, MaterialLibrary<dim>(materials), solution, exact,
+                           dealii::numbers::invalid_material_id, &cells);
   }
 
 
@@ -157,6 +187,12 @@ namespace dealvem
 
 
 
+  template ErrorNorms
+  compute_errors(const VEMDoFHandler<2> &, const MaterialLibrary<2> &, const dealii::Vector<double> &,
+                 const dealii::Function<2> &, const dealii::types::material_id);
+  template ErrorNorms
+  compute_errors(const VEMDoFHandler<2> &, const MaterialLibrary<2> &, const dealii::Vector<double> &,
+                 const dealii::Function<2> &, const std::vector<unsigned int> &);
   template ErrorNorms
   compute_errors(const VEMDoFHandler<2> &, const std::map<dealii::types::material_id, ElasticMaterial> &,
                  const dealii::Vector<double> &, const dealii::Function<2> &,

@@ -8,12 +8,33 @@
 namespace dealvem
 {
   template <int dim>
+  StressRecovery<dim>::StressRecovery(const VEMDoFHandler<dim>     &dof_handler,
+                                      const MaterialLibrary<dim>   &laws,
+                                      const dealii::Vector<double> &solution)
+  {
+    compute(dof_handler, laws, solution, nullptr);
+  }
+
+
+
+  template <int dim>
+  StressRecovery<dim>::StressRecovery(const VEMDoFHandler<dim>        &dof_handler,
+                                      const MaterialLibrary<dim>      &laws,
+                                      const dealii::Vector<double>    &solution,
+                                      const std::vector<unsigned int> &cells)
+  {
+    compute(dof_handler, laws, solution, &cells);
+  }
+
+
+
+  template <int dim>
   StressRecovery<dim>::StressRecovery(
     const VEMDoFHandler<dim>                                    &dof_handler,
     const std::map<dealii::types::material_id, ElasticMaterial> &materials,
     const dealii::Vector<double>                                &solution)
   {
-    compute(dof_handler, materials, solution, nullptr);
+    compute(dof_handler, MaterialLibrary<dim>(materials), solution, nullptr);
   }
 
 
@@ -25,17 +46,17 @@ namespace dealvem
     const dealii::Vector<double>                                &solution,
     const std::vector<unsigned int>                             &cells)
   {
-    compute(dof_handler, materials, solution, &cells);
+    compute(dof_handler, MaterialLibrary<dim>(materials), solution, &cells);
   }
 
 
 
   template <int dim>
   void
-  StressRecovery<dim>::compute(const VEMDoFHandler<dim>                                    &dof_handler,
-                               const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-                               const dealii::Vector<double>                                &solution,
-                               const std::vector<unsigned int>                             *cells)
+  StressRecovery<dim>::compute(const VEMDoFHandler<dim>        &dof_handler,
+                               const MaterialLibrary<dim>      &laws,
+                               const dealii::Vector<double>    &solution,
+                               const std::vector<unsigned int> *cells)
   {
     const auto        &mesh = dof_handler.get_mesh();
     const unsigned int k    = dof_handler.get_degree();
@@ -52,12 +73,11 @@ namespace dealvem
     for (unsigned int i = 0; i < n_cells; ++i)
       {
         const unsigned int c  = cells ? (*cells)[i] : i;
-        const auto         it = materials.find(mesh.cell(c).material_id);
-        AssertThrow(it != materials.end(),
+        AssertThrow(laws.has_law(mesh.cell(c).material_id),
                     dealii::ExcMessage("StressRecovery: no material for material id " +
                                        std::to_string(mesh.cell(c).material_id) + " of cell " +
                                        std::to_string(c) + "."));
-        const ElasticMaterial &material = it->second;
+        const ConstitutiveLaw<dim> &material = laws.get_law(mesh.cell(c).material_id);
         element.reinit(mesh.cell_vertices(c));
         dof_handler.get_dof_values(c, solution, local);
         element.project(local, coef);
@@ -66,7 +86,7 @@ namespace dealvem
         const auto &geo = element.get_geometry();
         strain[c]       = element.projection_strain(coef, geo.centroid());
         stress[c]       = material.stress(strain[c]);
-        von_mises[c]    = ElasticMaterial::von_mises(stress[c], material.stress_zz(strain[c]));
+        von_mises[c]    = von_mises_stress(stress[c], material.stress_zz(strain[c]));
         const auto &loop = mesh.cell(c).vertices;
         for (unsigned int i = 0; i < loop.size(); ++i)
           {
@@ -80,7 +100,7 @@ namespace dealvem
       if (count[v] > 0)
         {
           nodal_stress[v] /= count[v];
-          nodal_von_mises[v] = ElasticMaterial::von_mises(nodal_stress[v], nodal_zz[v] / count[v]);
+          nodal_von_mises[v] = von_mises_stress(nodal_stress[v], nodal_zz[v] / count[v]);
         }
   }
 

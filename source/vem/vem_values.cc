@@ -186,6 +186,33 @@ namespace dealvem
 
 
   template <int dim>
+  dealii::Tensor<2, dim>
+  VEMValues<dim>::shape_gradient_projection(const unsigned int i, const unsigned int q) const
+  {
+    check_flag(flags, dealii::update_quadrature_points, "update_quadrature_points");
+    AssertIndexRange(i, dofs_per_cell());
+    AssertIndexRange(q, points.size());
+    return element.shape_gradient_projection(i, points[q]);
+  }
+
+
+
+  template <int dim>
+  void
+  VEMValues<dim>::get_function_gradient_projections(const dealii::Vector<double>        &u,
+                                                    std::vector<dealii::Tensor<2, dim>> &g) const
+  {
+    check_flag(flags, dealii::update_quadrature_points, "update_quadrature_points");
+    dof_handler.get_dof_values(cell, u, local);
+    element.project_gradient(local, coefficients);
+    g.resize(points.size());
+    for (unsigned int q = 0; q < points.size(); ++q)
+      g[q] = element.gradient_projection_value(coefficients, points[q]);
+  }
+
+
+
+  template <int dim>
   unsigned int
   VEMValues<dim>::n_edges() const
   {

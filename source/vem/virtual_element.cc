@@ -64,6 +64,20 @@ namespace dealvem
       return H;
     }
 
+    // Index of the product of the monomials i, j in {1, xi, eta}, among
+    // 1, xi, eta, xi^2, xi eta, eta^2.
+    constexpr unsigned int monomial_product[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+
+    // Gauss-Lobatto weights on an edge's nodes (relative to its length):
+    // trapezoidal for k = 1, Simpson for k = 2.
+    inline const double *
+    lobatto_weights(const unsigned int degree)
+    {
+      static constexpr double lobatto_1[2] = {0.5, 0.5};
+      static constexpr double lobatto_2[3] = {1. / 6., 2. / 3., 1. / 6.};
+      return degree == 1 ? lobatto_1 : lobatto_2;
+    }
+
     // Row-major views of dealii::FullMatrix storage and of scratch buffers:
     // the Eigen products below write straight into the element's matrices.
     using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -243,40 +257,79 @@ namespace dealvem
   VirtualElement<dim>::reinit(const std::vector<dealii::Point<dim>> &vertices)
   {
     // Everything below writes into storage kept from the previous cell:
-    // this function runs once per cell in every assembly loop.
-    Workspace &ws = *workspace;
-    n_vertices    = vertices.size();
-    n_dofs        = n_dofs_per_cell(n_vertices);
+    // this function runs once per cell in every assembly loop. The steps
+    // are those of the class documentation: geometry, D, B (rigid rows,
+    // strain rows), G and Pi_*, the Gram matrices, the stabilization form,
+    // the full-gradient projector.
+    n_vertices = vertices.size();
+    n_dofs     = n_dofs_per_cell(n_vertices);
     geometry->reinit(vertices);
-    const PolygonGeometry<dim> &geo = *geometry;
-    const unsigned int          n_p = n_polynomials();
-    const double                h = geo.diameter(), area = geo.area();
-    const unsigned int          N = n_vertices;
-
     // Cell similarity: a translate of the last polygon keeps all matrices.
-    reused = use_similarity && ws.valid && ws.shape.size() == N;
-    if (reused)
-      {
-        const double tol2 = 1e-28 * h * h;
-        for (unsigned int i = 1; i < N && reused; ++i)
-          reused = ((vertices[i] - vertices[0]) - ws.shape[i]).norm_square() <= tol2;
-      }
+    reused = is_translate_of_last(vertices);
     if (reused)
       return;
-    ws.valid = false; // until the computation below has completed
+    workspace->valid = false; // until the computation below has completed
+    compute_monomial_integrals();
+    compute_D();
+    compute_B_rigid_rows();
+    compute_B_strain_rows();
+    compute_projector();
+    compute_gram_matrices();
+    compute_stabilization_form();
+    compute_gradient_projector();
+    // unique over all objects, so that a cache keyed on it cannot confuse
+    // two spaces
+    static std::atomic<std::uint64_t> counter{0};
+    revision         = ++counter;
+    workspace->valid = true;
+  }
+
+
+
+  template <int dim>
+  bool
+  VirtualElement<dim>::is_translate_of_last(const std::vector<dealii::Point<dim>> &vertices)
+  {
+    Workspace         &ws = *workspace;
+    const unsigned int N  = n_vertices;
+    bool               same = use_similarity && ws.valid && ws.shape.size() == N;
+    if (same)
+      {
+        const double h    = geometry->diameter();
+        const double tol2 = 1e-28 * h * h;
+        for (unsigned int i = 1; i < N && same; ++i)
+          same = ((vertices[i] - vertices[0]) - ws.shape[i]).norm_square() <= tol2;
+      }
+    if (same)
+      return true;
     ws.shape.resize(N);
     for (unsigned int i = 0; i < N; ++i)
       ws.shape[i] = vertices[i] - vertices[0];
+    return false;
+  }
 
-    // Integrals of the scaled monomials, for the cell moments.
-    std::array<double, 6> mono_int;
-    mono_int.fill(0.);
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::compute_monomial_integrals()
+  {
+    monomial_integrals.fill(0.);
     if (degree == 2)
-      geo.integrate_scaled_monomials(mono_int);
+      geometry->integrate_scaled_monomials(monomial_integrals);
     else
-      mono_int[0] = area;
+      monomial_integrals[0] = geometry->area();
+  }
 
-    // ---- D: D(i, alpha) = dof_i(p_alpha)
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::compute_D()
+  {
+    const PolygonGeometry<dim> &geo = *geometry;
+    const unsigned int          n_p = n_polynomials(), N = n_vertices;
+    const double                area = geo.area();
     D.reinit(n_dofs, n_p);
     const unsigned int n_point_nodes = (degree == 1 ? N : 2 * N);
     for (unsigned int j = 0; j < n_point_nodes; ++j)
@@ -294,18 +347,28 @@ namespace dealvem
               D(2 * j + c, alpha) = v;
             }
       }
+    // the cell moments (k = 2)
     if (degree == 2)
       for (unsigned int alpha = 0; alpha < n_p; ++alpha)
         for (unsigned int c = 0; c < 2; ++c)
           {
             double moment = 0;
             for (unsigned int m = 0; m < 6; ++m)
-              moment += coef[alpha][c][m] * mono_int[m];
+              moment += coef[alpha][c][m] * monomial_integrals[m];
             D(2 * (2 * N) + c, alpha) = moment / area;
           }
+  }
 
-    // ---- B
-    B.reinit(n_p, n_dofs);
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::compute_B_rigid_rows()
+  {
+    const PolygonGeometry<dim> &geo = *geometry;
+    const unsigned int          N   = n_vertices;
+    const double                h = geo.diameter(), area = geo.area();
+    B.reinit(n_polynomials(), n_dofs);
     // rows 0, 1: translations
     if (degree == 2)
       {
@@ -318,27 +381,45 @@ namespace dealvem
           B(0, 2 * i + 0) = 1. / N;
           B(1, 2 * i + 1) = 1. / N;
         }
-    // Gauss-Lobatto weights on an edge's nodes (relative to its length).
-    static constexpr double lobatto_1[2] = {0.5, 0.5};
-    static constexpr double lobatto_2[3] = {1. / 6., 2. / 3., 1. / 6.};
-    const double           *lobatto      = (degree == 1 ? lobatto_1 : lobatto_2);
-    const unsigned int      n_edge_nodes = degree + 1;
+    // row 2: mean rotation h/(2|E|) int_dE v.t, by Gauss-Lobatto on the
+    // edge nodes
+    const double      *lobatto      = lobatto_weights(degree);
+    const unsigned int n_edge_nodes = degree + 1;
     for (unsigned int e = 0; e < N; ++e)
       {
-        const unsigned int nodes[3] = {e,
-                                       degree == 1 ? (e + 1) % N : N + e,
-                                       (e + 1) % N};
-        const auto                  &t = geo.edge_tangent(e);
-        const dealii::Tensor<1, dim> n = geo.edge_normal(e);
-        const double                 L = geo.edge_length(e);
+        const auto         nodes = edge_node_triple(e);
+        const auto        &t     = geo.edge_tangent(e);
+        const double       L     = geo.edge_length(e);
+        for (unsigned int q = 0; q < n_edge_nodes; ++q)
+          {
+            const double w = lobatto[q] * L;
+            for (unsigned int c = 0; c < 2; ++c)
+              B(2, 2 * nodes[q] + c) += h / (2. * area) * w * t[c];
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::compute_B_strain_rows()
+  {
+    const PolygonGeometry<dim> &geo = *geometry;
+    const unsigned int          n_p = n_polynomials(), N = n_vertices;
+    const double                h = geo.diameter(), area = geo.area();
+    const double               *lobatto      = lobatto_weights(degree);
+    const unsigned int          n_edge_nodes = degree + 1;
+    for (unsigned int e = 0; e < N; ++e)
+      {
+        const auto                   nodes = edge_node_triple(e);
+        const dealii::Tensor<1, dim> n     = geo.edge_normal(e);
+        const double                 L     = geo.edge_length(e);
         for (unsigned int q = 0; q < n_edge_nodes; ++q)
           {
             const unsigned int node = nodes[q];
             const double       w    = lobatto[q] * L;
-            // row 2: mean rotation h/(2|E|) int_dE v.t
-            for (unsigned int c = 0; c < 2; ++c)
-              B(2, 2 * node + c) += h / (2. * area) * w * t[c];
-            // rows >= 3: int_E eps(p_alpha) : eps(phi_i)
+            // int_E eps(p_alpha) : eps(phi_i)
             // = int_dE eps(p_alpha) n . phi_i (+ the cell term below), by
             // Gauss-Lobatto on the edge nodes
             const dealii::Point<dim> s = geo.scaled(node_location(node));
@@ -385,17 +466,26 @@ namespace dealvem
           for (unsigned int c = 0; c < 2; ++c)
             B(alpha, 2 * (2 * N) + c) -= area * div_eps[c];
         }
+  }
 
-    // ---- G = B D
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::compute_projector()
+  {
+    Workspace         &ws  = *workspace;
+    const unsigned int n_p = n_polynomials();
+    // G = B D
     G.reinit(n_p, n_p);
     RowMap Dm = view(D), Bm = view(B), Gm = view(G);
-    Gm.noalias()    = Bm * Dm;
+    Gm.noalias() = Bm * Dm;
 
-    // ---- projector Pi_* = G^{-1} B. G is equilibrated by rows and columns
-    // before it is factored: its rows (energies versus means) and columns
-    // (monomials of different degree, tiny on elongated cells) have very
-    // different sizes. Row scaling r leaves the solution unchanged; column
-    // scaling c gives Pi_* = C (R G C)^{-1} R B.
+    // Pi_* = G^{-1} B. G is equilibrated by rows and columns before it is
+    // factored: its rows (energies versus means) and columns (monomials of
+    // different degree, tiny on elongated cells) have very different sizes.
+    // Row scaling r leaves the solution unchanged; column scaling c gives
+    // Pi_* = C (R G C)^{-1} R B.
     ws.row_scale.resize(n_p);
     ws.col_scale.resize(n_p);
     for (unsigned int a = 0; a < n_p; ++a)
@@ -416,47 +506,65 @@ namespace dealvem
     RowMap Pm = view(Pi_star);
     Pm        = ws.lu.solve(RB);
     Pm.array().colwise() *= ws.col_scale.array();
+  }
 
-    // ---- Gram matrices of the strain modes. E: the (symmetrized) strain
-    // block of G, which is int eps(p_alpha) : eps(p_beta) because the
-    // boundary rule of B is exact on polynomials. T: int div p_alpha div
-    // p_beta from the exact monomial integrals (div p has degree k - 1, so
-    // the products have degree <= 2).
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::compute_gram_matrices()
+  {
+    const unsigned int n_p = n_polynomials();
+    const double       h   = geometry->diameter();
+    // E: the (symmetrized) strain block of G, which is int eps(p_alpha) :
+    // eps(p_beta) because the boundary rule of B is exact on polynomials.
+    // T: int div p_alpha div p_beta from the exact monomial integrals (div p
+    // has degree k - 1, so the products have degree <= 2).
     E_gram.reinit(n_p, n_p);
     T_gram.reinit(n_p, n_p);
     for (unsigned int a = 3; a < n_p; ++a)
       for (unsigned int b = 3; b < n_p; ++b)
         E_gram(a, b) = 0.5 * (G(a, b) + G(b, a));
-    {
-      // div p_alpha = sum_m d[alpha][m] * (1, xi, eta)_m, in physical units
-      double d[12][3];
-      for (unsigned int a = 0; a < n_p; ++a)
+    // div p_alpha = sum_m d[alpha][m] * (1, xi, eta)_m, in physical units
+    double d[12][3];
+    for (unsigned int a = 0; a < n_p; ++a)
+      {
+        // d/dxi of component 0 plus d/deta of component 1, divided by h
+        const auto &cx = coef[a][0], &cy = coef[a][1];
+        d[a][0]        = (cx[1] + cy[2]) / h;
+        d[a][1]        = (2. * cx[3] + cy[4]) / h;
+        d[a][2]        = (cx[4] + 2. * cy[5]) / h;
+      }
+    for (unsigned int a = 3; a < n_p; ++a)
+      for (unsigned int b = 3; b < n_p; ++b)
         {
-          d[a][0] = d[a][1] = d[a][2] = 0;
-          // d/dxi of component 0 plus d/deta of component 1, divided by h
-          const auto &cx = coef[a][0], &cy = coef[a][1];
-          d[a][0] = (cx[1] + cy[2]) / h;
-          d[a][1] = (2. * cx[3] + cy[4]) / h;
-          d[a][2] = (cx[4] + 2. * cy[5]) / h;
+          double v = 0;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              if (d[a][i] != 0. && d[b][j] != 0.)
+                v += d[a][i] * d[b][j] * monomial_integrals[monomial_product[i][j]];
+          T_gram(a, b) = v;
         }
-      // products of (1, xi, eta) with each other as monomial indices
-      constexpr unsigned int product[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
-      for (unsigned int a = 3; a < n_p; ++a)
-        for (unsigned int b = 3; b < n_p; ++b)
-          {
-            double v = 0;
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                if (d[a][i] != 0. && d[b][j] != 0.)
-                  v += d[a][i] * d[b][j] * mono_int[product[i][j]];
-            T_gram(a, b) = v;
-          }
-    }
+    // M: int q_m q_n for the scaled monomials of degree <= k - 1
+    const unsigned int n_m = n_gradient_monomials();
+    M_gram.reinit(n_m, n_m);
+    for (unsigned int m = 0; m < n_m; ++m)
+      for (unsigned int n = 0; n < n_m; ++n)
+        M_gram(m, n) = monomial_integrals[monomial_product[m][n]];
+  }
 
-    // ---- stabilization form S = (I - D Pi_*)^T (I - D Pi_*), by a rank
-    // update of the lower triangle, then mirrored
-    RowMap Q     = view(ws.q, n_dofs, n_dofs);
-    Q.noalias()  = -Dm * Pm;
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::compute_stabilization_form()
+  {
+    // S = (I - D Pi_*)^T (I - D Pi_*), by a rank update of the lower
+    // triangle, then mirrored
+    Workspace &ws = *workspace;
+    RowMap     Dm = view(D), Pm = view(Pi_star);
+    RowMap     Q  = view(ws.q, n_dofs, n_dofs);
+    Q.noalias()   = -Dm * Pm;
     Q.diagonal().array() += 1.;
     S.reinit(n_dofs, n_dofs);
     RowMap Sm = view(S);
@@ -464,11 +572,68 @@ namespace dealvem
     for (unsigned int i = 0; i < n_dofs; ++i)
       for (unsigned int j = 0; j < i; ++j)
         S(j, i) = S(i, j);
-    // unique over all objects, so that a cache keyed on it cannot confuse
-    // two spaces
-    static std::atomic<std::uint64_t> counter{0};
-    revision = ++counter;
-    ws.valid = true;
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::compute_gradient_projector()
+  {
+    const PolygonGeometry<dim> &geo = *geometry;
+    const unsigned int          N = n_vertices, n_m = n_gradient_monomials();
+    const double                h = geo.diameter(), area = geo.area();
+    // The right-hand side int_E d_j v_c q_m = int_dE v_c n_j q_m
+    // - int_E v_c d_j q_m in the rows (2c + j) n_m + m: the edge integrals
+    // by Gauss-Lobatto on the edge nodes (exact, degree <= 2k - 1) ...
+    Pi_grad.reinit(4 * n_m, n_dofs);
+    const double      *lobatto      = lobatto_weights(degree);
+    const unsigned int n_edge_nodes = degree + 1;
+    for (unsigned int e = 0; e < N; ++e)
+      {
+        const auto                   nodes = edge_node_triple(e);
+        const dealii::Tensor<1, dim> n     = geo.edge_normal(e);
+        const double                 L     = geo.edge_length(e);
+        for (unsigned int q = 0; q < n_edge_nodes; ++q)
+          {
+            const unsigned int       node = nodes[q];
+            const dealii::Point<dim> s    = geo.scaled(node_location(node));
+            for (unsigned int m = 0; m < n_m; ++m)
+              {
+                const double wq = lobatto[q] * L * monomial_value(m, s);
+                for (unsigned int c = 0; c < 2; ++c)
+                  for (unsigned int j = 0; j < 2; ++j)
+                    Pi_grad((2 * c + j) * n_m + m, 2 * node + c) += wq * n[j];
+              }
+          }
+      }
+    // ... and for k = 2 the cell term: d xi / dx = d eta / dy = 1 / h, and
+    // int_E v_c = |E| times the cell-moment DoF
+    if (degree == 2)
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          Pi_grad((2 * c + 0) * n_m + 1, 2 * (2 * N) + c) -= area / h;
+          Pi_grad((2 * c + 1) * n_m + 2, 2 * (2 * N) + c) -= area / h;
+        }
+    // the coefficients: M^{-1} times each block of n_m rows
+    Eigen::Matrix3d M = Eigen::Matrix3d::Identity();
+    for (unsigned int m = 0; m < n_m; ++m)
+      for (unsigned int k = 0; k < n_m; ++k)
+        M(m, k) = M_gram(m, k);
+    const Eigen::Matrix3d M_inv = M.inverse();
+    double                column[3];
+    for (unsigned int block = 0; block < 4; ++block)
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          for (unsigned int m = 0; m < n_m; ++m)
+            {
+              column[m] = 0;
+              for (unsigned int k = 0; k < n_m; ++k)
+                column[m] += M_inv(m, k) * Pi_grad(block * n_m + k, i);
+            }
+          for (unsigned int m = 0; m < n_m; ++m)
+            Pi_grad(block * n_m + m, i) = column[m];
+        }
   }
 
 
@@ -568,6 +733,87 @@ namespace dealvem
                                          const dealii::Point<dim>     &p) const
   {
     return dealii::symmetrize(projection_gradient(c, p));
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::project_gradient(const dealii::Vector<double> &local,
+                                        dealii::Vector<double>       &coefficients) const
+  {
+    AssertDimension(local.size(), n_dofs);
+    coefficients.reinit(Pi_grad.m());
+    Pi_grad.vmult(coefficients, local);
+  }
+
+
+
+  template <int dim>
+  dealii::Tensor<2, dim>
+  VirtualElement<dim>::gradient_projection_value(const dealii::Vector<double> &c,
+                                                 const dealii::Point<dim>     &p) const
+  {
+    const unsigned int n_m = n_gradient_monomials();
+    AssertDimension(c.size(), 4 * n_m);
+    const dealii::Point<dim> s = geometry->scaled(p);
+    dealii::Tensor<2, dim>   g;
+    for (unsigned int m = 0; m < n_m; ++m)
+      {
+        const double q = monomial_value(m, s);
+        for (unsigned int a = 0; a < 2; ++a)
+          for (unsigned int j = 0; j < 2; ++j)
+            g[a][j] += c[(2 * a + j) * n_m + m] * q;
+      }
+    return g;
+  }
+
+
+
+  template <int dim>
+  dealii::Tensor<2, dim>
+  VirtualElement<dim>::shape_gradient_projection(const unsigned int i, const dealii::Point<dim> &p) const
+  {
+    AssertIndexRange(i, n_dofs);
+    const unsigned int       n_m = n_gradient_monomials();
+    const dealii::Point<dim> s   = geometry->scaled(p);
+    dealii::Tensor<2, dim>   g;
+    for (unsigned int m = 0; m < n_m; ++m)
+      {
+        const double q = monomial_value(m, s);
+        for (unsigned int a = 0; a < 2; ++a)
+          for (unsigned int j = 0; j < 2; ++j)
+            g[a][j] += Pi_grad((2 * a + j) * n_m + m, i) * q;
+      }
+    return g;
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::polynomial_gradient_coefficients(const unsigned int                   alpha,
+                                                        std::vector<dealii::Tensor<2, dim>> &G) const
+  {
+    AssertIndexRange(alpha, n_polynomials());
+    // d(monomial)/d(xi_j) in the monomials 1, xi, eta: entries
+    // {monomial, direction j, target monomial, factor}
+    struct Term
+    {
+      unsigned int monomial, j, target;
+      double       factor;
+    };
+    static constexpr Term terms[] = {{1, 0, 0, 1.}, {2, 1, 0, 1.}, {3, 0, 1, 2.},
+                                     {4, 0, 2, 1.}, {4, 1, 1, 1.}, {5, 1, 2, 2.}};
+    const double h = geometry->diameter();
+    G.assign(n_gradient_monomials(), dealii::Tensor<2, dim>());
+    for (unsigned int c = 0; c < 2; ++c)
+      for (const Term &t : terms)
+        if (coef[alpha][c][t.monomial] != 0.)
+          {
+            Assert(t.target < G.size(), dealii::ExcInternalError());
+            G[t.target][c][t.j] += coef[alpha][c][t.monomial] * t.factor / h;
+          }
   }
 
 

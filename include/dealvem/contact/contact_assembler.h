@@ -18,6 +18,12 @@
 
 namespace dealvem
 {
+  template <int dim>
+  class MaterialLibrary;
+} // namespace dealvem
+
+namespace dealvem
+{
   /**
    * Options of node-to-node contact.
    */
@@ -103,7 +109,9 @@ namespace dealvem
    * The two constants a contact problem derives from its bodies and its
    * interfaces, by one rule that ContactProblem and the tutorials share:
    * the scale $E_{min}/h_{min}$, with $E_{min}$ the smallest Young's
-   * modulus of the bodies in contact and $h_{min}$ the shortest paired
+   * modulus of the bodies in contact (the smallest
+   * ConstitutiveLaw::characteristic_stiffness() of their laws, which is
+   * $E$ for ElasticMaterial) and $h_{min}$ the shortest paired
    * sub-edge of the interfaces after node insertion (the stiffness of the
    * stiffest single connection, up to a constant).
    * - complementarity_constant(): $c = E_{min}/h_{min}$ in the
@@ -119,6 +127,11 @@ namespace dealvem
     /// Throws unless @p youngs_moduli is non-empty and positive and some
     /// interface has a paired sub-edge.
     ContactScales(const std::vector<double>                   &youngs_moduli,
+                  const std::vector<NodeInsertion::Interface> &interfaces);
+
+    /// The same with $E_{min}$ the smallest characteristic stiffness of
+    /// the laws of @p laws (MaterialLibrary::min_characteristic_stiffness()).
+    ContactScales(const MaterialLibrary<2>                    &laws,
                   const std::vector<NodeInsertion::Interface> &interfaces);
 
     double E_min = 0, h_min = 0;

@@ -13,6 +13,7 @@
 
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
+#include <dealvem/elasticity/material_library.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <map>
@@ -39,8 +40,9 @@ namespace dealvem
    * Assembles the global stiffness matrix and load vector of 2D linear
    * elasticity with the virtual element of VEMDoFHandler::get_degree().
    *
-   * Takes: a VEMDoFHandler with distributed DoFs, one ElasticMaterial per
-   * material id, the stabilization factor $\gamma$, loads (body force,
+   * Takes: a VEMDoFHandler with distributed DoFs, one linear constitutive
+   * law per material id (a MaterialLibrary, or a map of ElasticMaterial),
+   * the stabilization factor $\gamma$, loads (body force,
    * tractions and pressures on boundary ids) and an AffineConstraints object
    * holding the Dirichlet data. Gives: the condensed matrix and right-hand
    * side, assembled cell by cell with
@@ -54,6 +56,17 @@ namespace dealvem
   class ElasticityAssembler
   {
   public:
+    /**
+     * Constructor: the laws of @p laws (copied; the library shares its
+     * laws). Throws unless $\gamma > 0$ and every law is linear
+     * (ElasticityOperator assembles linear laws only).
+     */
+    ElasticityAssembler(const VEMDoFHandler<dim>   &dof_handler,
+                        const MaterialLibrary<dim> &laws,
+                        const double                gamma         = 1.0,
+                        const Stabilization         stabilization = Stabilization::automatic);
+
+    /// The same with one ElasticMaterial per material id.
     ElasticityAssembler(const VEMDoFHandler<dim>                                   &dof_handler,
                         const std::map<dealii::types::material_id, ElasticMaterial> &materials,
                         const double                                                gamma = 1.0,
@@ -87,11 +100,27 @@ namespace dealvem
       return dof_handler;
     }
 
-    /// The material of cell @p c (throws naming the cell if its material id
-    /// has no material).
+    /// The constitutive law of cell @p c (throws naming the cell if its
+    /// material id has no law).
+    const ConstitutiveLaw<dim> &
+    get_law(const unsigned int c) const;
+
+    /// The laws by material id.
+    const MaterialLibrary<dim> &
+    get_material_library() const
+    {
+      return laws;
+    }
+
+    /// The material of cell @p c as an ElasticMaterial (throws naming the
+    /// cell if its material id has no law, or if its law is not an
+    /// ElasticMaterial; get_law() takes any law).
     const ElasticMaterial &
     get_material(const unsigned int c) const;
 
+    /// The laws of the library that are ElasticMaterial objects, by
+    /// material id (all of them when the assembler was given a map of
+    /// ElasticMaterial).
     const std::map<dealii::types::material_id, ElasticMaterial> &
     get_materials() const
     {
@@ -200,6 +229,7 @@ namespace dealvem
                    VectorType                              &rhs) const;
 
     const VEMDoFHandler<dim>                               &dof_handler;
+    MaterialLibrary<dim>                                    laws;
     std::map<dealii::types::material_id, ElasticMaterial>   materials;
     double                                                  gamma;
     Stabilization                                           stabilization;

@@ -7,9 +7,11 @@
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/vem/virtual_element.h>
 
+#include <array>
 #include <cstdint>
 
 namespace dealvem
@@ -33,16 +35,38 @@ namespace dealvem
   };
 
   /**
-   * The element matrices of isotropic linear elasticity on one polygon,
-   * built from the virtual element space of that polygon and a material:
-   * the bilinear form of deal.II's step-8, written for the VEM.
+   * The element matrices of linear elasticity on one polygon, built from
+   * the virtual element space of that polygon and a linear constitutive law
+   * (ConstitutiveLaw): the bilinear form of deal.II's step-8, written for
+   * the VEM.
    *
-   * With the space's projector $\Pi_*$, its Gram matrices $E$ (strain) and
-   * $T$ (divergence) and its projector onto the degrees of freedom
-   * $\Pi = D\Pi_*$ (see VirtualElement):
-   * - consistency $K_c = \Pi_*^T(\lambda T + 2\mu E)\Pi_*$, i.e.
-   *   $a_E(\Pi u,\Pi v)$ with
-   *   $a_E(u,v) = \int_E\lambda\,\mathrm{div}\,u\,\mathrm{div}\,v + 2\mu\,\varepsilon(u):\varepsilon(v)$;
+   * With the space's projector $\Pi_*$ and its projector onto the degrees
+   * of freedom $\Pi = D\Pi_*$ (see VirtualElement), and the tangent
+   * $\mathbb{C}$ of the law (ConstitutiveLaw::tangent() at zero strain):
+   * - consistency $K_c = \Pi_*^T A\,\Pi_*$, i.e. $a_E(\Pi u,\Pi v)$ with
+   *   $a_E(u,v) = \int_E\varepsilon(u):\mathbb{C}:\varepsilon(v)$, where
+   *   $A_{\alpha\beta} = a_E(p_\alpha,p_\beta)$ on the strain modes. For a
+   *   general (anisotropic) tangent, $A$ comes from the gradients of the
+   *   basis polynomials in the scaled monomials of degree $k-1$ and their
+   *   exact Gram matrix $M$
+   *   (VirtualElement::polynomial_gradient_coefficients(),
+   *   VirtualElement::get_monomial_gram()):
+   *   $A_{\alpha\beta} = \sum_{m,n} M_{mn}\,\varepsilon_{\alpha,m}:\mathbb{C}:\varepsilon_{\beta,n}$.
+   *   When the tangent has exactly the isotropic form
+   *   $\mathbb{C} = \lambda I\otimes I + 2\mu\mathbb{I}$ (as ElasticMaterial's:
+   *   $C_{0000} = C_{1111} = C_{0011}+2C_{0101}$, $C_{0011} = C_{1100}$, no
+   *   shear coupling), $A = \lambda T + 2\mu E$ with the Gram matrices $T$
+   *   (divergence) and $E$ (strain) of the space and $\lambda = C_{0011}$,
+   *   $\mu = C_{0101}$: the same matrix to round-off, fewer operations.
+   *   The space's projector is the elliptic projector of every such law,
+   *   isotropic or not: $\mathbb{C}$ is constant on the polygon and maps the
+   *   symmetric tensor fields of degree $k-1$, which are all strains of
+   *   $[P_k]^2$, into themselves.
+   *   The tangent must have the major symmetry and be positive definite
+   *   (checked, AssertThrow). A non-linear law (ConstitutiveLaw::is_linear()
+   *   false) is refused with AssertThrow: its stiffness depends on the
+   *   current strain, and linearizing it belongs to a Newton driver, which
+   *   does not exist yet;
    * - stabilization $K_s$, zero on $[P_k]^2$, one of (Stabilization;
    *   the default Stabilization::automatic takes the trace rule for k = 1
    *   and the diagonal rule for k = 2):
@@ -73,9 +97,9 @@ namespace dealvem
    * rule), so k = 1 keeps it by default.
    *
    * The matrices depend on the polygon's shape (through the space), on
-   * $\lambda$, $\mu$, $\gamma$ and the rule only, and reinit() recomputes
-   * them only when one of these changed: on a structured mesh of one
-   * material, translated cells cost nothing.
+   * the tangent $\mathbb{C}$, $\gamma$ and the rule only, and reinit()
+   * recomputes them only when one of these changed: on a structured mesh of
+   * one material, translated cells cost nothing.
    */
   template <int dim>
   class ElasticityOperator
@@ -83,13 +107,16 @@ namespace dealvem
   public:
     /**
      * Compute the matrices for the polygon @p element was last reinit()ed
-     * on. Throws unless $\gamma > 0$.
+     * on, with the tangent of the linear law @p law (an ElasticMaterial,
+     * or any other ConstitutiveLaw). Throws unless $\gamma > 0$, unless
+     * @p law is linear, and unless its tangent has the major symmetry and
+     * is positive definite.
      */
     void
-    reinit(const VirtualElement<dim> &element,
-           const ElasticMaterial     &material,
-           const double               gamma         = 1.0,
-           const Stabilization        stabilization = Stabilization::automatic);
+    reinit(const VirtualElement<dim>  &element,
+           const ConstitutiveLaw<dim> &law,
+           const double                gamma         = 1.0,
+           const Stabilization         stabilization = Stabilization::automatic);
 
     /// Whether the last reinit() kept the matrices of the previous call.
     bool
@@ -149,11 +176,19 @@ namespace dealvem
     stabilization_scaling(const dealii::FullMatrix<double> &K_c, const double gamma);
 
   private:
+    /// The form $A$ on the strain modes for the tangent @p C:
+    /// $\lambda T + 2\mu E$ for an isotropic tangent, the general formula
+    /// otherwise (see the class documentation).
+    void
+    compute_strain_mode_form(const VirtualElement<dim> &element, const dealii::SymmetricTensor<4, dim> &C);
+
     dealii::FullMatrix<double> K_c, K_s, K, A;
     double                     stab_scaling = 0;
-    // the inputs of the last computation
-    std::uint64_t revision = 0;
-    double        lambda = 0, mu = 0, gamma = 0;
+    // the inputs of the last computation: the space's revision, the
+    // tangent's components (unrolled), gamma and the rule
+    std::uint64_t         revision = 0;
+    std::array<double, dealii::SymmetricTensor<4, dim>::n_independent_components> tangent{};
+    double                                                                         gamma = 0;
     Stabilization rule   = Stabilization::automatic;
     bool          valid  = false;
     bool          reused = false;

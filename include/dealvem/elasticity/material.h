@@ -7,6 +7,9 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <dealvem/elasticity/constitutive_law.h>
+
+#include <memory>
 #include <string>
 
 namespace dealvem
@@ -22,8 +25,13 @@ namespace dealvem
    * In Voigt notation with engineering shear strain,
    * $(\sigma_{xx},\sigma_{yy},\sigma_{xy}) = C(\varepsilon_{xx},\varepsilon_{yy},2\varepsilon_{xy})$ with
    * @f[ C = \begin{pmatrix}\lambda+2\mu & \lambda & 0\\ \lambda & \lambda+2\mu & 0\\ 0&0&\mu\end{pmatrix}. @f]
+   *
+   * It is the linear isotropic ConstitutiveLaw: the tangent is
+   * $\lambda I\otimes I + 2\mu\,\mathbb{I}$ at every strain, and the
+   * characteristic stiffness is $E$. It has no finite-strain response (the
+   * finite-strain functions of ConstitutiveLaw throw).
    */
-  class ElasticMaterial
+  class ElasticMaterial : public ConstitutiveLaw<2>
   {
   public:
     enum class Model
@@ -74,14 +82,37 @@ namespace dealvem
 
     /// $\sigma = C\varepsilon$.
     dealii::SymmetricTensor<2, 2>
-    stress(const dealii::SymmetricTensor<2, 2> &strain) const;
+    stress(const dealii::SymmetricTensor<2, 2> &strain) const override;
 
     /// The out-of-plane stress $\sigma_{zz}$ for a given in-plane strain
     /// (zero in plane stress, $\nu(\sigma_{xx}+\sigma_{yy})$ in plane strain).
     double
-    stress_zz(const dealii::SymmetricTensor<2, 2> &strain) const;
+    stress_zz(const dealii::SymmetricTensor<2, 2> &strain) const override;
 
-    /// Von Mises stress of a 2D stress state with the given $\sigma_{zz}$.
+    /// The tangent $\lambda I\otimes I + 2\mu\,\mathbb{I}$ (the same at
+    /// every strain): components $C_{0000} = C_{1111} = \lambda+2\mu$,
+    /// $C_{0011} = \lambda$, $C_{0101} = \mu$.
+    dealii::SymmetricTensor<4, 2>
+    tangent(const dealii::SymmetricTensor<2, 2> &strain) const override;
+
+    /// True.
+    bool
+    is_linear() const override;
+
+    /// Young's modulus $E$.
+    double
+    characteristic_stiffness() const override;
+
+    /// "linear isotropic (E = ..., nu = ..., plane strain)".
+    std::string
+    get_name() const override;
+
+    /// A copy.
+    std::unique_ptr<ConstitutiveLaw<2>>
+    clone() const override;
+
+    /// Von Mises stress of a 2D stress state with the given $\sigma_{zz}$
+    /// (von_mises_stress()).
     static double
     von_mises(const dealii::SymmetricTensor<2, 2> &stress, const double sigma_zz);
 

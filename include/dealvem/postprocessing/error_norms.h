@@ -12,6 +12,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/elasticity/material.h>
+#include <dealvem/elasticity/material_library.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <map>
@@ -27,6 +28,9 @@ namespace dealvem
    * - l2 $= (\sum_E \|u - \Pi u_h\|^2_{0,E})^{1/2}$,
    * - h1_seminorm $= (\sum_E |u - \Pi u_h|^2_{1,E})^{1/2}$,
    * - energy $= (\sum_E \int_E \varepsilon(u-\Pi u_h):C\varepsilon(u-\Pi u_h))^{1/2}$,
+   *   with $C\varepsilon$ the stress of the cell's constitutive law
+   *   (ConstitutiveLaw::stress(); the laws must be linear, so that this is a
+   *   norm),
    * and the same norms of $u$ (for relative errors).
    */
   struct ErrorNorms
@@ -40,8 +44,17 @@ namespace dealvem
    * @p exact has two components; its gradient() must be implemented (for
    * example dealii::AutoDerivativeFunction, or analytically). With
    * @p body set, only the cells of that material id (one body of a contact
-   * problem) are measured.
+   * problem) are measured. Throws if a measured cell's law is not linear.
    */
+  template <int dim>
+  ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>         &dof_handler,
+                 const MaterialLibrary<dim>       &laws,
+                 const dealii::Vector<double>     &solution,
+                 const dealii::Function<dim>      &exact,
+                 const dealii::types::material_id body = dealii::numbers::invalid_material_id);
+
+  /// The same with one ElasticMaterial per material id.
   template <int dim>
   ErrorNorms
   compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,
@@ -57,6 +70,15 @@ namespace dealvem
    * sum_over_processes() combines the results of all processes into the
    * norms over the whole mesh.
    */
+  template <int dim>
+  ErrorNorms
+  compute_errors(const VEMDoFHandler<dim>        &dof_handler,
+                 const MaterialLibrary<dim>      &laws,
+                 const dealii::Vector<double>    &solution,
+                 const dealii::Function<dim>     &exact,
+                 const std::vector<unsigned int> &cells);
+
+  /// The same with one ElasticMaterial per material id.
   template <int dim>
   ErrorNorms
   compute_errors(const VEMDoFHandler<dim>                                    &dof_handler,

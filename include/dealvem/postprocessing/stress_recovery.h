@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/elasticity/material.h>
+#include <dealvem/elasticity/material_library.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <map>
@@ -21,8 +22,9 @@ namespace dealvem
    * Strain and stress from the projection: in each cell the strain of
    * $\Pi_* u_h$ averaged over the cell (exact for the polynomial part, which
    * is all a virtual element knows inside a cell), the stress
-   * $\sigma = C\varepsilon$, the out-of-plane stress and the von Mises
-   * stress; for plots, nodal values at the mesh vertices: the average over
+   * $\sigma(\varepsilon)$ and the out-of-plane stress of the cell's
+   * constitutive law (ConstitutiveLaw::stress(), ConstitutiveLaw::stress_zz();
+   * any law, linear or not), and the von Mises stress; for plots, nodal values at the mesh vertices: the average over
    * the cells around a vertex of each cell's projected stress evaluated at
    * the vertex.
    */
@@ -30,6 +32,12 @@ namespace dealvem
   class StressRecovery
   {
   public:
+    /// Compute on all cells, with the laws of @p laws.
+    StressRecovery(const VEMDoFHandler<dim>     &dof_handler,
+                   const MaterialLibrary<dim>   &laws,
+                   const dealii::Vector<double> &solution);
+
+    /// The same with one ElasticMaterial per material id.
     StressRecovery(const VEMDoFHandler<dim>                                    &dof_handler,
                    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
                    const dealii::Vector<double>                                &solution);
@@ -42,6 +50,12 @@ namespace dealvem
      * vertices whose cells are all given. @p solution needs the entries of
      * the DoFs of these cells only.
      */
+    StressRecovery(const VEMDoFHandler<dim>        &dof_handler,
+                   const MaterialLibrary<dim>      &laws,
+                   const dealii::Vector<double>    &solution,
+                   const std::vector<unsigned int> &cells);
+
+    /// The same with one ElasticMaterial per material id.
     StressRecovery(const VEMDoFHandler<dim>                                    &dof_handler,
                    const std::map<dealii::types::material_id, ElasticMaterial> &materials,
                    const dealii::Vector<double>                                &solution,
@@ -79,10 +93,10 @@ namespace dealvem
 
   private:
     void
-    compute(const VEMDoFHandler<dim>                                    &dof_handler,
-            const std::map<dealii::types::material_id, ElasticMaterial> &materials,
-            const dealii::Vector<double>                                &solution,
-            const std::vector<unsigned int>                             *cells);
+    compute(const VEMDoFHandler<dim>        &dof_handler,
+            const MaterialLibrary<dim>      &laws,
+            const dealii::Vector<double>    &solution,
+            const std::vector<unsigned int> *cells);
 
     std::vector<dealii::SymmetricTensor<2, dim>> strain, stress, nodal_stress;
     std::vector<double>                          von_mises, nodal_von_mises;

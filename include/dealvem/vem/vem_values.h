@@ -28,13 +28,15 @@ namespace dealvem
    *   for (unsigned int c = 0; c < mesh.n_cells(); ++c)
    *     {
    *       vem_values.reinit(c);
+   *       // the tangent of the cell's ConstitutiveLaw; for ElasticMaterial
+   *       // eps_i : C : eps_j = lambda div_i div_j + 2 mu eps_i : eps_j
+   *       const SymmetricTensor<4, 2> C =
+   *         laws.get_law(vem_values.material_id()).tangent(SymmetricTensor<2, 2>());
    *       for (unsigned int q = 0; q < vem_values.n_quadrature_points(); ++q)
    *         for (unsigned int i = 0; i < vem_values.dofs_per_cell(); ++i)
    *           for (unsigned int j = 0; j < vem_values.dofs_per_cell(); ++j)
-   *             cell_matrix(i, j) += (lambda * vem_values.shape_divergence(i, q) *
-   *                                     vem_values.shape_divergence(j, q) +
-   *                                   2 * mu * vem_values.shape_symmetric_gradient(i, q) *
-   *                                     vem_values.shape_symmetric_gradient(j, q)) *
+   *             cell_matrix(i, j) += vem_values.shape_symmetric_gradient(i, q) *
+   *                                  (C * vem_values.shape_symmetric_gradient(j, q)) *
    *                                  vem_values.JxW(q);
    *       ElasticityOperator<2>::add_stabilization(vem_values.get_element(), cell_matrix);
    *       vem_values.get_dof_indices(local_dof_indices);
@@ -47,7 +49,7 @@ namespace dealvem
    * virtual basis functions (the functions themselves are not known inside
    * the cell): integrals of their products with a quadrature of degree
    * $\ge 2k$ are exact, so the consistency matrix assembled as above equals
-   * ElasticityOperator's $\Pi_*^T(\lambda T+2\mu E)\Pi_*$ to round-off
+   * ElasticityOperator's $\Pi_*^T A\,\Pi_*$ to round-off
    * (tests/vem/vem_values checks this). Quadrature points and weights are
    * those of PolygonGeometry::quadrature() (a triangle fan).
    *
@@ -173,6 +175,22 @@ namespace dealvem
     void
     get_function_gradients(const dealii::Vector<double>        &u,
                            std::vector<dealii::Tensor<2, dim>> &gradients) const;
+
+    /// $\Pi^0\nabla\varphi_i$, the full-gradient projection of the shape
+    /// function $\varphi_i$ (VirtualElement::get_gradient_projector()), at
+    /// quadrature point @p q (row = component; needs
+    /// update_quadrature_points). Its symmetric part is
+    /// shape_symmetric_gradient(); the antisymmetric part is the projected
+    /// rotation, which $\nabla\Pi\varphi_i$ does not carry.
+    dealii::Tensor<2, dim>
+    shape_gradient_projection(const unsigned int i, const unsigned int q) const;
+
+    /// $\Pi^0\nabla u_h$ at the quadrature points for a global vector
+    /// @p u (needs update_quadrature_points): the deformation gradient of a
+    /// finite-strain computation is $I$ plus these.
+    void
+    get_function_gradient_projections(const dealii::Vector<double>        &u,
+                                      std::vector<dealii::Tensor<2, dim>> &gradients) const;
 
     /// Number of edges of the cell (= vertices).
     unsigned int

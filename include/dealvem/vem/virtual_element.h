@@ -52,10 +52,12 @@ namespace dealvem
    * $\Pi^\nabla$ maps the space onto $[P_k]^2$ by
    * $\int_E\varepsilon(\Pi^\nabla v):\varepsilon(p) = \int_E\varepsilon(v):\varepsilon(p)$
    * for all $p\in[P_k]^2$, plus three conditions on the rigid-body modes.
-   * It is the elliptic projector of every isotropic elasticity form
-   * $a(u,v)=\int\lambda\,\mathrm{div}\,u\,\mathrm{div}\,v+2\mu\,\varepsilon(u):\varepsilon(v)$:
-   * $\varepsilon([P_k]^2)$ is the space of all symmetric tensor fields of
-   * degree $k-1$, which the isotropic law maps into itself, so the
+   * It is the elliptic projector of every linear elasticity form
+   * $a(u,v)=\int\varepsilon(u):\mathbb{C}:\varepsilon(v)$ with a constant,
+   * positive definite $\mathbb{C}$ (isotropic,
+   * $\int\lambda\,\mathrm{div}\,u\,\mathrm{div}\,v+2\mu\,\varepsilon(u):\varepsilon(v)$,
+   * or anisotropic): $\varepsilon([P_k]^2)$ is the space of all symmetric
+   * tensor fields of degree $k-1$, which such a law maps onto itself, so the
    * orthogonality in $a$ and in the strain product are the same condition.
    * This is why the space needs no material.
    * - $D\in\mathbb{R}^{n_{dofs}\times n_p}$, $D_{i\alpha} = \mathrm{dof}_i(p_\alpha)$.
@@ -93,6 +95,27 @@ namespace dealvem
    * rows 0 and 1 of $B$). Hence the L2 projector onto $[P_k]^2$ is
    * computable and equal to $\Pi^\nabla$: get_l2_projector() returns the
    * same matrix, and the loads below use it.
+   *
+   * <h3>The full-gradient projector</h3>
+   * $\Pi^0\nabla$ maps $v$ to the L2 projection of its whole gradient
+   * $\nabla v$ (not only the strain) onto $[P_{k-1}]^{2\times 2}$, computable
+   * from the degrees of freedom: for $q$ in $P_{k-1}$,
+   * $\int_E \partial_j v_c\,q = \int_{\partial E} v_c\,n_j\,q
+   * - \int_E v_c\,\partial_j q$. For $k=1$, $q=1$ and the result is the
+   * constant $\frac{1}{|E|}\int_{\partial E} v\otimes n$, with the
+   * trapezoidal rule on each edge (exact: $v$ is linear there). For $k=2$,
+   * $q\in\{1,\xi,\eta\}$: the edge integrand $v_c q$ is cubic and
+   * Simpson's rule on vertex, midpoint, vertex (the edge's DoFs) is exact;
+   * $\partial_j q$ is a constant, so the cell term is $|E|$ times that
+   * constant times the cell-moment DoF. Solving with the Gram matrix
+   * $M_{mn} = \int_E q_m q_n$ of the scaled monomials of degree $\le k-1$
+   * (get_monomial_gram()) gives the coefficients
+   * (get_gradient_projector()). The symmetric part of $\Pi^0\nabla v$ is
+   * $\varepsilon(\Pi^\nabla v)$, because $\varepsilon([P_k]^2)$ is all of
+   * the symmetric $[P_{k-1}]^{2\times 2}$; the antisymmetric part is
+   * the projected rotation, which $\Pi^\nabla$ only fixes by its mean. A
+   * finite-strain operator builds $F = I + \Pi^0\nabla u$ from it
+   * (ConstitutiveLaw).
    *
    * <h3>Loads</h3>
    * $F_i = \int_E f\cdot\Pi^0\varphi_i = \sum_\alpha (\Pi_*)_{\alpha i}\int_E f\cdot p_\alpha$.
@@ -272,6 +295,63 @@ namespace dealvem
       return S;
     }
 
+    /// Number $n_m$ of the scaled monomials of degree $\le k-1$, the basis
+    /// of the gradient projection: 1 ($k=1$: the constant) or 3 ($k=2$:
+    /// $1,\xi,\eta$).
+    unsigned int
+    n_gradient_monomials() const
+    {
+      return degree == 1 ? 1 : 3;
+    }
+
+    /// The Gram matrix $M_{mn} = \int_E q_m q_n$ of the scaled monomials
+    /// $q_m$ of degree $\le k-1$ ($n_m\times n_m$, exact).
+    const dealii::FullMatrix<double> &
+    get_monomial_gram() const
+    {
+      return M_gram;
+    }
+
+    /**
+     * The full-gradient projector $\Pi^0\nabla$ (see the class
+     * documentation), a $4n_m\times n_{dofs}$ matrix: row
+     * $(2c+j)\,n_m + m$ holds the coefficient of the scaled monomial $q_m$
+     * in the component $(\Pi^0\nabla v)_{cj}$ (derivative of displacement
+     * component $c$ along $x_j$), so that
+     * $(\Pi^0\nabla v)_{cj}(x) = \sum_m (\Pi^0\nabla\,v)_{(2c+j)n_m+m}\,q_m(x)$
+     * for the local DoF vector $v$.
+     */
+    const dealii::FullMatrix<double> &
+    get_gradient_projector() const
+    {
+      return Pi_grad;
+    }
+
+    /// The coefficients ($4n_m$, layout of get_gradient_projector()) of
+    /// $\Pi^0\nabla u$ for the local DoF values @p local_dofs.
+    void
+    project_gradient(const dealii::Vector<double> &local_dofs,
+                     dealii::Vector<double>       &coefficients) const;
+
+    /// $\Pi^0\nabla u$ at a physical point, from the coefficients of
+    /// project_gradient().
+    dealii::Tensor<2, dim>
+    gradient_projection_value(const dealii::Vector<double> &coefficients,
+                              const dealii::Point<dim>     &p) const;
+
+    /// $\Pi^0\nabla\varphi_i$ at a physical point (row = component).
+    dealii::Tensor<2, dim>
+    shape_gradient_projection(const unsigned int i, const dealii::Point<dim> &p) const;
+
+    /// The gradient of the basis polynomial $p_\alpha$ in the scaled
+    /// monomials of degree $\le k-1$: $\nabla p_\alpha = \sum_m G_m q_m$,
+    /// returned as @p G ($n_m$ tensors, physical units). Operators combine
+    /// it with get_monomial_gram() into exact integrals of products of
+    /// gradients.
+    void
+    polynomial_gradient_coefficients(const unsigned int                   alpha,
+                                     std::vector<dealii::Tensor<2, dim>> &G) const;
+
     /// Value of the basis polynomial $p_\alpha$ at a physical point.
     dealii::Tensor<1, dim>
     polynomial_value(const unsigned int alpha, const dealii::Point<dim> &p) const;
@@ -357,11 +437,70 @@ namespace dealvem
     node_location(const unsigned int j) const;
 
   private:
+    /// Whether @p vertices are a translate of the polygon of the last full
+    /// computation (cell similarity); if not, record them as that polygon.
+    bool
+    is_translate_of_last(const std::vector<dealii::Point<dim>> &vertices);
+
+    /// The exact integrals of the scaled monomials of degree <= 2 (k = 2;
+    /// for k = 1 only the area is needed and set).
+    void
+    compute_monomial_integrals();
+
+    /// $D_{i\alpha} = \mathrm{dof}_i(p_\alpha)$.
+    void
+    compute_D();
+
+    /// Rows 0, 1, 2 of $B$: the translations (cell moments or vertex
+    /// means) and the mean rotation, which fix $\Pi^\nabla$ on the rigid
+    /// modes. Resizes $B$.
+    void
+    compute_B_rigid_rows();
+
+    /// Rows $\alpha\ge 3$ of $B$:
+    /// $\int_{\partial E}(\varepsilon(p_\alpha)n)\cdot\varphi_i$ by
+    /// Gauss-Lobatto on the edge nodes, minus the cell term
+    /// $\int_E\mathrm{div}\,\varepsilon(p_\alpha)\cdot\varphi_i$ for k = 2.
+    void
+    compute_B_strain_rows();
+
+    /// $G = BD$ and $\Pi_* = G^{-1}B$, with $G$ equilibrated by rows and
+    /// columns before its LU factorization.
+    void
+    compute_projector();
+
+    /// The strain Gram matrix $E$ (from $G$), the divergence Gram matrix
+    /// $T$ and the monomial Gram matrix $M$ (exact monomial integrals).
+    void
+    compute_gram_matrices();
+
+    /// The stabilization form $S = (I-\Pi)^T(I-\Pi)$.
+    void
+    compute_stabilization_form();
+
+    /// The full-gradient projector $\Pi^0\nabla$ (needs $M$).
+    void
+    compute_gradient_projector();
+
+    /// The local nodes of edge @p e in the order of its Gauss-Lobatto
+    /// points: start vertex, then (k = 2) the midpoint, then the end
+    /// vertex; the first degree + 1 entries are used.
+    std::array<unsigned int, 3>
+    edge_node_triple(const unsigned int e) const
+    {
+      const unsigned int next = (e + 1) % n_vertices;
+      return {{e, degree == 1 ? next : n_vertices + e, next}};
+    }
+
     unsigned int                                degree;
     unsigned int                                n_vertices;
     unsigned int                                n_dofs;
     std::unique_ptr<PolygonGeometry<dim>>       geometry;
     dealii::FullMatrix<double>                  D, B, G, Pi_star, E_gram, T_gram, S;
+    /// Monomial Gram matrix and full-gradient projector.
+    dealii::FullMatrix<double>                  M_gram, Pi_grad;
+    /// Integrals of the scaled monomials $1,\xi,\eta,\xi^2,\xi\eta,\eta^2$.
+    std::array<double, 6>                       monomial_integrals{};
     bool                                        use_similarity = true;
     bool                                        reused         = false;
     std::uint64_t                               revision       = 0;
