@@ -19,6 +19,7 @@
 #include <dealvem/mesh/generators.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/elasticity/force_balance.h>
+#include <dealvem/elasticity/material_library.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/base/output_file.h>
@@ -255,7 +256,7 @@ namespace dealvem
         InputParsing::check_range(E, ElasticMaterial::min_youngs_modulus, ElasticMaterial::max_youngs_modulus,
                                   prefix + "Material/Young's modulus", false, false,
                                   "Choose units that bring E nearer to 1.");
-        body.material      = ElasticMaterial(E, nu, model);
+        body.material      = std::make_shared<const ElasticMaterial>(E, nu, model);
         body.mesh.material_id = b;
         bodies.push_back(std::move(body));
       }
@@ -357,9 +358,9 @@ namespace dealvem
 
 
   unsigned int
-  ContactProblem::add_body(const PolygonalMesh<2> &mesh,
-                           const ElasticMaterial  &material,
-                           const unsigned int      boundary_id_offset)
+  ContactProblem::add_body(const PolygonalMesh<2>   &mesh,
+                           const ConstitutiveLaw<2> &material,
+                           const unsigned int        boundary_id_offset)
   {
     const unsigned int b = bodies.size();
     AssertThrow(b < dealii::numbers::invalid_material_id,
@@ -368,18 +369,26 @@ namespace dealvem
                 dealii::ExcMessage("ContactProblem::add_body(): the mesh of body " + std::to_string(b) +
                                    (mesh.name.empty() ? std::string() : " ('" + mesh.name + "')") +
                                    " has no cells."));
-    AssertThrow(bodies.empty() || bodies[0].material.model() == material.model(),
-                dealii::ExcMessage("ContactProblem::add_body(): body " + std::to_string(b) + " is in " +
-                                   ElasticMaterial::model_name(material.model()) + ", body 0 in " +
-                                   ElasticMaterial::model_name(bodies[0].material.model()) +
-                                   ": all bodies of a problem share the model."));
+    AssertThrow(material.is_linear(),
+                dealii::ExcMessage("ContactProblem::add_body(): the material of body " + std::to_string(b) + " ('" +
+                                   material.get_name() +
+                                   "') is not linear; the contact problem solves linear elasticity."));
+    {
+      const auto *mine  = dynamic_cast<const ElasticMaterial *>(&material);
+      const auto *first = bodies.empty() ? nullptr : dynamic_cast<const ElasticMaterial *>(bodies[0].material.get());
+      AssertThrow(mine == nullptr || first == nullptr || first->model() == mine->model(),
+                  dealii::ExcMessage("ContactProblem::add_body(): body " + std::to_string(b) + " is in " +
+                                     ElasticMaterial::model_name(mine->model()) + ", body 0 in " +
+                                     ElasticMaterial::model_name(first->model()) +
+                                     ": all bodies of a problem share the model."));
+    }
     Body body;
     auto given = std::make_shared<PolygonalMesh<2>>(mesh);
     MeshParameters::shift_boundary_ids(*given, boundary_id_offset,
                                        "ContactProblem::add_body(): body " + std::to_string(b) +
                                          ", boundary id offset " + std::to_string(boundary_id_offset));
     body.given    = given;
-    body.material = material;
+    body.material = material.clone();
     body.mesh.material_id = b;
     bodies.push_back(std::move(body));
     return b;
@@ -389,7 +398,7 @@ namespace dealvem
 
   unsigned int
   ContactProblem::add_body(const dealii::Triangulation<2, 2> &tria,
-                           const ElasticMaterial             &material,
+                           const ConstitutiveLaw<2>          &material,
                            const unsigned int                 boundary_id_offset)
   {
     PolygonalMesh<2> mesh;
@@ -659,7 +668,7 @@ namespace dealvem
   struct ContactProblem::CycleData
   {
     dealii::TimerOutput timer{std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times};
-    std::map<dealii::types::material_id, ElasticMaterial> materials;
+    MaterialLibrary<2>                                    materials;
     std::vector<dealii::Point<2>>                         original_vertices;
     VEMDoFHandler<2>                                      dof_handler;
     std::vector<ContactNodePair>                          pairs;
@@ -749,7 +758,7 @@ namespace dealvem
           mesh = body_mesh;
         else
           mesh.append(body_mesh);
-        data->materials.emplace(b, bodies[b].material);
+        data->materials.add(b, bodies[b].material);
       }
     mesh.name               = "bodies";
     data->original_vertices = mesh.get_vertices();
@@ -797,10 +806,7 @@ namespace dealvem
     d.dof_handler.reinit(results.mesh);
     d.dof_handler.distribute_dofs(opt.degree);
 
-    std::vector<double> moduli;
-    for (const auto &m : d.materials)
-      moduli.push_back(m.second.youngs_modulus());
-    const ContactScales scales(moduli, results.interfaces);
+    const ContactScales scales(d.materials, results.interfaces);
     if (contact_settings.tangential == ContactSettings::Tangential::penalty ||
         contact_settings.tangential == ContactSettings::Tangential::coulomb_penalty)
       scales.check_penalty(contact_settings, "Contact/Penalty", "Contact/Penalty factor");

@@ -14,7 +14,9 @@
 //    and multipliers to the last bit (the parameter file is one client of
 //    the interface);
 // c) the upper block as a deal.II Triangulation (add_body(tria)): the same
-//    pressures; an unknown boundary id in a condition is refused;
+//    pressures; an unknown boundary id in a condition is refused; a law of
+//    the user's own (a ConstitutiveLaw that is not an ElasticMaterial, with
+//    the same values) gives the displacements of a) to round-off (1e-13);
 // d) a pressure given as a dealii::Function of time over 3 load steps:
 //    the total contact force at step k is p k / 3 (to 1e-10), and a body
 //    force of code returning NaN stops with a message naming it;
@@ -172,6 +174,51 @@ end
     }
   };
 
+  // A linear law written by a user: the isotropic law of material() behind
+  // the ConstitutiveLaw interface, without being an ElasticMaterial.
+  class UserLaw : public ConstitutiveLaw<2>
+  {
+  public:
+    std::string
+    get_name() const override
+    {
+      return "the test's own law";
+    }
+    std::unique_ptr<ConstitutiveLaw<2>>
+    clone() const override
+    {
+      return std::make_unique<UserLaw>(*this);
+    }
+    bool
+    is_linear() const override
+    {
+      return true;
+    }
+    double
+    characteristic_stiffness() const override
+    {
+      return law.characteristic_stiffness();
+    }
+    dealii::SymmetricTensor<2, 2>
+    stress(const dealii::SymmetricTensor<2, 2> &strain) const override
+    {
+      return law.stress(strain);
+    }
+    dealii::SymmetricTensor<4, 2>
+    tangent(const dealii::SymmetricTensor<2, 2> &strain) const override
+    {
+      return law.tangent(strain);
+    }
+    double
+    stress_zz(const dealii::SymmetricTensor<2, 2> &strain) const override
+    {
+      return law.stress_zz(strain);
+    }
+
+  private:
+    ElasticMaterial law = material();
+  };
+
   class NotANumber : public dealii::Function<2>
   {
   public:
@@ -234,6 +281,23 @@ main(int argc, char **argv)
     problem.boundary_conditions().add_pressure(13, constant(p));
     problem.run();
     check_patch(problem.get_results(), "c) upper block from a Triangulation (5 x 5)");
+
+    ContactProblem own_law;
+    own_law.add_body(block(0, 3), UserLaw());
+    own_law.add_body(block(1, 4), UserLaw(), 10);
+    common_setup(own_law, "own_law");
+    own_law.boundary_conditions().add_pressure(13, constant(p));
+    own_law.run();
+    const auto &r = own_law.get_results();
+    double      du = 0, umax = 0;
+    for (unsigned int i = 0; i < std::min(a.solution.size(), r.solution.size()); ++i)
+      {
+        du   = std::max(du, std::abs(a.solution[i] - r.solution[i]));
+        umax = std::max(umax, std::abs(a.solution[i]));
+      }
+    check(a.solution.size() == r.solution.size(), "c) a law of the user's own: the same unknowns");
+    check_small(du / umax, 1e-13, "c) a law of the user's own: max |u - u_a| / max |u_a|");
+    check_patch(r, "c) a law of the user's own");
 
     ContactProblem wrong_id;
     wrong_id.add_body(block(0, 3), material());

@@ -16,6 +16,7 @@
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/contact/node_insertion.h>
+#include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/postprocessing/error_norms.h>
@@ -155,22 +156,24 @@ namespace dealvem
     /// @{
 
     /**
-     * Add a body meshed by @p mesh, of the material @p material; returns
-     * its index, which becomes the material id of its cells. The mesh is
-     * copied, its boundary ids raised by @p boundary_id_offset (the ids
-     * must differ from body to body). All bodies must share the material
-     * model (plane strain or plane stress). Up to 255 bodies.
+     * Add a body meshed by @p mesh, of the material @p material (any linear
+     * ConstitutiveLaw: an ElasticMaterial, or a law of your own; it is
+     * copied with clone()); returns its index, which becomes the material
+     * id of its cells. The mesh is copied, its boundary ids raised by
+     * @p boundary_id_offset (the ids must differ from body to body).
+     * ElasticMaterial bodies must share the model (plane strain or plane
+     * stress). Up to 255 bodies.
      */
     unsigned int
-    add_body(const PolygonalMesh<2> &mesh,
-             const ElasticMaterial  &material,
-             const unsigned int      boundary_id_offset = 0);
+    add_body(const PolygonalMesh<2>      &mesh,
+             const ConstitutiveLaw<2>    &material,
+             const unsigned int           boundary_id_offset = 0);
 
     /// The same for the active cells of a deal.II triangulation (converted
     /// by PolygonalMeshGenerators::from_triangulation()).
     unsigned int
     add_body(const dealii::Triangulation<2, 2> &tria,
-             const ElasticMaterial             &material,
+             const ConstitutiveLaw<2>          &material,
              const unsigned int                 boundary_id_offset = 0);
 
     /// Number of bodies added (or read from the parameter file).
@@ -387,8 +390,8 @@ namespace dealvem
     {
       /// The mesh from the parameter file (used when @p given is null).
       MeshParameters                          mesh;
-      std::shared_ptr<const PolygonalMesh<2>> given;
-      ElasticMaterial                         material;
+      std::shared_ptr<const PolygonalMesh<2>>    given;
+      std::shared_ptr<const ConstitutiveLaw<2>> material;
       std::string                             exact; ///< exact displacement 'ux, uy' (may be empty)
     };
     std::vector<Body>          bodies;
