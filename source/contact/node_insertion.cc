@@ -6,6 +6,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/numerics/rtree.h>
 
+#include <dealvem/base/number_string.h>
 #include <dealvem/contact/node_insertion.h>
 
 #include <algorithm>
@@ -48,21 +49,8 @@ namespace dealvem
              std::to_string(slave_id) + "): ";
     }
 
-    std::string
-    number_string(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
-    std::string
-    point_string(const Point &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ")";
-      return s.str();
-    }
+    using internal::number_string;
+    using internal::point_string;
 
     /// Outward unit normal of a boundary edge a -> b (counter-clockwise
     /// order of its cell: the body lies on the left).

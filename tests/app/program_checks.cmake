@@ -5,10 +5,15 @@
 # run_dealvem(name expect_success fragment args...): run ${DEALVEM} with
 # args in WORK_DIR; fail unless it succeeds (or fails, as expected) cleanly
 # and its output contains fragment (white space collapsed); the output is
-# left in LAST_OUTPUT.
+# left in LAST_OUTPUT. A script that sets RUN_TIMEOUT (seconds) before the
+# include stops each run after that time (a failure).
 function(run_dealvem name expect_success fragment)
+  set(timeout "")
+  if(DEFINED RUN_TIMEOUT)
+    set(timeout TIMEOUT ${RUN_TIMEOUT})
+  endif()
   execute_process(COMMAND ${DEALVEM} ${ARGN} WORKING_DIRECTORY ${WORK_DIR}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err ${timeout})
   set(all "${out}${err}")
   # deal.II breaks the text of an error message into lines: compare with the
   # white space collapsed
