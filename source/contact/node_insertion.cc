@@ -591,6 +591,107 @@ namespace dealvem
       Projection projection;
       bool       accepted = false;
     };
+
+
+
+    // Rule 1 (partners): project every vertex of @p from that has a normal
+    // onto the side @p onto (master vertices cast along their normal, slave
+    // vertices projected) and keep, per vertex, the candidate partner point;
+    // a vertex outside the overlap is skipped, one beyond the search distance
+    // or on a part that does not face the other side is reported unpaired.
+    void
+    propose_partners(const PolygonalMesh<2>             &mesh,
+                     const Side                         &from,
+                     const Side                         &onto,
+                     const bool                          from_master,
+                     const NodeInsertion::Settings      &settings,
+                     const double                        search,
+                     const double                        interface_size,
+                     NodeInsertion::Report              &report,
+                     std::map<unsigned int, Candidate>  &out)
+    {
+      const double f = settings.merge_fraction;
+      for (const auto &vn : from.normal)
+        {
+          const unsigned int v = vn.first;
+          Candidate          c;
+          c.projection = from_master ? cast(mesh, onto, mesh.vertex(v), vn.second, f) :
+                                       project(mesh, onto, mesh.vertex(v), vn.second, f);
+          if (!c.projection.inside)
+            continue; // outside the overlap of the two parts
+          if (c.projection.distance > search)
+            report.unpaired.push_back({from_master, v, mesh.vertex(v),
+                                       "its distance " + number_string(c.projection.distance) +
+                                         " to the other side exceeds the search distance " +
+                                         number_string(search) + " (Search distance " +
+                                         number_string(settings.search_distance) +
+                                         " times the interface size " + number_string(interface_size) + ")"});
+          else if (!c.projection.facing)
+            {
+              // far from the other side, a part that turns away (the flank
+              // of a cylinder above a block) is simply outside the overlap;
+              // within two edge lengths it is worth a word
+              if (c.projection.distance <= 2 * from.h.at(v))
+                report.unpaired.push_back({from_master, v, mesh.vertex(v),
+                                           "the other side does not face it there (outward normals at less "
+                                           "than 120 degrees)"});
+              continue;
+            }
+          else
+            c.accepted = true;
+          out[v] = c;
+        }
+    }
+
+
+
+    // Rule 2 (merges): a vertex whose candidate point lies within the merge
+    // fraction times the local edge length of a vertex of the other side is
+    // paired with that vertex instead of splitting an edge; the closest
+    // candidates are merged first, each vertex at most once. Fills the
+    // partner maps (vertex -> partner vertex) of both sides.
+    void
+    merge_close_vertices(const PolygonalMesh<2>                  &mesh,
+                         const Side                              &master,
+                         const Side                              &slave,
+                         const double                             f,
+                         const std::map<unsigned int, Candidate> &on_master,
+                         const std::map<unsigned int, Candidate> &on_slave,
+                         NodeInsertion::Report                   &report,
+                         std::map<unsigned int, unsigned int>    &master_partner,
+                         std::map<unsigned int, unsigned int>    &slave_partner)
+    {
+      struct Merge
+      {
+        double       distance;
+        unsigned int m, s;
+      };
+      std::vector<Merge> merges;
+      const auto         offer = [&](const Side &onto, const Side &from, const unsigned int v,
+                             const Candidate &c, const bool v_is_slave) {
+        if (!c.accepted)
+          return;
+        const unsigned int w  = onto.edges[c.projection.edge][c.projection.t <= 0.5 ? 0 : 1];
+        const double       d  = c.projection.point.distance(mesh.vertex(w));
+        const double       hl = std::min(from.h.at(v), onto.h.at(w));
+        if (d <= f * hl)
+          merges.push_back({d, v_is_slave ? w : v, v_is_slave ? v : w});
+      };
+      for (const auto &c : on_master)
+        offer(master, slave, c.first, c.second, true);
+      for (const auto &c : on_slave)
+        offer(slave, master, c.first, c.second, false);
+      std::sort(merges.begin(), merges.end(), [](const Merge &a, const Merge &b) {
+        return a.distance < b.distance || (a.distance == b.distance && VertexPair(a.m, a.s) < VertexPair(b.m, b.s));
+      });
+      for (const auto &m : merges)
+        if (master_partner.count(m.m) == 0 && slave_partner.count(m.s) == 0)
+          {
+            master_partner[m.m] = m.s;
+            slave_partner[m.s]  = m.m;
+            ++report.n_merged;
+          }
+    }
   } // namespace
 
 
@@ -633,75 +734,13 @@ namespace dealvem
 
     // 1. partners: project every vertex onto the other side
     std::map<unsigned int, Candidate> on_master, on_slave; // slave vertices onto master, and back
-    const auto propose = [&](const Side &from, const Side &onto, std::map<unsigned int, Candidate> &out,
-                             const bool from_master) {
-      for (const auto &vn : from.normal)
-        {
-          const unsigned int v = vn.first;
-          Candidate          c;
-          c.projection = from_master ? cast(mesh, onto, mesh.vertex(v), vn.second, f) :
-                                       project(mesh, onto, mesh.vertex(v), vn.second, f);
-          if (!c.projection.inside)
-            continue; // outside the overlap of the two parts
-          if (c.projection.distance > search)
-            report.unpaired.push_back({from_master, v, mesh.vertex(v),
-                                       "its distance " + number_string(c.projection.distance) +
-                                         " to the other side exceeds the search distance " +
-                                         number_string(search) + " (Search distance " +
-                                         number_string(settings.search_distance) +
-                                         " times the interface size " + number_string(lo.distance(hi)) + ")"});
-          else if (!c.projection.facing)
-            {
-              // far from the other side, a part that turns away (the flank
-              // of a cylinder above a block) is simply outside the overlap;
-              // within two edge lengths it is worth a word
-              if (c.projection.distance <= 2 * from.h.at(v))
-                report.unpaired.push_back({from_master, v, mesh.vertex(v),
-                                           "the other side does not face it there (outward normals at less "
-                                           "than 120 degrees)"});
-              continue;
-            }
-          else
-            c.accepted = true;
-          out[v] = c;
-        }
-    };
-    propose(slave, master, on_master, false);
-    propose(master, slave, on_slave, true);
+    propose_partners(mesh, slave, master, false, settings, search, lo.distance(hi), report, on_master);
+    propose_partners(mesh, master, slave, true, settings, search, lo.distance(hi), report, on_slave);
 
     // 2. merges: a vertex whose closest point lies within f h of a vertex
     // of the other side is paired with it; closest candidates first
-    struct Merge
-    {
-      double       distance;
-      unsigned int m, s;
-    };
-    std::vector<Merge> merges;
-    const auto         offer = [&](const Side &onto, const Side &from, const unsigned int v,
-                           const Candidate &c, const bool v_is_slave) {
-      if (!c.accepted)
-        return;
-      const unsigned int w  = onto.edges[c.projection.edge][c.projection.t <= 0.5 ? 0 : 1];
-      const double       d  = c.projection.point.distance(mesh.vertex(w));
-      const double       hl = std::min(from.h.at(v), onto.h.at(w));
-      if (d <= f * hl)
-        merges.push_back({d, v_is_slave ? w : v, v_is_slave ? v : w});
-    };
-    for (const auto &c : on_master)
-      offer(master, slave, c.first, c.second, true);
-    for (const auto &c : on_slave)
-      offer(slave, master, c.first, c.second, false);
-    std::sort(merges.begin(), merges.end(), [](const Merge &a, const Merge &b) {
-      return a.distance < b.distance || (a.distance == b.distance && VertexPair(a.m, a.s) < VertexPair(b.m, b.s));
-    });
     std::map<unsigned int, unsigned int> master_partner, slave_partner; // vertex -> partner vertex
-    for (const auto &m : merges)
-      if (master_partner.count(m.m) == 0 && slave_partner.count(m.s) == 0)
-        {
-          master_partner[m.m] = m.s;
-          slave_partner[m.s]  = m.m;
-          ++report.n_merged;
-        }
+    merge_close_vertices(mesh, master, slave, f, on_master, on_slave, report, master_partner, slave_partner);
     std::set<unsigned int> merged_master, merged_slave;
     for (const auto &p : master_partner)
       merged_master.insert(p.first);
