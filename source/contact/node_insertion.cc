@@ -692,6 +692,128 @@ namespace dealvem
             ++report.n_merged;
           }
     }
+
+
+
+    // Rule 5 (pairs): walk the chains of the slave side after insertion;
+    // every slave edge whose two end vertices are paired with the two ends
+    // of one master edge becomes a paired sub-edge (ContactSegment; for
+    // k = 2 with the pair of the two edge midpoints), and the vertex pairs
+    // are made in the order of the slave chains. The first and the last
+    // pair of a run of paired sub-edges are marked at_open_end where both
+    // boundaries go on smoothly beyond them. A paired slave vertex on no
+    // paired sub-edge is reported unpaired.
+    void
+    pair_slave_chains(const PolygonalMesh<2>                     &mesh,
+                      const Side                                 &master_after,
+                      const Side                                 &slave_after,
+                      const std::map<unsigned int, unsigned int> &slave_partner,
+                      const unsigned int                          degree,
+                      const unsigned int                          index,
+                      NodeInsertion::Interface                   &result)
+    {
+      NodeInsertion::Report &report = result.report;
+      // does the boundary of the body go on smoothly beyond the end vertex v
+      // of a side (the part was cut out of a smooth boundary)?
+      std::map<unsigned int, std::vector<unsigned int>> boundary_edges_at;
+      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+        if (mesh.edge(e).at_boundary())
+          for (const unsigned int v : mesh.edge(e).vertices)
+            boundary_edges_at[v].push_back(e);
+      const auto continues_smoothly = [&](const Side &side, const unsigned int v) {
+        if (!side.is_end(v))
+          return true;
+        const auto         own = side.outgoing.count(v) ? side.outgoing.at(v) : side.incoming.at(v);
+        const unsigned int own_mesh_edge = side.edge_indices[own];
+        for (const unsigned int e : boundary_edges_at[v])
+          if (e != own_mesh_edge && mesh.edge(e).boundary_id != side.id)
+            {
+              const auto  &ev = mesh.edge(e).vertices;
+              const auto  &ov = side.edges[own];
+              const Vector d_own   = mesh.vertex(ov[1]) - mesh.vertex(ov[0]);
+              const Vector d_other = mesh.vertex(ev[1]) - mesh.vertex(ev[0]);
+              const double c = (d_own * d_other) / (d_own.norm() * d_other.norm());
+              if (c >= std::cos(30. * M_PI / 180.))
+                return true;
+            }
+        return false;
+      };
+
+      for (unsigned int c = 0; c < slave_after.chains.size(); ++c)
+        {
+          const auto        &chain = slave_after.chains[c];
+          const unsigned int n     = chain.size();
+          const unsigned int n_edges_in_chain = slave_after.closed[c] ? n : n - 1;
+          // vertex pair index of each chain vertex (created lazily)
+          std::vector<unsigned int> pair_of(n, invalid);
+          unsigned int              run_start = invalid, last = invalid;
+          const auto                close_run = [&]() {
+            if (run_start == invalid)
+              return;
+            if (run_start == last && slave_after.closed[c])
+              {
+                run_start = invalid; // a whole closed loop: no ends
+                return;
+              }
+            for (const unsigned int p : {run_start, last})
+              {
+                auto &pair = result.pairs[p];
+                if (continues_smoothly(slave_after, pair.slave_entity) &&
+                    continues_smoothly(master_after, pair.master_entity))
+                  pair.at_open_end = true;
+              }
+            run_start = invalid;
+          };
+          const auto vertex_pair = [&](const unsigned int i) {
+            if (pair_of[i] == invalid)
+              {
+                ContactNodePair p;
+                p.master_entity = slave_partner.at(chain[i]);
+                p.slave_entity  = chain[i];
+                p.interface     = index;
+                pair_of[i]      = result.pairs.size();
+                result.pairs.push_back(p);
+              }
+            return pair_of[i];
+          };
+          for (unsigned int i = 0; i < n_edges_in_chain; ++i)
+            {
+              const unsigned int sa = chain[i], sb = chain[(i + 1) % n];
+              const auto         pa = slave_partner.find(sa), pb = slave_partner.find(sb);
+              const bool         paired = pa != slave_partner.end() && pb != slave_partner.end() &&
+                                  master_after.edge_by_pair.count(key(pa->second, pb->second));
+              if (!paired)
+                {
+                  close_run();
+                  continue;
+                }
+              ContactSegment seg;
+              seg.first = vertex_pair(i);
+              if (run_start == invalid)
+                run_start = seg.first;
+              if (degree == 2)
+                {
+                  ContactNodePair p;
+                  p.master_entity =
+                    master_after.edge_indices[master_after.edge_by_pair.at(key(pa->second, pb->second))];
+                  p.slave_entity = slave_after.edge_indices[slave_after.edge_by_pair.at(key(sa, sb))];
+                  p.is_midpoint  = true;
+                  p.interface    = index;
+                  seg.midpoint   = result.pairs.size();
+                  result.pairs.push_back(p);
+                }
+              seg.second = vertex_pair((i + 1) % n);
+              last       = seg.second;
+              result.segments.push_back(seg);
+            }
+          close_run();
+          for (unsigned int i = 0; i < n; ++i)
+            if (slave_partner.count(chain[i]) && pair_of[i] == invalid)
+              report.unpaired.push_back({false, chain[i], mesh.vertex(chain[i]),
+                                         "none of its slave edges has both ends paired (the overlap there is "
+                                         "shorter than one edge)"});
+        }
+    }
   } // namespace
 
 
@@ -1105,107 +1227,7 @@ namespace dealvem
     const Side slave_after  = collect_side(mesh, slave_id);
     report.n_master_edges   = master_after.edges.size();
     report.n_slave_edges    = slave_after.edges.size();
-
-    // does the boundary of the body go on smoothly beyond the end vertex v
-    // of a side (the part was cut out of a smooth boundary)?
-    std::map<unsigned int, std::vector<unsigned int>> boundary_edges_at;
-    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
-      if (mesh.edge(e).at_boundary())
-        for (const unsigned int v : mesh.edge(e).vertices)
-          boundary_edges_at[v].push_back(e);
-    const auto continues_smoothly = [&](const Side &side, const unsigned int v) {
-      if (!side.is_end(v))
-        return true;
-      const auto         own = side.outgoing.count(v) ? side.outgoing.at(v) : side.incoming.at(v);
-      const unsigned int own_mesh_edge = side.edge_indices[own];
-      for (const unsigned int e : boundary_edges_at[v])
-        if (e != own_mesh_edge && mesh.edge(e).boundary_id != side.id)
-          {
-            const auto  &ev = mesh.edge(e).vertices;
-            const auto  &ov = side.edges[own];
-            const Vector d_own   = mesh.vertex(ov[1]) - mesh.vertex(ov[0]);
-            const Vector d_other = mesh.vertex(ev[1]) - mesh.vertex(ev[0]);
-            const double c = (d_own * d_other) / (d_own.norm() * d_other.norm());
-            if (c >= std::cos(30. * M_PI / 180.))
-              return true;
-          }
-      return false;
-    };
-
-    for (unsigned int c = 0; c < slave_after.chains.size(); ++c)
-      {
-        const auto        &chain = slave_after.chains[c];
-        const unsigned int n     = chain.size();
-        const unsigned int n_edges_in_chain = slave_after.closed[c] ? n : n - 1;
-        // vertex pair index of each chain vertex (created lazily)
-        std::vector<unsigned int> pair_of(n, invalid);
-        unsigned int              run_start = invalid, last = invalid;
-        const auto                close_run = [&]() {
-          if (run_start == invalid)
-            return;
-          if (run_start == last && slave_after.closed[c])
-            {
-              run_start = invalid; // a whole closed loop: no ends
-              return;
-            }
-          for (const unsigned int p : {run_start, last})
-            {
-              auto &pair = result.pairs[p];
-              if (continues_smoothly(slave_after, pair.slave_entity) &&
-                  continues_smoothly(master_after, pair.master_entity))
-                pair.at_open_end = true;
-            }
-          run_start = invalid;
-        };
-        const auto vertex_pair = [&](const unsigned int i) {
-          if (pair_of[i] == invalid)
-            {
-              ContactNodePair p;
-              p.master_entity = slave_partner.at(chain[i]);
-              p.slave_entity  = chain[i];
-              p.interface     = index;
-              pair_of[i]      = result.pairs.size();
-              result.pairs.push_back(p);
-            }
-          return pair_of[i];
-        };
-        for (unsigned int i = 0; i < n_edges_in_chain; ++i)
-          {
-            const unsigned int sa = chain[i], sb = chain[(i + 1) % n];
-            const auto         pa = slave_partner.find(sa), pb = slave_partner.find(sb);
-            const bool         paired = pa != slave_partner.end() && pb != slave_partner.end() &&
-                                master_after.edge_by_pair.count(key(pa->second, pb->second));
-            if (!paired)
-              {
-                close_run();
-                continue;
-              }
-            ContactSegment seg;
-            seg.first = vertex_pair(i);
-            if (run_start == invalid)
-              run_start = seg.first;
-            if (degree == 2)
-              {
-                ContactNodePair p;
-                p.master_entity =
-                  master_after.edge_indices[master_after.edge_by_pair.at(key(pa->second, pb->second))];
-                p.slave_entity = slave_after.edge_indices[slave_after.edge_by_pair.at(key(sa, sb))];
-                p.is_midpoint  = true;
-                p.interface    = index;
-                seg.midpoint   = result.pairs.size();
-                result.pairs.push_back(p);
-              }
-            seg.second = vertex_pair((i + 1) % n);
-            last       = seg.second;
-            result.segments.push_back(seg);
-          }
-        close_run();
-        for (unsigned int i = 0; i < n; ++i)
-          if (slave_partner.count(chain[i]) && pair_of[i] == invalid)
-            report.unpaired.push_back({false, chain[i], mesh.vertex(chain[i]),
-                                       "none of its slave edges has both ends paired (the overlap there is "
-                                       "shorter than one edge)"});
-      }
+    pair_slave_chains(mesh, master_after, slave_after, slave_partner, degree, index, result);
     update_geometry(mesh, result);
     return result;
   }
