@@ -695,6 +695,110 @@ namespace dealvem
 
 
 
+    /// A vertex inserted by rule 3 (splits), for the gap rule 4.
+    struct Inserted
+    {
+      unsigned int vertex;  ///< the new vertex
+      unsigned int partner; ///< its partner on the other side
+      bool         on_master;
+      unsigned int edge;    ///< the split edge of the receiving side (before insertion)
+      Point        chord;   ///< the point of the chord at the split
+      Vector       normal;  ///< outward normal of the chord
+      double       q;       ///< t(1 - t) L^2 / 2: chord deviation per unit curvature
+    };
+
+
+
+    // Rule 3 (splits): every accepted candidate of @p cands (vertices of
+    // @p from) without a partner yet splits the edge of @p onto it projects
+    // on; on a curved side the new vertex is moved onto the circle of the
+    // side's curvature. A candidate that falls on a vertex of @p onto that
+    // is paired already, or that would make a sub-edge shorter than 1e-3 of
+    // an edge length, is reported unpaired. The new pairs go into the
+    // partner maps, the new vertices into @p inserted.
+    void
+    split_edges(PolygonalMesh<2>                        &mesh,
+                const Side                              &onto,
+                const Side                              &from,
+                const std::map<unsigned int, Candidate> &cands,
+                std::map<unsigned int, unsigned int>    &partner_onto,
+                std::map<unsigned int, unsigned int>    &partner_from,
+                const bool                               onto_master,
+                NodeInsertion::Report                   &report,
+                std::vector<Inserted>                   &inserted)
+    {
+      std::map<unsigned int, std::vector<std::pair<double, unsigned int>>> by_edge; // edge -> (t, vertex)
+      for (const auto &c : cands)
+        if (c.second.accepted && partner_from.count(c.first) == 0)
+          {
+            const auto &pr = c.second.projection;
+            if (pr.t <= 0 || pr.t >= 1)
+              {
+                const unsigned int w = onto.edges[pr.edge][pr.t <= 0 ? 0 : 1];
+                report.unpaired.push_back({!onto_master, c.first, mesh.vertex(c.first),
+                                           "its closest point on the other side is vertex " + std::to_string(w) +
+                                             " " + point_string(mesh.vertex(w)) +
+                                             ", which is already paired with a closer node"});
+                continue;
+              }
+            by_edge[pr.edge].emplace_back(pr.t, c.first);
+          }
+      for (auto &entry : by_edge)
+        {
+          auto &list = entry.second;
+          std::sort(list.begin(), list.end());
+          const unsigned int a = onto.edges[entry.first][0], b = onto.edges[entry.first][1];
+          const Point        xa = mesh.vertex(a), xb = mesh.vertex(b);
+          const double       L  = xa.distance(xb);
+          const double       kappa = onto.edge_kappa[entry.first];
+          unsigned int       e        = onto.edge_indices[entry.first]; // the piece (previous, b)
+          double             previous = 0;
+          std::vector<std::pair<unsigned int, Point>> moves; // after all splits of this edge
+          for (unsigned int i = 0; i < list.size(); ++i)
+            {
+              const double       t    = list[i].first;
+              const unsigned int v    = list[i].second;
+              const double       hl   = std::min(from.h.at(v), L);
+              if ((t - previous) * L < 1e-3 * hl || (1 - t) * L < 1e-3 * hl)
+                {
+                  report.unpaired.push_back({!onto_master, v, mesh.vertex(v),
+                                             "it lies within 1e-3 of an edge length of another node on the "
+                                             "other side (a sub-edge that short would be created)"});
+                  continue;
+                }
+              const unsigned int nv = mesh.split_edge(e, xa + t * (xb - xa));
+              // split_edge keeps e for (previous, nv) and appends (nv, b)
+              e = mesh.n_edges() - 1;
+              // on a smooth curve, the new vertex goes onto the circle of the
+              // side's curvature instead of the chord, at the point the
+              // partner faces along the master normals: the closest point of
+              // the circle to a slave vertex, the hit of the master vertex's
+              // normal line. So the pair's gap is the normal distance of the
+              // two curves, whether they coincide, overlap or stand apart.
+              if (kappa != 0)
+                {
+                  Point      target;
+                  const bool on_arc = onto_master ?
+                                        closest_on_arc(xa, xb, kappa, mesh.vertex(v), target) :
+                                        cast_on_arc(xa, xb, kappa, mesh.vertex(v), from.normal.at(v), target);
+                  if (!on_arc) // (a degenerate arc: the chord's own offset rule)
+                    target = mesh.vertex(nv) + 0.5 * t * (1 - t) * L * L * kappa * edge_normal(xa, xb);
+                  moves.emplace_back(nv, target);
+                }
+              partner_onto[nv] = v;
+              partner_from[v]  = nv;
+              inserted.push_back({nv, v, onto_master, entry.first, xa + t * (xb - xa), edge_normal(xa, xb),
+                                  0.5 * t * (1 - t) * L * L});
+              previous = t;
+              ++(onto_master ? report.n_inserted_master : report.n_inserted_slave);
+            }
+          for (const auto &m : moves)
+            mesh.move_vertex(m.first, m.second);
+        }
+    }
+
+
+
     // Rule 5 (pairs): walk the chains of the slave side after insertion;
     // every slave edge whose two end vertices are paired with the two ends
     // of one master edge becomes a paired sub-edge (ContactSegment; for
@@ -870,91 +974,9 @@ namespace dealvem
       merged_slave.insert(p.first);
 
     // 3. splits: the other accepted vertices split the edge they project on
-    struct Inserted
-    {
-      unsigned int vertex;  ///< the new vertex
-      unsigned int partner; ///< its partner on the other side
-      bool         on_master;
-      unsigned int edge;    ///< the split edge of the receiving side (before insertion)
-      Point        chord;   ///< the point of the chord at the split
-      Vector       normal;  ///< outward normal of the chord
-      double       q;       ///< t(1 - t) L^2 / 2: chord deviation per unit curvature
-    };
     std::vector<Inserted> inserted;
-    const auto split_side = [&](const Side &onto, const Side &from, std::map<unsigned int, Candidate> &cands,
-                                std::map<unsigned int, unsigned int> &partner_onto,
-                                std::map<unsigned int, unsigned int> &partner_from, const bool onto_master) {
-      std::map<unsigned int, std::vector<std::pair<double, unsigned int>>> by_edge; // edge -> (t, vertex)
-      for (const auto &c : cands)
-        if (c.second.accepted && partner_from.count(c.first) == 0)
-          {
-            const auto &pr = c.second.projection;
-            if (pr.t <= 0 || pr.t >= 1)
-              {
-                const unsigned int w = onto.edges[pr.edge][pr.t <= 0 ? 0 : 1];
-                report.unpaired.push_back({!onto_master, c.first, mesh.vertex(c.first),
-                                           "its closest point on the other side is vertex " + std::to_string(w) +
-                                             " " + point_string(mesh.vertex(w)) +
-                                             ", which is already paired with a closer node"});
-                continue;
-              }
-            by_edge[pr.edge].emplace_back(pr.t, c.first);
-          }
-      for (auto &entry : by_edge)
-        {
-          auto &list = entry.second;
-          std::sort(list.begin(), list.end());
-          const unsigned int a = onto.edges[entry.first][0], b = onto.edges[entry.first][1];
-          const Point        xa = mesh.vertex(a), xb = mesh.vertex(b);
-          const double       L  = xa.distance(xb);
-          const double       kappa = onto.edge_kappa[entry.first];
-          unsigned int       e        = onto.edge_indices[entry.first]; // the piece (previous, b)
-          double             previous = 0;
-          std::vector<std::pair<unsigned int, Point>> moves; // after all splits of this edge
-          for (unsigned int i = 0; i < list.size(); ++i)
-            {
-              const double       t    = list[i].first;
-              const unsigned int v    = list[i].second;
-              const double       hl   = std::min(from.h.at(v), L);
-              if ((t - previous) * L < 1e-3 * hl || (1 - t) * L < 1e-3 * hl)
-                {
-                  report.unpaired.push_back({!onto_master, v, mesh.vertex(v),
-                                             "it lies within 1e-3 of an edge length of another node on the "
-                                             "other side (a sub-edge that short would be created)"});
-                  continue;
-                }
-              const unsigned int nv = mesh.split_edge(e, xa + t * (xb - xa));
-              // split_edge keeps e for (previous, nv) and appends (nv, b)
-              e = mesh.n_edges() - 1;
-              // on a smooth curve, the new vertex goes onto the circle of the
-              // side's curvature instead of the chord, at the point the
-              // partner faces along the master normals: the closest point of
-              // the circle to a slave vertex, the hit of the master vertex's
-              // normal line. So the pair's gap is the normal distance of the
-              // two curves, whether they coincide, overlap or stand apart.
-              if (kappa != 0)
-                {
-                  Point      target;
-                  const bool on_arc = onto_master ?
-                                        closest_on_arc(xa, xb, kappa, mesh.vertex(v), target) :
-                                        cast_on_arc(xa, xb, kappa, mesh.vertex(v), from.normal.at(v), target);
-                  if (!on_arc) // (a degenerate arc: the chord's own offset rule)
-                    target = mesh.vertex(nv) + 0.5 * t * (1 - t) * L * L * kappa * edge_normal(xa, xb);
-                  moves.emplace_back(nv, target);
-                }
-              partner_onto[nv] = v;
-              partner_from[v]  = nv;
-              inserted.push_back({nv, v, onto_master, entry.first, xa + t * (xb - xa), edge_normal(xa, xb),
-                                  0.5 * t * (1 - t) * L * L});
-              previous = t;
-              ++(onto_master ? report.n_inserted_master : report.n_inserted_slave);
-            }
-          for (const auto &m : moves)
-            mesh.move_vertex(m.first, m.second);
-        }
-    };
-    split_side(master, slave, on_master, master_partner, slave_partner, true);
-    split_side(slave, master, on_slave, slave_partner, master_partner, false);
+    split_edges(mesh, master, slave, on_master, master_partner, slave_partner, true, report, inserted);
+    split_edges(mesh, slave, master, on_slave, slave_partner, master_partner, false, report, inserted);
 
     // 4. gaps, in three passes (see the class documentation):
     //  (a) every pair is judged on the geometry the splits left: its gap is
