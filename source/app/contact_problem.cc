@@ -1062,7 +1062,11 @@ namespace dealvem
     const auto gaps  = contact.gaps(x);
     const auto slips = contact.slips(x);
     const auto ft    = friction ? std::vector<double>() : contact.tangential_forces(x);
-    // consistent pressure per interface: M_Gamma p = -lambda
+    // the pressure per interface is recovered from the nodal forces -lambda
+    // by ContactPressure::recover(): at each closed pair, a least-squares fit
+    // of a polynomial of degree k whose nodal forces match those of the
+    // closed pairs within three sub-edges on each side (not the consistent
+    // solve M_Gamma p = -lambda, which amplifies the node-by-node patterns);
     // the tangential nodal force on the slave node, along t
     std::vector<double> tangential_force(pairs.size(), 0.);
     for (unsigned int i = 0; i < pairs.size(); ++i)

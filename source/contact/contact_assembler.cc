@@ -4,6 +4,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/lac/full_matrix.h>
 
+#include <dealvem/base/number_string.h>
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/elasticity/material_library.h>
 
@@ -181,16 +182,45 @@ namespace dealvem
 
 
 
-  namespace
+  template <int dim>
+  bool
+  ContactAssembler<dim>::drop_if_fixed(const dealii::AffineConstraints<double> &constraints,
+                                       const unsigned int                       i,
+                                       const double                             c[4],
+                                       const bool                               tangential,
+                                       const double                             required,
+                                       const bool                               unilateral) const
   {
-    std::string
-    to_string(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-  } // namespace
+    double value = 0;
+    if (!is_fixed_by_constraints(constraints, i, c, value))
+      return false;
+    const auto  &p   = pairs[i];
+    const double tol = 1e-12 * std::max({std::abs(value), std::abs(required), p.weight});
+    const bool   open_gap = !tangential && unilateral && value >= required - tol;
+    if (!open_gap && std::abs(value - required) > tol)
+      {
+        using internal::number_string;
+        const std::string where = internal::point_string(p.slave_location);
+        // the normal row reads (u_B - u_A).n = -g0, so the gap it leaves is
+        // value + g0, and contact requires required + g0 (0 for a tied or
+        // closed pair)
+        const std::string demand =
+          tangential ? number_string(required) + " (stick)" :
+                       (unilateral ? std::string("a gap >= ") + number_string(required + p.initial_gap) :
+                                     number_string(required + p.initial_gap) + " (tied)");
+        AssertThrow(false,
+                    dealii::ExcMessage(
+                      "Contact pair " + std::to_string(i) + " at " + where + " (interface " +
+                      std::to_string(p.interface) + "): the " + (tangential ? "tangential" : "normal") +
+                      " contact constraint involves only displacements fixed by the Dirichlet, roller "
+                      "or point constraints, and they disagree: the Dirichlet/roller data force a " +
+                      (tangential ? "tangential slip" : "gap") + " of " +
+                      number_string(tangential ? value : value + p.initial_gap) + " at pair " + where +
+                      " but contact requires " + demand + ". Remove one of the two conditions or make them agree."));
+      }
+    dropped.push_back({i, p.slave_location, tangential, value});
+    return true;
+  }
 
 
 
@@ -212,45 +242,16 @@ namespace dealvem
         const double cn[4] = {-p.normal[0], -p.normal[1], p.normal[0], p.normal[1]};
         const double ct[4] = {-p.tangent[0], -p.tangent[1], p.tangent[0], p.tangent[1]};
 
-        // An enforced constraint whose DoFs the displacement constraints
-        // fix already is dropped (lambda = 0) if the two agree, and is an
-        // error if they do not. Tolerance: 1e-12 relative to the values
-        // compared, at least 1e-12 times the tributary length of the pair
-        // (the round-off of the initial gap).
-        const auto redundant = [&](const double c[4], const bool tangential) {
-          double value = 0;
-          if (!is_fixed_by_constraints(constraints, i, c, value))
-            return false;
-          const double required = tangential ? 0. : -p.initial_gap;
-          const double tol      = 1e-12 * std::max({std::abs(value), std::abs(required), p.weight});
-          const bool   unilateral_open =
-            !tangential && settings.normal == ContactSettings::Normal::unilateral && value >= required - tol;
-          std::ostringstream where;
-          where << "(" << p.slave_location[0] << ", " << p.slave_location[1] << ")";
-          AssertThrow(unilateral_open || std::abs(value - required) <= tol,
-                      dealii::ExcMessage(
-                        "Contact pair " + std::to_string(i) + " at " + where.str() + " (interface " +
-                        std::to_string(p.interface) + "): the " + (tangential ? "tangential" : "normal") +
-                        " contact constraint involves only displacements fixed by the Dirichlet, roller "
-                        "or point constraints, and they disagree: the Dirichlet/roller data force a " +
-                        (tangential ? "tangential slip" : "gap") + " of " +
-                        to_string(tangential ? value : value + p.initial_gap) + " at pair " + where.str() +
-                        " but contact requires " +
-                        (tangential ? std::string("0 (stick)") :
-                                      (settings.normal == ContactSettings::Normal::tied ? std::string("0 (tied)") :
-                                                                                          std::string("a gap >= 0"))) +
-                        ". Remove one of the two conditions or make them agree."));
-          dropped.push_back({i, p.slave_location, tangential, value});
-          return true;
-        };
-
+        // an enforced constraint whose DoFs the displacement constraints
+        // fix already is dropped if the two agree (drop_if_fixed())
+        const bool unilateral = (settings.normal == ContactSettings::Normal::unilateral);
         std::vector<dealii::types::global_dof_index> idx(d.begin(), d.end());
         idx.push_back(n + i);
         if (n_tangential > 0)
           idx.push_back(n + n_normal + i);
         dealii::FullMatrix<double> M(idx.size(), idx.size());
         dealii::Vector<double>     F(idx.size());
-        if (active[i] && !redundant(cn, false))
+        if (active[i] && !drop_if_fixed(constraints, i, cn, false, -p.initial_gap, unilateral))
           {
             for (unsigned int j = 0; j < 4; ++j)
               M(4, j) = M(j, 4) = cn[j];
@@ -261,7 +262,7 @@ namespace dealvem
         if (settings.tangential == ContactSettings::Tangential::multipliers)
           {
             // tangential stick only where the normal constraint is active
-            if (active[i] && !redundant(ct, true))
+            if (active[i] && !drop_if_fixed(constraints, i, ct, true, 0., unilateral))
               for (unsigned int j = 0; j < 4; ++j)
                 M(5, j) = M(j, 5) = ct[j];
             else
@@ -339,32 +340,16 @@ namespace dealvem
         const double sigma  = (state[i] == PairState::slip_positive ? 1. : -1.);
         const double mu     = friction_coefficient(i);
 
-        // A closed normal or sticking tangential row that the displacement
-        // constraints fix already: as in assemble(), dropped if they agree.
-        const auto redundant = [&](const double c[4], const bool tangential, const double required) {
-          double value = 0;
-          if (!is_fixed_by_constraints(constraints, i, c, value))
-            return false;
-          const double tol = 1e-12 * std::max({std::abs(value), std::abs(required), p.weight});
-          const bool   open_ok = !tangential && value >= required - tol;
-          AssertThrow(open_ok || std::abs(value - required) <= tol,
-                      dealii::ExcMessage("Contact pair " + std::to_string(i) + " (interface " +
-                                         std::to_string(p.interface) + "): the " +
-                                         (tangential ? "tangential (stick)" : "normal") +
-                                         " contact constraint involves only displacements fixed by the "
-                                         "Dirichlet, roller or point constraints, and they disagree (imposed " +
-                                         to_string(value) + ", required " + to_string(required) + ")."));
-          dropped.push_back({i, p.slave_location, tangential, value});
-          return true;
-        };
-
+        // a closed normal or sticking tangential row that the displacement
+        // constraints fix already: as in assemble(), dropped if they agree
+        // (Coulomb friction is unilateral: an open gap is admissible)
         std::vector<dealii::types::global_dof_index> idx(d.begin(), d.end());
         idx.push_back(n + i);
         if (multipliers)
           idx.push_back(n + n_normal + i);
         dealii::FullMatrix<double> M(idx.size(), idx.size());
         dealii::Vector<double>     F(idx.size());
-        const bool normal_on = closed && !redundant(cn, false, -p.initial_gap);
+        const bool normal_on = closed && !drop_if_fixed(constraints, i, cn, false, -p.initial_gap, true);
         if (normal_on)
           {
             for (unsigned int j = 0; j < 4; ++j)
@@ -375,7 +360,7 @@ namespace dealvem
           M(4, 4) = 1.;
         if (multipliers)
           {
-            if (state[i] == PairState::stick && !redundant(ct, true, reference[i]))
+            if (state[i] == PairState::stick && !drop_if_fixed(constraints, i, ct, true, reference[i], true))
               {
                 for (unsigned int j = 0; j < 4; ++j)
                   M(5, j) = M(j, 5) = ct[j];

@@ -6,6 +6,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/numerics/rtree.h>
 
+#include <dealvem/base/number_string.h>
 #include <dealvem/contact/node_insertion.h>
 
 #include <algorithm>
@@ -48,21 +49,8 @@ namespace dealvem
              std::to_string(slave_id) + "): ";
     }
 
-    std::string
-    number_string(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
-    std::string
-    point_string(const Point &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ")";
-      return s.str();
-    }
+    using internal::number_string;
+    using internal::point_string;
 
     /// Outward unit normal of a boundary edge a -> b (counter-clockwise
     /// order of its cell: the body lies on the left).
@@ -603,50 +591,26 @@ namespace dealvem
       Projection projection;
       bool       accepted = false;
     };
-  } // namespace
 
 
 
-  NodeInsertion::Interface
-  NodeInsertion::insert(PolygonalMesh<2>                &mesh,
-                        const dealii::types::boundary_id master_id,
-                        const dealii::types::boundary_id slave_id,
-                        const unsigned int               degree,
-                        const Settings                  &settings,
-                        const unsigned int               index)
-  {
-    const std::string name = interface_name(master_id, slave_id);
-    AssertThrow(degree == 1 || degree == 2,
-                dealii::ExcMessage(name + "contact node pairs are implemented for order k = 1 and 2, not k = " +
-                                   std::to_string(degree) + "."));
-    Interface result;
-    result.master_id = master_id;
-    result.slave_id  = slave_id;
-    result.degree    = degree;
-    result.index     = index;
-    Report &report   = result.report;
-
-    const Side master = collect_side(mesh, master_id);
-    const Side slave  = collect_side(mesh, slave_id);
-    check_interface(mesh, master_id, slave_id, master, slave, settings);
-
-    // size of the interface: diagonal of the bounding box of both sides
-    Point lo(1e300, 1e300), hi(-1e300, -1e300);
-    for (const Side *side : {&master, &slave})
-      for (const auto &e : side->edges)
-        for (const unsigned int v : e)
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              lo[d] = std::min(lo[d], mesh.vertex(v)[d]);
-              hi[d] = std::max(hi[d], mesh.vertex(v)[d]);
-            }
-    const double search = settings.search_distance * lo.distance(hi);
-    const double f      = settings.merge_fraction;
-
-    // 1. partners: project every vertex onto the other side
-    std::map<unsigned int, Candidate> on_master, on_slave; // slave vertices onto master, and back
-    const auto propose = [&](const Side &from, const Side &onto, std::map<unsigned int, Candidate> &out,
-                             const bool from_master) {
+    // Rule 1 (partners): project every vertex of @p from that has a normal
+    // onto the side @p onto (master vertices cast along their normal, slave
+    // vertices projected) and keep, per vertex, the candidate partner point;
+    // a vertex outside the overlap is skipped, one beyond the search distance
+    // or on a part that does not face the other side is reported unpaired.
+    void
+    propose_partners(const PolygonalMesh<2>             &mesh,
+                     const Side                         &from,
+                     const Side                         &onto,
+                     const bool                          from_master,
+                     const NodeInsertion::Settings      &settings,
+                     const double                        search,
+                     const double                        interface_size,
+                     NodeInsertion::Report              &report,
+                     std::map<unsigned int, Candidate>  &out)
+    {
+      const double f = settings.merge_fraction;
       for (const auto &vn : from.normal)
         {
           const unsigned int v = vn.first;
@@ -661,7 +625,7 @@ namespace dealvem
                                          " to the other side exceeds the search distance " +
                                          number_string(search) + " (Search distance " +
                                          number_string(settings.search_distance) +
-                                         " times the interface size " + number_string(lo.distance(hi)) + ")"});
+                                         " times the interface size " + number_string(interface_size) + ")"});
           else if (!c.projection.facing)
             {
               // far from the other side, a part that turns away (the flank
@@ -677,50 +641,61 @@ namespace dealvem
             c.accepted = true;
           out[v] = c;
         }
-    };
-    propose(slave, master, on_master, false);
-    propose(master, slave, on_slave, true);
+    }
 
-    // 2. merges: a vertex whose closest point lies within f h of a vertex
-    // of the other side is paired with it; closest candidates first
-    struct Merge
+
+
+    // Rule 2 (merges): a vertex whose candidate point lies within the merge
+    // fraction times the local edge length of a vertex of the other side is
+    // paired with that vertex instead of splitting an edge; the closest
+    // candidates are merged first, each vertex at most once. Fills the
+    // partner maps (vertex -> partner vertex) of both sides.
+    void
+    merge_close_vertices(const PolygonalMesh<2>                  &mesh,
+                         const Side                              &master,
+                         const Side                              &slave,
+                         const double                             f,
+                         const std::map<unsigned int, Candidate> &on_master,
+                         const std::map<unsigned int, Candidate> &on_slave,
+                         NodeInsertion::Report                   &report,
+                         std::map<unsigned int, unsigned int>    &master_partner,
+                         std::map<unsigned int, unsigned int>    &slave_partner)
     {
-      double       distance;
-      unsigned int m, s;
-    };
-    std::vector<Merge> merges;
-    const auto         offer = [&](const Side &onto, const Side &from, const unsigned int v,
-                           const Candidate &c, const bool v_is_slave) {
-      if (!c.accepted)
-        return;
-      const unsigned int w  = onto.edges[c.projection.edge][c.projection.t <= 0.5 ? 0 : 1];
-      const double       d  = c.projection.point.distance(mesh.vertex(w));
-      const double       hl = std::min(from.h.at(v), onto.h.at(w));
-      if (d <= f * hl)
-        merges.push_back({d, v_is_slave ? w : v, v_is_slave ? v : w});
-    };
-    for (const auto &c : on_master)
-      offer(master, slave, c.first, c.second, true);
-    for (const auto &c : on_slave)
-      offer(slave, master, c.first, c.second, false);
-    std::sort(merges.begin(), merges.end(), [](const Merge &a, const Merge &b) {
-      return a.distance < b.distance || (a.distance == b.distance && VertexPair(a.m, a.s) < VertexPair(b.m, b.s));
-    });
-    std::map<unsigned int, unsigned int> master_partner, slave_partner; // vertex -> partner vertex
-    for (const auto &m : merges)
-      if (master_partner.count(m.m) == 0 && slave_partner.count(m.s) == 0)
-        {
-          master_partner[m.m] = m.s;
-          slave_partner[m.s]  = m.m;
-          ++report.n_merged;
-        }
-    std::set<unsigned int> merged_master, merged_slave;
-    for (const auto &p : master_partner)
-      merged_master.insert(p.first);
-    for (const auto &p : slave_partner)
-      merged_slave.insert(p.first);
+      struct Merge
+      {
+        double       distance;
+        unsigned int m, s;
+      };
+      std::vector<Merge> merges;
+      const auto         offer = [&](const Side &onto, const Side &from, const unsigned int v,
+                             const Candidate &c, const bool v_is_slave) {
+        if (!c.accepted)
+          return;
+        const unsigned int w  = onto.edges[c.projection.edge][c.projection.t <= 0.5 ? 0 : 1];
+        const double       d  = c.projection.point.distance(mesh.vertex(w));
+        const double       hl = std::min(from.h.at(v), onto.h.at(w));
+        if (d <= f * hl)
+          merges.push_back({d, v_is_slave ? w : v, v_is_slave ? v : w});
+      };
+      for (const auto &c : on_master)
+        offer(master, slave, c.first, c.second, true);
+      for (const auto &c : on_slave)
+        offer(slave, master, c.first, c.second, false);
+      std::sort(merges.begin(), merges.end(), [](const Merge &a, const Merge &b) {
+        return a.distance < b.distance || (a.distance == b.distance && VertexPair(a.m, a.s) < VertexPair(b.m, b.s));
+      });
+      for (const auto &m : merges)
+        if (master_partner.count(m.m) == 0 && slave_partner.count(m.s) == 0)
+          {
+            master_partner[m.m] = m.s;
+            slave_partner[m.s]  = m.m;
+            ++report.n_merged;
+          }
+    }
 
-    // 3. splits: the other accepted vertices split the edge they project on
+
+
+    /// A vertex inserted by rule 3 (splits), for the gap rule 4.
     struct Inserted
     {
       unsigned int vertex;  ///< the new vertex
@@ -731,10 +706,27 @@ namespace dealvem
       Vector       normal;  ///< outward normal of the chord
       double       q;       ///< t(1 - t) L^2 / 2: chord deviation per unit curvature
     };
-    std::vector<Inserted> inserted;
-    const auto split_side = [&](const Side &onto, const Side &from, std::map<unsigned int, Candidate> &cands,
-                                std::map<unsigned int, unsigned int> &partner_onto,
-                                std::map<unsigned int, unsigned int> &partner_from, const bool onto_master) {
+
+
+
+    // Rule 3 (splits): every accepted candidate of @p cands (vertices of
+    // @p from) without a partner yet splits the edge of @p onto it projects
+    // on; on a curved side the new vertex is moved onto the circle of the
+    // side's curvature. A candidate that falls on a vertex of @p onto that
+    // is paired already, or that would make a sub-edge shorter than 1e-3 of
+    // an edge length, is reported unpaired. The new pairs go into the
+    // partner maps, the new vertices into @p inserted.
+    void
+    split_edges(PolygonalMesh<2>                        &mesh,
+                const Side                              &onto,
+                const Side                              &from,
+                const std::map<unsigned int, Candidate> &cands,
+                std::map<unsigned int, unsigned int>    &partner_onto,
+                std::map<unsigned int, unsigned int>    &partner_from,
+                const bool                               onto_master,
+                NodeInsertion::Report                   &report,
+                std::vector<Inserted>                   &inserted)
+    {
       std::map<unsigned int, std::vector<std::pair<double, unsigned int>>> by_edge; // edge -> (t, vertex)
       for (const auto &c : cands)
         if (c.second.accepted && partner_from.count(c.first) == 0)
@@ -803,9 +795,188 @@ namespace dealvem
           for (const auto &m : moves)
             mesh.move_vertex(m.first, m.second);
         }
-    };
-    split_side(master, slave, on_master, master_partner, slave_partner, true);
-    split_side(slave, master, on_slave, slave_partner, master_partner, false);
+    }
+
+
+
+    // Rule 5 (pairs): walk the chains of the slave side after insertion;
+    // every slave edge whose two end vertices are paired with the two ends
+    // of one master edge becomes a paired sub-edge (ContactSegment; for
+    // k = 2 with the pair of the two edge midpoints), and the vertex pairs
+    // are made in the order of the slave chains. The first and the last
+    // pair of a run of paired sub-edges are marked at_open_end where both
+    // boundaries go on smoothly beyond them. A paired slave vertex on no
+    // paired sub-edge is reported unpaired.
+    void
+    pair_slave_chains(const PolygonalMesh<2>                     &mesh,
+                      const Side                                 &master_after,
+                      const Side                                 &slave_after,
+                      const std::map<unsigned int, unsigned int> &slave_partner,
+                      const unsigned int                          degree,
+                      const unsigned int                          index,
+                      NodeInsertion::Interface                   &result)
+    {
+      NodeInsertion::Report &report = result.report;
+      // does the boundary of the body go on smoothly beyond the end vertex v
+      // of a side (the part was cut out of a smooth boundary)?
+      std::map<unsigned int, std::vector<unsigned int>> boundary_edges_at;
+      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+        if (mesh.edge(e).at_boundary())
+          for (const unsigned int v : mesh.edge(e).vertices)
+            boundary_edges_at[v].push_back(e);
+      const auto continues_smoothly = [&](const Side &side, const unsigned int v) {
+        if (!side.is_end(v))
+          return true;
+        const auto         own = side.outgoing.count(v) ? side.outgoing.at(v) : side.incoming.at(v);
+        const unsigned int own_mesh_edge = side.edge_indices[own];
+        for (const unsigned int e : boundary_edges_at[v])
+          if (e != own_mesh_edge && mesh.edge(e).boundary_id != side.id)
+            {
+              const auto  &ev = mesh.edge(e).vertices;
+              const auto  &ov = side.edges[own];
+              const Vector d_own   = mesh.vertex(ov[1]) - mesh.vertex(ov[0]);
+              const Vector d_other = mesh.vertex(ev[1]) - mesh.vertex(ev[0]);
+              const double c = (d_own * d_other) / (d_own.norm() * d_other.norm());
+              if (c >= std::cos(30. * M_PI / 180.))
+                return true;
+            }
+        return false;
+      };
+
+      for (unsigned int c = 0; c < slave_after.chains.size(); ++c)
+        {
+          const auto        &chain = slave_after.chains[c];
+          const unsigned int n     = chain.size();
+          const unsigned int n_edges_in_chain = slave_after.closed[c] ? n : n - 1;
+          // vertex pair index of each chain vertex (created lazily)
+          std::vector<unsigned int> pair_of(n, invalid);
+          unsigned int              run_start = invalid, last = invalid;
+          const auto                close_run = [&]() {
+            if (run_start == invalid)
+              return;
+            if (run_start == last && slave_after.closed[c])
+              {
+                run_start = invalid; // a whole closed loop: no ends
+                return;
+              }
+            for (const unsigned int p : {run_start, last})
+              {
+                auto &pair = result.pairs[p];
+                if (continues_smoothly(slave_after, pair.slave_entity) &&
+                    continues_smoothly(master_after, pair.master_entity))
+                  pair.at_open_end = true;
+              }
+            run_start = invalid;
+          };
+          const auto vertex_pair = [&](const unsigned int i) {
+            if (pair_of[i] == invalid)
+              {
+                ContactNodePair p;
+                p.master_entity = slave_partner.at(chain[i]);
+                p.slave_entity  = chain[i];
+                p.interface     = index;
+                pair_of[i]      = result.pairs.size();
+                result.pairs.push_back(p);
+              }
+            return pair_of[i];
+          };
+          for (unsigned int i = 0; i < n_edges_in_chain; ++i)
+            {
+              const unsigned int sa = chain[i], sb = chain[(i + 1) % n];
+              const auto         pa = slave_partner.find(sa), pb = slave_partner.find(sb);
+              const bool         paired = pa != slave_partner.end() && pb != slave_partner.end() &&
+                                  master_after.edge_by_pair.count(key(pa->second, pb->second));
+              if (!paired)
+                {
+                  close_run();
+                  continue;
+                }
+              ContactSegment seg;
+              seg.first = vertex_pair(i);
+              if (run_start == invalid)
+                run_start = seg.first;
+              if (degree == 2)
+                {
+                  ContactNodePair p;
+                  p.master_entity =
+                    master_after.edge_indices[master_after.edge_by_pair.at(key(pa->second, pb->second))];
+                  p.slave_entity = slave_after.edge_indices[slave_after.edge_by_pair.at(key(sa, sb))];
+                  p.is_midpoint  = true;
+                  p.interface    = index;
+                  seg.midpoint   = result.pairs.size();
+                  result.pairs.push_back(p);
+                }
+              seg.second = vertex_pair((i + 1) % n);
+              last       = seg.second;
+              result.segments.push_back(seg);
+            }
+          close_run();
+          for (unsigned int i = 0; i < n; ++i)
+            if (slave_partner.count(chain[i]) && pair_of[i] == invalid)
+              report.unpaired.push_back({false, chain[i], mesh.vertex(chain[i]),
+                                         "none of its slave edges has both ends paired (the overlap there is "
+                                         "shorter than one edge)"});
+        }
+    }
+  } // namespace
+
+
+
+  NodeInsertion::Interface
+  NodeInsertion::insert(PolygonalMesh<2>                &mesh,
+                        const dealii::types::boundary_id master_id,
+                        const dealii::types::boundary_id slave_id,
+                        const unsigned int               degree,
+                        const Settings                  &settings,
+                        const unsigned int               index)
+  {
+    const std::string name = interface_name(master_id, slave_id);
+    AssertThrow(degree == 1 || degree == 2,
+                dealii::ExcMessage(name + "contact node pairs are implemented for order k = 1 and 2, not k = " +
+                                   std::to_string(degree) + "."));
+    Interface result;
+    result.master_id = master_id;
+    result.slave_id  = slave_id;
+    result.degree    = degree;
+    result.index     = index;
+    Report &report   = result.report;
+
+    const Side master = collect_side(mesh, master_id);
+    const Side slave  = collect_side(mesh, slave_id);
+    check_interface(mesh, master_id, slave_id, master, slave, settings);
+
+    // size of the interface: diagonal of the bounding box of both sides
+    Point lo(1e300, 1e300), hi(-1e300, -1e300);
+    for (const Side *side : {&master, &slave})
+      for (const auto &e : side->edges)
+        for (const unsigned int v : e)
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d] = std::min(lo[d], mesh.vertex(v)[d]);
+              hi[d] = std::max(hi[d], mesh.vertex(v)[d]);
+            }
+    const double search = settings.search_distance * lo.distance(hi);
+    const double f      = settings.merge_fraction;
+
+    // 1. partners: project every vertex onto the other side
+    std::map<unsigned int, Candidate> on_master, on_slave; // slave vertices onto master, and back
+    propose_partners(mesh, slave, master, false, settings, search, lo.distance(hi), report, on_master);
+    propose_partners(mesh, master, slave, true, settings, search, lo.distance(hi), report, on_slave);
+
+    // 2. merges: a vertex whose closest point lies within f h of a vertex
+    // of the other side is paired with it; closest candidates first
+    std::map<unsigned int, unsigned int> master_partner, slave_partner; // vertex -> partner vertex
+    merge_close_vertices(mesh, master, slave, f, on_master, on_slave, report, master_partner, slave_partner);
+    std::set<unsigned int> merged_master, merged_slave;
+    for (const auto &p : master_partner)
+      merged_master.insert(p.first);
+    for (const auto &p : slave_partner)
+      merged_slave.insert(p.first);
+
+    // 3. splits: the other accepted vertices split the edge they project on
+    std::vector<Inserted> inserted;
+    split_edges(mesh, master, slave, on_master, master_partner, slave_partner, true, report, inserted);
+    split_edges(mesh, slave, master, on_slave, slave_partner, master_partner, false, report, inserted);
 
     // 4. gaps, in three passes (see the class documentation):
     //  (a) every pair is judged on the geometry the splits left: its gap is
@@ -1078,107 +1249,7 @@ namespace dealvem
     const Side slave_after  = collect_side(mesh, slave_id);
     report.n_master_edges   = master_after.edges.size();
     report.n_slave_edges    = slave_after.edges.size();
-
-    // does the boundary of the body go on smoothly beyond the end vertex v
-    // of a side (the part was cut out of a smooth boundary)?
-    std::map<unsigned int, std::vector<unsigned int>> boundary_edges_at;
-    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
-      if (mesh.edge(e).at_boundary())
-        for (const unsigned int v : mesh.edge(e).vertices)
-          boundary_edges_at[v].push_back(e);
-    const auto continues_smoothly = [&](const Side &side, const unsigned int v) {
-      if (!side.is_end(v))
-        return true;
-      const auto         own = side.outgoing.count(v) ? side.outgoing.at(v) : side.incoming.at(v);
-      const unsigned int own_mesh_edge = side.edge_indices[own];
-      for (const unsigned int e : boundary_edges_at[v])
-        if (e != own_mesh_edge && mesh.edge(e).boundary_id != side.id)
-          {
-            const auto  &ev = mesh.edge(e).vertices;
-            const auto  &ov = side.edges[own];
-            const Vector d_own   = mesh.vertex(ov[1]) - mesh.vertex(ov[0]);
-            const Vector d_other = mesh.vertex(ev[1]) - mesh.vertex(ev[0]);
-            const double c = (d_own * d_other) / (d_own.norm() * d_other.norm());
-            if (c >= std::cos(30. * M_PI / 180.))
-              return true;
-          }
-      return false;
-    };
-
-    for (unsigned int c = 0; c < slave_after.chains.size(); ++c)
-      {
-        const auto        &chain = slave_after.chains[c];
-        const unsigned int n     = chain.size();
-        const unsigned int n_edges_in_chain = slave_after.closed[c] ? n : n - 1;
-        // vertex pair index of each chain vertex (created lazily)
-        std::vector<unsigned int> pair_of(n, invalid);
-        unsigned int              run_start = invalid, last = invalid;
-        const auto                close_run = [&]() {
-          if (run_start == invalid)
-            return;
-          if (run_start == last && slave_after.closed[c])
-            {
-              run_start = invalid; // a whole closed loop: no ends
-              return;
-            }
-          for (const unsigned int p : {run_start, last})
-            {
-              auto &pair = result.pairs[p];
-              if (continues_smoothly(slave_after, pair.slave_entity) &&
-                  continues_smoothly(master_after, pair.master_entity))
-                pair.at_open_end = true;
-            }
-          run_start = invalid;
-        };
-        const auto vertex_pair = [&](const unsigned int i) {
-          if (pair_of[i] == invalid)
-            {
-              ContactNodePair p;
-              p.master_entity = slave_partner.at(chain[i]);
-              p.slave_entity  = chain[i];
-              p.interface     = index;
-              pair_of[i]      = result.pairs.size();
-              result.pairs.push_back(p);
-            }
-          return pair_of[i];
-        };
-        for (unsigned int i = 0; i < n_edges_in_chain; ++i)
-          {
-            const unsigned int sa = chain[i], sb = chain[(i + 1) % n];
-            const auto         pa = slave_partner.find(sa), pb = slave_partner.find(sb);
-            const bool         paired = pa != slave_partner.end() && pb != slave_partner.end() &&
-                                master_after.edge_by_pair.count(key(pa->second, pb->second));
-            if (!paired)
-              {
-                close_run();
-                continue;
-              }
-            ContactSegment seg;
-            seg.first = vertex_pair(i);
-            if (run_start == invalid)
-              run_start = seg.first;
-            if (degree == 2)
-              {
-                ContactNodePair p;
-                p.master_entity =
-                  master_after.edge_indices[master_after.edge_by_pair.at(key(pa->second, pb->second))];
-                p.slave_entity = slave_after.edge_indices[slave_after.edge_by_pair.at(key(sa, sb))];
-                p.is_midpoint  = true;
-                p.interface    = index;
-                seg.midpoint   = result.pairs.size();
-                result.pairs.push_back(p);
-              }
-            seg.second = vertex_pair((i + 1) % n);
-            last       = seg.second;
-            result.segments.push_back(seg);
-          }
-        close_run();
-        for (unsigned int i = 0; i < n; ++i)
-          if (slave_partner.count(chain[i]) && pair_of[i] == invalid)
-            report.unpaired.push_back({false, chain[i], mesh.vertex(chain[i]),
-                                       "none of its slave edges has both ends paired (the overlap there is "
-                                       "shorter than one edge)"});
-      }
+    pair_slave_chains(mesh, master_after, slave_after, slave_partner, degree, index, result);
     update_geometry(mesh, result);
     return result;
   }

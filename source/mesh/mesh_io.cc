@@ -2,6 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <dealvem/base/number_string.h>
 #include <dealvem/base/output_file.h>
 #include <dealvem/mesh/mesh_io.h>
 
@@ -186,8 +187,8 @@ namespace dealvem
           const std::size_t l = line();
           const double      v = real(what);
           AssertThrow(std::abs(v) <= max_coordinate,
-                      ExcInvalidMesh(at(l) + what + " is " + number_string(v) + "; coordinates larger than " +
-                                     number_string(max_coordinate) + " in magnitude are not supported."));
+                      ExcInvalidMesh(at(l) + what + " is " + internal::number_string(v) + "; coordinates larger than " +
+                                     internal::number_string(max_coordinate) + " in magnitude are not supported."));
           return v;
         }
 
@@ -202,14 +203,6 @@ namespace dealvem
         is_space(const char c)
         {
           return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
-        }
-
-        static std::string
-        number_string(const double v)
-        {
-          std::ostringstream s;
-          s << v;
-          return s.str();
         }
 
         // move to the next token; false at the end of the file

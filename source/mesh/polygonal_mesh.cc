@@ -2,6 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <dealvem/base/number_string.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 
 #include <algorithm>
@@ -37,13 +38,7 @@ namespace dealvem
       return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
     }
 
-    std::string
-    point_string(const P &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ")";
-      return s.str();
-    }
+    using internal::point_string;
 
     // finite coordinates of at most max_coordinate in magnitude
     void

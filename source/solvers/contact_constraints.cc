@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
+#include <dealvem/base/number_string.h>
 #include <dealvem/solvers/contact_constraints.h>
 
 #include <algorithm>
@@ -19,14 +20,6 @@ namespace dealvem
 {
   namespace
   {
-    std::string
-    to_string(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
     /// One slave line during the elimination: u_slave = sum a_j u_j + c,
     /// and the constraint rows it was combined from.
     struct Line
@@ -381,8 +374,8 @@ namespace dealvem
                           " is a linear combination of the constraint rows {" + on +
                           "} (ContactAssembler numbers the normal constraint of pair i as row i and the "
                           "tangential one, if any, as row n_pairs + i; the rows include the Dirichlet/roller constraints condensed into them), but its "
-                          "right-hand side differs from theirs by " + to_string(rhs) + " (values of size " +
-                          to_string(scale) + " entered it): the contact gaps and the prescribed displacements "
+                          "right-hand side differs from theirs by " + internal::number_string(rhs) + " (values of size " +
+                          internal::number_string(scale) + " entered it): the contact gaps and the prescribed displacements "
                           "cannot all hold. Check the Dirichlet, roller and point constraints on the nodes of "
                           "these contact pairs."));
             AssertThrow(row_symmetric[r],

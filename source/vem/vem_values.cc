@@ -17,6 +17,17 @@ namespace dealvem
                   dealii::ExcMessage(std::string("VEMValues: ") + what +
                                      " was not requested in the UpdateFlags given to the constructor."));
     }
+
+    // The order of the DoF handler's space; a handler whose distribute_dofs()
+    // has not been called has order 0, which is reported as such rather than
+    // as an invalid order of the element.
+    template <int dim>
+    unsigned int
+    distributed_degree(const VEMDoFHandler<dim> &dof_handler)
+    {
+      AssertThrow(dof_handler.get_degree() != 0, ExcNoDoFsDistributed());
+      return dof_handler.get_degree();
+    }
   } // namespace
 
 
@@ -27,8 +38,8 @@ namespace dealvem
                             const unsigned int        quadrature_degree)
     : dof_handler(dof_handler)
     , flags(flags)
-    , quadrature_degree(quadrature_degree == 0 ? 2 * dof_handler.get_degree() : quadrature_degree)
-    , element(dof_handler.get_degree())
+    , quadrature_degree(quadrature_degree == 0 ? 2 * distributed_degree(dof_handler) : quadrature_degree)
+    , element(distributed_degree(dof_handler))
   {
     // values and gradients are evaluated at the quadrature points
     if ((flags & (dealii::update_values | dealii::update_gradients)) != 0)

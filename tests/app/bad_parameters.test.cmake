@@ -4,32 +4,10 @@
 # small parameter file written here and a
 # fragment the message must contain. Also: a multi-cycle run writes
 # <base>-cycle<c>.* files, a single cycle <base>.*.
-function(run_dealvem name expect_success fragment)
-  execute_process(COMMAND ${DEALVEM} ${ARGN} WORKING_DIRECTORY ${WORK_DIR}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
-  set(all "${out}${err}")
-  # deal.II breaks the text of an error message into lines: compare with
-  # the white space collapsed
-  string(REGEX REPLACE "[ \t\r\n]+" " " all_flat "${all}")
-  string(REGEX REPLACE "[ \t\r\n]+" " " fragment "${fragment}")
-  if(expect_success AND NOT rc EQUAL 0)
-    message(FATAL_ERROR "FAIL ${name}: exit code ${rc}\n${all}")
-  endif()
-  if(NOT expect_success AND (rc EQUAL 0 OR NOT rc MATCHES "^[0-9]+$"))
-    # rc is a text such as "Segmentation fault" or "Process terminated due to timeout"
-    message(FATAL_ERROR "FAIL ${name}: exit '${rc}', expected an error exit\n${all}")
-  endif()
-  string(FIND "${all_flat}" "${fragment}" pos)
-  if(pos EQUAL -1)
-    message(FATAL_ERROR "FAIL ${name}: output lacks '${fragment}'\n${all}")
-  endif()
-  string(FIND "${all_flat}" "unknown exception" pos)
-  if(NOT pos EQUAL -1)
-    message(FATAL_ERROR "FAIL ${name}: 'unknown exception'\n${all}")
-  endif()
-  message(STATUS "PASS ${name}")
-  set(LAST_OUTPUT "${all}" PARENT_SCOPE)
-endfunction()
+# run_dealvem() of program_checks.cmake, each run stopped after 120 s: it
+# also fails on a crash, a sanitizer report or an uncaught exception
+set(RUN_TIMEOUT 120)
+include(${TEST_DIR}/program_checks.cmake)
 
 function(bad_case name fragment text)
   file(WRITE ${WORK_DIR}/${name}.prm "${text}")

@@ -7,39 +7,7 @@
 # - a rigid top plate loaded by its resultant (tests/app/rigid-top.prm,
 #   k = 2 and k = 1): uniform compression, errors at round-off;
 # - bad input exits non-zero with a message naming the problem.
-function(run_dealvem name expect_success fragment)
-  execute_process(COMMAND ${DEALVEM} ${ARGN} WORKING_DIRECTORY ${WORK_DIR}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  set(all "${out}${err}")
-  # deal.II breaks the text of an error message into lines: compare with the
-  # white space collapsed
-  string(REGEX REPLACE "[ \t\r\n]+" " " all_flat "${all}")
-  string(REGEX REPLACE "[ \t\r\n]+" " " fragment "${fragment}")
-  if(expect_success AND NOT rc EQUAL 0)
-    message(FATAL_ERROR "FAIL ${name}: exit code ${rc}\n${all}")
-  endif()
-  if(NOT expect_success AND rc EQUAL 0)
-    message(FATAL_ERROR "FAIL ${name}: succeeded but should fail\n${all}")
-  endif()
-  # a rejection must be a clean one: no crash, no sanitizer report, no
-  # uncaught exception (an exit code alone does not tell)
-  if(NOT rc MATCHES "^[0-9]+$")
-    message(FATAL_ERROR "FAIL ${name}: ended by '${rc}'\n${all}")
-  endif()
-  foreach(crash "Segmentation fault" "AddressSanitizer" "LeakSanitizer" "runtime error:"
-                "terminate called" "unknown exception")
-    string(FIND "${all}" "${crash}" crash_pos)
-    if(NOT crash_pos EQUAL -1)
-      message(FATAL_ERROR "FAIL ${name}: the output shows '${crash}'\n${all}")
-    endif()
-  endforeach()
-  string(FIND "${all_flat}" "${fragment}" pos)
-  if(pos EQUAL -1)
-    message(FATAL_ERROR "FAIL ${name}: output lacks '${fragment}'\n${all}")
-  endif()
-  message(STATUS "PASS ${name}")
-  set(LAST_OUTPUT "${all}" PARENT_SCOPE)
-endfunction()
+include(${TEST_DIR}/program_checks.cmake)
 
 file(REMOVE_RECURSE ${WORK_DIR}/output)
 run_dealvem("print parameters" TRUE "subsection Contact" --print-parameters)

@@ -10,6 +10,10 @@
 // - hanging vertices of an adaptively refined deal.II mesh become extra
 //   vertices of the coarse neighbours (pentagons), boundary ids survive;
 // - a gmsh file with physical groups: boundary ids 1..4, material id 7;
+// - material ids are bodies: deal.II's plate_with_a_hole(colorize = true)
+//   gives the cells material ids 0..3, so its conversion throws (bodies
+//   that share an edge); with the material ids reset to 0 it converts to
+//   one body with the boundary ids 0..4 of the colorization;
 // - the VTK polygon format: a hand-written file and a write/read round
 //   trip with identical vertices, cells and ids;
 // - bad meshes and bad files give messages naming the cell or file:line.
@@ -129,6 +133,23 @@ main()
       if (e.at_boundary() && e.boundary_id == 0)
         left += m.vertex(e.vertices[0]).distance(m.vertex(e.vertices[1]));
     testing::check_near(left, 1., 1e-14, "hanging vertices: left side keeps boundary id 0");
+  }
+
+  // a colorized deal.II mesh: material ids 0..3 are four bodies
+  {
+    dealii::Triangulation<2> tria;
+    dealii::GridGenerator::plate_with_a_hole(tria, 0.4, 1., 1., 1., 1., 1., dealii::Point<2>(), 0, 1, 1., 2, true);
+    PolygonalMesh<2> m;
+    testing::check_throws([&] { G::from_triangulation(m, tria); }, "of different bodies (material ids) share an edge",
+                          "plate_with_a_hole(colorize = true): the material ids 0..3 are bodies that share edges");
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(0);
+    PolygonalMesh<2> one;
+    G::from_triangulation(one, tria);
+    testing::check(one.get_material_ids() == std::vector<dealii::types::material_id>{0} && one.n_cells() == 20,
+                   "plate_with_a_hole with the material ids reset: one body of 20 cells");
+    testing::check(one.get_boundary_ids() == std::vector<dealii::types::boundary_id>{0, 1, 2, 3, 4},
+                   "plate_with_a_hole with the material ids reset: boundary ids 0..4 kept");
   }
 
   // gmsh

@@ -17,7 +17,9 @@
 //   are 1 on x-components and 0 on y-components (1e-13);
 // - the local DoF indices are those of the DoF handler, the boundary ids of
 //   the edges those of the mesh;
-// - asking for a value that was not requested in the UpdateFlags throws.
+// - asking for a value that was not requested in the UpdateFlags throws;
+// - a VEMValues made from a DoF handler whose distribute_dofs() was not
+//   called throws ExcNoDoFsDistributed (not a message about the order).
 #include <deal.II/base/function.h>
 #include <deal.II/lac/full_matrix.h>
 
@@ -226,5 +228,26 @@ main()
       }
     testing::check(thrown, "reinit on a cell that does not exist throws naming it");
   }
+  // a DoF handler without DoFs: both with the default quadrature degree
+  // (which is derived from the order) and with an explicit one
+  for (const unsigned int quadrature_degree : {0u, 4u})
+    {
+      PolygonalMesh<2> mesh;
+      PolygonalMeshGenerators::structured_quads(mesh, P(0, 0), P(1, 1), 2, 2);
+      VEMDoFHandler<2> dof_handler(mesh);
+      bool             thrown = false;
+      try
+        {
+          VEMValues<2> vem_values(dof_handler, dealii::update_gradients, quadrature_degree);
+        }
+      catch (const ExcNoDoFsDistributed &)
+        {
+          thrown = true;
+        }
+      catch (const std::exception &)
+        {}
+      testing::check(thrown, "VEMValues before distribute_dofs() throws ExcNoDoFsDistributed (quadrature degree " +
+                               std::to_string(quadrature_degree) + ")");
+    }
   return testing::finish();
 }

@@ -251,7 +251,13 @@ namespace dealvem
       bool             active;
       double           weight;
       double           gap;
-      double           pressure;            ///< recovered pressure (ContactPressure::recover(), compression > 0)
+      /// Recovered contact pressure, compression > 0: ContactPressure::recover()
+      /// applied to the nodal forces -lambda of the interface, i.e. at this
+      /// pair the value of the polynomial of degree k fitted in the
+      /// least-squares sense to the nodal forces of the closed pairs within
+      /// three sub-edges on each side (a patch fit, not the consistent solve
+      /// M_Gamma p = -lambda of ContactPressure::consistent()); zero when open.
+      double           pressure;
       double           lumped_pressure;     ///< -lambda / weight
       double           multiplier;          ///< raw multiplier lambda (a nodal force)
       bool             at_open_end;         ///< see ContactNodePair::at_open_end

@@ -74,6 +74,8 @@ namespace dealvem
       distributed
     };
 
+    /// A problem on the processes of @p comm, serial or distributed as
+    /// @p parallelism says; parse_parameters() sets it up.
     explicit ElasticityProblem(const MPI_Comm    comm        = MPI_COMM_WORLD,
                                const Parallelism parallelism = Parallelism::automatic);
 

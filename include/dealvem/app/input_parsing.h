@@ -107,8 +107,10 @@ namespace dealvem
     /// Size estimate of a run, see estimate_run_size().
     struct RunSizeEstimate
     {
-      /// Cells and DoFs of the largest (last) refinement cycle, all bodies.
-      double cells = 0, dofs = 0;
+      /// Cells of the largest (last) refinement cycle, all bodies.
+      double cells = 0;
+      /// DoFs of the largest (last) refinement cycle, all bodies.
+      double dofs = 0;
       /// Voronoi cells of the largest cycle (summed over the bodies).
       double voronoi_cells = 0;
       /// The largest number of Lloyd iterations of a Voronoi body.
@@ -156,10 +158,10 @@ namespace dealvem
     /// memory measured on quads and Voronoi cells, k = 1 and 2, up to
     /// 2e5 DoFs and to the 1e6-DoF runs of doc/benchmarks.md, rounded up.
     constexpr double base_bytes_per_dof_k2    = 1500;
-    constexpr double base_bytes_per_dof_k1    = 1500;
-    constexpr double iterative_bytes_per_dof  = 1000;
-    constexpr double direct_bytes_per_dof_log = 300;
-    constexpr double fixed_bytes              = 200e6;
+    constexpr double base_bytes_per_dof_k1    = 1500;  ///< per DoF for k = 1 (mesh, DoFs, matrix, vectors, output)
+    constexpr double iterative_bytes_per_dof  = 1000;  ///< per DoF added by CG and its preconditioner
+    constexpr double direct_bytes_per_dof_log = 300;   ///< times log2(DoFs), per DoF, added by the factors
+    constexpr double fixed_bytes              = 200e6; ///< added to every estimate, whatever the size
 
     /**
      * Estimated peak memory (bytes) of a run with @p n_dofs DoFs of order
@@ -193,9 +195,9 @@ namespace dealvem
 
     /// The limits checked by check_run_size().
     constexpr double max_dofs             = 2e7;
-    constexpr double max_voronoi_cells    = 1e7;
-    constexpr double max_lloyd_iterations = 1e5;
-    constexpr double max_lloyd_work       = 1e8;
+    constexpr double max_voronoi_cells    = 1e7; ///< Voronoi cells of the largest cycle
+    constexpr double max_lloyd_iterations = 1e5; ///< Lloyd iterations of one body
+    constexpr double max_lloyd_work       = 1e8; ///< Voronoi cells times Lloyd iterations
     /// Cell counts beyond this cannot be represented by the mesh classes,
     /// whatever 'Allow large runs' says.
     constexpr double max_representable_cells = 1e9;
@@ -241,7 +243,10 @@ namespace dealvem
     /// current and default values and the description of its pattern.
     struct Entry
     {
-      std::string path, value, default_value, pattern;
+      std::string path;          ///< "Body 1/Mesh/Type"
+      std::string value;         ///< the current value
+      std::string default_value; ///< the declared default
+      std::string pattern;       ///< the description of the pattern
     };
 
     /**
@@ -309,13 +314,18 @@ namespace dealvem
     class ParsedFunction : public dealii::Functions::ParsedFunction<2>
     {
     public:
+      /// One component per expression, in x, y and t, with the @p constants;
+      /// @p parameter names the parameter in the messages.
       ParsedFunction(const std::vector<std::string>       &expressions,
                      const std::map<std::string, double> &constants,
                      const std::string                    &parameter);
 
+      /// The value of component @p component at @p p (and the current time),
+      /// checked to be finite.
       double
       value(const dealii::Point<2> &p, const unsigned int component = 0) const override;
 
+      /// All components at @p p, checked to be finite.
       void
       vector_value(const dealii::Point<2> &p, dealii::Vector<double> &values) const override;
 

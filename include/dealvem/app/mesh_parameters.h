@@ -23,18 +23,35 @@ namespace dealvem
    */
   struct MeshParameters
   {
+    /// 'Type': a generator name, "vtk file" or "gridin file".
     std::string      type = "voronoi";
+    /// 'Lower left corner' of the generators' rectangle.
     dealii::Point<2> lower_left{0., 0.};
+    /// 'Upper right corner' of the generators' rectangle.
     dealii::Point<2> upper_right{1., 1.};
-    unsigned int     nx = 8, ny = 8;
+    /// 'Subdivisions' nx, ny of the structured, perturbed and non-convex
+    /// generators (on level 0; each refinement doubles them).
+    unsigned int     nx = 8;
+    unsigned int     ny = 8; ///< see nx
+    /// 'Number of cells' of the Voronoi generator (level 0; each
+    /// refinement multiplies it by four).
     unsigned int     n_cells = 64;
+    /// 'Lloyd iterations' of the Voronoi generator.
     unsigned int     lloyd_iterations = 20;
+    /// 'Perturbation' of "perturbed quads", relative to the cell size.
     double           perturbation = 0.2;
+    /// 'Non-convex depth' of the reflex vertex of "nonconvex" cells.
     double           nonconvex_depth = 0.3;
+    /// 'Seed' of the random generators.
     unsigned int     seed = 1;
+    /// 'File name' of the file types, relative to the parameter file.
     std::string      file_name;
+    /// 'Material id' given to the cells of a generated mesh (a file keeps
+    /// its own).
     unsigned int     material_id = 0;
+    /// 'Boundary id offset' added to every boundary id.
     unsigned int     boundary_id_offset = 0;
+    /// 'Shift' applied to the vertices, after the transformation.
     dealii::Point<2> shift{0., 0.};
     /// Vertex map "x', y'" in x, y (muparser); empty for none.
     std::string      transformation;

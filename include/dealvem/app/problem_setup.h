@@ -64,6 +64,8 @@ namespace dealvem
   class BoundaryConditionParameters
   {
   public:
+    /// Declare the entries of the section 'Boundary conditions and loads'
+    /// (with their help strings) in the current subsection of @p prm.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
@@ -171,6 +173,7 @@ namespace dealvem
     void
     set_time(const double t);
 
+    /// The 'Function constants' (name and value) of the expressions.
     const std::map<std::string, double> &
     get_constants() const
     {

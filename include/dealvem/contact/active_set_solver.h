@@ -22,7 +22,9 @@ namespace dealvem
   /**
    * Solves the contact problem: for tied normal contact one saddle-point
    * solve; for unilateral contact the primal-dual active set strategy of
-   * Hüeber and Wohlmuth (2005).
+   * Hüeber and Wohlmuth (2005) @cite HueeberWohlmuth2005, a semismooth
+   * Newton method on the complementarity function of the normal contact
+   * conditions (in the spirit of @cite AlartCurnier1991).
    *
    * With the compressive nodal force $\mu_i = -\lambda_i \ge 0$, the
    * conditions $g_i\ge 0$, $\mu_i\ge 0$, $g_i\mu_i = 0$ are equivalent to

@@ -48,7 +48,9 @@ namespace dealvem
       coulomb,
       coulomb_penalty
     };
+    /// The normal contact model ('Contact/Normal').
     Normal     normal     = Normal::unilateral;
+    /// The tangential model ('Contact/Tangential').
     Tangential tangential = Tangential::penalty;
     /**
      * Tangential penalty $\varepsilon_t$ (stiffness per unit interface
@@ -91,14 +93,18 @@ namespace dealvem
                friction_coefficient;
     }
 
+    /// The model named @p s ("tied", "unilateral"); throws otherwise.
     static Normal
     parse_normal(const std::string &s);
+    /// The model named @p s ("frictionless", "penalty", "multipliers",
+    /// "coulomb", "coulomb penalty"); throws otherwise.
     static Tangential
     parse_tangential(const std::string &s);
 
     /// The parameter names of the models (inverse of the parse functions).
     static std::string
     normal_name(const Normal n);
+    /// The parameter name of @p t (inverse of parse_tangential()).
     static std::string
     tangential_name(const Tangential t);
   };
@@ -134,14 +140,21 @@ namespace dealvem
     ContactScales(const MaterialLibrary<2>                    &laws,
                   const std::vector<NodeInsertion::Interface> &interfaces);
 
-    double E_min = 0, h_min = 0;
+    /// The smallest Young's modulus (characteristic stiffness) of the bodies.
+    double E_min = 0;
+    /// The shortest paired sub-edge of the interfaces.
+    double h_min = 0;
 
+    /// $E_{min}/h_{min}$, the scale of the constant $c$ of the active-set
+    /// update (units of a stiffness per length).
     double
     complementarity_constant() const
     {
       return E_min / h_min;
     }
 
+    /// The stick penalty: ContactSettings::penalty if positive, else
+    /// ContactSettings::penalty_factor $E_{min}/h_{min}$.
     double
     penalty(const ContactSettings &settings) const
     {
@@ -159,7 +172,7 @@ namespace dealvem
      * which grows with the factor, leaves too few digits for the pressures.
      */
     static constexpr double min_penalty_factor = 1e-6;
-    static constexpr double max_penalty_factor = 1e8;
+    static constexpr double max_penalty_factor = 1e8; ///< see min_penalty_factor
 
     /**
      * Throw unless the stick penalty that penalty() gives for @p settings
@@ -242,6 +255,9 @@ namespace dealvem
       double           imposed_value;
     };
 
+    /// The contact rows of @p pairs on the DoFs of @p dof_handler, with
+    /// the models of @p settings and the stick penalty @p penalty (used by
+    /// the penalty models only).
     ContactAssembler(const VEMDoFHandler<dim>            &dof_handler,
                      const std::vector<ContactNodePair> &pairs,
                      const ContactSettings              &settings,
@@ -343,12 +359,14 @@ namespace dealvem
     std::vector<double>
     tangential_forces(const dealii::Vector<double> &solution) const;
 
+    /// The stick penalty of the constructor.
     double
     get_penalty() const
     {
       return penalty;
     }
 
+    /// The pairs of the constructor.
     const std::vector<ContactNodePair> &
     get_pairs() const
     {
@@ -378,6 +396,27 @@ namespace dealvem
                             const unsigned int                       i,
                             const double                             c[4],
                             double                                  &value) const;
+
+    /**
+     * The rule for redundant constraints (see the class documentation),
+     * used by assemble() and assemble_friction(): if the constraint row
+     * @p c of pair @p i (the normal one, or the tangential stick one when
+     * @p tangential) involves only DoFs that @p constraints fix, check
+     * that the value they impose agrees with @p required (with
+     * @p unilateral, a normal value may also exceed it: an open gap), list
+     * the constraint in `dropped` and return true; throw an error naming
+     * the pair, the constraint and both values if they disagree. Return
+     * false if the row is not fixed. Tolerance: 1e-12 relative to the
+     * values compared, at least 1e-12 times the tributary length of the
+     * pair (the round-off of the initial gap).
+     */
+    bool
+    drop_if_fixed(const dealii::AffineConstraints<double> &constraints,
+                  const unsigned int                       i,
+                  const double                             c[4],
+                  const bool                               tangential,
+                  const double                             required,
+                  const bool                               unilateral) const;
 
     const VEMDoFHandler<dim>     &dof_handler;
     std::vector<ContactNodePair>  pairs;

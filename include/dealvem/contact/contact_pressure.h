@@ -57,6 +57,10 @@ namespace dealvem
    * program fits degree k: Hertz inside $0.8a$, level 1: 0.54 % (k = 1) and
    * 0.44 % (k = 2) of $p_0$. Open pairs carry no pressure (zero), and only
    * closed pairs enter a fit, so the recovery keeps $g_i p_i = 0$.
+   *
+   * The exactness it keeps is that of the contact patch test
+   * @cite TaylorPapadopoulos1991; the accuracy figures are against Hertz's
+   * solution @cite Hertz1882, @cite Johnson1985.
    */
   namespace ContactPressure
   {

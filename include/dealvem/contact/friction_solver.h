@@ -23,7 +23,10 @@ namespace dealvem
    * One quasi-static load step of node-to-node contact with Coulomb
    * friction, solved by a semismooth Newton method, written as a
    * primal-dual active set over the pair states open / stick / slip
-   * (Hüeber, Stadler and Wohlmuth, SIAM J. Sci. Comput. 30, 2008).
+   * (Hüeber, Stadler and Wohlmuth, SIAM J. Sci. Comput. 30, 2008,
+   * @cite HueeberStadlerWohlmuth2008). Its test against the partial slip
+   * of Cattaneo and Mindlin (tutorial step-4) follows
+   * @cite Mindlin1949 and @cite Johnson1985.
    *
    * Per pair $i$ (tributary weight $w_i$, normal multiplier $\lambda_{n,i}$,
    * tangential nodal force $\lambda_{t,i}$, see

@@ -38,14 +38,14 @@ namespace dealvem
    */
   struct ContactNodePair
   {
-    unsigned int           master_entity;
-    unsigned int           slave_entity;
-    bool                   is_midpoint = false;
-    dealii::Point<2>       master_location;
-    dealii::Point<2>       slave_location;
-    dealii::Tensor<1, 2>   normal;
-    dealii::Tensor<1, 2>   tangent;
-    double                 initial_gap = 0;
+    unsigned int           master_entity;      ///< vertex or edge index (see is_midpoint) on the master side
+    unsigned int           slave_entity;       ///< vertex or edge index on the slave side
+    bool                   is_midpoint = false; ///< a pair of edge midpoints (k = 2)
+    dealii::Point<2>       master_location;    ///< position of the master node
+    dealii::Point<2>       slave_location;     ///< position of the slave node
+    dealii::Tensor<1, 2>   normal;             ///< contact normal n
+    dealii::Tensor<1, 2>   tangent;            ///< tangent t = (-n_y, n_x)
+    double                 initial_gap = 0;    ///< g_0 = (x_B - x_A).n
     /// Tributary weight (length) of the node on the interface: the sum over
     /// the slave sub-edges at the node of L/2 (k = 1) or L/6 at an end and
     /// 2L/3 at the midpoint (k = 2, Simpson); the diagonal of the lumped
@@ -68,9 +68,10 @@ namespace dealvem
    */
   struct ContactSegment
   {
-    unsigned int first, second;
-    unsigned int midpoint = dealii::numbers::invalid_unsigned_int;
-    double       length   = 0;
+    unsigned int first;  ///< the pair at one end
+    unsigned int second; ///< the pair at the other end
+    unsigned int midpoint = dealii::numbers::invalid_unsigned_int; ///< the midpoint pair (k = 2), else invalid
+    double       length   = 0; ///< length on the slave side
   };
 
   /**
@@ -128,10 +129,13 @@ namespace dealvem
    *
    * After insertion both sides carry the same vertices along the overlap
    * (and, for k = 2, the same sub-edges, whose midpoints are paired too).
+   * Splitting the edges of the polygons so that contact can be enforced
+   * node to node follows @cite WriggersRustReddy2016.
    */
   class NodeInsertion
   {
   public:
+    /// The tolerances of the insertion rules ('Contact' section).
     struct Settings
     {
       /// Nodes closer than this times the local edge length are merged
@@ -154,10 +158,10 @@ namespace dealvem
     /// A node inside the overlap that did not get a partner.
     struct UnpairedNode
     {
-      bool             on_master;
-      unsigned int     vertex;
-      dealii::Point<2> location;
-      std::string      reason;
+      bool             on_master; ///< the node is on the master side
+      unsigned int     vertex;    ///< its vertex index in the mesh
+      dealii::Point<2> location;  ///< its position
+      std::string      reason;    ///< why it has no partner (for the messages)
     };
 
     /// A gap that the rule could not tell from a discretisation gap.
@@ -181,7 +185,7 @@ namespace dealvem
       double       max_merge_shift   = 0; ///< largest vertex move by a merge
       unsigned int n_master_edges    = 0; ///< master interface edges after insertion
       unsigned int n_slave_edges     = 0; ///< slave interface edges after insertion
-      std::vector<UnpairedNode> unpaired;
+      std::vector<UnpairedNode> unpaired; ///< nodes of the overlap left without a partner
       /// pairs whose gap is kept (above the coordinate precision): real
       /// gaps and penetrations, and the undecided ones below
       unsigned int n_kept_gaps  = 0;
@@ -202,20 +206,23 @@ namespace dealvem
     /// Everything insert() creates for one interface.
     struct Interface
     {
-      dealii::types::boundary_id   master_id = 0, slave_id = 0;
-      unsigned int                 degree    = 1;
-      unsigned int                 index     = 0;
-      std::vector<ContactNodePair> pairs;
-      std::vector<ContactSegment>  segments;
-      Report                       report;
+      dealii::types::boundary_id   master_id = 0; ///< boundary id of the master side
+      dealii::types::boundary_id   slave_id  = 0; ///< boundary id of the slave side
+      unsigned int                 degree    = 1; ///< the order k (k = 2 pairs the midpoints too)
+      unsigned int                 index     = 0; ///< ContactNodePair::interface of its pairs
+      std::vector<ContactNodePair> pairs;         ///< the node pairs, along the interface
+      std::vector<ContactSegment>  segments;      ///< the paired sub-edges
+      Report                       report;        ///< what insert() did
       /// Whose normal gives the contact direction (see ContactNodePair):
       /// the flatter side's, or the bisector where both curve alike.
       enum class NormalSide
       {
-        master,
-        slave,
-        bisector
-      } normal_side = NormalSide::master;
+        master,  ///< the master's outward normal
+        slave,   ///< minus the slave's outward normal
+        bisector ///< the normalized difference of the two
+      };
+      /// The side this interface takes its normal from.
+      NormalSide normal_side = NormalSide::master;
     };
 
     /**

@@ -42,6 +42,10 @@ namespace dealvem
   class RigidBodySupport
   {
   public:
+    /// The supports of the bodies of @p dof_handler's mesh (material id =
+    /// body) by the displacement @p constraints and the contact pairs of
+    /// @p contact; with @p tangential_stick a closed pair also holds the
+    /// tangential direction.
     RigidBodySupport(const VEMDoFHandler<2>                  &dof_handler,
                      const dealii::AffineConstraints<double> &constraints,
                      const ContactAssembler<2>               &contact,
@@ -81,6 +85,7 @@ namespace dealvem
     unsigned int
     close_smallest_gaps(std::vector<bool> &closed) const;
 
+    /// The number of bodies (material ids) of the mesh.
     unsigned int
     n_bodies() const
     {

@@ -100,6 +100,9 @@ namespace dealvem
    * the tangent $\mathbb{C}$, $\gamma$ and the rule only, and reinit()
    * recomputes them only when one of these changed: on a structured mesh of
    * one material, translated cells cost nothing.
+   *
+   * References: @cite BeiraoBrezziMarini2013 (elasticity),
+   * @cite ArtioliBeiraoLovadinaSacco2017 (k >= 2).
    */
   template <int dim>
   class ElasticityOperator

@@ -34,8 +34,10 @@ namespace dealvem
   class ConnectedPieces
   {
   public:
+    /// Find the pieces of @p mesh (which must be finalized).
     explicit ConnectedPieces(const PolygonalMesh<2> &mesh);
 
+    /// The number of pieces, over all bodies.
     unsigned int
     n_pieces() const
     {
@@ -68,6 +70,7 @@ namespace dealvem
       return piece_index_in_body[p];
     }
 
+    /// The number of cells of piece @p p.
     unsigned int
     n_cells(const unsigned int p) const
     {

@@ -111,6 +111,22 @@ namespace dealvem
      * Triangulation::active_cell_iterators(). Boundary ids and material ids
      * are copied.
      *
+     * <b>Material ids are bodies.</b> In a PolygonalMesh the material id of
+     * a cell names the body it belongs to: finalize() (called here) throws
+     * ExcInvalidMesh if two cells of different material ids share an edge,
+     * since bodies interact through contact only. ContactProblem::add_body()
+     * then gives all cells of a body its index as material id, and the
+     * single-body program needs the material id of 'Mesh/Material id' on
+     * every cell. A GridGenerator function called with `colorize = true`
+     * may set material ids as well as boundary ids: in deal.II 9.4,
+     * plate_with_a_hole(..., colorize = true) with radii 0.4 and 1 and pads
+     * of 1 gives its 20 cells the material ids 0 (the 11 cells around the
+     * hole) and 1, 2, 3 (three cells each in the pads) besides the boundary ids 0
+     * left, 1 right, 2 bottom, 3 top and 4 on the hole; converting it throws
+     * (four bodies that share edges). Reset the material ids, e.g.
+     * `for (auto &cell : tria.active_cell_iterators()) cell->set_material_id(0);`,
+     * to keep the boundary ids of the colorization in one body.
+     *
      * Each polygon is made by walking the faces of its cell in
      * counter-clockwise order. Where a face has children (the neighbour
      * behind it is finer), the vertex the two children share is inserted

@@ -90,6 +90,7 @@ namespace dealvem
       /// interior edges.
       dealii::types::boundary_id boundary_id;
 
+      /// Whether the edge has one cell only (cells[1] invalid).
       bool
       at_boundary() const
       {
@@ -179,36 +180,42 @@ namespace dealvem
       return edges.size();
     }
 
+    /// Vertex @p i.
     const dealii::Point<dim> &
     vertex(const unsigned int i) const
     {
       return vertices[i];
     }
 
+    /// All vertices, in the order of their indices.
     const std::vector<dealii::Point<dim>> &
     get_vertices() const
     {
       return vertices;
     }
 
+    /// Cell @p c.
     const Cell &
     cell(const unsigned int c) const
     {
       return cells[c];
     }
 
+    /// All cells, in the order of their indices.
     const std::vector<Cell> &
     get_cells() const
     {
       return cells;
     }
 
+    /// Edge @p e (after finalize()).
     const Edge &
     edge(const unsigned int e) const
     {
       return edges[e];
     }
 
+    /// All edges (after finalize()), in the order of their indices.
     const std::vector<Edge> &
     get_edges() const
     {

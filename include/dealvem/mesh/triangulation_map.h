@@ -65,7 +65,9 @@ namespace dealvem
   {
   public:
     TriangulationMap();
+    /// A copy refers to the same triangulation and mesh as @p other.
     TriangulationMap(const TriangulationMap<dim> &other);
+    /// Refer to the triangulation and mesh of @p other, with its maps.
     TriangulationMap<dim> &
     operator=(const TriangulationMap<dim> &other);
     ~TriangulationMap() override;
@@ -146,9 +148,11 @@ namespace dealvem
                                                      dealii::numbers::invalid_unsigned_int;
     }
 
+    /// The triangulation the map was made from (throws if there is none).
     const dealii::Triangulation<dim, dim> &
     get_triangulation() const;
 
+    /// The mesh the map was made for (throws if there is none).
     const PolygonalMesh<dim> &
     get_mesh() const;
 

@@ -21,12 +21,15 @@ namespace dealvem
   class JsonSummary
   {
   public:
+    /// Set the number at the dotted @p path (replacing an earlier value).
     void
     set(const std::string &path, const double value);
 
+    /// Set the string at the dotted @p path (replacing an earlier value).
     void
     set(const std::string &path, const std::string &value);
 
+    /// The same for a C string (not to be taken for a bool).
     void
     set(const std::string &path, const char *value)
     {

@@ -40,7 +40,9 @@ namespace dealvem
     /// One curve of a line plot.
     struct Series
     {
+      /// The legend entry.
       std::string                             name;
+      /// The points (x, y), in the order to join them.
       std::vector<std::pair<double, double>> points;
       /// Join the points by a line.
       bool                                    line = true;

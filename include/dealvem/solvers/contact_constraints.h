@@ -138,6 +138,8 @@ namespace dealvem
                                        const dealii::Vector<double>       &b,
                                        dealii::Vector<double>             &x) const;
 
+    /// The number of multiplier rows with displacement entries (the
+    /// constraints that condensation eliminates).
     unsigned int
     n_constraint_rows() const
     {
@@ -186,11 +188,15 @@ namespace dealvem
     /// $\lambda_r = $ value $+ \sum$ entries$_q \lambda_q$.
     struct Tied
     {
+      /// The multiplier row r.
       unsigned int                                 row = 0;
+      /// The constant part of lambda_r.
       double                                       value = 0;
+      /// The rows q and their coefficients.
       std::vector<std::pair<unsigned int, double>> entries;
     };
 
+    /// The multipliers that follow others (see Tied).
     const std::vector<Tied> &
     get_tied_rows() const
     {

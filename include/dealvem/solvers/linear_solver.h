@@ -56,18 +56,20 @@ namespace dealvem
   class LinearSolver
   {
   public:
+    /// The method (see the class documentation).
     enum class Type
     {
-      umfpack,
-      klu,
-      cg_amg
+      umfpack, ///< sparse LU (UMFPACK)
+      klu,     ///< sparse LU (KLU)
+      cg_amg   ///< conjugate gradients, preconditioned as Preconditioner says
     };
 
+    /// The preconditioner of Type::cg_amg.
     enum class Preconditioner
     {
-      automatic,
-      amg,
-      p_multigrid
+      automatic,  ///< p_multigrid with a coarse space, amg otherwise
+      amg,        ///< one AMG V-cycle of the whole matrix
+      p_multigrid ///< two-level: smoother on A, AMG on the coarse space
     };
 
     /// ML parameters (smoothed aggregation) of the AMG V-cycles.
@@ -90,10 +92,14 @@ namespace dealvem
       bool         use_rotation = true;
     };
 
+    /// How to solve.
     struct Settings
     {
+      /// The method.
       Type           type               = Type::umfpack;
+      /// CG: stop at this residual relative to the right-hand side.
       double         relative_tolerance = 1e-12;
+      /// CG: at most this many iterations (then solve() throws).
       unsigned int   max_iterations     = 10000;
       /// Preconditioner of CG (ignored by the direct solvers).
       Preconditioner preconditioner = Preconditioner::automatic;
@@ -117,6 +123,7 @@ namespace dealvem
     static Type
     parse_type(const std::string &name);
 
+    /// The name of @p t as parse_type() reads it.
     static std::string
     type_name(const Type t);
 
@@ -124,9 +131,11 @@ namespace dealvem
     static Preconditioner
     parse_preconditioner(const std::string &name);
 
+    /// The name of @p p as parse_preconditioner() reads it.
     static std::string
     preconditioner_name(const Preconditioner p);
 
+    /// A solver with @p settings; nothing is factored before solve().
     explicit LinearSolver(const Settings &settings);
 
     /// Rigid-body modes (3 vectors of the system size) for the AMG.
@@ -170,6 +179,7 @@ namespace dealvem
     Preconditioner
     effective_preconditioner() const;
 
+    /// One line for the output: the method and its preconditioner.
     std::string
     description() const;
 

@@ -42,6 +42,8 @@ namespace dealvem
   class ParallelLinearSolver
   {
   public:
+    /// A solver with the @p settings of the serial LinearSolver (type,
+    /// tolerance, iteration limit, AMG parameters).
     explicit ParallelLinearSolver(const LinearSolver::Settings &settings);
 
     /**
@@ -86,6 +88,8 @@ namespace dealvem
       return setup_time;
     }
 
+    /// One line for the output: the method, its preconditioner and the
+    /// number of processes.
     std::string
     description() const;
 

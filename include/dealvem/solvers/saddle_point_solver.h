@@ -59,19 +59,24 @@ namespace dealvem
   class SaddlePointSolver
   {
   public:
+    /// The method (see the class documentation).
     enum class Type
     {
-      umfpack,
-      klu,
-      gmres_amg,
-      cg_amg_constraints,
-      direct_constraints
+      umfpack,            ///< sparse LU of the whole saddle point (UMFPACK)
+      klu,                ///< sparse LU of the whole saddle point (KLU)
+      gmres_amg,          ///< GMRES with a block AMG preconditioner
+      cg_amg_constraints, ///< constraints condensed, CG with AMG
+      direct_constraints  ///< constraints condensed, sparse Cholesky
     };
 
+    /// How to solve.
     struct Settings
     {
+      /// The method.
       Type         type               = Type::umfpack;
+      /// Iterative methods: stop at this residual relative to the right-hand side.
       double       relative_tolerance = 1e-12;
+      /// Iterative methods: at most this many iterations.
       unsigned int max_iterations     = 2000;
       /// CG-AMG: start each Krylov iteration from the condensed displacements
       /// of the previous solve (an active-set or Newton iteration, a load
@@ -85,9 +90,11 @@ namespace dealvem
     static Type
     parse_type(const std::string &name);
 
+    /// The name of @p t as parse_type() reads it ("UMFPACK", ...).
     static std::string
     type_name(const Type t);
 
+    /// A solver with @p settings; nothing is factored before solve().
     explicit SaddlePointSolver(const Settings &settings);
 
     virtual ~SaddlePointSolver() = default;
@@ -131,6 +138,7 @@ namespace dealvem
           dealii::Vector<double>             &x,
           const dealii::Vector<double>       &b);
 
+    /// The method of the settings.
     Type
     get_type() const
     {
@@ -152,6 +160,8 @@ namespace dealvem
       return iterations;
     }
 
+    /// One line for the output: the method, its preconditioner and what the
+    /// last solve used (iterations, fallbacks).
     virtual std::string
     description() const;
 
@@ -163,11 +173,17 @@ namespace dealvem
     }
 
   protected:
+    /// The settings of the constructor.
     Settings                         settings;
+    /// The near-null space of set_near_null_space().
     std::vector<std::vector<double>> modes;
+    /// The spring directions of set_stick_directions().
     std::vector<std::vector<std::pair<unsigned int, double>>> stick_rows;
+    /// The last solve preconditioned the stick springs by tying them.
     bool                             used_stick_preconditioner = false;
+    /// See last_iterations().
     unsigned int                     iterations = 0;
+    /// See last_dropped_constraints().
     unsigned int                     n_dropped  = 0;
     /// direct constraints: the factorization (its workspace kept between
     /// active sets)
@@ -176,13 +192,20 @@ namespace dealvem
     /// it was built on is the same (pattern and values), e.g. over load steps
     /// and Newton iterations that keep the closed pairs
     std::shared_ptr<internal::AMGCache> amg_cache;
-    unsigned int                        n_amg_setups = 0, n_amg_reuses = 0;
+    /// CG-AMG: AMG hierarchies built over the solves.
+    unsigned int                        n_amg_setups = 0;
+    /// CG-AMG: solves that reused the hierarchy of amg_cache.
+    unsigned int                        n_amg_reuses = 0;
+    /// CG-AMG: the time spent building AMG hierarchies.
     double                              amg_setup_seconds = 0;
+    /// direct constraints: the last solve fell back to LU (the condensed
+    /// matrix was not symmetric positive definite).
     bool                             used_lu_fallback = false;
     /// the condensed matrix was not symmetric (slipping pairs): GMRES / LU
     bool                             used_gmres = false;
     /// the condensed displacements of the last iterative solve (warm start)
     dealii::Vector<double>           previous;
+    /// See set_context().
     std::string                      context;
   };
 } // namespace dealvem

@@ -126,6 +126,9 @@ namespace dealvem
    * Brezzi, Marini, Russo, CAMWA 66 (2013) for the enhanced space and
    * Beirão da Veiga, Brezzi, Marini, SINUM 51 (2013) for elasticity; the
    * tutorial step-1 builds the same matrices.
+   *
+   * References: @cite BeiraoBrezziMariniRusso2014,
+   * @cite BeiraoBrezziMarini2013, @cite ArtioliBeiraoLovadinaSacco2017.
    */
   template <int dim>
   class VirtualElement

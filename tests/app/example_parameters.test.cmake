@@ -1,0 +1,131 @@
+# Runs the parameter files of examples/parameters (see its README) as a
+# user would and checks the result each file states in its header:
+# - elasticity-convergence.prm: the table shows at least the rates of
+#   k = 2 on the last two cycles, less 0.2 (L2 >= 2.8, H1 and energy >= 1.8;
+#   measured 3.64, 2.35, 2.27 and 3.34, 2.17, 2.12: the coarse cycles are
+#   not yet asymptotic, so the rates come down towards 3 and 2);
+# - contact-frictionless.prm (two materials, non-matching meshes): the
+#   contact pressure is p = 10 at every pair to 1e-10 relative, the
+#   relative errors of both bodies against the exact displacement are
+#   below 1e-10; the same file under mpirun -np 2 (distributed path) gives
+#   the same pressures and errors;
+# - friction-drag.prm: in every load step the normal contact force is the
+#   load 10 (1e-10 relative); in the last step no pair sticks, the friction
+#   force is mu * 10 = 3 and the dissipated energy of the step, a rigid
+#   slide by d = 0.05, is 3 d = 0.15 (both 1e-10 relative); in the first
+#   step the block still sticks in part, and the friction force is below 3;
+# - rigid-plate-moment.prm: the errors against the linear-stress solution
+#   of a rigid plate under a force and a moment are below 1e-10;
+# - gmsh-beam.prm (mesh from beam.msh): the errors of pure bending are
+#   below 1e-10 on the file's mesh and on its refinement.
+include(${TEST_DIR}/program_checks.cmake)
+set(EXAMPLES ${SOURCE_DIR}/examples/parameters)
+file(REMOVE_RECURSE ${WORK_DIR}/output ${WORK_DIR}/np2)
+
+function(check_json_roundoff json what)
+  string(JSON value GET "${json}" ${ARGN})
+  is_roundoff("${value}" small)
+  if(NOT small)
+    message(FATAL_ERROR "FAIL ${what}: ${ARGN} = ${value}, expected below 1e-10")
+  endif()
+  message(STATUS "PASS ${what}: ${ARGN} = ${value}")
+endfunction()
+
+# |value| = expected to 1e-10 relative (the sign is a convention)
+function(check_magnitude value expected what)
+  string(REGEX REPLACE "^-" "" magnitude "${value}")
+  check_relative(${expected} ${magnitude} 10 "${what}")
+endfunction()
+
+# --- one body, convergence study
+run_dealvem("elasticity-convergence.prm" TRUE "Summary written to" ${EXAMPLES}/elasticity-convergence.prm)
+set(num "[0-9.e+-]+")
+set(l2_rate "(2\\.[89][0-9]*|[3-9]\\.[0-9]+)")
+set(h1_rate "(1\\.[89][0-9]*|[2-9]\\.[0-9]+)")
+# | cycle | cells | dofs | h | L2 | H1 | energy | L2 rate | H1 rate | energy rate |
+set(row "\\| [12] +\\| [0-9]+ +\\| [0-9]+ +\\| ${num} +\\| ${num} +\\| ${num} +\\| ${num} +\\| ${l2_rate} +\\| ${h1_rate} +\\| ${h1_rate} +\\|")
+string(REGEX MATCHALL "${row}" rows "${LAST_OUTPUT}")
+list(LENGTH rows n_rows)
+if(NOT n_rows EQUAL 2)
+  message(FATAL_ERROR "FAIL elasticity-convergence.prm: ${n_rows} of the 2 refined cycles show the rates "
+    "of k = 2\n${LAST_OUTPUT}")
+endif()
+message(STATUS "PASS elasticity-convergence.prm: rates of k = 2 on cycles 1 and 2")
+
+# --- frictionless contact of two materials, serial and with two processes
+function(check_frictionless json what)
+  foreach(key pressure_min pressure_max)
+    string(JSON p GET "${json}" contact ${key})
+    check_relative(10 ${p} 10 "${what}: contact ${key}")
+  endforeach()
+  foreach(body body0 body1)
+    foreach(norm L2 H1 energy)
+      check_json_roundoff("${json}" "${what}" errors ${body} ${norm})
+    endforeach()
+  endforeach()
+endfunction()
+run_dealvem("contact-frictionless.prm" TRUE "sigma_yy in [-10, -10]" ${EXAMPLES}/contact-frictionless.prm)
+file(READ ${WORK_DIR}/output/frictionless.json json)
+check_frictionless("${json}" "contact-frictionless.prm")
+
+execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE)
+set(mpi_flags --oversubscribe)
+if(uid STREQUAL "0")
+  list(APPEND mpi_flags --allow-run-as-root)
+endif()
+file(MAKE_DIRECTORY ${WORK_DIR}/np2)
+execute_process(COMMAND ${MPIEXEC} ${MPIEXEC_NUMPROC_FLAG} 2 ${mpi_flags} ${DEALVEM} ${EXAMPLES}/contact-frictionless.prm
+  WORKING_DIRECTORY ${WORK_DIR}/np2 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "FAIL contact-frictionless.prm, np = 2: exit code ${rc}\n${out}${err}")
+endif()
+file(READ ${WORK_DIR}/np2/output/frictionless.json json)
+string(JSON np GET "${json}" mpi processes)
+if(NOT np EQUAL 2)
+  message(FATAL_ERROR "FAIL contact-frictionless.prm, np = 2: the summary says ${np} processes")
+endif()
+check_frictionless("${json}" "contact-frictionless.prm, np = 2")
+
+# --- Coulomb friction with load steps
+run_dealvem("friction-drag.prm" TRUE "summary: output/friction-drag.json" ${EXAMPLES}/friction-drag.prm)
+file(READ ${WORK_DIR}/output/friction-drag.json json)
+string(JSON n_steps GET "${json}" load_steps converged)
+if(NOT n_steps EQUAL 4)
+  message(FATAL_ERROR "FAIL friction-drag.prm: ${n_steps} of 4 load steps converged")
+endif()
+foreach(step RANGE 1 4)
+  string(JSON fy GET "${json}" steps ${step} force_y)
+  check_magnitude(${fy} 10 "friction-drag.prm step ${step}: normal contact force")
+endforeach()
+string(JSON stick GET "${json}" steps 4 stick)
+string(JSON slip GET "${json}" steps 4 slip)
+if(NOT stick EQUAL 0 OR slip LESS 3)
+  message(FATAL_ERROR "FAIL friction-drag.prm: the last step has ${stick} sticking and ${slip} slipping pairs")
+endif()
+string(JSON fx GET "${json}" steps 4 force_x)
+check_magnitude(${fx} 3 "friction-drag.prm last step: friction force = mu * normal force")
+string(JSON energy GET "${json}" steps 4 dissipated_energy)
+check_relative(0.15 ${energy} 10 "friction-drag.prm last step: dissipated energy = mu * normal force * d")
+string(JSON stick GET "${json}" steps 1 stick)
+string(JSON fx GET "${json}" steps 1 force_x)
+string(REGEX REPLACE "^-" "" fx "${fx}")
+if(stick EQUAL 0 OR NOT fx LESS 3)
+  message(FATAL_ERROR "FAIL friction-drag.prm: step 1 has ${stick} sticking pairs and friction force ${fx}")
+endif()
+message(STATUS "PASS friction-drag.prm: step 1 sticks in part (${stick} pairs, |F_x| = ${fx} < 3)")
+
+# --- a rigid plate under a force and a moment
+run_dealvem("rigid-plate-moment.prm" TRUE "Summary written to" ${EXAMPLES}/rigid-plate-moment.prm)
+file(READ ${WORK_DIR}/output/rigid-plate.json json)
+foreach(norm L2 H1_seminorm energy)
+  check_json_roundoff("${json}" "rigid-plate-moment.prm" cycles 0 errors ${norm})
+endforeach()
+
+# --- a gmsh mesh file
+run_dealvem("gmsh-beam.prm" TRUE "Summary written to" ${EXAMPLES}/gmsh-beam.prm)
+file(READ ${WORK_DIR}/output/beam.json json)
+foreach(cycle 0 1)
+  foreach(norm L2 H1_seminorm energy)
+    check_json_roundoff("${json}" "gmsh-beam.prm" cycles ${cycle} errors ${norm})
+  endforeach()
+endforeach()
