@@ -167,11 +167,16 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
-      dealii::ParameterHandler                 prm;
-      dealvem::ElasticityProblem::declare_parameters(prm);
-      dealvem::ContactProblem::declare_parameters(prm);
-
       const std::string arg = (argc > 1 ? argv[1] : "");
+      // as many body sections as the file uses (a plain scan of its lines;
+      // an unreadable file is reported below)
+      std::error_code          ec0;
+      const bool               readable = (argc == 2 && fs::is_regular_file(arg, ec0));
+      dealii::ParameterHandler prm;
+      dealvem::ElasticityProblem::declare_parameters(prm);
+      dealvem::ContactProblem::declare_parameters(
+        prm, readable ? dealvem::ContactProblem::body_sections(arg) : dealvem::ContactProblem::default_body_sections);
+
       if (argc != 2 || arg == "-h" || arg == "--help")
         {
           std::cerr << "Usage: dealvem input.prm\n"
@@ -205,7 +210,7 @@ main(int argc, char **argv)
       // values with '{' passed ParameterHandler unchecked
       dealvem::InputParsing::check_braced_values(prm);
       const std::string directory = fs::path(arg).parent_path().string();
-      if (dealvem::ContactProblem::n_bodies(prm) > 1)
+      if (dealvem::ContactProblem::is_contact_problem(prm))
         {
           dealvem::ContactProblem problem;
           problem.parse_parameters(prm, directory);

@@ -22,6 +22,7 @@
 #include <dealvem/elasticity/material_library.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/base/number_string.h>
 #include <dealvem/base/output_file.h>
 #include <dealvem/base/run_files.h>
 #include <dealvem/postprocessing/stress_recovery.h>
@@ -64,6 +65,27 @@ namespace dealvem
       csv_file.commit();
     }
 
+    // The resultant of each interface, one line each.
+    void
+    write_resultants_csv(const std::string                                   &filename,
+                         const std::vector<ContactProblem::InterfaceResult> &interfaces)
+    {
+      OutputFile    csv_file(filename);
+      std::ostream &csv = csv_file.stream();
+      csv << "interface,master_body,slave_body,master_id,slave_id,detected,length,normal_force,"
+             "tangential_force,force_x,force_y,centre_x,centre_y,open,stick,slip\n";
+      csv << std::setprecision(15);
+      for (unsigned int k = 0; k < interfaces.size(); ++k)
+        {
+          const auto &r = interfaces[k];
+          csv << k << "," << r.master_body << "," << r.slave_body << "," << r.master_id << "," << r.slave_id << ","
+              << r.detected << "," << r.length << "," << r.normal_force << "," << r.tangential_force << ","
+              << r.force[0] << "," << r.force[1] << "," << r.centre_of_pressure[0] << ","
+              << r.centre_of_pressure[1] << "," << r.n_open << "," << r.n_stick << "," << r.n_slip << "\n";
+        }
+      csv_file.commit();
+    }
+
     // The number of nodes node insertion added on all interfaces.
     unsigned int
     inserted_nodes(const std::vector<NodeInsertion::Report> &reports)
@@ -102,14 +124,21 @@ namespace dealvem
 
 
   void
-  ContactProblem::declare_parameters(dealii::ParameterHandler &prm)
+  ContactProblem::declare_parameters(dealii::ParameterHandler &prm, const unsigned int n_body_sections)
   {
     using namespace dealii::Patterns;
-    prm.declare_entry("Number of bodies", "1", Integer(1, max_bodies),
-                      "Number of elastic bodies. Body 0 is given by the sections 'Mesh' and "
-                      "'Material', bodies 1, 2, 3 by the sections 'Body 1', 'Body 2', 'Body 3'. "
-                      "Each body's cells get the body index as material id.");
-    for (unsigned int b = 1; b < max_bodies; ++b)
+    prm.declare_entry("Number of bodies", "1", Integer(1, 100000),
+                      "Number of body sections. Body 0 is given by the sections 'Mesh' and "
+                      "'Material', bodies 1, 2, ... by the sections 'Body 1', 'Body 2', ... (any number). "
+                      "Each body's cells get the body index as material id. A mesh section with "
+                      "'Parts as bodies = true' adds one body per part of its file.");
+    const std::string part_materials_doc =
+      "With 'Mesh/Parts as bodies': the materials of the parts, 'material id : E : nu; ...' (the "
+      "ids of the mesh file); parts not listed take this section's Young's modulus and Poisson's ratio.";
+    prm.enter_subsection("Material");
+    prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
+    prm.leave_subsection();
+    for (unsigned int b = 1; b < std::max(n_body_sections, 2u); ++b)
       {
         prm.enter_subsection("Body " + std::to_string(b));
         prm.enter_subsection("Mesh");
@@ -119,6 +148,7 @@ namespace dealvem
         prm.declare_entry("Young's modulus", "1000", Double(0), "Young's modulus E (> 0).");
         prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
                           "Poisson's ratio nu, -1 < nu < 0.5.");
+        prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
         prm.leave_subsection();
         prm.enter_subsection("Exact solution");
         prm.declare_entry("Displacement", "", Anything(),
@@ -133,7 +163,24 @@ namespace dealvem
     prm.declare_entry("Pairs", "", Anything(),
                       "Contact interfaces 'master id : slave id; ...': boundary parts of two "
                       "different bodies. The master side gives the normal. With Coulomb friction an "
-                      "entry may give its own friction coefficient: 'master id : slave id : mu'.");
+                      "entry may give its own friction coefficient: 'master id : slave id : mu'. The "
+                      "entry 'auto' adds the interfaces found by contact detection: boundary edges of "
+                      "different bodies that face each other (normals opposite within 'Detection "
+                      "angle', apart by at most 'Detection distance' times the edge length), except "
+                      "those whose ids carry boundary conditions or explicit pairs; the coarser side "
+                      "is the master. The list is printed; <base name>-resultants.csv gives each interface's bodies, "
+                      "ids, length and contact force.");
+    prm.declare_entry("Detection distance", "0.5", Double(0, 10),
+                      "Pairs = auto: largest distance (gap or overlap) between facing boundary edges, "
+                      "relative to the longer of the two edges.");
+    prm.declare_entry("Detection angle", "45", Double(1, 89),
+                      "Pairs = auto: largest deviation (degrees) of the outward normals of facing "
+                      "edges from opposite.");
+    prm.declare_entry("Friction between bodies", "", Anything(),
+                      "Coulomb friction coefficients by pairs of bodies, 'body a : body b : mu; ...' "
+                      "(body indices, '*' for any body; a pair of bodies beats a '*' entry, a later "
+                      "entry an earlier one). They apply to detected interfaces and to pairs that give "
+                      "no coefficient of their own; others take 'Friction coefficient'.");
     prm.declare_entry("Normal", "unilateral", Selection("tied|unilateral"),
                       "tied: g = 0 at every pair (bilateral); unilateral: g >= 0, pressure >= 0, "
                       "complementarity, by a primal-dual active set.");
@@ -210,14 +257,90 @@ namespace dealvem
 
 
 
+  bool
+  ContactProblem::is_contact_problem(dealii::ParameterHandler &prm)
+  {
+    const unsigned int n = n_bodies(prm);
+    if (n > 1)
+      return true;
+    prm.enter_subsection("Mesh");
+    const bool parts = prm.get_bool("Parts as bodies");
+    prm.leave_subsection();
+    return parts;
+  }
+
+
+
+  unsigned int
+  ContactProblem::body_sections(const std::string &filename)
+  {
+    // a plain scan of the lines (ParameterHandler parses the file later and
+    // reports its errors): "subsection Body b", "set Number of bodies = n"
+    // and "include file", recursively
+    unsigned int                 needed = default_body_sections;
+    std::vector<std::string>     files{filename};
+    std::set<std::string>        seen;
+    while (!files.empty() && seen.size() < 100)
+      {
+        const std::string file = files.back();
+        files.pop_back();
+        if (!seen.insert(file).second)
+          continue;
+        std::ifstream in(file);
+        std::string   line;
+        while (std::getline(in, line))
+          {
+            std::istringstream words(line.substr(0, line.find('#')));
+            std::string        w0, w1, w2;
+            words >> w0 >> w1;
+            if (w0 == "subsection" && w1 == "Body" && (words >> w2))
+              {
+                unsigned long b = 0;
+                if (InputParsing::trim(w2).find_first_not_of("0123456789") == std::string::npos &&
+                    w2.size() <= 6)
+                  b = std::stoul(w2);
+                needed = std::max<unsigned int>(needed, b + 1);
+              }
+            else if (w0 == "set" && w1 == "Number")
+              {
+                const auto eq = line.find('=');
+                if (line.find("Number of bodies") != std::string::npos && eq != std::string::npos)
+                  {
+                    const std::string v = InputParsing::trim(line.substr(eq + 1, line.find('#') - eq - 1));
+                    if (!v.empty() && v.size() <= 6 && v.find_first_not_of("0123456789") == std::string::npos)
+                      needed = std::max<unsigned int>(needed, std::stoul(v));
+                  }
+              }
+            else if (w0 == "include" && !w1.empty())
+              {
+                const std::string dir = std::filesystem::path(file).parent_path().string();
+                files.push_back(w1[0] == '/' || dir.empty() ? w1 : dir + "/" + w1);
+              }
+          }
+      }
+    return std::min(needed, 100000u);
+  }
+
+
+
   void
   ContactProblem::parse_parameters(dealii::ParameterHandler &prm, const std::string &dir)
   {
     clear();
     prm_directory    = dir;
     const unsigned n = n_bodies(prm);
+    {
+      unsigned int declared = 1;
+      while (prm.subsection_path_exists({"Body " + std::to_string(declared)}))
+        ++declared;
+      AssertThrow(n <= declared,
+                  dealii::ExcMessage("Parameter 'Number of bodies' is " + std::to_string(n) + ", but only " +
+                                     std::to_string(declared) + " body sections are declared; call "
+                                     "ContactProblem::declare_parameters(prm, ContactProblem::body_sections(file)) "
+                                     "(the program does)."));
+    }
     // sections of bodies beyond the number of bodies would be ignored
-    for (unsigned int b = n; b < max_bodies; ++b)
+    for (unsigned int b = n; prm.subsection_path_exists({"Body " + std::to_string(b)}); ++b)
       InputParsing::check_section_unused(prm, "Body " + std::to_string(b),
                                          "'Number of bodies' is " + std::to_string(n) + ": section 'Body " +
                                            std::to_string(b) + "' is read only with 'Number of bodies' at least " +
@@ -231,7 +354,7 @@ namespace dealvem
     std::string exact0;
     for (unsigned int b = 0; b < n; ++b)
       {
-        // body 0: the top-level sections; body b: those of 'Body b'
+        // body section b: the top-level sections for b = 0, 'Body b' else
         const std::string name   = (b == 0 ? std::string() : "Body " + std::to_string(b));
         const std::string prefix = (b == 0 ? std::string() : name + "/");
         if (b > 0)
@@ -241,8 +364,9 @@ namespace dealvem
         body.mesh.parse_parameters(prm, prefix + "Mesh");
         prm.leave_subsection();
         prm.enter_subsection("Material");
-        const double E  = prm.get_double("Young's modulus");
-        const double nu = prm.get_double("Poisson's ratio");
+        const double      E     = prm.get_double("Young's modulus");
+        const double      nu    = prm.get_double("Poisson's ratio");
+        const std::string parts = prm.get("Part materials");
         prm.leave_subsection();
         prm.enter_subsection("Exact solution");
         body.exact = prm.get("Displacement");
@@ -256,9 +380,59 @@ namespace dealvem
         InputParsing::check_range(E, ElasticMaterial::min_youngs_modulus, ElasticMaterial::max_youngs_modulus,
                                   prefix + "Material/Young's modulus", false, false,
                                   "Choose units that bring E nearer to 1.");
-        body.material      = std::make_shared<const ElasticMaterial>(E, nu, model);
-        body.mesh.material_id = b;
-        bodies.push_back(std::move(body));
+        body.material = std::make_shared<const ElasticMaterial>(E, nu, model);
+        // 'Part materials': material id : E : nu
+        std::map<dealii::types::material_id, std::shared_ptr<const ConstitutiveLaw<2>>> part_laws;
+        for (const auto &entry : InputParsing::split(parts, ';'))
+          {
+            const std::string what   = prefix + "Material/Part materials entry '" + entry + "'";
+            const auto        fields = InputParsing::split(entry, ':', true);
+            AssertThrow(fields.size() == 3,
+                        dealii::ExcMessage("Parameter '" + what + "': expected 'material id : E : nu'."));
+            const unsigned int id   = InputParsing::parse_unsigned(fields[0], what);
+            const double       E_id = InputParsing::parse_double(fields[1], what);
+            const double       nu_id = InputParsing::parse_double(fields[2], what);
+            InputParsing::check_range(E_id, ElasticMaterial::min_youngs_modulus,
+                                      ElasticMaterial::max_youngs_modulus, what + " (Young's modulus)", false,
+                                      false, "Choose units that bring E nearer to 1.");
+            InputParsing::check_range(nu_id, -1, 0.5, what + " (Poisson's ratio)", true, true);
+            AssertThrow(part_laws.count(id) == 0,
+                        dealii::ExcMessage("Parameter '" + what + "': material id " + std::to_string(id) +
+                                           " is listed twice."));
+            part_laws[id] = std::make_shared<const ElasticMaterial>(E_id, nu_id, model);
+          }
+        AssertThrow(part_laws.empty() || body.mesh.parts_as_bodies,
+                    dealii::ExcMessage("Parameter '" + prefix + "Material/Part materials' is set, but '" + prefix +
+                                       "Mesh/Parts as bodies' is false: parts are read only from a mesh file "
+                                       "with 'Parts as bodies = true'."));
+        if (!body.mesh.parts_as_bodies)
+          {
+            body.mesh.material_id = bodies.size();
+            body.name             = "body " + std::to_string(bodies.size());
+            bodies.push_back(std::move(body));
+            continue;
+          }
+        // an assembly in one file: each material id a body
+        AssertThrow(n_cycles == 1,
+                    dealii::ExcMessage("Parameter '" + prefix + "Mesh/Parts as bodies' is true: the parts are read "
+                                       "once, so 'Convergence study/Refinement cycles' must be 1."));
+        PolygonalMesh<2> assembly;
+        body.mesh.create_mesh(assembly, 0, prm_directory);
+        const auto ids = assembly.get_material_ids();
+        for (const auto &law : part_laws)
+          AssertThrow(std::binary_search(ids.begin(), ids.end(), law.first),
+                      dealii::ExcMessage("Parameter '" + prefix + "Material/Part materials' gives material id " +
+                                         std::to_string(law.first) + ", which no cell of the mesh file '" +
+                                         body.mesh.file_name + "' has."));
+        const auto added = add_parts(assembly, *body.material, part_laws, 0);
+        for (unsigned int i = 0; i < added.size(); ++i)
+          {
+            bodies[added[i]].exact = body.exact;
+            bodies[added[i]].name  = "body " + std::to_string(added[i]) + " (material id " +
+                                    std::to_string(ids[i]) + " of " + body.mesh.file_name + ")";
+          }
+        std::cout << "  " << prefix << "Mesh: " << added.size() << " parts of '" << body.mesh.file_name
+                  << "' are bodies " << added.front() << " to " << added.back() << std::endl;
       }
 
     prm.enter_subsection("Discretization");
@@ -273,6 +447,13 @@ namespace dealvem
     prm.enter_subsection("Contact");
     for (const auto &entry : InputParsing::split(prm.get("Pairs"), ';'))
       {
+        if (InputParsing::trim(entry) == "auto")
+          {
+            AssertThrow(!opt.detect_pairs,
+                        dealii::ExcMessage("Parameter 'Contact/Pairs': 'auto' is given twice."));
+            opt.detect_pairs = true;
+            continue;
+          }
         const std::string name   = "Contact/Pairs entry '" + entry + "'";
         const auto        fields = InputParsing::split(entry, ':', true);
         AssertThrow(fields.size() == 2 || fields.size() == 3,
@@ -304,6 +485,31 @@ namespace dealvem
     opt.insertion.search_distance           = prm.get_double("Search distance");
     opt.insertion.coordinate_precision      = prm.get_double("Coordinate precision");
     opt.insertion.close_discretisation_gaps = prm.get_bool("Close discretisation gaps");
+    opt.detection.distance                  = prm.get_double("Detection distance");
+    opt.detection.max_angle                 = prm.get_double("Detection angle");
+    opt.detection.merge_fraction            = opt.insertion.merge_fraction;
+    for (const auto &entry : InputParsing::split(prm.get("Friction between bodies"), ';'))
+      {
+        const std::string what   = "Contact/Friction between bodies entry '" + entry + "'";
+        const auto        fields = InputParsing::split(entry, ':', true);
+        AssertThrow(fields.size() == 3,
+                    dealii::ExcMessage("Parameter '" + what + "': expected 'body a : body b : mu' (body "
+                                       "indices or '*')."));
+        unsigned int body[2];
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            body[k] = (InputParsing::trim(fields[k]) == "*") ? dealii::numbers::invalid_unsigned_int :
+                                                                InputParsing::parse_unsigned(fields[k], what);
+            AssertThrow(body[k] == dealii::numbers::invalid_unsigned_int || body[k] < bodies.size(),
+                        dealii::ExcMessage("Parameter '" + what + "': there is no body " +
+                                           std::to_string(body[k]) + " (the bodies are 0 to " +
+                                           std::to_string(bodies.size() - 1) + ")."));
+          }
+        const double mu = InputParsing::parse_double(fields[2], what);
+        InputParsing::check_range(mu, 0, 1e6, what + " (friction coefficient)", false, false,
+                                  "The Coulomb friction coefficient is a number >= 0.");
+        set_friction_coefficient(body[0], body[1], mu);
+      }
     const std::string tangential_name       = prm.get("Tangential");
     prm.leave_subsection();
     if (root && cs.tangential != ContactSettings::Tangential::penalty &&
@@ -343,9 +549,11 @@ namespace dealvem
 
     check_setup();
     {
+      // (the parts of an assembly file are read already)
       std::vector<const MeshParameters *> meshes;
       for (const auto &b : bodies)
-        meshes.push_back(&b.mesh);
+        if (b.given == nullptr)
+          meshes.push_back(&b.mesh);
       InputParsing::check_run_size(meshes, n_cycles, opt.degree, prm.get_bool("Allow large runs"), prm_directory,
                                    opt.solver == "UMFPACK" || opt.solver == "KLU" ?
                                      InputParsing::SolverKind::direct :
@@ -363,8 +571,9 @@ namespace dealvem
                            const unsigned int        boundary_id_offset)
   {
     const unsigned int b = bodies.size();
-    AssertThrow(b < dealii::numbers::invalid_material_id,
-                dealii::ExcMessage("ContactProblem::add_body(): at most 255 bodies (material ids 0..254)."));
+    AssertThrow(b < max_bodies,
+                dealii::ExcMessage("ContactProblem::add_body(): at most " + std::to_string(max_bodies) +
+                                   " bodies."));
     AssertThrow(mesh.n_cells() > 0,
                 dealii::ExcMessage("ContactProblem::add_body(): the mesh of body " + std::to_string(b) +
                                    (mesh.name.empty() ? std::string() : " ('" + mesh.name + "')") +
@@ -390,8 +599,67 @@ namespace dealvem
     body.given    = given;
     body.material = material.clone();
     body.mesh.material_id = b;
+    body.name             = "body " + std::to_string(b);
     bodies.push_back(std::move(body));
     return b;
+  }
+
+
+
+  std::vector<unsigned int>
+  ContactProblem::add_parts(const PolygonalMesh<2>                                                         &mesh,
+                            const ConstitutiveLaw<2>                                                       &material,
+                            const std::map<dealii::types::material_id, std::shared_ptr<const ConstitutiveLaw<2>>> &part_laws,
+                            const unsigned int boundary_id_offset)
+  {
+    std::vector<unsigned int> added;
+    const auto                ids   = mesh.get_material_ids();
+    const auto                parts = mesh.split_by_material_id();
+    for (unsigned int i = 0; i < parts.size(); ++i)
+      {
+        const auto         it  = part_laws.find(ids[i]);
+        const unsigned int b   = add_body(parts[i], it != part_laws.end() && it->second ? *it->second : material,
+                                        boundary_id_offset);
+        bodies[b].name = "body " + std::to_string(b) + " (material id " + std::to_string(ids[i]) + ")";
+        added.push_back(b);
+      }
+    return added;
+  }
+
+
+
+  void
+  ContactProblem::set_friction_coefficient(const unsigned int body_a, const unsigned int body_b, const double mu)
+  {
+    AssertThrow(std::isfinite(mu) && mu >= 0 && mu <= 1e6,
+                dealii::ExcMessage("ContactProblem::set_friction_coefficient(" + std::to_string(body_a) + ", " +
+                                   std::to_string(body_b) + ", mu): the friction coefficient must be a number "
+                                   "from 0 to 1e6."));
+    body_friction.insert(body_friction.begin(), std::make_tuple(body_a, body_b, mu));
+  }
+
+
+
+  double
+  ContactProblem::friction_between(const unsigned int a, const unsigned int b) const
+  {
+    const unsigned int any = dealii::numbers::invalid_unsigned_int;
+    // a pair of bodies first, then one body and a wildcard, then two
+    // wildcards; the latest entry of a kind wins (body_friction is latest
+    // first)
+    for (const unsigned int wildcards : {0u, 1u, 2u})
+      for (const auto &[x, y, mu] : body_friction)
+        {
+          const unsigned int n_any = (x == any) + (y == any);
+          if (n_any != wildcards)
+            continue;
+          const auto matches = [&](const unsigned int p, const unsigned int q) {
+            return (x == any || x == p) && (y == any || y == q);
+          };
+          if (matches(a, b) || matches(b, a))
+            return mu;
+        }
+    return -1;
   }
 
 
@@ -443,6 +711,8 @@ namespace dealvem
     bodies.clear();
     contact_pairs.clear();
     pair_friction.clear();
+    body_friction.clear();
+    opt.detect_pairs = false;
     bc.clear();
     n_cycles = 1;
     prm_directory.clear();
@@ -471,6 +741,11 @@ namespace dealvem
                     dealii::ExcMessage("Parameter 'Contact/Friction coefficient' is " + mu.str() +
                                        ", but 'Contact/Tangential' is '" +
                                        tangential_name +
+                                       "': a friction coefficient needs 'Tangential = coulomb' or "
+                                       "'coulomb penalty'."));
+        AssertThrow(body_friction.empty(),
+                    dealii::ExcMessage("Parameter 'Contact/Friction between bodies' gives friction coefficients, "
+                                       "but 'Contact/Tangential' is '" + tangential_name +
                                        "': a friction coefficient needs 'Tangential = coulomb' or "
                                        "'coulomb penalty'."));
         for (unsigned int i = 0; i < pair_friction.size(); ++i)
@@ -503,9 +778,18 @@ namespace dealvem
     InputParsing::check_range(opt.insertion.search_distance, 0, 1e300, "Contact/Search distance", false, false);
     InputParsing::check_range(opt.insertion.coordinate_precision, 0, 0.01, "Contact/Coordinate precision", false,
                               false);
-    AssertThrow(bodies.size() == 1 || !contact_pairs.empty(),
+    AssertThrow(bodies.size() == 1 || !contact_pairs.empty() || opt.detect_pairs,
                 dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
-                                   std::to_string(bodies.size()) + " bodies: name at least one contact pair."));
+                                   std::to_string(bodies.size()) + " bodies: name at least one contact pair, or "
+                                   "'auto' to detect them."));
+    for (const auto &[a, b, mu] : body_friction)
+      for (const unsigned int body : {a, b})
+        AssertThrow(body == dealii::numbers::invalid_unsigned_int || body < bodies.size(),
+                    dealii::ExcMessage("ContactProblem::set_friction_coefficient(): there is no body " +
+                                       std::to_string(body) + " (there are " + std::to_string(bodies.size()) +
+                                       ")."));
+    InputParsing::check_range(opt.detection.distance, 0, 10, "Contact/Detection distance");
+    InputParsing::check_range(opt.detection.max_angle, 1, 89, "Contact/Detection angle");
     AssertThrow(opt.n_load_steps >= 1 && opt.n_load_steps <= 100000,
                 dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(opt.n_load_steps) +
                                    ": it must be at least 1 (and at most 100000)."));
@@ -530,8 +814,9 @@ namespace dealvem
   ContactProblem::run()
   {
     check_setup();
-    contact_settings                       = opt.contact;
-    contact_settings.friction_coefficients = pair_friction;
+    // (the friction coefficients of the pairs are set per cycle, when the
+    // detected interfaces are known: insert_nodes())
+    contact_settings = opt.contact;
     // with several MPI processes every process computes the same
     // postprocessing from the gathered solution; process 0 alone prints and
     // writes (the flags and std::cout are restored on the way out, also
@@ -672,6 +957,8 @@ namespace dealvem
     std::vector<dealii::Point<2>>                         original_vertices;
     VEMDoFHandler<2>                                      dof_handler;
     std::vector<ContactNodePair>                          pairs;
+    /// Master and slave body of each interface (from the boundary ids).
+    std::vector<std::array<unsigned int, 2>>              interface_bodies;
     double                                                complementarity = 0;
     std::unique_ptr<ContactAssembler<2>>                  contact;
     dealii::AffineConstraints<double>                     constraints;
@@ -745,21 +1032,24 @@ namespace dealvem
   {
     dealii::TimerOutput::Scope t(data->timer, "mesh");
     PolygonalMesh<2>          &mesh = results.mesh;
+    // the meshes of the bodies, appended at once (one validation)
+    std::vector<PolygonalMesh<2>> made(bodies.size());
+    std::vector<const PolygonalMesh<2> *> parts;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        PolygonalMesh<2> body_mesh;
         if (bodies[b].given)
-          body_mesh = *bodies[b].given;
+          made[b] = *bodies[b].given;
         else
-          bodies[b].mesh.create_mesh(body_mesh, cycle, prm_directory);
-        for (unsigned int c = 0; c < body_mesh.n_cells(); ++c)
-          body_mesh.set_material_id(c, b);
-        if (b == 0)
-          mesh = body_mesh;
-        else
-          mesh.append(body_mesh);
+          bodies[b].mesh.create_mesh(made[b], cycle, prm_directory);
+        for (unsigned int c = 0; c < made[b].n_cells(); ++c)
+          made[b].set_material_id(c, b);
+        if (b > 0)
+          parts.push_back(&made[b]);
         data->materials.add(b, bodies[b].material);
       }
+    mesh = std::move(made[0]);
+    if (!parts.empty())
+      mesh.append(parts);
     mesh.name               = "bodies";
     data->original_vertices = mesh.get_vertices();
   }
@@ -774,8 +1064,53 @@ namespace dealvem
     dealii::TimerOutput::Scope t(data->timer, "node insertion");
     PolygonalMesh<2>          &mesh       = results.mesh;
     auto                      &interfaces = results.interfaces;
-    for (unsigned int i = 0; i < contact_pairs.size(); ++i)
-      interfaces.push_back(NodeInsertion::insert(mesh, contact_pairs[i].first, contact_pairs[i].second, opt.degree,
+    // the explicit pairs, then the detected ones
+    cycle_pairs    = contact_pairs;
+    cycle_friction = pair_friction;
+    if (opt.detect_pairs)
+      {
+        dealii::TimerOutput::Scope detection_timer(data->timer, "contact detection");
+        std::set<dealii::types::boundary_id> excluded = bc.used_boundary_ids();
+        for (const auto &p : contact_pairs)
+          excluded.insert({p.first, p.second});
+        results.detection = ContactDetection::detect(mesh, excluded, ContactDetection::first_free_id(mesh),
+                                                     opt.detection);
+        std::cout << ContactDetection::describe(results.detection);
+        AssertThrow(!results.detection.interfaces.empty() || !contact_pairs.empty(),
+                    dealii::ExcMessage("Contact/Pairs = auto: no boundary parts of different bodies face each "
+                                       "other within 'Contact/Detection distance' (" +
+                                       internal::number_string(opt.detection.distance) +
+                                       " times the edge length) and 'Detection angle' (" +
+                                       internal::number_string(opt.detection.max_angle) +
+                                       " degrees); the edges whose ids carry boundary conditions are not "
+                                       "candidates."));
+        for (const auto &itf : results.detection.interfaces)
+          {
+            cycle_pairs.emplace_back(itf.master_id, itf.slave_id);
+            cycle_friction.push_back(-1);
+          }
+      }
+    // the bodies of each interface; friction between bodies for the pairs
+    // without a coefficient of their own
+    {
+      std::map<dealii::types::boundary_id, unsigned int> body_of_id;
+      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+        if (mesh.edge(e).at_boundary())
+          body_of_id.emplace(mesh.edge(e).boundary_id, mesh.cell(mesh.edge(e).cells[0]).material_id);
+      const unsigned int none = dealii::numbers::invalid_unsigned_int;
+      data->interface_bodies.clear();
+      for (unsigned int i = 0; i < cycle_pairs.size(); ++i)
+        {
+          const auto a = body_of_id.find(cycle_pairs[i].first), b = body_of_id.find(cycle_pairs[i].second);
+          data->interface_bodies.push_back({{a == body_of_id.end() ? none : a->second,
+                                             b == body_of_id.end() ? none : b->second}});
+          if (cycle_friction[i] < 0 && a != body_of_id.end() && b != body_of_id.end())
+            cycle_friction[i] = friction_between(a->second, b->second);
+        }
+    }
+    contact_settings.friction_coefficients = cycle_friction;
+    for (unsigned int i = 0; i < cycle_pairs.size(); ++i)
+      interfaces.push_back(NodeInsertion::insert(mesh, cycle_pairs[i].first, cycle_pairs[i].second, opt.degree,
                                                  opt.insertion, i));
     // a later interface may have moved a vertex shared with an earlier one
     for (auto &itf : interfaces)
@@ -1138,6 +1473,52 @@ namespace dealvem
         results.total_contact_force +=
           (-x[n + i]) * p.normal + r.tangential_traction * p.weight * p.tangent;
       }
+    // the resultant of each interface
+    step_result.interfaces.assign(interfaces.size(), InterfaceResult());
+    {
+      std::vector<double> moment_weight(interfaces.size(), 0.);
+      std::vector<dealii::Tensor<1, 2>> weighted_location(interfaces.size()), mean_location(interfaces.size());
+      std::vector<double> total_weight(interfaces.size(), 0.);
+      for (unsigned int k = 0; k < interfaces.size(); ++k)
+        {
+          auto &ir       = step_result.interfaces[k];
+          ir.master_body = d.interface_bodies[k][0];
+          ir.slave_body  = d.interface_bodies[k][1];
+          ir.master_id   = cycle_pairs[k].first;
+          ir.slave_id    = cycle_pairs[k].second;
+          ir.detected    = (k >= contact_pairs.size());
+        }
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        {
+          const auto        &p  = pairs[i];
+          const PairResult  &r  = results.pairs[i];
+          const unsigned int k  = p.interface;
+          auto              &ir = step_result.interfaces[k];
+          const double       N  = -x[n + i];
+          const double       T  = r.tangential_traction * p.weight;
+          ir.length += p.weight;
+          ir.normal_force += N;
+          ir.tangential_force += T;
+          ir.force += N * p.normal + T * p.tangent;
+          weighted_location[k] += N * r.location;
+          moment_weight[k] += N;
+          mean_location[k] += p.weight * r.location;
+          total_weight[k] += p.weight;
+          ir.n_open += (!r.active);
+          ir.n_stick += (r.active && r.status != "slip");
+          ir.n_slip += (r.status == "slip");
+        }
+      for (unsigned int k = 0; k < interfaces.size(); ++k)
+        {
+          auto &ir = step_result.interfaces[k];
+          // the centre of the normal forces; without compression, the middle
+          // of the interface
+          ir.centre_of_pressure = (moment_weight[k] > 0 ?
+                                     dealii::Point<2>(weighted_location[k] / moment_weight[k]) :
+                                     dealii::Point<2>(mean_location[k] / std::max(total_weight[k], 1e-300)));
+        }
+    }
+    results.interface_results = step_result.interfaces;
     step_result.dissipated_energy   = (friction ? fr.dissipated_energy : 0.);
     step_result.total_contact_force = results.total_contact_force;
     step_result.pairs               = results.pairs;
@@ -1315,7 +1696,10 @@ namespace dealvem
   {
     const CycleData &d = *data;
     if (opt.write_csv)
-      write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
+      {
+        write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
+        write_resultants_csv(step_prefix(d.prefix, step) + "-resultants.csv", results.interface_results);
+      }
     if (opt.write_vtu)
       {
         StressRecovery<2> step_stresses(d.dof_handler, d.materials, results.solution);
@@ -1420,7 +1804,9 @@ namespace dealvem
     if (opt.write_csv)
       {
         write_interface_csv(data->prefix + "-interface.csv", results.pairs);
-        std::cout << "  interface results: " << data->prefix << "-interface.csv" << std::endl;
+        write_resultants_csv(data->prefix + "-resultants.csv", results.interface_results);
+        std::cout << "  interface results: " << data->prefix << "-interface.csv (node pairs), " << data->prefix
+                  << "-resultants.csv (force per interface)" << std::endl;
       }
     if (opt.write_vtu)
       {
@@ -1456,10 +1842,17 @@ namespace dealvem
               << n << " DoFs, " << m << " multipliers" << std::endl
               << "  node insertion: " << n_inserted << " nodes inserted, " << pairs.size()
               << " node pairs" << std::endl;
+    // (an assembly of many interfaces: the first ones, and the warnings of all)
+    const unsigned int n_listed = 20;
     for (unsigned int i = 0; i < interfaces.size(); ++i)
       {
         const auto &r = interfaces[i].report;
-        std::cout << "    interface " << i << " (" << contact_pairs[i].first << " : " << contact_pairs[i].second
+        if (i == n_listed)
+          std::cout << "    ... " << interfaces.size() - n_listed << " more interfaces (-resultants.csv)"
+                    << std::endl;
+        if (i >= n_listed && r.unpaired.empty())
+          continue;
+        std::cout << "    interface " << i << " (" << cycle_pairs[i].first << " : " << cycle_pairs[i].second
                   << "): " << r.n_inserted_master << " + " << r.n_inserted_slave << " inserted, " << r.n_merged
                   << " merged; " << r.n_closed_gaps << " pairs coincide (largest discretisation gap closed: "
                   << r.max_closed_gap << ")";
@@ -1613,11 +2006,12 @@ namespace dealvem
     SVGPlots::write_mesh(prefix + "-stress.svg", mesh, displacement, scale, syy, "sigma_yy",
                          inserted, title.str());
     std::vector<SVGPlots::Series> series;
-    for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+    // (the first 12 interfaces of an assembly; all are in -interface.csv)
+    for (unsigned int i = 0; i < std::min<std::size_t>(cycle_pairs.size(), 12); ++i)
       {
         SVGPlots::Series s;
-        s.name = "interface " + std::to_string(i) + " (" + std::to_string(contact_pairs[i].first) +
-                 ":" + std::to_string(contact_pairs[i].second) + ")";
+        s.name = "interface " + std::to_string(i) + " (" + std::to_string(cycle_pairs[i].first) +
+                 ":" + std::to_string(cycle_pairs[i].second) + ")";
         for (const auto &r : results.pairs)
           if (r.interface == i)
             s.points.emplace_back(r.location[0], r.pressure);
@@ -1745,6 +2139,28 @@ namespace dealvem
     }
     json.set("contact.total_force_x", results.total_contact_force[0]);
     json.set("contact.total_force_y", results.total_contact_force[1]);
+    json.set("contact.interfaces", double(results.interface_results.size()));
+    json.set("contact.detected_interfaces", double(results.detection.interfaces.size()));
+    for (unsigned int k = 0; k < results.interface_results.size(); ++k)
+      {
+        const auto       &r   = results.interface_results[k];
+        const std::string key = "interfaces." + std::to_string(k) + ".";
+        json.set(key + "master_body", double(r.master_body));
+        json.set(key + "slave_body", double(r.slave_body));
+        json.set(key + "master_id", double(r.master_id));
+        json.set(key + "slave_id", double(r.slave_id));
+        json.set(key + "detected", r.detected ? "true" : "false");
+        json.set(key + "length", r.length);
+        json.set(key + "normal_force", r.normal_force);
+        json.set(key + "tangential_force", r.tangential_force);
+        json.set(key + "force_x", r.force[0]);
+        json.set(key + "force_y", r.force[1]);
+        json.set(key + "centre_x", r.centre_of_pressure[0]);
+        json.set(key + "centre_y", r.centre_of_pressure[1]);
+        json.set(key + "open", double(r.n_open));
+        json.set(key + "stick", double(r.n_stick));
+        json.set(key + "slip", double(r.n_slip));
+      }
     for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
       json.set("timings." + s.first, s.second);
     json.write(prefix + ".json");

@@ -188,6 +188,13 @@ namespace dealvem
     prm.enter_subsection("Mesh");
     mesh_parameters.parse_parameters(prm, "Mesh");
     prm.leave_subsection();
+    AssertThrow(!mesh_parameters.parts_as_bodies,
+                dealii::ExcMessage("Parameter 'Mesh/Parts as bodies' is true: the parts of the mesh file are "
+                                   "bodies in contact, which ContactProblem solves (the program does so)."));
+    for (const auto &e : InputParsing::changed_entries(prm, "Material"))
+      AssertThrow(e != "Material/Part materials",
+                  dealii::ExcMessage("Parameter 'Material/Part materials' is set, but it is read only with "
+                                     "'Mesh/Parts as bodies = true' (a contact problem)."));
 
     prm.enter_subsection("Material");
     youngs_modulus = prm.get_double("Young's modulus");

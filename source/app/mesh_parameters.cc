@@ -52,6 +52,14 @@ namespace dealvem
     prm.declare_entry("Boundary id offset", "0", Integer(0, 200),
                       "Added to every boundary id of the mesh (generators use 0 left, 1 right, "
                       "2 bottom, 3 top), so that the bodies of a contact problem have distinct ids.");
+    prm.declare_entry("Parts as bodies", "false", dealii::Patterns::Bool(),
+                      "Contact problems, file meshes: every material id of the file (a gmsh physical "
+                      "surface, the VTK field material_id) is a body of its own, numbered in the order "
+                      "of the ids from this section's body index on; the parts may be meshed "
+                      "independently (non-matching at their interfaces) or share nodes ('gridin file': "
+                      "shared nodes are duplicated, the faces between parts become boundary edges with "
+                      "id 0). Materials per part: 'Material/Part materials'. Usually combined with "
+                      "'Contact/Pairs = auto'.");
     prm.declare_entry("Shift", "0, 0", Anything(), "Translation x, y applied to the mesh.");
     prm.declare_entry("Transformation", "", Anything(),
                       "Map of the vertices 'x_new, y_new' as muparser expressions in x, y (with "
@@ -101,6 +109,11 @@ namespace dealvem
     file_name        = prm.get("File name");
     material_id      = prm.get_integer("Material id");
     boundary_id_offset = prm.get_integer("Boundary id offset");
+    parts_as_bodies    = prm.get_bool("Parts as bodies");
+    AssertThrow(!parts_as_bodies || type.find("file") != std::string::npos,
+                dealii::ExcMessage("Parameter '" + section + "/Parts as bodies' is true, but 'Type' is '" + type +
+                                   "': parts come from the material ids of a mesh file ('vtk file' or "
+                                   "'gridin file')."));
     shift            = parse_point(prm.get("Shift"), section + "/Shift");
     transformation   = prm.get("Transformation");
     if (!InputParsing::trim(transformation).empty())
@@ -152,7 +165,7 @@ namespace dealvem
         if (type == "vtk file")
           MeshIO::read_vtk(mesh, path);
         else
-          G::from_gridin_file(mesh, path, per_level ? 0 : refinement);
+          G::from_gridin_file(mesh, path, per_level ? 0 : refinement, parts_as_bodies);
       }
     if (type.find("file") == std::string::npos)
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)

@@ -110,12 +110,68 @@ namespace dealvem
             own[p] += v * v.transpose();
           }
       }
+    const auto full_rank = [](const Eigen::Matrix3d &g) {
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(g);
+      return eig.eigenvalues()(2) > 0 && eig.eigenvalues()(0) > 1e-10 * eig.eigenvalues()(2);
+    };
     std::vector<bool> held(n_pieces, false);
     for (unsigned int p = 0; p < n_pieces; ++p)
-      {
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(own[p]);
-        held[p] = (eig.eigenvalues()(2) > 0 && eig.eigenvalues()(0) > 1e-10 * eig.eigenvalues()(2));
-      }
+      held[p] = full_rank(own[p]);
+    // 1b. held through held pieces: a piece whose part of the rows that
+    // touch it and otherwise only held pieces has rank 3 is held too (any
+    // free motion vanishes on the held pieces, so these rows restrict the
+    // piece alone); repeated from the pieces just held, so that a stack or
+    // a row of many bodies resting on one another costs time linear in the
+    // rows, and the dense test of step 3 only sees pieces held through one
+    // another in a loop
+    {
+      std::vector<std::vector<unsigned int>> rows_of(n_pieces);
+      for (unsigned int r = 0; r < rows.size(); ++r)
+        if (!single[r])
+          for (const auto &e : *rows[r])
+            if (rows_of[e.first / 3].empty() || rows_of[e.first / 3].back() != r)
+              rows_of[e.first / 3].push_back(r);
+      std::vector<unsigned int> work;
+      std::vector<bool>         queued(n_pieces, false);
+      const auto                queue_neighbours = [&](const unsigned int p) {
+        for (const unsigned int r : rows_of[p])
+          for (const auto &e : *rows[r])
+            if (const unsigned int q = e.first / 3; !held[q] && !queued[q])
+              {
+                queued[q] = true;
+                work.push_back(q);
+              }
+      };
+      for (unsigned int p = 0; p < n_pieces; ++p)
+        if (held[p])
+          queue_neighbours(p);
+      while (!work.empty())
+        {
+          const unsigned int p = work.back();
+          work.pop_back();
+          queued[p] = false;
+          if (held[p])
+            continue;
+          Eigen::Matrix3d g = own[p];
+          for (const unsigned int r : rows_of[p])
+            {
+              Eigen::Vector3d v      = Eigen::Vector3d::Zero();
+              bool            others = false;
+              for (const auto &e : *rows[r])
+                if (e.first / 3 == p)
+                  v(e.first % 3) += e.second;
+                else
+                  others = others || !held[e.first / 3];
+              if (!others)
+                g += v * v.transpose();
+            }
+          if (full_rank(g))
+            {
+              held[p] = true;
+              queue_neighbours(p);
+            }
+        }
+    }
     // 2. an unheld piece that no row couples to another: its own null space
     std::vector<bool> coupled(n_pieces, false);
     for (unsigned int r = 0; r < rows.size(); ++r)

@@ -417,7 +417,9 @@ namespace dealvem
 
     template <int dim>
     void
-    from_triangulation(PolygonalMesh<dim> &mesh, const dealii::Triangulation<dim, dim> &tria)
+    from_triangulation(PolygonalMesh<dim>                    &mesh,
+                       const dealii::Triangulation<dim, dim> &tria,
+                       const bool                             separate_material_ids)
     {
       mesh.clear();
       mesh.name = "deal.II triangulation";
@@ -428,6 +430,10 @@ namespace dealvem
       std::vector<unsigned int> corners, loop, inside;
       std::vector<FaceIterator> leaves;
       std::vector<std::pair<std::array<unsigned int, 2>, dealii::types::boundary_id>> boundary_pieces;
+      // separate_material_ids: the material id that uses a vertex first,
+      // and the copies of the vertex for the other ids
+      std::map<unsigned int, dealii::types::material_id>                              vertex_owner;
+      std::map<std::pair<unsigned int, dealii::types::material_id>, unsigned int> vertex_copies;
       for (const auto &cell : tria.active_cell_iterators())
         {
           // the cell's vertices around the cell (deal.II numbers the
@@ -491,6 +497,25 @@ namespace dealvem
             }
           if (area < 0)
             std::reverse(loop.begin(), loop.end());
+          if (separate_material_ids)
+            {
+              // each material id keeps vertices of its own: the first id
+              // at a vertex uses the triangulation's, the others copies
+              const auto own = [&](const unsigned int v) {
+                const auto it = vertex_owner.try_emplace(v, cell->material_id()).first;
+                if (it->second == cell->material_id())
+                  return v;
+                const auto copy = vertex_copies.try_emplace({v, cell->material_id()}, mesh.n_vertices());
+                if (copy.second)
+                  mesh.add_vertex(mesh.vertex(v));
+                return copy.first->second;
+              };
+              for (auto &v : loop)
+                v = own(v);
+              for (auto &piece : boundary_pieces)
+                for (auto &v : piece.first)
+                  v = own(v);
+            }
           mesh.add_cell(loop, cell->material_id());
           for (const auto &piece : boundary_pieces)
             mesh.set_boundary_id(piece.first[0], piece.first[1], piece.second);
@@ -695,14 +720,21 @@ namespace dealvem
         }
 
         // a physical tag that deal.II turns into a material or boundary id
+        // (material ids of cells: 0..max_material_id, so that an assembly
+        // of many parts, one physical surface each, can be read; boundary
+        // ids: 0..254, the range of the parameter files)
         void
-        check_id(const std::string &word, const std::string &what) const
+        check_id(const std::string &word, const std::string &what, const bool material = false) const
         {
-          long long  v = 0;
-          const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
-          AssertThrow(r.ec == std::errc() && r.ptr == word.data() + word.size() && v >= 0 && v <= 254,
-                      error(what + " is '" + word + "', but it becomes a material or boundary id, which must "
-                            "be an integer from 0 to 254 (255 is reserved)."));
+          long long        v   = 0;
+          const auto       r   = std::from_chars(word.data(), word.data() + word.size(), v);
+          const long long  max = material ? PolygonalMeshGenerators::max_material_id : 254;
+          AssertThrow(r.ec == std::errc() && r.ptr == word.data() + word.size() && v >= 0 && v <= max,
+                      error(what + " is '" + word + "', but it becomes " +
+                            (material ? std::string("a material id, which must be an integer from 0 to ") +
+                                          std::to_string(max) :
+                                        std::string("a boundary id, which must be an integer from 0 to 254")) +
+                            "."));
         }
 
         void
@@ -790,8 +822,9 @@ namespace dealvem
                             error("expected " + what + ", found '" + text + "'."));
                 for (long long k = 0; k < n_physicals; ++k)
                   {
-                    check_id(words[w], "the physical tag of " + what);
-                    entity_physical[{d, tag}] = integer(words[w++], "the physical tag of " + what, 0, 254);
+                    check_id(words[w], "the physical tag of " + what, d == 2);
+                    entity_physical[{d, tag}] = integer(words[w++], "the physical tag of " + what, 0,
+                                                        d == 2 ? PolygonalMeshGenerators::max_material_id : 254);
                   }
                 if (d > 0)
                   {
@@ -1156,8 +1189,11 @@ namespace dealvem
               long long physical = 0;
               if (n_tags > 0)
                 {
-                  check_id(words[3], "the physical tag of " + what);
-                  physical = integer(words[3], "the physical tag of " + what, 0, 254);
+                  // triangles and quadrangles: material ids; lines: boundary ids
+                  const bool cell = (words[1] == "2" || words[1] == "3");
+                  check_id(words[3], "the physical tag of " + what, cell);
+                  physical = integer(words[3], "the physical tag of " + what, 0,
+                                     cell ? PolygonalMeshGenerators::max_material_id : 254);
                 }
               for (long long k = 1; k < n_tags; ++k)
                 integer(words[3 + k], "a tag of " + what, std::numeric_limits<int>::min(),
@@ -1221,7 +1257,10 @@ namespace dealvem
 
     template <int dim>
     void
-    from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename, const unsigned int n_refinements)
+    from_gridin_file(PolygonalMesh<dim> &mesh,
+                     const std::string  &filename,
+                     const unsigned int  n_refinements,
+                     const bool          separate_material_ids)
     {
       AssertThrow(std::filesystem::exists(filename),
                   dealii::ExcMessage("Mesh file '" + filename + "' does not exist."));
@@ -1247,7 +1286,7 @@ namespace dealvem
         tria.refine_global(n_refinements);
       try
         {
-          from_triangulation(mesh, tria);
+          from_triangulation(mesh, tria, separate_material_ids);
         }
       catch (const std::exception &e)
         {
@@ -1296,7 +1335,7 @@ namespace dealvem
                             const double);
     template void voronoi(PolygonalMesh<2> &, const P &, const P &, const unsigned int, const unsigned int,
                          const unsigned int);
-    template void from_triangulation(PolygonalMesh<2> &, const dealii::Triangulation<2, 2> &);
-    template void from_gridin_file(PolygonalMesh<2> &, const std::string &, const unsigned int);
+    template void from_triangulation(PolygonalMesh<2> &, const dealii::Triangulation<2, 2> &, const bool);
+    template void from_gridin_file(PolygonalMesh<2> &, const std::string &, const unsigned int, const bool);
   } // namespace PolygonalMeshGenerators
 } // namespace dealvem

@@ -4,6 +4,7 @@
 // ---------------------------------------------------------------------
 #include <dealvem/base/number_string.h>
 #include <dealvem/base/output_file.h>
+#include <dealvem/mesh/generators.h>
 #include <dealvem/mesh/mesh_io.h>
 
 #include <charconv>
@@ -425,9 +426,12 @@ namespace dealvem
                   const bool used = (is_material && types[c] != 3) || (is_boundary && types[c] == 3);
                   if (used)
                     {
-                      AssertThrow(v == std::floor(v) && v >= 0 && v <= 254,
+                      const double max = is_material ? PolygonalMeshGenerators::max_material_id : 254;
+                      AssertThrow(v == std::floor(v) && v >= 0 && v <= max,
                                   ExcInvalidMesh(t.at(lv) + field + " of cell " + std::to_string(c) + " is '" +
-                                                 t.last + "'; ids must be integers from 0 to 254."));
+                                                 t.last + "'; " + (is_material ? "material" : "boundary") +
+                                                 " ids must be integers from 0 to " + std::to_string(int(max)) +
+                                                 "."));
                       (is_material ? material : boundary)[c] = int(v);
                     }
                 }

@@ -753,25 +753,88 @@ namespace dealvem
   void
   PolygonalMesh<dim>::append(const PolygonalMesh<dim> &other)
   {
-    const unsigned int offset = vertices.size();
-    for (const auto &v : other.vertices)
-      vertices.push_back(v);
-    for (const auto &c : other.cells)
+    append(std::vector<const PolygonalMesh<dim> *>{&other});
+  }
+
+
+
+  template <int dim>
+  void
+  PolygonalMesh<dim>::append(const std::vector<const PolygonalMesh<dim> *> &others)
+  {
+    for (const PolygonalMesh<dim> *other : others)
       {
-        Cell n = c;
-        for (auto &v : n.vertices)
-          v += offset;
-        cells.push_back(n);
+        const unsigned int offset = vertices.size();
+        vertices.insert(vertices.end(), other->vertices.begin(), other->vertices.end());
+        for (const auto &c : other->cells)
+          {
+            Cell n = c;
+            for (auto &v : n.vertices)
+              v += offset;
+            cells.push_back(std::move(n));
+          }
+        for (const auto &e : other->edges)
+          if (e.at_boundary())
+            boundary_ids_by_pair[key(e.vertices[0] + offset, e.vertices[1] + offset)] = e.boundary_id;
+        for (const auto &b : other->boundary_ids_by_pair)
+          boundary_ids_by_pair.try_emplace(key(b.first.first + offset, b.first.second + offset), b.second);
       }
-    for (const auto &e : other.edges)
-      if (e.at_boundary())
-        boundary_ids_by_pair[key(e.vertices[0] + offset, e.vertices[1] + offset)] = e.boundary_id;
-    for (const auto &b : other.boundary_ids_by_pair)
-      if (boundary_ids_by_pair.count(key(b.first.first + offset, b.first.second + offset)) == 0)
-        boundary_ids_by_pair[key(b.first.first + offset, b.first.second + offset)] = b.second;
     build_edges();
     validate();
     changed("append()");
+  }
+
+
+
+  template <int dim>
+  std::vector<PolygonalMesh<dim>>
+  PolygonalMesh<dim>::split_by_material_id() const
+  {
+    const auto                                          ids = get_material_ids();
+    std::map<dealii::types::material_id, unsigned int> part;
+    for (unsigned int i = 0; i < ids.size(); ++i)
+      part[ids[i]] = i;
+    std::vector<PolygonalMesh<dim>> parts(ids.size());
+    // vertex v of this mesh in each part that uses it (one pass over the
+    // cells: the cost is linear in the size of the mesh, not in the
+    // number of parts times it)
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> local(vertices.size());
+    for (const auto &cell : cells)
+      {
+        const unsigned int p = part[cell.material_id];
+        std::vector<unsigned int> loop;
+        for (const unsigned int v : cell.vertices)
+          {
+            unsigned int w = dealii::numbers::invalid_unsigned_int;
+            for (const auto &l : local[v])
+              if (l.first == p)
+                w = l.second;
+            if (w == dealii::numbers::invalid_unsigned_int)
+              {
+                w = parts[p].add_vertex(vertices[v]);
+                local[v].emplace_back(p, w);
+              }
+            loop.push_back(w);
+          }
+        parts[p].add_cell(loop, cell.material_id);
+      }
+    for (const auto &e : edges)
+      if (e.at_boundary())
+        {
+          const unsigned int p = part[cells[e.cells[0]].material_id];
+          unsigned int       w[2];
+          for (unsigned int k = 0; k < 2; ++k)
+            for (const auto &l : local[e.vertices[k]])
+              if (l.first == p)
+                w[k] = l.second;
+          parts[p].set_boundary_id(w[0], w[1], e.boundary_id);
+        }
+    for (unsigned int p = 0; p < parts.size(); ++p)
+      {
+        parts[p].name = name + ", material id " + std::to_string(ids[p]);
+        parts[p].finalize();
+      }
+    return parts;
   }
 
 

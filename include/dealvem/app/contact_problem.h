@@ -15,6 +15,7 @@
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/contact_detection.h>
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/material.h>
@@ -24,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace dealii
@@ -39,12 +41,17 @@ namespace dealvem
    * parameter file has more than one body.
    *
    * Body 0 is described by the top-level sections "Mesh" and "Material"
-   * (as for one body), bodies 1, 2, 3 by the sections "Body 1", ... each
-   * with its own "Mesh" and "Material" subsections. Every body gets its
-   * index as material id; the "Boundary id offset" of a body's mesh keeps
-   * the boundary ids of the bodies apart. The section "Contact" lists the
+   * (as for one body), bodies 1, 2, ... by the sections "Body 1", ... each
+   * with its own "Mesh" and "Material" subsections (any number: the program
+   * declares as many sections as the file uses, see body_sections()). A
+   * mesh section with "Parts as bodies = true" reads an assembly from one
+   * file: each material id (gmsh physical surface) is a body, with its
+   * material from "Material/Part materials". Every body gets its index as
+   * material id; the "Boundary id offset" of a body's mesh keeps the
+   * boundary ids of the bodies apart. The section "Contact" lists the
    * contact pairs "master id : slave id; ..." (with Coulomb friction
-   * optionally "master id : slave id : friction coefficient") and the
+   * optionally "master id : slave id : friction coefficient"), or "auto"
+   * for the interfaces ContactDetection finds (both may be mixed), and the
    * contact options. The section "Load steps" runs the problem as a
    * sequence of quasi-static steps in the time t of the load expressions;
    * Coulomb friction (FrictionSolver) carries the pair states and slips
@@ -96,9 +103,12 @@ namespace dealvem
   class ContactProblem
   {
   public:
-    /// The number of bodies the parameter file can describe (sections
-    /// "Body 1" to "Body 3"); add_body() takes up to 255.
-    static constexpr unsigned int max_bodies = 4;
+    /// The number of body sections ("Body 0" is the top level, then
+    /// "Body 1" to "Body 3") declare_parameters() declares by default.
+    static constexpr unsigned int default_body_sections = 4;
+
+    /// The largest number of bodies (add_body(), add_parts()).
+    static constexpr unsigned int max_bodies = 100000;
 
     /// Everything but the bodies, the contact pairs and the boundary
     /// conditions: the settings of sections "Discretization", "Contact",
@@ -115,6 +125,10 @@ namespace dealvem
       /// coefficients come from add_contact_pair().)
       ContactSettings         contact;
       NodeInsertion::Settings insertion;
+      /// Detect the contact interfaces between the bodies (ContactDetection,
+      /// "Pairs = auto"), besides the pairs added by add_contact_pair().
+      bool                        detect_pairs = false;
+      ContactDetection::Settings detection;
       /// A name of parameter 'Solver/Type' (SaddlePointSolver::parse_type()),
       /// or "automatic": the direct condensed solve up to
       /// InputParsing::contact_direct_solver_max_dofs, CG-AMG above.
@@ -138,14 +152,32 @@ namespace dealvem
                             const ElasticityProblem::Parallelism parallelism = ElasticityProblem::Parallelism::automatic);
     ~ContactProblem();
 
-    /// Declare the sections of the extra bodies and of contact (the
-    /// common sections come from ElasticityProblem::declare_parameters()).
+    /// Declare the sections of the extra bodies ("Body 1" to "Body
+    /// n_body_sections - 1") and of contact (the common sections come from
+    /// ElasticityProblem::declare_parameters()).
     static void
-    declare_parameters(dealii::ParameterHandler &prm);
+    declare_parameters(dealii::ParameterHandler &prm,
+                       const unsigned int        n_body_sections = default_body_sections);
 
-    /// Number of bodies in a parsed parameter handler.
+    /**
+     * The number of body sections the parameter file @p filename (and the
+     * files it includes) needs: one more than the largest b of a
+     * "subsection Body b", at least 'Number of bodies' and at least
+     * default_body_sections. Call it before declare_parameters() to read a
+     * file with any number of bodies.
+     */
+    static unsigned int
+    body_sections(const std::string &filename);
+
+    /// Number of body sections ('Number of bodies') in a parsed parameter
+    /// handler.
     static unsigned int
     n_bodies(dealii::ParameterHandler &prm);
+
+    /// Whether a parsed parameter handler describes a contact problem:
+    /// more than one body section, or a mesh read with 'Parts as bodies'.
+    static bool
+    is_contact_problem(dealii::ParameterHandler &prm);
 
     /// Set the problem up from a parameter file: bodies, pairs,
     /// conditions and options (replacing anything set before).
@@ -162,7 +194,7 @@ namespace dealvem
      * id of its cells. The mesh is copied, its boundary ids raised by
      * @p boundary_id_offset (the ids must differ from body to body).
      * ElasticMaterial bodies must share the model (plane strain or plane
-     * stress). Up to 255 bodies.
+     * stress). Up to max_bodies bodies.
      */
     unsigned int
     add_body(const PolygonalMesh<2>      &mesh,
@@ -175,6 +207,29 @@ namespace dealvem
     add_body(const dealii::Triangulation<2, 2> &tria,
              const ConstitutiveLaw<2>          &material,
              const unsigned int                 boundary_id_offset = 0);
+
+    /**
+     * Add every material id of @p mesh (an assembly: a part per id) as a
+     * body, in increasing order of the ids, of the material @p part_laws
+     * gives for its id or else @p material; returns the body indices (the
+     * i-th for the i-th id). The parts keep the mesh's boundary ids (plus
+     * @p boundary_id_offset). Splitting costs time linear in the mesh.
+     */
+    std::vector<unsigned int>
+    add_parts(const PolygonalMesh<2>                                                         &mesh,
+              const ConstitutiveLaw<2>                                                       &material,
+              const std::map<dealii::types::material_id, std::shared_ptr<const ConstitutiveLaw<2>>> &part_laws = {},
+              const unsigned int boundary_id_offset = 0);
+
+    /**
+     * The Coulomb friction coefficient of the interfaces between bodies
+     * @p body_a and @p body_b (either order; numbers::invalid_unsigned_int
+     * for "any body"). It applies to detected interfaces and to pairs added
+     * without a coefficient of their own; a later call overrides an
+     * earlier one for the same bodies, a pair of bodies beats a wildcard.
+     */
+    void
+    set_friction_coefficient(const unsigned int body_a, const unsigned int body_b, const double mu);
 
     /// Number of bodies added (or read from the parameter file).
     unsigned int
@@ -195,6 +250,15 @@ namespace dealvem
                      const dealii::types::boundary_id slave,
                      const double                     friction_coefficient = -1,
                      const std::string               &name                 = "");
+
+    /// Detect the contact interfaces between the bodies when run() meshes
+    /// them (the same as options().detect_pairs = true).
+    void
+    detect_contact_pairs(const ContactDetection::Settings &settings = ContactDetection::Settings())
+    {
+      opt.detect_pairs = true;
+      opt.detection    = settings;
+    }
 
     /// The boundary conditions and loads (add to them in code).
     BoundaryConditionParameters &
@@ -276,6 +340,34 @@ namespace dealvem
       double           shear = 0;
     };
 
+    /**
+     * The resultant of one interface in a load step, from the nodal
+     * contact forces of its pairs: the force on the slave body (normal
+     * part: compression > 0; tangential part along the pairs' tangents),
+     * the centre of pressure (the normal forces' centre on the interface),
+     * and the pair states.
+     */
+    struct InterfaceResult
+    {
+      unsigned int               master_body = 0, slave_body = 0; ///< body indices
+      dealii::types::boundary_id master_id = 0, slave_id = 0;     ///< boundary ids of the sides
+      /// Length of the paired interface (sum of its segments on the slave side).
+      double                     length = 0;
+      /// Sum of the normal nodal forces (compression > 0) and of the
+      /// tangential ones (along each pair's tangent).
+      double                     normal_force = 0, tangential_force = 0;
+      /// Resultant force vector on the slave body.
+      dealii::Tensor<1, 2>       force;
+      /// Centre of the normal forces (the midpoint of the interface when
+      /// nothing is transmitted).
+      dealii::Point<2>           centre_of_pressure;
+      /// Pairs open, closed and sticking, closed and slipping (without
+      /// Coulomb friction every closed pair counts as stick).
+      unsigned int               n_open = 0, n_stick = 0, n_slip = 0;
+      /// Whether ContactDetection found the interface ("Pairs = auto").
+      bool                       detected = false;
+    };
+
     /// One converged load step.
     struct StepResult
     {
@@ -288,6 +380,8 @@ namespace dealvem
       double       dissipated_energy = 0;
       dealii::Tensor<1, 2> total_contact_force;
       std::vector<PairResult> pairs;
+      /// The resultant of each interface (index: the interface).
+      std::vector<InterfaceResult> interfaces;
       /// The verification of the step per body (ForceBalance): relative
       /// imbalance of force and moment, relative residual, their tolerance
       /// and the condition of the balance.
@@ -307,6 +401,11 @@ namespace dealvem
       std::vector<NodeInsertion::Report> insertion_reports;
       /// The matched interfaces (pairs and segments) of node insertion.
       std::vector<NodeInsertion::Interface> interfaces;
+      /// The interfaces ContactDetection found ("Pairs = auto"), after the
+      /// explicit ones in the numbering of the interfaces.
+      ContactDetection::Result     detection;
+      /// The resultant of each interface in the last load step.
+      std::vector<InterfaceResult> interface_results;
       /// Number of active pairs at an open end (each printed as a warning).
       unsigned int                 n_open_end_warnings = 0;
       /// Contact constraints already imposed by the displacement constraints
@@ -396,6 +495,9 @@ namespace dealvem
     {
       /// The mesh from the parameter file (used when @p given is null).
       MeshParameters                          mesh;
+      /// How messages name the body ("body 3", "body 3 (part 12 of
+      /// assembly.msh)").
+      std::string                             name;
       std::shared_ptr<const PolygonalMesh<2>>    given;
       std::shared_ptr<const ConstitutiveLaw<2>> material;
       std::string                             exact; ///< exact displacement 'ux, uy' (may be empty)
@@ -405,6 +507,17 @@ namespace dealvem
     std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> contact_pairs;
     /// Friction coefficient per pair (negative: opt.contact's).
     std::vector<double>        pair_friction;
+    /// Friction coefficients by pairs of bodies (set_friction_coefficient();
+    /// invalid_unsigned_int: any body), the later entries first.
+    std::vector<std::tuple<unsigned int, unsigned int, double>> body_friction;
+    /// The pairs and friction coefficients of the current cycle: the
+    /// explicit ones, then the detected ones (made by insert_nodes()).
+    std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> cycle_pairs;
+    std::vector<double>        cycle_friction;
+    /// The friction coefficient between two bodies from body_friction
+    /// (negative: none given).
+    double
+    friction_between(const unsigned int a, const unsigned int b) const;
     Options                    opt;
     /// The contact settings of the run: opt.contact with the pairs'
     /// friction coefficients (made by run()).

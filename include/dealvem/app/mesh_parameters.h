@@ -51,6 +51,10 @@ namespace dealvem
     unsigned int     material_id = 0;
     /// 'Boundary id offset' added to every boundary id.
     unsigned int     boundary_id_offset = 0;
+    /// 'Parts as bodies': every material id of a mesh file is a body of
+    /// its own (ContactProblem); a 'gridin file' then gets separate
+    /// vertices per material id (see PolygonalMeshGenerators::from_triangulation()).
+    bool             parts_as_bodies = false;
     /// 'Shift' applied to the vertices, after the transformation.
     dealii::Point<2> shift{0., 0.};
     /// Vertex map "x', y'" in x, y (muparser); empty for none.

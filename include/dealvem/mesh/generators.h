@@ -127,6 +127,12 @@ namespace dealvem
      * `for (auto &cell : tria.active_cell_iterators()) cell->set_material_id(0);`,
      * to keep the boundary ids of the colorization in one body.
      *
+     * With @p separate_material_ids, cells of different material ids get
+     * vertices of their own where they meet (the vertices are copied), so
+     * that a conforming mesh of an assembly, one material id per part,
+     * becomes separate bodies whose interfaces match node for node (and
+     * the faces between parts become boundary edges with id 0).
+     *
      * Each polygon is made by walking the faces of its cell in
      * counter-clockwise order. Where a face has children (the neighbour
      * behind it is finer), the vertex the two children share is inserted
@@ -148,8 +154,9 @@ namespace dealvem
      */
     template <int dim>
     void
-    from_triangulation(PolygonalMesh<dim>                         &mesh,
-                       const dealii::Triangulation<dim, dim>      &tria);
+    from_triangulation(PolygonalMesh<dim>                    &mesh,
+                       const dealii::Triangulation<dim, dim> &tria,
+                       const bool                             separate_material_ids = false);
 
     /**
      * The same, and keep the correspondence of active cells and polygons
@@ -185,8 +192,15 @@ namespace dealvem
     /// manifold) and convert it.
     template <int dim>
     void
-    from_gridin_file(PolygonalMesh<dim> &mesh, const std::string &filename,
-                     const unsigned int n_refinements = 0);
+    from_gridin_file(PolygonalMesh<dim> &mesh,
+                     const std::string  &filename,
+                     const unsigned int  n_refinements         = 0,
+                     const bool          separate_material_ids = false);
+
+    /// The largest material id a mesh file may give a cell (gmsh physical
+    /// surface, VTK "material_id"): an assembly read from one file has a
+    /// part per id. (Boundary ids in files stay 0..254.)
+    constexpr unsigned int max_material_id = 65535;
   } // namespace PolygonalMeshGenerators
 } // namespace dealvem
 

@@ -26,7 +26,8 @@ namespace dealvem
    *   ignored on polygons). Both fields are optional (default 0) for a file
    *   of polygons only; when the file has line cells, the boundary_id field
    *   is required (write_vtk() always writes both), so that a file that lost
-   *   its end is not read with every id 0. Ids must be integers 0..254.
+   *   its end is not read with every id 0. Boundary ids must be integers
+   *   0..254, material ids 0..65535 (PolygonalMeshGenerators::max_material_id).
    * Polygons given clockwise are rejected (not silently reversed): the
    * message names the file, line and cell.
    *

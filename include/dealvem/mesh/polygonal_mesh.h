@@ -263,6 +263,20 @@ namespace dealvem
     void
     append(const PolygonalMesh<dim> &other);
 
+    /// Append several meshes at once (the meshes are validated once, so
+    /// that appending many bodies costs time linear in their size).
+    void
+    append(const std::vector<const PolygonalMesh<dim> *> &others);
+
+    /**
+     * The cells of each material id as a mesh of its own (with the
+     * vertices it uses, its boundary ids, its material id), in the order of
+     * get_material_ids(); the cost is linear in the size of the mesh.
+     * Used to make one body of each part of an assembly read from one file.
+     */
+    std::vector<PolygonalMesh<dim>>
+    split_by_material_id() const;
+
     /**
      * Split the edge @p e at the point @p p (which must lie on the edge,
      * strictly between its ends): a new vertex is created and inserted into
