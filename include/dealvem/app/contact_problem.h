@@ -153,8 +153,8 @@ namespace dealvem
       /// four write_* false nothing is written (the results stay in
       /// get_results()).
       /// @var bool write_json
-      /// Write the JSON summary of each cycle (`base_name.json`, named per
-      /// cycle as above).
+      /// Write the JSON summary `base_name.json` (with several refinement
+      /// cycles one per cycle, named as the other files).
       /// @var bool write_pictures
       /// Write SVG pictures of the deformed bodies (coloured by
       /// $\sigma_{yy}$, inserted nodes marked) and of the contact pressure.

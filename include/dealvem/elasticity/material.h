@@ -55,8 +55,8 @@ namespace dealvem
                     const double nu = 0.3,
                     const Model  model = Model::plane_strain);
 
-    /// Young's modulus E (units of a stress, the units the loads are
-    /// given in).
+    /// Young's modulus E (units of a stress; tractions and pressures are
+    /// given in the same units).
     double
     youngs_modulus() const
     {
