@@ -117,13 +117,19 @@ namespace dealvem
     {
       /// Order k of the virtual elements (1 or 2).
       unsigned int  degree               = 2;
-      /// Stabilization rule and factor (see ElasticityOperator).
+      /// Stabilization rule of the element matrices (see
+      /// ElasticityOperator).
       Stabilization stabilization        = Stabilization::automatic;
+      /// Factor $\gamma$ of the stabilization (dimensionless);
+      /// check_setup() throws unless $10^{-6}\le\gamma\le 10^6$.
       double        stabilization_factor = 1.0;
       /// Normal and tangential model, penalty, friction coefficient of the
       /// pairs that give none, active-set limits. (The per-pair friction
       /// coefficients come from add_contact_pair().)
       ContactSettings         contact;
+      /// Node insertion on every contact pair: merge fraction, search
+      /// distance, coordinate precision, closing of discretisation gaps
+      /// (section "Contact" of the parameter file).
       NodeInsertion::Settings insertion;
       /// Detect the contact interfaces between the bodies (ContactDetection,
       /// "Pairs = auto"), besides the pairs added by add_contact_pair().
@@ -133,16 +139,43 @@ namespace dealvem
       /// or "automatic": the direct condensed solve up to
       /// InputParsing::contact_direct_solver_max_dofs, CG-AMG above.
       std::string  solver                = "automatic";
+      /// Relative residual tolerance of an iterative solve,
+      /// 0 < tolerance < 1 (a direct solve does not use it).
       double       solver_tolerance      = 1e-12;
+      /// Iteration limit of an iterative solve (at least 1).
       unsigned int solver_max_iterations = 10000;
+      /// CG-AMG: start each Krylov solve from the condensed displacements
+      /// of the previous one (active-set or Newton iteration, load step)
+      /// instead of from zero.
       bool         warm_start            = true;
-      /// Quasi-static load steps t = final_time * k / n_load_steps.
+      /// Number of quasi-static load steps (at least 1): step k = 1, ...,
+      /// n_load_steps solves at t = final_time * k / n_load_steps.
       unsigned int n_load_steps = 1;
+      /// The time t of the last load step (> 0); the load and Dirichlet
+      /// expressions are functions of t.
       double       final_time   = 1;
-      /// Output files under output_folder/base_name; with all four false
-      /// nothing is written (the results stay in get_results()).
+      /// Folder of the output files (relative to the working directory,
+      /// not empty), created if needed.
       std::string output_folder = "output";
+      /// Base name of the output files (not empty, no '/'): with several
+      /// refinement cycles the files of cycle c are `base_name-cycle<c>.*`,
+      /// with several load steps each step adds files `base_name-step-NNN.*`.
       std::string base_name     = "contact";
+      /// @var bool write_vtu
+      /// Write the displacements and stresses for ParaView (.vtu; with
+      /// several load steps one per step and a .pvd time series). With all
+      /// four write_* false nothing is written (the results stay in
+      /// get_results()).
+      /// @var bool write_json
+      /// Write the JSON summary `base_name.json` (with several refinement
+      /// cycles one per cycle, named as the other files).
+      /// @var bool write_pictures
+      /// Write SVG pictures of the deformed bodies (coloured by
+      /// $\sigma_{yy}$, inserted nodes marked) and of the contact pressure.
+      /// @var bool write_csv
+      /// Write the results of the node pairs (PairResult) as CSV
+      /// (`base_name-interface.csv`; with several load steps also one per
+      /// step).
       bool        write_vtu = true, write_json = true, write_pictures = true, write_csv = true;
     };
 
@@ -274,6 +307,7 @@ namespace dealvem
       return opt;
     }
 
+    /// The settings, read-only.
     const Options &
     options() const
     {
@@ -309,11 +343,22 @@ namespace dealvem
     /// Results of one contact node pair.
     struct PairResult
     {
+      /// Index of the contact pair (interface) of the node pair, in the
+      /// order of add_contact_pair().
       unsigned int     interface;
+      /// Position of the slave node in the undeformed mesh (after node
+      /// insertion).
       dealii::Point<2> location;
+      /// True for a pair of edge midpoints (k = 2), false for a pair of
+      /// vertices.
       bool             midpoint;
+      /// Whether the pair is closed (in contact) in the converged solution.
       bool             active;
+      /// Tributary length $w$ of the node on the interface
+      /// (ContactNodePair::weight); forces divided by it are tractions.
       double           weight;
+      /// Gap $g = (u_B - u_A)\cdot n + g_0$ of the converged solution
+      /// (length units; positive: open, negative: penetration).
       double           gap;
       /// Recovered contact pressure, compression > 0: ContactPressure::recover()
       /// applied to the nodal forces -lambda of the interface, i.e. at this
@@ -327,10 +372,12 @@ namespace dealvem
       bool             at_open_end;         ///< see ContactNodePair::at_open_end
       double           tangential_traction; ///< tangential force / weight
       double           slip;                ///< relative tangential displacement (u_B - u_A).t
-      /// Coulomb friction: open, stick or slip (frictionless and stick
-      /// models: open or closed), and the slip of this load step (with the
-      /// penalty variant, the plastic slip).
+      /// "open", "stick" or "slip" with Coulomb friction; "open" or
+      /// "closed" with the frictionless and stick models.
       std::string      status;
+      /// Coulomb friction: the slip of this load step (with the penalty
+      /// variant, the increment of the plastic slip); zero for open pairs
+      /// and without friction.
       double           slip_increment = 0;
       /// Tangent t of the pair (tangential traction and slip are along it).
       dealii::Tensor<1, 2> tangent;
@@ -371,14 +418,26 @@ namespace dealvem
     /// One converged load step.
     struct StepResult
     {
+      /// Number of the load step, 1 to Options::n_load_steps.
       unsigned int step;
+      /// Its time, t = final_time * step / n_load_steps.
       double       time;
       /// Newton (active-set) iterations of the step.
       unsigned int iterations;
+      /// @var unsigned int n_open
+      /// Pairs open at the end of the step.
+      /// @var unsigned int n_stick
+      /// Pairs closed and not slipping (sticking, or closed without
+      /// Coulomb friction).
+      /// @var unsigned int n_slip
+      /// Pairs slipping (Coulomb friction).
       unsigned int n_open = 0, n_stick = 0, n_slip = 0;
       /// Energy dissipated by friction in the step (zero without friction).
       double       dissipated_energy = 0;
+      /// Resultant of the contact forces (normal and tangential) on the
+      /// slave bodies at the end of the step (force units).
       dealii::Tensor<1, 2> total_contact_force;
+      /// The result of every node pair at the end of the step.
       std::vector<PairResult> pairs;
       /// The resultant of each interface (index: the interface).
       std::vector<InterfaceResult> interfaces;
@@ -387,17 +446,31 @@ namespace dealvem
       /// and the condition of the balance.
       struct Balance
       {
+        /// Index of the body (its material id).
         unsigned int body;
+        /// @var double imbalance
+        /// Relative force and moment imbalance (ForceBalance::Body::imbalance).
+        /// @var double residual
+        /// Relative residual of the equations (ForceBalance::Body::residual).
+        /// @var double tolerance
+        /// The tolerance both must meet (ForceBalance::Body::tolerance).
+        /// @var double condition
+        /// Measured condition of the balance (ForceBalance::Body::condition).
         double       imbalance, residual, tolerance, condition;
       };
+      /// One entry per body.
       std::vector<Balance> balance;
     };
 
     /// Everything a test or a user program wants to look at after run().
     struct Results
     {
+      /// The mesh of all bodies after node insertion (material id = body
+      /// index), of the last refinement cycle.
       PolygonalMesh<2>             mesh;
+      /// The node pairs at the end of the last load step.
       std::vector<PairResult>      pairs;
+      /// What node insertion did, one report per contact pair.
       std::vector<NodeInsertion::Report> insertion_reports;
       /// The matched interfaces (pairs and segments) of node insertion.
       std::vector<NodeInsertion::Interface> interfaces;
@@ -411,20 +484,44 @@ namespace dealvem
       /// Contact constraints already imposed by the displacement constraints
       /// (see ContactAssembler::get_dropped_constraints()).
       unsigned int                 n_dropped_constraints = 0;
+      /// @var unsigned int n_dofs
+      /// Number of displacement DoFs (the size of solution).
+      /// @var unsigned int n_multipliers
+      /// Number of contact multipliers (normal, and tangential ones with
+      /// multiplier-based tangential models); the saddle-point system has
+      /// n_dofs + n_multipliers unknowns.
       unsigned int                 n_dofs = 0, n_multipliers = 0;
+      /// Active-set (Newton) iterations of the last load step.
       unsigned int                 active_set_iterations = 0;
+      /// Per iteration of the last load step, the number of active pairs.
       std::vector<unsigned int>    active_set_history;
+      /// Iterations of the linear solver summed over the last load step
+      /// (1 per direct solve).
       unsigned int                 linear_iterations = 0;
       dealii::Tensor<1, 2>         total_contact_force; ///< on the slave bodies
+      /// Per body, the resultant (x, y) of the assembled loads (body force,
+      /// tractions, pressures, nodal loads) of the last load step; neither
+      /// reactions nor contact forces.
       std::vector<dealii::Tensor<1, 2>> applied_load_per_body;
+      /// The stick penalty of the contact assembler (ContactScales::penalty(),
+      /// units of E/h); only the penalty tangential models (penalty,
+      /// coulomb_penalty) use it.
       double                       penalty = 0;
       /// Cell-average stresses (xx, yy, xy) per cell.
       std::vector<std::array<double, 3>> cell_stress;
+      /// Displacements of the last load step (n_dofs entries, constraints
+      /// distributed).
       dealii::Vector<double>       solution;
+      /// One line on the saddle-point solver and its last solve
+      /// (SaddlePointSolver::description()).
       std::string                  solver;
-      /// Per body: cells, DoFs, and errors against its exact solution
-      /// (zero where none is given).
+      /// @var std::vector<unsigned int> cells_per_body
+      /// Per body, the number of cells.
+      /// @var std::vector<unsigned int> dofs_per_body
+      /// Per body, the number of DoFs (two per node of its cells).
       std::vector<unsigned int>    cells_per_body, dofs_per_body;
+      /// Per body, the errors against its exact solution (zero where none
+      /// is given).
       std::vector<ErrorNorms>      errors;
       /// Wall times of the stages (mesh, node insertion, assembly, solve).
       std::map<std::string, double> timings;
@@ -433,14 +530,19 @@ namespace dealvem
       std::vector<StepResult>      steps;
       /// Sum of the dissipated energy of the steps.
       double                       dissipated_energy = 0;
-      /// MPI processes of the run, and the contact constraint rows of the
-      /// last solve whose DoFs are owned by more than one of them.
+      /// @var unsigned int n_processes
+      /// MPI processes of the run.
+      /// @var unsigned int n_rows_across_processes
+      /// Contact constraint rows of the last solve whose DoFs are owned by
+      /// more than one process (0 on the serial path).
       unsigned int                 n_processes = 1, n_rows_across_processes = 0;
       /// Peak resident memory (VmHWM) of each process at the end of the
       /// cycle, in MB.
       std::vector<double>          peak_memory_MB;
     };
 
+    /// The results of the last refinement cycle of run() or of the last
+    /// run_cycle(); empty before.
     const Results &
     get_results() const
     {

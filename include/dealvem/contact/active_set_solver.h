@@ -84,11 +84,18 @@ namespace dealvem
   class ActiveSetSolver
   {
   public:
+    /// What solve() returns besides the solution.
     struct Result
     {
+      /// The converged active set, per pair (true: normal constraint
+      /// enforced, the pair is closed).
       std::vector<bool>         active;
+      /// Active-set iterations, i.e. saddle-point solves.
       unsigned int              n_iterations = 0;
+      /// Per iteration, the number of active pairs of the set solved with.
       std::vector<unsigned int> n_active_history;
+      /// Iterations of the linear solver summed over all saddle-point
+      /// solves (SaddlePointSolver::last_iterations(): 1 per direct solve).
       unsigned int              linear_iterations = 0;
       /// Pairs with an open initial gap closed for the first iteration so
       /// that every body is held.

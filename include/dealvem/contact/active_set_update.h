@@ -78,7 +78,10 @@ namespace dealvem
       std::vector<unsigned int> n_active_history;
       /// True once the set repeats (or at once for tied contact).
       bool converged = false;
-      /// Pairs the last update closed (inactive to active) and opened.
+      /// @var unsigned int n_closed
+      /// Pairs the last update closed (inactive to active).
+      /// @var unsigned int n_opened
+      /// Pairs the last update opened (active to inactive).
       unsigned int n_closed = 0, n_opened = 0;
       /// The complementarity residual residual() of the last solution.
       double residual = 0;
@@ -90,9 +93,11 @@ namespace dealvem
 
       /// Sets from which a plain step was taken (cycle detection).
       std::set<std::vector<bool>> visited;
-      /// Pairs released by the release extrapolation, and whether it is
-      /// still switched on.
+      /// Per pair, whether the release extrapolation released it.
       std::vector<bool> extrapolated;
+      /// Whether the release extrapolation is still switched on: starts as
+      /// ContactSettings::accelerate_active_set, and is off for the rest of
+      /// the solve once a pair it released penetrates again.
       bool              extrapolate = false;
     };
 

@@ -84,20 +84,34 @@ namespace dealvem
   class FrictionSolver
   {
   public:
+    /// What solve() returns for one load step besides the solution.
     struct Result
     {
+      /// The converged state of each pair (open, stick, slip along +t or
+      /// -t); the states to start the next load step from.
       std::vector<PairState> state;
-      /// Newton (active-set) iterations, and per iteration the numbers of
-      /// open, sticking and slipping pairs it solved with.
+      /// Newton (active-set) iterations, i.e. saddle-point solves.
       unsigned int                              n_iterations = 0;
+      /// Per iteration, the numbers of open, sticking and slipping pairs of
+      /// the states it solved with.
       std::vector<std::array<unsigned int, 3>> history;
+      /// Iterations of the linear solver summed over all saddle-point
+      /// solves (SaddlePointSolver::last_iterations(): 1 per direct solve).
       unsigned int                              linear_iterations = 0;
-      /// Per pair: relative tangential displacement $(u_B-u_A)\cdot t$, its
-      /// increment over the step (zero for open pairs), the friction nodal
-      /// force $\lambda_t$
-      /// (the slave node receives $-\lambda_t t$) and the new reference
-      /// (relative tangential displacement, or plastic slip with the
-      /// penalty) for the next step.
+      /// @var std::vector<double> slip
+      /// Per pair, the relative tangential displacement
+      /// $s_i = (u_B-u_A)\cdot t_i$ at the end of the step (length units).
+      /// @var std::vector<double> slip_increment
+      /// Per pair, the slip of this step against the reference of the last
+      /// one: $s_i$ minus the reference with multipliers, the increment of
+      /// the plastic slip with the penalty variant; zero for open pairs.
+      /// @var std::vector<double> tangential_multiplier
+      /// Per pair, the friction nodal force $\lambda_{t,i}$ (the slave node
+      /// receives $-\lambda_{t,i} t_i$).
+      /// @var std::vector<double> reference
+      /// Per pair, the reference for the next step, to pass to its solve():
+      /// the relative tangential displacement, or the plastic slip with the
+      /// penalty variant.
       std::vector<double> slip, slip_increment, tangential_multiplier, reference;
       /// Energy dissipated by friction in this step,
       /// $\sum_{\text{slip}} \lambda_{t,i}\,\Delta s_i$ (with the penalty, the

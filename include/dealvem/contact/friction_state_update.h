@@ -74,8 +74,12 @@ namespace dealvem
       bool converged = false;
       /// Pairs whose state the last update changed.
       unsigned int n_changed = 0;
-      /// Of the last solution: the slips $s_i = (u_B-u_A)\cdot t_i$ and the
-      /// friction nodal forces $\lambda_{t,i}$ (of the states solved with).
+      /// @var std::vector<double> slip
+      /// Of the last solution, per pair: the slip
+      /// $s_i = (u_B-u_A)\cdot t_i$.
+      /// @var std::vector<double> tangential_multiplier
+      /// Of the last solution, per pair: the friction nodal force
+      /// $\lambda_{t,i}$ (of the states solved with).
       std::vector<double> slip, tangential_multiplier;
 
       /// States from which a step was taken (cycle detection).
@@ -89,10 +93,18 @@ namespace dealvem
      */
     struct StepResult
     {
-      /// Per pair: the slip, its increment over the step (zero for open
-      /// pairs), the friction nodal force and the reference for the next
-      /// step (relative tangential displacement, or plastic slip with the
-      /// penalty).
+      /// @var std::vector<double> slip
+      /// Per pair, the slip $s_i = (u_B-u_A)\cdot t_i$ of the converged
+      /// solution.
+      /// @var std::vector<double> slip_increment
+      /// Per pair, the increment of the slip over the step: $s_i$ minus the
+      /// reference with multipliers, the increment of the plastic slip with
+      /// the penalty; zero for open pairs.
+      /// @var std::vector<double> tangential_multiplier
+      /// Per pair, the friction nodal force $\lambda_{t,i}$.
+      /// @var std::vector<double> reference
+      /// Per pair, the reference for the next step: the relative tangential
+      /// displacement, or the plastic slip with the penalty.
       std::vector<double> slip, slip_increment, tangential_multiplier, reference;
       /// $\sum_{\text{slip}} \lambda_{t,i}\,\Delta s_i$.
       double dissipated_energy = 0;

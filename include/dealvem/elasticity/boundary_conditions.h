@@ -114,14 +114,25 @@ namespace dealvem
     template <int dim>
     struct RigidBoundary
     {
+      /// The boundary id of the part.
       dealii::types::boundary_id id;
+      /// The nodes on its boundary edges (VEMDoFHandler::boundary_nodes()),
+      /// sorted.
       std::vector<unsigned int>  nodes;
+      /// Reference node A: the node of the part nearest to centroid.
       unsigned int               node_a;
+      /// Reference node B: the node of the part farthest from A.
       unsigned int               node_b;
+      /// The component (0 = x, 1 = y) of B left free: the one in which
+      /// $x_B - x_A$ is smaller in magnitude (y on ties).
       unsigned int               b_free_component;
+      /// Location of node A.
       dealii::Point<dim>         point_a;
+      /// Location of node B.
       dealii::Point<dim>         point_b;
+      /// Centroid of the part's boundary edges, weighted by arc length.
       dealii::Point<dim>         centroid;
+      /// Total length of the part's boundary edges.
       double                     length;
     };
 

@@ -94,6 +94,8 @@ namespace dealvem
     void
     add_nodal_load(const dealii::types::global_dof_index dof, const double value);
 
+    /// The DoF handler given to the constructor (held by reference: it
+    /// must outlive the assembler).
     const VEMDoFHandler<dim> &
     get_dof_handler() const
     {
@@ -127,6 +129,8 @@ namespace dealvem
       return materials;
     }
 
+    /// The stabilization factor $\gamma > 0$ given to the constructor
+    /// (dimensionless; it scales the stabilization of every cell).
     double
     get_gamma() const
     {

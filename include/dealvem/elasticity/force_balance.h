@@ -66,16 +66,47 @@ namespace dealvem
     /// The balance of one body.
     struct Body
     {
+      /// The body: the material id of its cells.
       dealii::types::material_id body = 0;
+      /// The area centroid of the body's cells, the point the moments are
+      /// taken about.
       dealii::Point<2>           centroid;
+      /// $s_b$: the largest distance of a vertex of the body from centroid
+      /// (length units); the lever arm that turns the moment into a force
+      /// in the imbalance.
       double                     size = 0;
-      /// Net forces and moments (about the centroid) of the applied loads,
-      /// the support reactions and the contact forces.
+      /// @var dealii::Tensor<1, 2> applied
+      /// Net force of the applied loads $f$ on the body (body force,
+      /// tractions, pressures, nodal loads).
+      /// @var dealii::Tensor<1, 2> reaction
+      /// Net force of the support reactions $P$ on the body (Dirichlet data,
+      /// rollers, point constraints).
+      /// @var dealii::Tensor<1, 2> contact
+      /// Net force of the contact forces $e$ on the body.
       dealii::Tensor<1, 2> applied, reaction, contact;
+      /// @var double applied_moment
+      /// Moment of the applied loads about centroid (counter-clockwise
+      /// positive, force times length).
+      /// @var double reaction_moment
+      /// Moment of the support reactions about centroid.
+      /// @var double contact_moment
+      /// Moment of the contact forces about centroid.
       double               applied_moment = 0, reaction_moment = 0, contact_moment = 0;
-      /// A_b and Q_b/A_b (see the class documentation).
+      /// @var double forces
+      /// $A_b$, the sum of the magnitudes of the nodal forces that act on
+      /// the body (see the class documentation); the scale of the relative
+      /// quantities below.
+      /// @var double condition
+      /// $Q_b/A_b$, the measured condition of the balance of the body.
       double forces = 0, condition = 0;
-      /// Relative imbalance, relative residual, relative tolerance.
+      /// @var double imbalance
+      /// Relative imbalance $(|F_x| + |F_y| + |M|/s_b)/A_b$ of the net force
+      /// F and moment M of all forces; 0 for a body on which nothing acts.
+      /// @var double residual
+      /// Relative residual $R_b/A_b$ of the condensed equations on the
+      /// body's DoFs; 0 for a body on which nothing acts.
+      /// @var double tolerance
+      /// Relative tolerance $\tau_b$ that imbalance and residual must meet.
       double imbalance = 0, residual = 0, tolerance = 0;
 
       /// The relative accuracy the arithmetic attains for the forces of
@@ -83,6 +114,8 @@ namespace dealvem
       double
       attainable() const;
 
+      /// Whether the body passes the verification: imbalance and residual
+      /// within tolerance, and attainable() at most max_attainable.
       bool
       ok() const
       {

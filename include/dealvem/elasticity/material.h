@@ -34,17 +34,18 @@ namespace dealvem
   class ElasticMaterial : public ConstitutiveLaw<2>
   {
   public:
+    /// The 2D reduction of the 3D isotropic law.
     enum class Model
     {
-      plane_strain,
-      plane_stress
+      plane_strain, ///< $\varepsilon_{zz} = 0$: thick bodies; $\sigma_{zz} = \lambda\,\mathrm{tr}\,\varepsilon$
+      plane_stress  ///< $\sigma_{zz} = 0$: thin plates; $\lambda$ replaced by $2\lambda\mu/(\lambda+2\mu)$
     };
 
     /// The range of Young's modulus the element computations support:
     /// outside it, products such as E * h^2 underflow to zero or
     /// overflow (zero stresses or "degenerate polygon" errors).
     static constexpr double min_youngs_modulus = 1e-200;
-    static constexpr double max_youngs_modulus = 1e200;
+    static constexpr double max_youngs_modulus = 1e200; ///< see min_youngs_modulus
 
     /**
      * Constructor. Throws (AssertThrow, also in Release builds) unless
@@ -54,18 +55,22 @@ namespace dealvem
                     const double nu = 0.3,
                     const Model  model = Model::plane_strain);
 
+    /// Young's modulus E (units of a stress; tractions and pressures are
+    /// given in the same units).
     double
     youngs_modulus() const
     {
       return E;
     }
 
+    /// Poisson's ratio $\nu$, $-1 < \nu < 0.5$ (dimensionless).
     double
     poissons_ratio() const
     {
       return nu;
     }
 
+    /// Plane strain or plane stress.
     Model
     model() const
     {

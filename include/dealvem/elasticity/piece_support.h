@@ -48,14 +48,20 @@ namespace dealvem
     /// A linear form over displacement DoFs.
     using Form = std::vector<std::pair<dealii::types::global_dof_index, double>>;
 
+    /// The pieces of @p dof_handler's mesh and, per node, the pieces whose
+    /// cells use it. @p dof_handler needs distributed DoFs and is held by
+    /// reference: it must outlive this object.
     explicit PieceSupport(const VEMDoFHandler<2> &dof_handler);
 
+    /// The edge-connected pieces of the mesh.
     const ConnectedPieces &
     get_pieces() const
     {
       return pieces;
     }
 
+    /// Number of rigid-body modes, 3 n_pieces (mode 3 p + k of piece p:
+    /// k = 0, 1 the translations, k = 2 the scaled rotation).
     unsigned int
     n_modes() const
     {

@@ -35,7 +35,21 @@ namespace dealvem
    */
   struct ErrorNorms
   {
+    /// @var double l2
+    /// $\|u - \Pi u_h\|_0$ over the measured cells (units of the
+    /// displacement).
+    /// @var double h1_seminorm
+    /// $|u - \Pi u_h|_1$, the L2 norm of the gradient error.
+    /// @var double energy
+    /// The energy norm of $u - \Pi u_h$ (square root of twice the strain
+    /// energy of the error).
     double l2 = 0, h1_seminorm = 0, energy = 0;
+    /// @var double l2_exact
+    /// $\|u\|_0$ over the measured cells, the scale of l2.
+    /// @var double h1_exact
+    /// $|u|_1$ over the measured cells, the scale of h1_seminorm.
+    /// @var double energy_exact
+    /// The energy norm of $u$ over the measured cells, the scale of energy.
     double l2_exact = 0, h1_exact = 0, energy_exact = 0;
   };
 

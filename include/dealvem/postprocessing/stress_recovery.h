@@ -61,30 +61,41 @@ namespace dealvem
                    const dealii::Vector<double>                                &solution,
                    const std::vector<unsigned int>                             &cells);
 
+    /// In-plane strain $\varepsilon(\Pi u_h)$ of cell @p c, averaged over
+    /// the cell (dimensionless); zero for a cell that was not computed.
     const dealii::SymmetricTensor<2, dim> &
     cell_strain(const unsigned int c) const
     {
       return strain[c];
     }
 
+    /// In-plane stress of cell @p c: the cell's law applied to
+    /// cell_strain() (units of the law's moduli, e.g. Pa).
     const dealii::SymmetricTensor<2, dim> &
     cell_stress(const unsigned int c) const
     {
       return stress[c];
     }
 
+    /// Von Mises stress of cell @p c from cell_stress() and the law's
+    /// out-of-plane stress $\sigma_{zz}$.
     double
     cell_von_mises(const unsigned int c) const
     {
       return von_mises[c];
     }
 
+    /// In-plane stress at mesh vertex @p v: the mean over the computed cells
+    /// around it of each cell's stress evaluated at the vertex; zero at a
+    /// vertex with no computed cell.
     const dealii::SymmetricTensor<2, dim> &
     vertex_stress(const unsigned int v) const
     {
       return nodal_stress[v];
     }
 
+    /// Von Mises stress of the averaged vertex_stress() and averaged
+    /// $\sigma_{zz}$ at mesh vertex @p v.
     double
     vertex_von_mises(const unsigned int v) const
     {

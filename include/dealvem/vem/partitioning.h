@@ -48,12 +48,16 @@ namespace dealvem
     void
     reinit(const VEMDoFHandler<dim> &dof_handler, const MPI_Comm comm);
 
+    /// Number of parts, the number of processes of the communicator given
+    /// to reinit() (1 before it).
     unsigned int
     n_parts() const
     {
       return n_parts_;
     }
 
+    /// The part of this process: its rank in the communicator given to
+    /// reinit() (0 before it).
     unsigned int
     this_part() const
     {
@@ -89,6 +93,8 @@ namespace dealvem
       return ghost_cells_;
     }
 
+    /// The DoFs of the nodes this process owns (see node_owner()); over
+    /// all processes the sets are disjoint and cover all DoFs.
     const dealii::IndexSet &
     locally_owned_dofs() const
     {

@@ -46,6 +46,8 @@ namespace dealvem
   class PolygonGeometry
   {
   public:
+    /// The geometry of the polygon with the given counter-clockwise
+    /// @p vertices (at least three; asserted in debug mode), as reinit().
     explicit PolygonGeometry(const std::vector<dealii::Point<dim>> &vertices);
 
     /// An empty geometry, to be set by reinit().
@@ -57,36 +59,44 @@ namespace dealvem
     void
     reinit(const std::vector<dealii::Point<dim>> &vertices);
 
+    /// Number of vertices N (= number of edges).
     unsigned int
     n_vertices() const
     {
       return vertices.size();
     }
 
+    /// Vertex @p i, 0 <= i < n_vertices() (not checked).
     const dealii::Point<dim> &
     vertex(const unsigned int i) const
     {
       return vertices[i];
     }
 
+    /// Area $|E|$ by the shoelace formula; positive for counter-clockwise
+    /// vertices (negative if they are given clockwise).
     double
     area() const
     {
       return area_;
     }
 
+    /// Centroid $\bar x$ (center of mass of the polygon's area, not the
+    /// mean of its vertices).
     const dealii::Point<dim> &
     centroid() const
     {
       return centroid_;
     }
 
+    /// Diameter $h$: the largest distance between two vertices.
     double
     diameter() const
     {
       return diameter_;
     }
 
+    /// Length $L_i$ of edge @p i, from vertex i to vertex i+1.
     double
     edge_length(const unsigned int i) const
     {
@@ -110,6 +120,7 @@ namespace dealvem
       return n;
     }
 
+    /// Midpoint of edge @p i, $(v_i + v_{i+1})/2$.
     dealii::Point<dim>
     edge_midpoint(const unsigned int i) const
     {

@@ -64,6 +64,8 @@ namespace dealvem
   public:
     VEMDoFHandler() = default;
 
+    /// A handler attached to @p mesh, as reinit(); no DoFs until
+    /// distribute_dofs().
     explicit VEMDoFHandler(const PolygonalMesh<dim> &mesh);
 
     /// Attach a (finalized) mesh.
@@ -74,6 +76,7 @@ namespace dealvem
     void
     distribute_dofs(const unsigned int degree);
 
+    /// The attached mesh (asserted in debug mode that there is one).
     const PolygonalMesh<dim> &
     get_mesh() const
     {
@@ -90,12 +93,15 @@ namespace dealvem
     void
     check_mesh_unchanged() const;
 
+    /// The order k of the last distribute_dofs(); 0 before it, and after
+    /// reinit().
     unsigned int
     get_degree() const
     {
       return degree;
     }
 
+    /// Total number of DoFs (two per node); 0 before distribute_dofs().
     dealii::types::global_dof_index
     n_dofs() const
     {
@@ -128,17 +134,21 @@ namespace dealvem
     void
     get_node_indices(const unsigned int c, std::vector<unsigned int> &nodes) const;
 
-    /// Node of vertex @p v, of the midpoint of edge @p e (k = 2), of cell
-    /// moment of cell @p c (k = 2).
+    /// Node of vertex @p v of the mesh (the vertices are numbered first, so
+    /// this is @p v itself).
     unsigned int
     vertex_node(const unsigned int v) const
     {
       return v;
     }
 
+    /// Node of the midpoint of edge @p e of the mesh (k = 2 only; asserted
+    /// in debug mode).
     unsigned int
     edge_node(const unsigned int e) const;
 
+    /// Node of the cell moment of cell @p c (k = 2 only; asserted in debug
+    /// mode).
     unsigned int
     cell_node(const unsigned int c) const;
 

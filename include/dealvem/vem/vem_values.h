@@ -99,21 +99,28 @@ namespace dealvem
       element.set_cell_similarity(enable);
     }
 
+    /// The DoF handler given to the constructor.
     const VEMDoFHandler<dim> &
     get_dof_handler() const
     {
       return dof_handler;
     }
 
+    /// Material id of the current cell (PolygonalMesh::Cell::material_id);
+    /// in debug mode asserts that reinit() has been called.
     dealii::types::material_id
     material_id() const;
 
+    /// Number of DoFs of the current cell: two per node (the vertices, and
+    /// for k = 2 also the edge midpoints and the cell moment).
     unsigned int
     dofs_per_cell() const
     {
       return element.n_dofs_per_cell();
     }
 
+    /// Number of points of the cell's quadrature rule; 0 when neither
+    /// quadrature points nor JxW values were asked for in the UpdateFlags.
     unsigned int
     n_quadrature_points() const
     {
@@ -127,18 +134,26 @@ namespace dealvem
       indices = dof_indices;
     }
 
+    /// Global DoF indices of the cell in the local order, without a copy.
     const std::vector<dealii::types::global_dof_index> &
     get_dof_indices() const
     {
       return dof_indices;
     }
 
+    /// Quadrature point @p q of the cell, in physical coordinates. Throws
+    /// ExcMessage when update_quadrature_points (or update_values,
+    /// update_gradients, which imply it) was not requested.
     const dealii::Point<dim> &
     quadrature_point(const unsigned int q) const;
 
+    /// All quadrature points of the cell; throws as quadrature_point().
     const std::vector<dealii::Point<dim>> &
     get_quadrature_points() const;
 
+    /// Weight of quadrature point @p q, the Jacobian already included (the
+    /// weights of a cell sum to its area). Throws ExcMessage when
+    /// update_JxW_values was not requested.
     double
     JxW(const unsigned int q) const;
 

@@ -139,6 +139,7 @@ namespace dealvem
 
     ~VirtualElement();
 
+    /// The order k (1 or 2) given to the constructor.
     unsigned int
     get_degree() const
     {
@@ -227,6 +228,9 @@ namespace dealvem
       return revision;
     }
 
+    /// Geometry of the polygon of the last reinit(): vertices, area,
+    /// centroid, diameter h, edges and the cell quadrature. Empty before the
+    /// first reinit().
     const PolygonGeometry<dim> &
     get_geometry() const
     {
