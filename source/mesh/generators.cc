@@ -542,8 +542,12 @@ namespace dealvem
       class GmshChecker
       {
       public:
-        explicit GmshChecker(const std::string &filename)
+        // separate_parts: cells of different physical surfaces may share
+        // edges (the parts of a conforming assembly mesh, given their own
+        // nodes afterwards)
+        explicit GmshChecker(const std::string &filename, const bool separate_parts = false)
           : filename(filename)
+          , separate_parts(separate_parts)
           , in(filename)
         {
           AssertThrow(in, dealii::ExcMessage("Cannot open the mesh file '" + filename + "'."));
@@ -609,6 +613,7 @@ namespace dealvem
 
       private:
         std::string           filename;
+        bool                  separate_parts = false;
         std::ifstream         in;
         std::uintmax_t        file_size = 0;
         std::size_t           line = 0;
@@ -1111,7 +1116,7 @@ namespace dealvem
               if (e.second.size() == 2)
                 {
                   const Element &a = cells[e.second[0]], &b = cells[e.second[1]];
-                  AssertThrow(a.physical == b.physical,
+                  AssertThrow(a.physical == b.physical || separate_parts,
                               element_error(b, name(a) + " (physical surface " + std::to_string(a.physical) +
                                                  ") and " + name(b) + " (physical surface " +
                                                  std::to_string(b.physical) + ") share the edge from node " +
@@ -1120,7 +1125,8 @@ namespace dealvem
                                                  ". Different physical surfaces are different bodies (material "
                                                  "ids), and bodies interact through contact only: give each "
                                                  "body its own nodes along the interface (separate curves in "
-                                                 "gmsh), or put both in one physical surface."));
+                                                 "gmsh), put both in one physical surface, or read the parts as separate bodies "
+                                                 "('Mesh/Parts as bodies = true')."));
                 }
             }
         }
@@ -1270,7 +1276,7 @@ namespace dealvem
       const std::string format = ext.empty() ? "msh" : ext.substr(1);
       // deal.II's gmsh reader trusts the file: check it first
       if (format == "msh")
-        GmshChecker(filename).run();
+        GmshChecker(filename, separate_material_ids).run();
       dealii::Triangulation<dim> tria;
       dealii::GridIn<dim>        grid_in(tria);
       std::ifstream              in(filename);

@@ -1,3 +1,4 @@
+# needs: CGAL (assembly-tower.prm has Voronoi meshes)
 # Runs the parameter files of examples/parameters (see its README) as a
 # user would and checks the result each file states in its header:
 # - elasticity-convergence.prm: the table shows at least the rates of
@@ -129,3 +130,25 @@ foreach(cycle 0 1)
     check_json_roundoff("${json}" "gmsh-beam.prm" cycles ${cycle} errors ${norm})
   endforeach()
 endforeach()
+
+# --- assemblies: 8 bodies from body sections, 6 bodies from one gmsh file,
+# interfaces found by 'Pairs = auto' (the statics of both are checked to
+# 1e-10 by tests/app/assemblies); here: the program runs them, finds the
+# interfaces and writes the per-interface resultants
+run_dealvem("assembly-tower.prm" TRUE "7 contact interface(s) detected" ${EXAMPLES}/assembly-tower.prm)
+file(STRINGS ${WORK_DIR}/output/assembly-tower-resultants.csv rows)
+list(LENGTH rows n_rows)
+if(NOT n_rows EQUAL 8)
+  message(FATAL_ERROR "FAIL assembly-tower.prm: ${n_rows} lines in the resultants CSV, expected a header and 7")
+endif()
+run_dealvem("assembly-wall.prm" TRUE "6 parts of 'assembly-wall.msh' are bodies 0 to 5" ${EXAMPLES}/assembly-wall.prm)
+string(FIND "${LAST_OUTPUT}" "9 contact interface(s) detected" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "FAIL assembly-wall.prm: 9 interfaces expected\n${LAST_OUTPUT}")
+endif()
+file(READ ${WORK_DIR}/output/assembly-wall.json json)
+string(JSON n GET "${json}" contact interfaces)
+if(NOT n EQUAL 9)
+  message(FATAL_ERROR "FAIL assembly-wall.prm: JSON contact.interfaces = ${n}, expected 9")
+endif()
+message(STATUS "PASS assembly-wall.prm: 9 interfaces in the JSON summary")

@@ -134,6 +134,7 @@ namespace dealvem
       /// Detect the contact interfaces between the bodies (ContactDetection,
       /// "Pairs = auto"), besides the pairs added by add_contact_pair().
       bool                        detect_pairs = false;
+      /// The tolerances of the detection.
       ContactDetection::Settings detection;
       /// A name of parameter 'Solver/Type' (SaddlePointSolver::parse_type()),
       /// or "automatic": the direct condensed solve up to
@@ -396,21 +397,28 @@ namespace dealvem
      */
     struct InterfaceResult
     {
-      unsigned int               master_body = 0, slave_body = 0; ///< body indices
-      dealii::types::boundary_id master_id = 0, slave_id = 0;     ///< boundary ids of the sides
+      unsigned int               master_body = 0; ///< body index of the master side
+      unsigned int               slave_body  = 0; ///< body index of the slave side
+      dealii::types::boundary_id master_id   = 0; ///< boundary id of the master side
+      dealii::types::boundary_id slave_id    = 0; ///< boundary id of the slave side
       /// Length of the paired interface (sum of its segments on the slave side).
       double                     length = 0;
-      /// Sum of the normal nodal forces (compression > 0) and of the
-      /// tangential ones (along each pair's tangent).
-      double                     normal_force = 0, tangential_force = 0;
+      /// Sum of the normal nodal forces (compression > 0).
+      double                     normal_force = 0;
+      /// Sum of the tangential nodal forces (along each pair's tangent).
+      double                     tangential_force = 0;
       /// Resultant force vector on the slave body.
       dealii::Tensor<1, 2>       force;
       /// Centre of the normal forces (the midpoint of the interface when
       /// nothing is transmitted).
       dealii::Point<2>           centre_of_pressure;
-      /// Pairs open, closed and sticking, closed and slipping (without
-      /// Coulomb friction every closed pair counts as stick).
-      unsigned int               n_open = 0, n_stick = 0, n_slip = 0;
+      /// Pairs open.
+      unsigned int               n_open = 0;
+      /// Pairs closed and sticking (without Coulomb friction: every closed
+      /// pair).
+      unsigned int               n_stick = 0;
+      /// Pairs closed and slipping (Coulomb friction).
+      unsigned int               n_slip = 0;
       /// Whether ContactDetection found the interface ("Pairs = auto").
       bool                       detected = false;
     };

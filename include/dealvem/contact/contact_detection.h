@@ -81,8 +81,10 @@ namespace dealvem
       unsigned int               n_slave_edges  = 0; ///< edges on the slave side
       /// Length of the shared interface: the length of the shorter side.
       double                     length = 0;
-      /// Mean edge lengths of the two sides (the master's is the larger).
-      double                     master_h = 0, slave_h = 0;
+      /// Mean edge length of the master side (the larger of the two).
+      double                     master_h = 0;
+      /// Mean edge length of the slave side.
+      double                     slave_h = 0;
     };
 
     /// What detect() did.
