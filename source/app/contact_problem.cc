@@ -2020,7 +2020,17 @@ namespace dealvem
       }
     SVGPlots::write_line_plot(prefix + "-pressure.svg", series, "x", "contact pressure",
                               "Contact pressure along the interface");
-    std::cout << "  pictures: " << prefix << "-stress.svg, " << prefix << "-pressure.svg" << std::endl;
+    // the assembly: bodies and the contact force of each interface (on its
+    // slave body, at the centre of pressure)
+    std::vector<SVGPlots::Arrow> arrows;
+    for (const auto &ir : results.interface_results)
+      arrows.push_back({ir.centre_of_pressure, ir.force});
+    SVGPlots::write_assembly(prefix + "-assembly.svg", mesh, arrows,
+                             std::to_string(bodies.size()) + " bodies, " +
+                               std::to_string(results.interface_results.size()) +
+                               " interfaces: contact force on the slave body at the centre of pressure");
+    std::cout << "  pictures: " << prefix << "-stress.svg, " << prefix << "-pressure.svg, " << prefix
+              << "-assembly.svg" << std::endl;
   }
 
 

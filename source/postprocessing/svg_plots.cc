@@ -149,6 +149,82 @@ namespace dealvem
 
 
     void
+    write_assembly(const std::string        &filename,
+                   const PolygonalMesh<2>   &mesh,
+                   const std::vector<Arrow> &arrows,
+                   const std::string        &title)
+    {
+      AssertThrow(mesh.n_vertices() > 0, dealii::ExcMessage("SVGPlots::write_assembly: the mesh is empty."));
+      double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+      for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+        {
+          xmin = std::min(xmin, mesh.vertex(v)[0]);
+          xmax = std::max(xmax, mesh.vertex(v)[0]);
+          ymin = std::min(ymin, mesh.vertex(v)[1]);
+          ymax = std::max(ymax, mesh.vertex(v)[1]);
+        }
+      const double width = 800, margin = 40;
+      const double extent = std::max(xmax - xmin, 1e-300);
+      const double s      = (width - 2 * margin) / extent;
+      const double height = std::min(2400., (ymax - ymin) * s + 2 * margin + 30);
+      const double sy     = std::min(s, (height - 2 * margin - 30) / std::max(ymax - ymin, 1e-300));
+      auto px = [&](const dealii::Point<2> &p) { return margin + (p[0] - xmin) * sy; };
+      auto py = [&](const dealii::Point<2> &p) { return height - margin - (p[1] - ymin) * sy; };
+      // eight light colours; consecutive ids (neighbours in most
+      // assemblies) differ
+      const char *palette[] = {"#aec7e8", "#ffbb78", "#98df8a", "#ff9896",
+                               "#c5b0d5", "#c49c94", "#f7b6d2", "#dbdb8d"};
+      double fmax = 0;
+      for (const auto &a : arrows)
+        fmax = std::max(fmax, a.force.norm());
+      const double arrow_scale = (fmax > 0 ? 0.1 * (xmax - xmin) / fmax : 0.);
+
+      OutputFile    file(filename);
+      std::ostream &out = file.stream();
+      out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+          << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+      out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+      out << "<text x=\"" << margin << "\" y=\"20\">" << escape(title) << "</text>\n";
+      out << std::setprecision(6);
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          out << "<polygon points=\"";
+          for (const auto v : mesh.cell(c).vertices)
+            out << px(mesh.vertex(v)) << "," << py(mesh.vertex(v)) << " ";
+          out << "\" fill=\"" << palette[mesh.cell(c).material_id % 8]
+              << "\" stroke=\"#888\" stroke-width=\"0.3\"/>\n";
+        }
+      // body outlines: the boundary edges
+      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+        if (mesh.edge(e).at_boundary())
+          {
+            const auto &a = mesh.vertex(mesh.edge(e).vertices[0]), &b = mesh.vertex(mesh.edge(e).vertices[1]);
+            out << "<line x1=\"" << px(a) << "\" y1=\"" << py(a) << "\" x2=\"" << px(b) << "\" y2=\"" << py(b)
+                << "\" stroke=\"black\" stroke-width=\"0.8\"/>\n";
+          }
+      for (const auto &a : arrows)
+        {
+          const double L = a.force.norm() * arrow_scale * sy;
+          if (!(L > 0.5))
+            continue;
+          const double x0 = px(a.point), y0 = py(a.point);
+          // screen direction (y down)
+          const double dx = a.force[0] / a.force.norm(), dy = -a.force[1] / a.force.norm();
+          const double x1 = x0 + L * dx, y1 = y0 + L * dy, head = std::min(8., 0.4 * L);
+          out << "<line x1=\"" << x0 << "\" y1=\"" << y0 << "\" x2=\"" << x1 << "\" y2=\"" << y1
+              << "\" stroke=\"#d62728\" stroke-width=\"1.8\"/>\n";
+          out << "<polygon points=\"" << x1 << "," << y1 << " " << x1 - head * dx - 0.5 * head * dy << ","
+              << y1 - head * dy + 0.5 * head * dx << " " << x1 - head * dx + 0.5 * head * dy << ","
+              << y1 - head * dy - 0.5 * head * dx << "\" fill=\"#d62728\"/>\n";
+          out << "<circle cx=\"" << x0 << "\" cy=\"" << y0 << "\" r=\"2\" fill=\"#d62728\"/>\n";
+        }
+      out << "</svg>\n";
+      file.commit();
+    }
+
+
+
+    void
     write_line_plot(const std::string         &filename,
                     const std::vector<Series> &series,
                     const std::string         &x_label,

@@ -37,6 +37,28 @@ namespace dealvem
                const std::vector<bool>                 &marked,
                const std::string                       &title);
 
+    /// A force drawn as an arrow: its point of application and its vector.
+    struct Arrow
+    {
+      /// Where the force acts (the tail of the arrow).
+      dealii::Point<2>     point;
+      /// The force.
+      dealii::Tensor<1, 2> force;
+    };
+
+    /**
+     * An assembly: the polygons of @p mesh filled with one colour per body
+     * (material id; neighbouring ids get different colours), the cells'
+     * edges thin and grey, and @p arrows scaled so that the largest is a
+     * tenth of the picture's width (a contact force at the centre of
+     * pressure of each interface, say).
+     */
+    void
+    write_assembly(const std::string        &filename,
+                   const PolygonalMesh<2>   &mesh,
+                   const std::vector<Arrow> &arrows,
+                   const std::string        &title);
+
     /// One curve of a line plot.
     struct Series
     {

@@ -1,0 +1,199 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// The cost of an assembly of many bodies against one body of the same
+// size, in one process:
+//   assembly  a wall of B blocks (courses of 10 blocks in running bond, half
+//             blocks at the ends of every other course; each block 1 x 0.5
+//             meshed on its own by n x n/2 quads, n
+//             alternating between two values so no two neighbours match)
+//             on a base, contact pairs found by ContactDetection, tied
+//             interfaces (normal tied, or unilateral by the active set;
+//             stick by multipliers), self weight; every block floats (held by
+//             contact only);
+//   one body  the base and the same wall as one body of about the same
+//             number of DoFs (structured quads), the same load and support;
+// both with k = 2 and the same solver (Solver/Type: CG-AMG on the stiffness
+// condensed by the contact constraints, or direct). Prints DoFs, the wall
+// time of each stage (mesh, contact detection, node insertion, assembly,
+// solve), the end-to-end time, the active-set iterations and the ratio of
+// the assembly to the one body, and the peak memory (VmHWM) per run.
+//   benchmark_assembly [blocks=100] [cells along a block=6] [solver=CG-AMG]
+#include <deal.II/base/function.h>
+#include <deal.II/base/utilities.h>
+
+#include <dealvem/app/contact_problem.h>
+#include <dealvem/app/mesh_parameters.h>
+#include <dealvem/mesh/generators.h>
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <string>
+
+using namespace dealvem;
+using P = dealii::Point<2>;
+
+namespace
+{
+  struct Run
+  {
+    unsigned int                  bodies = 0, dofs = 0, multipliers = 0, interfaces = 0, iterations = 0;
+    double                        seconds = 0;
+    std::map<std::string, double> timings;
+    double                        memory_MB = 0;
+  };
+
+  Run
+  solve(ContactProblem &problem, const std::string &solver, const bool tied)
+  {
+    problem.boundary_conditions().add_dirichlet(2, {{true, true}},
+                                                std::make_shared<dealii::Functions::ZeroFunction<2>>(2));
+    problem.boundary_conditions().set_body_force(
+      std::make_shared<dealii::Functions::ConstantFunction<2>>(std::vector<double>{0., -1.}));
+    auto &o              = problem.options();
+    o.degree             = 2;
+    o.contact.tangential = ContactSettings::Tangential::multipliers;
+    o.contact.normal     = tied ? ContactSettings::Normal::tied : ContactSettings::Normal::unilateral;
+    o.solver             = solver;
+    o.solver_tolerance   = 1e-10;
+    o.write_vtu = o.write_json = o.write_pictures = o.write_csv = false;
+    const auto start = std::chrono::steady_clock::now();
+    problem.run();
+    Run r;
+    r.seconds             = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto &res       = problem.get_results();
+    r.bodies              = problem.n_bodies();
+    r.dofs                = res.n_dofs;
+    r.multipliers         = res.n_multipliers;
+    r.interfaces          = res.interface_results.size();
+    r.iterations          = res.active_set_iterations;
+    r.timings             = res.timings;
+    r.memory_MB           = res.peak_memory_MB.empty() ? 0. : res.peak_memory_MB[0];
+    return r;
+  }
+
+  PolygonalMesh<2>
+  brick(const P &lo, const P &hi, const unsigned int nx, const unsigned int ny)
+  {
+    PolygonalMesh<2> m;
+    PolygonalMeshGenerators::structured_quads(m, lo, hi, nx, ny);
+    return m;
+  }
+
+  void
+  print(const std::string &name, const Run &r)
+  {
+    std::cout << std::left << std::setw(10) << name << std::right << std::setw(7) << r.bodies << std::setw(9)
+              << r.dofs << std::setw(8) << r.multipliers << std::setw(7) << r.interfaces << std::setw(5)
+              << r.iterations;
+    for (const char *stage : {"mesh", "contact detection", "node insertion", "assembly", "solve"})
+      {
+        const auto it = r.timings.find(stage);
+        std::cout << std::setw(10) << std::fixed << std::setprecision(3) << (it == r.timings.end() ? 0. : it->second);
+      }
+    std::cout << std::setw(9) << std::setprecision(2) << r.seconds << std::setw(9) << std::setprecision(0)
+              << r.memory_MB << std::defaultfloat << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int blocks = (argc > 1 ? std::stoul(argv[1]) : 100);
+  const unsigned int n      = (argc > 2 ? std::stoul(argv[2]) : 6);
+  const std::string  solver = (argc > 3 ? argv[3] : "CG-AMG");
+  const unsigned int per_course = 10;
+  double             height     = 0;
+
+  // the assembly: a mesh of parts (material id = part), then add_parts()
+  PolygonalMesh<2> wall = brick(P(-1, -1), P(per_course + 1, 0), 4 * (per_course + 2), 4);
+  std::vector<PolygonalMesh<2>>         made;
+  std::vector<const PolygonalMesh<2> *> parts;
+  made.reserve(blocks);
+  // even courses: 10 blocks; odd courses: a half block at each end and 9
+  // blocks between (running bond); courses are added until there are
+  // `blocks` pieces, the last course possibly incomplete from the left
+  unsigned int id = 1;
+  for (unsigned int c = 0; id <= blocks; ++c)
+    {
+      std::vector<std::pair<double, double>> spans;
+      if (c % 2 == 0)
+        for (unsigned int k = 0; k < per_course; ++k)
+          spans.emplace_back(k, k + 1);
+      else
+        {
+          spans.emplace_back(0, 0.5);
+          for (unsigned int k = 0; k + 1 < per_course; ++k)
+            spans.emplace_back(k + 0.5, k + 1.5);
+          spans.emplace_back(per_course - 0.5, per_course);
+        }
+      for (const auto &span : spans)
+        {
+          if (id > blocks)
+            break;
+          const unsigned int nx = (id % 2 == 0 ? n : n + 1);
+          made.push_back(brick(P(span.first, 0.5 * c), P(span.second, 0.5 * (c + 1)),
+                               std::max(1u, static_cast<unsigned int>(nx * (span.second - span.first) + 0.5)),
+                               std::max(1u, nx / 2)));
+          for (unsigned int cell = 0; cell < made.back().n_cells(); ++cell)
+            made.back().set_material_id(cell, id);
+          MeshParameters::shift_boundary_ids(made.back(), 10);
+          ++id;
+        }
+      height = 0.5 * (c + 1);
+    }
+  for (const auto &m : made)
+    parts.push_back(&m);
+  wall.append(parts);
+
+  std::cout << "Assembly of " << blocks << " blocks (" << n << " or " << n + 1
+            << " quads along a block) on a base against one body of the same DoFs; k = 2, solver " << solver
+            << ", one process" << std::endl;
+  for (const bool tied : {true, false})
+  {
+  std::cout << (tied ? "tied interfaces (one solve):" :
+                       "unilateral contact, stick (active set: the bodies settle, head joints open):")
+            << std::endl;
+  std::cout << "model      bodies     DoFs    mult  itfs  its      mesh    detect    insert  assembly     solve"
+               "    total  peak MB"
+            << std::endl;
+  Run a;
+  {
+    ContactProblem problem(MPI_COMM_SELF);
+    problem.add_parts(wall, ElasticMaterial(1000, 0.2));
+    problem.detect_contact_pairs();
+    a = solve(problem, solver, tied);
+    print(tied ? "assembly" : "assembly", a);
+  }
+  // one body: the base and a wall-sized block on it (two bodies, one
+  // interface) with about the assembly's DoFs
+  Run b;
+  {
+    // k = 2 quads: about 8 DoFs per cell, so m x my cells with
+    // 8 m my = DoFs of the assembly and cells about square
+    const double       width = per_course;
+    const unsigned int m     = std::max(2u, static_cast<unsigned int>(std::sqrt(a.dofs / 8. * width / height) + 0.5));
+    const unsigned int my    = std::max(1u, static_cast<unsigned int>(m * height / width + 0.5));
+    PolygonalMesh<2>   both  = brick(P(-1, -1), P(per_course + 1, 0), 4 * (per_course + 2), 4);
+    PolygonalMesh<2>   body  = brick(P(0, 0), P(width, height), m, my);
+    for (unsigned int cell = 0; cell < body.n_cells(); ++cell)
+      body.set_material_id(cell, 1);
+    MeshParameters::shift_boundary_ids(body, 10);
+    both.append(body);
+    ContactProblem problem(MPI_COMM_SELF);
+    problem.add_parts(both, ElasticMaterial(1000, 0.2));
+    problem.detect_contact_pairs();
+    b = solve(problem, solver, tied);
+  }
+  print("one body", b);
+  std::cout << "ratio assembly / one body: DoFs " << std::setprecision(3) << double(a.dofs) / b.dofs
+            << ", assembly + solve " << (a.timings["assembly"] + a.timings["solve"]) /
+                                          (b.timings["assembly"] + b.timings["solve"])
+            << ", end to end " << a.seconds / b.seconds << ", peak memory " << a.memory_MB / b.memory_MB
+            << std::endl;
+  }
+  return 0;
+}
