@@ -799,6 +799,366 @@ namespace dealvem
 
 
 
+    // Rule 4 (gaps) in three passes, one function each, called in this order
+    // after the splits (the rule itself is item 3 of the class documentation
+    // of NodeInsertion, "Discretisation gaps are closed, real gaps are kept"):
+    //  (a) judge_gaps(): every pair is classified on the geometry the splits
+    //      left, before any merged vertex moves: its gap is zero (round-off
+    //      of the coordinates), a discretisation gap (the partner's offset
+    //      from the receiving chord is what a curvature both sides show
+    //      around the pair would give), unresolved (next to an inflection,
+    //      within twice the chord deviation) or real;
+    //  (b) face_merged_vertices(): two merged original vertices are placed
+    //      opposite each other along the master normal, the slave vertex
+    //      sliding along its own curve (the master vertex instead when the
+    //      slave vertex ends its side), so a merge never carries a node
+    //      across a gap;
+    //  (c) close_or_keep_gaps(): one decision for the whole interface. With
+    //      no real gap the two sides sample one curve and every gap is
+    //      closed (the partners coincide; unless the settings switch the
+    //      closing off, which keeps every gap); with a real gap anywhere only
+    //      the zero gaps are closed, the others are kept as measured and the
+    //      ones that could have been discretisation gaps are reported with
+    //      their chord deviation. A smooth interface thus never has closed
+    //      and kept gaps above round-off side by side.
+    // The passes share the vertices rule 3 inserted, looked up by vertex.
+    using InsertedByVertex = std::map<unsigned int, const Inserted *>;
+
+    /// The class pass (a) of rule 4 puts the gap of a pair in.
+    enum class GapVerdict
+    {
+      zero,           ///< within the coordinate precision
+      discretisation, ///< inside the curvature band of the two sides
+      unresolved,     ///< outside the band, but next to an inflection and within twice the deviation
+      real            ///< anything else
+    };
+
+    /// One pair as pass (a) of rule 4 judged it.
+    struct JudgedPair
+    {
+      unsigned int m, s;      ///< master and slave vertex
+      GapVerdict   verdict;
+      double       deviation; ///< chord deviation at the pair: q times the largest |kappa| (0 if not compared)
+    };
+
+    /**
+     * The range of the gap-rule curvatures (Side::kappa_gap, convex > 0 for
+     * @p side) of the vertices @p vs and of their neighbours on @p side,
+     * multiplied by @p sign (-1: seen from the other side). If the range
+     * holds both signs (an inflection nearby, whose extremes may fall
+     * between the samples) it is made symmetric, [-max, max]. Without any
+     * known curvature (straight side, corners) it is [0, 0].
+     */
+    std::pair<double, double>
+    curvature_range(const Side &side, const std::vector<unsigned int> &vs, const double sign)
+    {
+      std::vector<unsigned int> around;
+      for (const unsigned int v : vs)
+        {
+          around.push_back(v);
+          if (const auto in = side.incoming.find(v); in != side.incoming.end())
+            around.push_back(side.edges[in->second][0]);
+          if (const auto out = side.outgoing.find(v); out != side.outgoing.end())
+            around.push_back(side.edges[out->second][1]);
+        }
+      double lo = 0, hi = 0;
+      bool   first = true;
+      for (const unsigned int v : around)
+        if (const auto k = side.kappa_gap.find(v); k != side.kappa_gap.end())
+          {
+            lo    = first ? sign * k->second : std::min(lo, sign * k->second);
+            hi    = first ? sign * k->second : std::max(hi, sign * k->second);
+            first = false;
+          }
+      if (lo < 0 && hi > 0)
+        {
+          const double k = std::max(-lo, hi);
+          lo = -k, hi = k;
+        }
+      return std::make_pair(lo, hi);
+    }
+
+    /**
+     * The union of the curvature ranges @p r and @p p, widened by
+     * @p curvature_factor. A union that contains 0 is scaled about 0, so
+     * the two signs stay apart (a flat block under a cylinder never
+     * qualifies); any other union is widened about its centre but never
+     * across 0, so two circles of different radii remain distinguishable
+     * however close the radii are.
+     */
+    std::pair<double, double>
+    widened_band(const std::pair<double, double> &r, const std::pair<double, double> &p,
+                 const double curvature_factor)
+    {
+      const double lo = std::min(r.first, p.first), hi = std::max(r.second, p.second);
+      const double f  = curvature_factor;
+      if (lo <= 0 && hi >= 0)
+        return std::make_pair(f * lo, f * hi);
+      const double c = 0.5 * (lo + hi), w = 0.5 * f * (hi - lo);
+      return lo > 0 ? std::make_pair(std::max(c - w, 0.), c + w) : std::make_pair(c - w, std::min(c + w, 0.));
+    }
+
+    /**
+     * Judge a gap against a chord of the receiving side @p onto: the chord
+     * is edge @p edge of @p onto (indices of the side before insertion),
+     * @p chord the point of the chord facing the partner, @p normal the
+     * chord's outward normal and @p q = t(1 - t) L^2 / 2 its deviation per
+     * unit curvature (negative beyond the chord's ends, where the circle
+     * lies on the other side). The partner is vertex @p partner of
+     * @p from. If both sides sample one curve, the partner lies off the
+     * chord by q kappa for some kappa in the widened band of the two sides'
+     * curvatures; @p tol is the coordinate tolerance of the pair. Sets
+     * @p deviation to |q| times the largest |kappa| of the band. Returns
+     * discretisation, unresolved or real (never zero).
+     */
+    GapVerdict
+    judge_against_chord(const Mesh                    &mesh,
+                        const Side                    &onto,
+                        const unsigned int             edge,
+                        const Point                   &chord,
+                        const Vector                  &normal,
+                        const double                   q,
+                        const Side                    &from,
+                        const unsigned int             partner,
+                        const double                   tol,
+                        const double                   curvature_factor,
+                        double                        &deviation)
+    {
+      const auto   band  = widened_band(curvature_range(onto, {onto.edges[edge][0], onto.edges[edge][1]}, 1.),
+                                        curvature_range(from, {partner}, -1.), curvature_factor);
+      const double k     = std::max(-band.first, band.second);
+      const double delta = (mesh.vertex(partner) - chord) * normal;
+      deviation          = std::abs(q) * k;
+      if (delta >= std::min(q * band.first, q * band.second) - tol &&
+          delta <= std::max(q * band.first, q * band.second) + tol)
+        return GapVerdict::discretisation;
+      // next to an inflection a curve sampled too coarsely can still
+      // produce a gap of up to twice the largest chord deviation
+      if (band.first < 0 && band.second > 0 && std::abs(delta) <= 2 * std::abs(q) * k)
+        return GapVerdict::unresolved;
+      return GapVerdict::real;
+    }
+
+    /**
+     * Rule 4, pass (a): judge the gap of every pair of @p master_partner
+     * (master vertex -> slave vertex) on the current mesh, i.e. after the
+     * splits and before any merged vertex moves. @p master and @p slave are
+     * the sides as collected before insertion (their edges are the chords
+     * of rule 3), @p by_vertex the vertices rule 3 inserted. A gap within
+     * the coordinate precision is zero; otherwise a pair with an inserted
+     * vertex is judged against the chord it split, and two merged original
+     * vertices against the edge at the master vertex that the slave vertex
+     * lies least beyond (along the edge). Returns the pairs in the order of @p master_partner.
+     */
+    std::vector<JudgedPair>
+    judge_gaps(const Mesh                                 &mesh,
+               const Side                                 &master,
+               const Side                                 &slave,
+               const std::map<unsigned int, unsigned int> &master_partner,
+               const InsertedByVertex                     &by_vertex,
+               const NodeInsertion::Settings              &settings)
+    {
+      std::vector<JudgedPair> judged;
+      const Side              master_now = collect_side(mesh, master.id);
+      for (const auto &mp : master_partner)
+        {
+          const unsigned int m = mp.first, s = mp.second;
+          const auto         im = by_vertex.find(m), is = by_vertex.find(s);
+          const Inserted *ins = (im != by_vertex.end() ? im->second : (is != by_vertex.end() ? is->second : nullptr));
+          const Point     xm = mesh.vertex(m), xs = mesh.vertex(s);
+          const double    g0 = (xs - xm) * master_now.normal.at(m);
+          const double    tol = settings.coordinate_precision * (std::abs(xs[0]) + std::abs(xs[1])) +
+                             1e-12 * std::min(master_now.h.at(m), slave.h.count(s) ? slave.h.at(s) : master_now.h.at(m));
+          JudgedPair j{m, s, std::abs(g0) <= tol ? GapVerdict::zero : GapVerdict::real, 0};
+          const double cf = settings.curvature_factor;
+          if (j.verdict == GapVerdict::real && ins)
+            j.verdict = ins->on_master ?
+                          judge_against_chord(mesh, master, ins->edge, ins->chord, ins->normal, ins->q, slave, s,
+                                              tol, cf, j.deviation) :
+                          judge_against_chord(mesh, slave, ins->edge, ins->chord, ins->normal, ins->q, master, m,
+                                              tol, cf, j.deviation);
+          else if (j.verdict == GapVerdict::real)
+            {
+              // two merged original vertices: the chord is the master edge
+              // at m closest to the slave vertex along the side (at a convex
+              // vertex the slave vertex may lie beyond both edges)
+              unsigned int best = invalid;
+              double       best_t = 0, best_out = std::numeric_limits<double>::max();
+              for (const auto *edges : {&master.incoming, &master.outgoing})
+                if (const auto it = edges->find(m); it != edges->end())
+                  {
+                    const Point &a = mesh.vertex(master.edges[it->second][0]),
+                                &b = mesh.vertex(master.edges[it->second][1]);
+                    const double t   = chord_parameter(a, b, xs);
+                    const double out = std::max({-t, t - 1, 0.});
+                    if (out < best_out)
+                      best = it->second, best_t = t, best_out = out;
+                  }
+              if (best != invalid)
+                {
+                  const Point &a = mesh.vertex(master.edges[best][0]), &b = mesh.vertex(master.edges[best][1]);
+                  j.verdict = judge_against_chord(mesh, master, best, a + best_t * (b - a), edge_normal(a, b),
+                                                  0.5 * best_t * (1 - best_t) * a.distance_square(b), slave, s,
+                                                  tol, cf, j.deviation);
+                }
+            }
+          judged.push_back(j);
+        }
+      return judged;
+    }
+
+    /// The indices into Side::edges of the (one or two) edges of @p side at
+    /// vertex @p v: the incoming one first.
+    std::vector<unsigned int>
+    side_edges_at(const Side &side, const unsigned int v)
+    {
+      std::vector<unsigned int> e;
+      for (const auto *map : {&side.incoming, &side.outgoing})
+        if (const auto it = map->find(v); it != map->end())
+          e.push_back(it->second);
+      return e;
+    }
+
+    /**
+     * Rule 4, pass (b): place every pair of two merged original vertices
+     * (pairs without a vertex of @p by_vertex) opposite each other. The
+     * slave vertex moves along its side (on the arc of either of its edges,
+     * or the edge itself if straight) to where the line through the master
+     * vertex along the master normal meets it; if the slave vertex ends its
+     * side, the master vertex moves instead, to the point of its side
+     * closest to the slave vertex. Nothing moves if both vertices end their
+     * sides, or if no target lies within half an edge length of the moving
+     * vertex (a corner). @p master and @p slave are the sides collected before
+     * insertion. Updates Report::max_merge_shift.
+     */
+    void
+    face_merged_vertices(PolygonalMesh<2>                           &mesh,
+                         const Side                                 &master,
+                         const Side                                 &slave,
+                         const std::map<unsigned int, unsigned int> &master_partner,
+                         const InsertedByVertex                     &by_vertex,
+                         NodeInsertion::Report                      &report)
+    {
+      for (const auto &mp : master_partner)
+        {
+          const unsigned int m = mp.first, s = mp.second;
+          if (by_vertex.count(m) || by_vertex.count(s))
+            continue; // rule 3 already put the inserted vertex where it faces its partner
+          const bool move_slave = !slave.is_end(s), move_master = !move_slave && !master.is_end(m);
+          const Side &side = move_slave ? slave : master;
+          const unsigned int v = move_slave ? s : m;
+          if (!move_slave && !move_master)
+            continue;
+          Point  target = mesh.vertex(v);
+          double best   = std::numeric_limits<double>::max();
+          for (const unsigned int e : side_edges_at(side, v))
+            {
+              const Point &a = mesh.vertex(side.edges[e][0]), &b = mesh.vertex(side.edges[e][1]);
+              Point        x;
+              bool         hit = false;
+              if (move_slave)
+                {
+                  hit = cast_on_arc(a, b, side.edge_kappa[e], mesh.vertex(m), master.normal.at(m), x);
+                  if (!hit)
+                    {
+                      // a straight edge: intersect the chord
+                      const Vector d = b - a, dir = master.normal.at(m);
+                      const double denom = cross(d, dir);
+                      if (std::abs(denom) > 1e-12 * d.norm())
+                        {
+                          const double t = cross(mesh.vertex(m) - a, dir) / denom;
+                          hit            = (t > 0 && t < 1) && side.edge_kappa[e] == 0;
+                          x              = a + t * d;
+                        }
+                    }
+                }
+              else
+                {
+                  hit = closest_on_arc(a, b, side.edge_kappa[e], mesh.vertex(s), x);
+                  if (!hit && side.edge_kappa[e] == 0)
+                    {
+                      const double t = chord_parameter(a, b, mesh.vertex(s));
+                      hit            = (t > 0 && t < 1);
+                      x              = a + t * (b - a);
+                    }
+                }
+              if (hit && x.distance(mesh.vertex(v)) < best)
+                best = x.distance(mesh.vertex(v)), target = x;
+            }
+          if (best > 0.5 * side.h.at(v))
+            continue; // no hit close to the vertex (a corner): it stays
+          report.max_merge_shift = std::max(report.max_merge_shift, best);
+          mesh.move_vertex(v, target);
+        }
+    }
+
+    /**
+     * Rule 4, pass (c): one decision for the interface on the pairs
+     * @p judged by pass (a), with the gaps measured on the current mesh
+     * (after pass (b)) along the master normals. The interface is one curve
+     * if Settings::close_discretisation_gaps is set and no pair is real;
+     * then every pair is closed (unresolved ones are also listed in
+     * Report::closed_unresolved_gaps). Otherwise only the zero gaps are
+     * closed (none if close_discretisation_gaps is false), and, with
+     * close_discretisation_gaps set, the kept discretisation and
+     * unresolved gaps are listed in Report::unresolved_gaps. Closing moves the inserted vertex
+     * (@p by_vertex) onto its partner; for two original vertices the slave
+     * one onto the master one, unless only the slave vertex ends its side.
+     * @p master and @p slave are the sides collected before insertion.
+     * Updates the gap and merge-shift counters of @p report.
+     */
+    void
+    close_or_keep_gaps(PolygonalMesh<2>               &mesh,
+                       const Side                     &master,
+                       const Side                     &slave,
+                       const std::vector<JudgedPair>  &judged,
+                       const InsertedByVertex         &by_vertex,
+                       const NodeInsertion::Settings  &settings,
+                       NodeInsertion::Report          &report)
+    {
+      const Side   master_now = collect_side(mesh, master.id);
+      unsigned int n_real = 0;
+      for (const auto &j : judged)
+        n_real += (j.verdict == GapVerdict::real);
+      const bool one_curve = settings.close_discretisation_gaps && n_real == 0;
+      for (const auto &j : judged)
+        {
+          const Point  xm = mesh.vertex(j.m), xs = mesh.vertex(j.s);
+          const double g0 = (xs - xm) * master_now.normal.at(j.m);
+          const bool   close =
+            settings.close_discretisation_gaps && (j.verdict == GapVerdict::zero || (one_curve && j.verdict != GapVerdict::real));
+          if (!close)
+            {
+              if (settings.close_discretisation_gaps && j.verdict != GapVerdict::real && j.verdict != GapVerdict::zero)
+                report.unresolved_gaps.push_back({0.5 * (xm + xs), g0, j.deviation});
+              if (j.verdict != GapVerdict::zero)
+                {
+                  ++report.n_kept_gaps;
+                  report.max_kept_gap = std::max(report.max_kept_gap, std::abs(g0));
+                }
+              continue;
+            }
+          if (one_curve && j.verdict == GapVerdict::unresolved)
+            report.closed_unresolved_gaps.push_back({0.5 * (xm + xs), g0, j.deviation});
+          // the inserted vertex moves onto the original one; of two original
+          // vertices the slave one moves, unless only the slave one ends its side
+          const bool is_new_master = by_vertex.count(j.m) > 0, is_new_slave = by_vertex.count(j.s) > 0;
+          bool       move_master   = is_new_master;
+          if (!is_new_master && !is_new_slave)
+            move_master = slave.is_end(j.s) && !master.is_end(j.m);
+          if (move_master)
+            mesh.move_vertex(j.m, xs);
+          else
+            mesh.move_vertex(j.s, xm);
+          if (!is_new_master && !is_new_slave)
+            report.max_merge_shift = std::max(report.max_merge_shift, xm.distance(xs));
+          ++report.n_closed_gaps;
+          report.max_closed_gap = std::max(report.max_closed_gap, std::abs(g0));
+        }
+    }
+
+
+
     // Rule 5 (pairs): walk the chains of the slave side after insertion;
     // every slave edge whose two end vertices are paired with the two ends
     // of one master edge becomes a paired sub-edge (ContactSegment; for
@@ -978,254 +1338,18 @@ namespace dealvem
     split_edges(mesh, master, slave, on_master, master_partner, slave_partner, true, report, inserted);
     split_edges(mesh, slave, master, on_slave, slave_partner, master_partner, false, report, inserted);
 
-    // 4. gaps, in three passes (see the class documentation):
-    //  (a) every pair is judged on the geometry the splits left: its gap is
-    //      zero (round-off of the coordinates), a discretisation gap (the
-    //      partner lies off the receiving chord by what a curvature that
-    //      both sides show around the pair gives), unresolved (next to an
-    //      inflection, within twice the chord deviation) or real;
-    //  (b) two merged original vertices are put opposite each other along
-    //      the master normal, the slave vertex moving along its own curve
-    //      (the master vertex if the slave vertex ends its side): a merge
-    //      never moves a node across a gap;
-    //  (c) one decision for the whole interface: without a real gap both
-    //      sides sample one curve and every gap is closed (the partners
-    //      coincide); with a real gap somewhere only the zero gaps are
-    //      closed, every other gap is kept as measured, and the gaps that
-    //      could have been discretisation gaps are reported with their
-    //      chord deviation. So a smooth interface never mixes closed and
-    //      kept gaps above round-off.
-    std::map<unsigned int, const Inserted *> by_vertex;
+    // 4. gaps: judge every pair, put merged original vertices opposite each
+    // other, then close the gaps or keep them, one decision per interface
+    // (the three passes are described before judge_gaps())
+    InsertedByVertex by_vertex;
     for (const auto &ins : inserted)
       by_vertex[ins.vertex] = &ins;
+    const std::vector<JudgedPair> judged =
+      judge_gaps(mesh, master, slave, master_partner, by_vertex, settings);
+    face_merged_vertices(mesh, master, slave, master_partner, by_vertex, report);
+    close_or_keep_gaps(mesh, master, slave, judged, by_vertex, settings, report);
 
-    // curvatures (convex > 0 for @p side) of the vertices in @p vs and their
-    // neighbours on @p side; sign -1 turns them into the other side's view.
-    // Next to an inflection the extremes of either sign may lie between the
-    // samples: the range is made symmetric. No curvature known (a straight
-    // side, corners): {0}.
-    const auto curvature_range = [&](const Side &side, const std::vector<unsigned int> &vs, const double sign) {
-      std::vector<unsigned int> around;
-      for (const unsigned int v : vs)
-        {
-          around.push_back(v);
-          if (const auto in = side.incoming.find(v); in != side.incoming.end())
-            around.push_back(side.edges[in->second][0]);
-          if (const auto out = side.outgoing.find(v); out != side.outgoing.end())
-            around.push_back(side.edges[out->second][1]);
-        }
-      double lo = 0, hi = 0;
-      bool   first = true;
-      for (const unsigned int v : around)
-        if (const auto k = side.kappa_gap.find(v); k != side.kappa_gap.end())
-          {
-            lo    = first ? sign * k->second : std::min(lo, sign * k->second);
-            hi    = first ? sign * k->second : std::max(hi, sign * k->second);
-            first = false;
-          }
-      if (lo < 0 && hi > 0)
-        {
-          const double k = std::max(-lo, hi);
-          lo = -k, hi = k;
-        }
-      return std::make_pair(lo, hi);
-    };
-    // the union of two ranges widened by the curvature factor: about 0 if
-    // it contains 0 (the signs stay apart: a flat block under a cylinder
-    // never qualifies), else about its centre without reaching 0 (two
-    // circles of different radii are told apart however close the radii)
-    const auto widened = [&](const std::pair<double, double> &r, const std::pair<double, double> &p) {
-      const double lo = std::min(r.first, p.first), hi = std::max(r.second, p.second);
-      const double f  = settings.curvature_factor;
-      if (lo <= 0 && hi >= 0)
-        return std::make_pair(f * lo, f * hi);
-      const double c = 0.5 * (lo + hi), w = 0.5 * f * (hi - lo);
-      return lo > 0 ? std::make_pair(std::max(c - w, 0.), c + w) : std::make_pair(c - w, std::min(c + w, 0.));
-    };
-
-    enum class Verdict
-    {
-      zero,
-      discretisation,
-      unresolved,
-      real
-    };
-    struct Judged
-    {
-      unsigned int m, s;
-      Verdict      verdict;
-      double       deviation; ///< chord deviation at the pair: q times the largest |kappa|
-    };
-    std::vector<Judged> judged;
-    {
-      const Side master_now = collect_side(mesh, master_id);
-      for (const auto &mp : master_partner)
-        {
-          const unsigned int m = mp.first, s = mp.second;
-          const auto         im = by_vertex.find(m), is = by_vertex.find(s);
-          const Inserted *ins = (im != by_vertex.end() ? im->second : (is != by_vertex.end() ? is->second : nullptr));
-          const Point     xm = mesh.vertex(m), xs = mesh.vertex(s);
-          const double    g0 = (xs - xm) * master_now.normal.at(m);
-          const double    tol = settings.coordinate_precision * (std::abs(xs[0]) + std::abs(xs[1])) +
-                             1e-12 * std::min(master_now.h.at(m), slave.h.count(s) ? slave.h.at(s) : master_now.h.at(m));
-          Judged j{m, s, std::abs(g0) <= tol ? Verdict::zero : Verdict::real, 0};
-          // the partner's offset from a chord of the receiving side: on one
-          // curve it is t(1 - t) L^2 kappa / 2 for a kappa between the
-          // chord's ends (q < 0 beyond them: the circle lies on the other side)
-          const auto same_curve = [&](const Side &onto, const unsigned int edge, const Point &chord,
-                                      const Vector &normal, const double q, const Side &from,
-                                      const unsigned int partner) {
-            const auto   band  = widened(curvature_range(onto, {onto.edges[edge][0], onto.edges[edge][1]}, 1.),
-                                       curvature_range(from, {partner}, -1.));
-            const double k     = std::max(-band.first, band.second);
-            const double delta = (mesh.vertex(partner) - chord) * normal;
-            j.deviation        = std::abs(q) * k;
-            if (delta >= std::min(q * band.first, q * band.second) - tol &&
-                delta <= std::max(q * band.first, q * band.second) + tol)
-              return Verdict::discretisation;
-            // near an inflection, a gap up to twice the largest chord
-            // deviation may still be one of a curve sampled too coarsely
-            if (band.first < 0 && band.second > 0 && std::abs(delta) <= 2 * std::abs(q) * k)
-              return Verdict::unresolved;
-            return Verdict::real;
-          };
-          if (j.verdict == Verdict::real && ins)
-            j.verdict = ins->on_master ? same_curve(master, ins->edge, ins->chord, ins->normal, ins->q, slave, s) :
-                                         same_curve(slave, ins->edge, ins->chord, ins->normal, ins->q, master, m);
-          else if (j.verdict == Verdict::real)
-            {
-              // two merged original vertices: the chord is the master edge
-              // at m nearest to the slave vertex along the side (on a convex
-              // vertex the slave vertex may lie beyond both)
-              unsigned int best = invalid;
-              double       best_t = 0, best_out = std::numeric_limits<double>::max();
-              for (const auto *edges : {&master.incoming, &master.outgoing})
-                if (const auto it = edges->find(m); it != edges->end())
-                  {
-                    const Point &a = mesh.vertex(master.edges[it->second][0]),
-                                &b = mesh.vertex(master.edges[it->second][1]);
-                    const double t   = chord_parameter(a, b, xs);
-                    const double out = std::max({-t, t - 1, 0.});
-                    if (out < best_out)
-                      best = it->second, best_t = t, best_out = out;
-                  }
-              if (best != invalid)
-                {
-                  const Point &a = mesh.vertex(master.edges[best][0]), &b = mesh.vertex(master.edges[best][1]);
-                  j.verdict = same_curve(master, best, a + best_t * (b - a), edge_normal(a, b),
-                                         0.5 * best_t * (1 - best_t) * a.distance_square(b), slave, s);
-                }
-            }
-          judged.push_back(j);
-        }
-    }
-
-    // (b) merged original vertices opposite each other: the slave vertex
-    // moves along its own side (on the circle of the edge the master normal
-    // hits, either edge at the vertex) to where the master vertex's normal
-    // line meets it; if the slave vertex ends its side, the master vertex
-    // moves to the point of its side closest to the slave vertex instead.
-    for (const auto &mp : master_partner)
-      {
-        const unsigned int m = mp.first, s = mp.second;
-        if (by_vertex.count(m) || by_vertex.count(s))
-          continue; // an inserted vertex was placed facing its partner already
-        const auto edges_at = [](const Side &side, const unsigned int v) {
-          std::vector<unsigned int> e;
-          for (const auto *map : {&side.incoming, &side.outgoing})
-            if (const auto it = map->find(v); it != map->end())
-              e.push_back(it->second);
-          return e;
-        };
-        const bool move_slave = !slave.is_end(s), move_master = !move_slave && !master.is_end(m);
-        const Side &side = move_slave ? slave : master;
-        const unsigned int v = move_slave ? s : m;
-        if (!move_slave && !move_master)
-          continue;
-        Point  target = mesh.vertex(v);
-        double best   = std::numeric_limits<double>::max();
-        for (const unsigned int e : edges_at(side, v))
-          {
-            const Point &a = mesh.vertex(side.edges[e][0]), &b = mesh.vertex(side.edges[e][1]);
-            Point        x;
-            bool         hit = false;
-            if (move_slave)
-              {
-                hit = cast_on_arc(a, b, side.edge_kappa[e], mesh.vertex(m), master.normal.at(m), x);
-                if (!hit)
-                  {
-                    // a straight edge: intersect the chord
-                    const Vector d = b - a, dir = master.normal.at(m);
-                    const double denom = cross(d, dir);
-                    if (std::abs(denom) > 1e-12 * d.norm())
-                      {
-                        const double t = cross(mesh.vertex(m) - a, dir) / denom;
-                        hit            = (t > 0 && t < 1) && side.edge_kappa[e] == 0;
-                        x              = a + t * d;
-                      }
-                  }
-              }
-            else
-              {
-                hit = closest_on_arc(a, b, side.edge_kappa[e], mesh.vertex(s), x);
-                if (!hit && side.edge_kappa[e] == 0)
-                  {
-                    const double t = chord_parameter(a, b, mesh.vertex(s));
-                    hit            = (t > 0 && t < 1);
-                    x              = a + t * (b - a);
-                  }
-              }
-            if (hit && x.distance(mesh.vertex(v)) < best)
-              best = x.distance(mesh.vertex(v)), target = x;
-          }
-        if (best > 0.5 * side.h.at(v))
-          continue; // no hit near the vertex (a corner): leave it
-        report.max_merge_shift = std::max(report.max_merge_shift, best);
-        mesh.move_vertex(v, target);
-      }
-
-    // (c) one decision for the interface
-    {
-      const Side   master_now = collect_side(mesh, master_id);
-      unsigned int n_real = 0;
-      for (const auto &j : judged)
-        n_real += (j.verdict == Verdict::real);
-      const bool one_curve = settings.close_discretisation_gaps && n_real == 0;
-      for (const auto &j : judged)
-        {
-          const Point  xm = mesh.vertex(j.m), xs = mesh.vertex(j.s);
-          const double g0 = (xs - xm) * master_now.normal.at(j.m);
-          const bool   close =
-            settings.close_discretisation_gaps && (j.verdict == Verdict::zero || (one_curve && j.verdict != Verdict::real));
-          if (!close)
-            {
-              if (settings.close_discretisation_gaps && j.verdict != Verdict::real && j.verdict != Verdict::zero)
-                report.unresolved_gaps.push_back({0.5 * (xm + xs), g0, j.deviation});
-              if (j.verdict != Verdict::zero)
-                {
-                  ++report.n_kept_gaps;
-                  report.max_kept_gap = std::max(report.max_kept_gap, std::abs(g0));
-                }
-              continue;
-            }
-          if (one_curve && j.verdict == Verdict::unresolved)
-            report.closed_unresolved_gaps.push_back({0.5 * (xm + xs), g0, j.deviation});
-          // move the new vertex onto the old one; of two old vertices the
-          // slave one, unless only the slave vertex ends its side
-          const bool is_new_master = by_vertex.count(j.m) > 0, is_new_slave = by_vertex.count(j.s) > 0;
-          bool       move_master   = is_new_master;
-          if (!is_new_master && !is_new_slave)
-            move_master = slave.is_end(j.s) && !master.is_end(j.m);
-          if (move_master)
-            mesh.move_vertex(j.m, xs);
-          else
-            mesh.move_vertex(j.s, xm);
-          if (!is_new_master && !is_new_slave)
-            report.max_merge_shift = std::max(report.max_merge_shift, xm.distance(xs));
-          ++report.n_closed_gaps;
-          report.max_closed_gap = std::max(report.max_closed_gap, std::abs(g0));
-        }
-    }
+    // the moves of rules 3 and 4 must leave every cell valid
     try
       {
         mesh.validate();
