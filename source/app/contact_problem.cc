@@ -1109,9 +1109,29 @@ namespace dealvem
         }
     }
     contact_settings.friction_coefficients = cycle_friction;
-    for (unsigned int i = 0; i < cycle_pairs.size(); ++i)
-      interfaces.push_back(NodeInsertion::insert(mesh, cycle_pairs[i].first, cycle_pairs[i].second, opt.degree,
-                                                 opt.insertion, i));
+    // the interfaces one after the other on one search structure of the
+    // boundary edges, the mesh validated once after the last (the cost
+    // grows with the interfaces' sizes, not their number times the mesh)
+    {
+      NodeInsertion::Settings settings = opt.insertion;
+      settings.validate_mesh           = false;
+      auto edges                       = NodeInsertion::boundary_edges(mesh);
+      for (unsigned int i = 0; i < cycle_pairs.size(); ++i)
+        interfaces.push_back(NodeInsertion::insert(mesh, cycle_pairs[i].first, cycle_pairs[i].second, opt.degree,
+                                                   settings, i, &edges));
+      try
+        {
+          mesh.validate();
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false, dealii::ExcMessage("Node insertion: moving the interface vertices onto their "
+                                                "partners made a cell invalid (the meshes of the two sides are "
+                                                "too far apart for their cells, or too coarse for the "
+                                                "curvature): " +
+                                                std::string(e.what())));
+        }
+    }
     // a later interface may have moved a vertex shared with an earlier one
     for (auto &itf : interfaces)
       NodeInsertion::update_geometry(mesh, itf);

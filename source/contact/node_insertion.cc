@@ -83,7 +83,10 @@ namespace dealvem
     {
       dealii::types::boundary_id               id = 0;
       std::vector<std::array<unsigned int, 2>> edges;
-      std::vector<unsigned int>                edge_indices; ///< mesh edge of edges[i]
+      std::vector<unsigned int>                edge_indices; ///< mesh edge of edges[i], ascending
+      /// The number of mesh edges when the side was collected (the edges
+      /// added since are the only new candidates of a later collection).
+      unsigned int                             n_mesh_edges = 0;
       std::set<dealii::types::material_id>     materials;
       std::map<VertexPair, unsigned int>       edge_by_pair; ///< -> index into edges
       std::map<unsigned int, unsigned int>     outgoing, incoming; ///< vertex -> index into edges
@@ -212,13 +215,27 @@ namespace dealvem
       return true;
     }
 
+    // The edges with boundary id @p id: those of @p known (ascending mesh
+    // edge indices) that still carry it, and the edges from @p first_new on;
+    // without @p known every edge of the mesh is looked at.
     Side
-    collect_side(const Mesh &mesh, const dealii::types::boundary_id id)
+    collect_side(const Mesh                      &mesh,
+                 const dealii::types::boundary_id id,
+                 const std::vector<unsigned int> *known,
+                 const unsigned int               first_new)
     {
       Side side;
-      side.id = id;
-      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      side.id           = id;
+      side.n_mesh_edges = mesh.n_edges();
+      std::vector<unsigned int> candidates;
+      if (known != nullptr)
+        candidates = *known;
+      for (unsigned int e = (known != nullptr ? first_new : 0); e < mesh.n_edges(); ++e)
+        candidates.push_back(e);
+      for (const unsigned int e : candidates)
         {
+          if (e >= mesh.n_edges())
+            continue;
           const auto &edge = mesh.edge(e);
           if (!edge.at_boundary() || edge.boundary_id != id)
             continue;
@@ -378,6 +395,21 @@ namespace dealvem
       for (auto &n : side.normal)
         n.second /= n.second.norm();
       return side;
+    }
+
+    // every edge of the mesh looked at
+    Side
+    collect_side(const Mesh &mesh, const dealii::types::boundary_id id)
+    {
+      return collect_side(mesh, id, nullptr, 0);
+    }
+
+    // the side again after the mesh changed: its edges (split edges keep
+    // their index) and the edges added since
+    Side
+    collect_side(const Mesh &mesh, const Side &previous)
+    {
+      return collect_side(mesh, previous.id, &previous.edge_indices, previous.n_mesh_edges);
     }
 
     std::string
@@ -959,7 +991,7 @@ namespace dealvem
                const NodeInsertion::Settings              &settings)
     {
       std::vector<JudgedPair> judged;
-      const Side              master_now = collect_side(mesh, master.id);
+      const Side              master_now = collect_side(mesh, master);
       for (const auto &mp : master_partner)
         {
           const unsigned int m = mp.first, s = mp.second;
@@ -1116,7 +1148,7 @@ namespace dealvem
                        const NodeInsertion::Settings  &settings,
                        NodeInsertion::Report          &report)
     {
-      const Side   master_now = collect_side(mesh, master.id);
+      const Side   master_now = collect_side(mesh, master);
       unsigned int n_real = 0;
       for (const auto &j : judged)
         n_real += (j.verdict == GapVerdict::real);
@@ -1178,19 +1210,36 @@ namespace dealvem
     {
       NodeInsertion::Report &report = result.report;
       // does the boundary of the body go on smoothly beyond the end vertex v
-      // of a side (the part was cut out of a smooth boundary)?
-      std::map<unsigned int, std::vector<unsigned int>> boundary_edges_at;
-      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
-        if (mesh.edge(e).at_boundary())
-          for (const unsigned int v : mesh.edge(e).vertices)
-            boundary_edges_at[v].push_back(e);
+      // of a side (the part was cut out of a smooth boundary)? The other
+      // boundary edge at v is found by walking around v from the side's
+      // own edge, cell by cell through the interior edges at v (no search
+      // of the whole mesh).
+      const auto other_boundary_edge = [&](const unsigned int own_edge, const unsigned int v) {
+        unsigned int edge = own_edge, cell = mesh.edge(own_edge).cells[0];
+        for (unsigned int step = 0; step < 64; ++step)
+          {
+            const auto  &c    = mesh.cell(cell);
+            unsigned int next = dealii::numbers::invalid_unsigned_int;
+            for (unsigned int i = 0; i < c.edges.size(); ++i)
+              if (c.edges[i] != edge && (mesh.edge(c.edges[i]).vertices[0] == v || mesh.edge(c.edges[i]).vertices[1] == v))
+                next = c.edges[i];
+            if (next == dealii::numbers::invalid_unsigned_int)
+              return next;
+            if (mesh.edge(next).at_boundary())
+              return next;
+            edge = next;
+            cell = (mesh.edge(next).cells[0] == cell ? mesh.edge(next).cells[1] : mesh.edge(next).cells[0]);
+          }
+        return dealii::numbers::invalid_unsigned_int;
+      };
       const auto continues_smoothly = [&](const Side &side, const unsigned int v) {
         if (!side.is_end(v))
           return true;
         const auto         own = side.outgoing.count(v) ? side.outgoing.at(v) : side.incoming.at(v);
         const unsigned int own_mesh_edge = side.edge_indices[own];
-        for (const unsigned int e : boundary_edges_at[v])
-          if (e != own_mesh_edge && mesh.edge(e).boundary_id != side.id)
+        const unsigned int other         = other_boundary_edge(own_mesh_edge, v);
+        for (const unsigned int e : std::vector<unsigned int>{other})
+          if (e != dealii::numbers::invalid_unsigned_int && e != own_mesh_edge && mesh.edge(e).boundary_id != side.id)
             {
               const auto  &ev = mesh.edge(e).vertices;
               const auto  &ov = side.edges[own];
@@ -1282,13 +1331,26 @@ namespace dealvem
 
 
 
+  NodeInsertion::BoundaryEdges
+  NodeInsertion::boundary_edges(const PolygonalMesh<2> &mesh)
+  {
+    BoundaryEdges edges;
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      if (mesh.edge(e).at_boundary())
+        edges[mesh.edge(e).boundary_id].push_back(e);
+    return edges;
+  }
+
+
+
   NodeInsertion::Interface
   NodeInsertion::insert(PolygonalMesh<2>                &mesh,
                         const dealii::types::boundary_id master_id,
                         const dealii::types::boundary_id slave_id,
                         const unsigned int               degree,
                         const Settings                  &settings,
-                        const unsigned int               index)
+                        const unsigned int               index,
+                        BoundaryEdges                   *edges)
   {
     const std::string name = interface_name(master_id, slave_id);
     AssertThrow(degree == 1 || degree == 2,
@@ -1301,8 +1363,16 @@ namespace dealvem
     result.index     = index;
     Report &report   = result.report;
 
-    const Side master = collect_side(mesh, master_id);
-    const Side slave  = collect_side(mesh, slave_id);
+    const unsigned int n_edges_before = mesh.n_edges();
+    const auto         known          = [&](const dealii::types::boundary_id id) -> const std::vector<unsigned int> * {
+      if (edges == nullptr)
+        return nullptr;
+      const auto it = edges->find(id);
+      static const std::vector<unsigned int> none;
+      return it == edges->end() ? &none : &it->second;
+    };
+    const Side master = collect_side(mesh, master_id, known(master_id), n_edges_before);
+    const Side slave  = collect_side(mesh, slave_id, known(slave_id), n_edges_before);
     check_interface(mesh, master_id, slave_id, master, slave, settings);
 
     // size of the interface: diagonal of the bounding box of both sides
@@ -1349,10 +1419,12 @@ namespace dealvem
     face_merged_vertices(mesh, master, slave, master_partner, by_vertex, report);
     close_or_keep_gaps(mesh, master, slave, judged, by_vertex, settings, report);
 
-    // the moves of rules 3 and 4 must leave every cell valid
+    // the moves of rules 3 and 4 must leave every cell valid (a caller of
+    // many interfaces validates once, after the last)
     try
       {
-        mesh.validate();
+        if (settings.validate_mesh)
+          mesh.validate();
       }
     catch (const std::exception &e)
       {
@@ -1369,8 +1441,15 @@ namespace dealvem
                                    number_string(lo.distance(hi)) + ") in mesh '" + mesh.name + "'."));
 
     // 5. pairs in the order of the slave side, and the paired sub-edges
-    const Side master_after = collect_side(mesh, master_id);
-    const Side slave_after  = collect_side(mesh, slave_id);
+    const Side master_after = collect_side(mesh, master);
+    const Side slave_after  = collect_side(mesh, slave);
+    result.master_edges     = master_after.edge_indices;
+    result.slave_edges      = slave_after.edge_indices;
+    // the edges this interface added, under their ids
+    if (edges != nullptr)
+      for (unsigned int e = n_edges_before; e < mesh.n_edges(); ++e)
+        if (mesh.edge(e).at_boundary())
+          (*edges)[mesh.edge(e).boundary_id].push_back(e);
     report.n_master_edges   = master_after.edges.size();
     report.n_slave_edges    = slave_after.edges.size();
     pair_slave_chains(mesh, master_after, slave_after, slave_partner, degree, index, result);
@@ -1395,8 +1474,20 @@ namespace dealvem
     // A cylinder on a block gets the block's normal whichever is master (the
     // half-space direction of Hertz's theory); with the master's normal
     // alone the two choices were 1.1 % of p0 apart in the Hertz pressure.
-    const Side master = collect_side(mesh, interface.master_id);
-    const Side slave  = collect_side(mesh, interface.slave_id);
+    // (the edges insert() recorded, if they are still those of the ids: no
+    // search of the whole mesh)
+    const auto still = [&](const std::vector<unsigned int> &list, const dealii::types::boundary_id id) {
+      for (const unsigned int e : list)
+        if (e >= mesh.n_edges() || !mesh.edge(e).at_boundary() || mesh.edge(e).boundary_id != id)
+          return false;
+      return !list.empty();
+    };
+    const bool recorded =
+      still(interface.master_edges, interface.master_id) && still(interface.slave_edges, interface.slave_id);
+    const Side master   = recorded ? collect_side(mesh, interface.master_id, &interface.master_edges, mesh.n_edges()) :
+                                     collect_side(mesh, interface.master_id);
+    const Side slave    = recorded ? collect_side(mesh, interface.slave_id, &interface.slave_edges, mesh.n_edges()) :
+                                     collect_side(mesh, interface.slave_id);
     {
       double       km = 0, ks = 0;
       unsigned int n  = 0;

@@ -165,7 +165,7 @@ main()
             "huge.vtk:7: x of point 1 is 1e+308; coordinates larger than 1e+100", "coordinate 1e308");
   vtk_fails("material.vtk", vtk_head + vtk_points + vtk_cells +
                               "CELL_DATA 5\nSCALARS material_id int 1\nLOOKUP_TABLE default\n4294967295\n0\n0\n0\n0\n",
-            "material.vtk:25: material_id of cell 0 is '4294967295'; ids must be integers from 0 to 254", "material id out of range");
+            "material.vtk:25: material_id of cell 0 is '4294967295'; material ids must be integers from 0 to 65535", "material id out of range");
   vtk_fails("not_an_edge.vtk",
             vtk_head + vtk_points + "CELLS 2 8\n4 0 1 2 3\n2 0 2\nCELL_TYPES 2\n7\n3\n" +
               "CELL_DATA 2\nSCALARS boundary_id int 1\nLOOKUP_TABLE default\n0\n1\n",
@@ -183,8 +183,8 @@ main()
              "binary.msh:2: binary gmsh files (file-type 1) are not supported", "binary flag");
   gmsh_fails("physical.msh",
              msh_format + msh_nodes + "$Elements\n2\n1 3 2 4294967295 1 1 2 5 4\n2 3 2 7 1 2 3 6 5\n$EndElements\n",
-             "physical.msh:15: the physical tag of element 1 of 2 is '4294967295', but it becomes a material or "
-             "boundary id, which must be an integer from 0 to 254",
+             "physical.msh:15: the physical tag of element 1 of 2 is '4294967295', but it becomes a material id, "
+             "which must be an integer from 0 to 65535",
              "physical id 4294967295");
   gmsh_fails("physical255.msh",
              msh_format + msh_nodes + "$Elements\n2\n1 1 2 255 1 1 2\n2 3 2 7 1 1 2 5 4\n$EndElements\n",

@@ -11,6 +11,7 @@
 
 #include <dealvem/mesh/polygonal_mesh.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -153,7 +154,22 @@ namespace dealvem
       double curvature_factor = 1.5;
       /// Close discretisation gaps (rule 3). false keeps every gap.
       bool close_discretisation_gaps = true;
+      /// Validate the whole mesh after the vertices moved (every cell).
+      /// A caller that inserts many interfaces into one mesh turns this off
+      /// and calls PolygonalMesh::validate() once after the last, so that
+      /// the cost does not grow with the number of interfaces times the
+      /// size of the mesh.
+      bool validate_mesh = true;
     };
+
+    /// The boundary edges of a mesh by boundary id (ascending edge
+    /// indices): the search structure of insert() for many interfaces on
+    /// one mesh.
+    using BoundaryEdges = std::map<dealii::types::boundary_id, std::vector<unsigned int>>;
+
+    /// The boundary edges of @p mesh by id (one pass over the edges).
+    static BoundaryEdges
+    boundary_edges(const PolygonalMesh<2> &mesh);
 
     /// A node inside the overlap that did not get a partner.
     struct UnpairedNode
@@ -223,6 +239,11 @@ namespace dealvem
       };
       /// The side this interface takes its normal from.
       NormalSide normal_side = NormalSide::master;
+      /// The mesh edges of the master side after insert() (update_geometry()
+      /// uses them while they still carry the master id).
+      std::vector<unsigned int> master_edges;
+      /// The mesh edges of the slave side after insert().
+      std::vector<unsigned int> slave_edges;
     };
 
     /**
@@ -234,6 +255,13 @@ namespace dealvem
      * if both ids belong to the same body, if the settings are out of
      * range, if the two parts do not face each other within the search
      * distance at all, or if moving vertices would invalidate a cell.
+     *
+     * With @p edges (boundary_edges() of the mesh, kept by the caller for
+     * all its interfaces), the two sides are taken from it instead of a
+     * search of the whole mesh, and the edges insert() creates are added to
+     * it; together with Settings::validate_mesh = false, inserting n
+     * interfaces costs time proportional to their sizes, not n times the
+     * mesh (an assembly of 1000 bodies has thousands of interfaces).
      */
     static Interface
     insert(PolygonalMesh<2>                &mesh,
@@ -241,7 +269,8 @@ namespace dealvem
            const dealii::types::boundary_id slave_id,
            const unsigned int               degree,
            const Settings                  &settings,
-           const unsigned int               index = 0);
+           const unsigned int               index = 0,
+           BoundaryEdges                   *edges = nullptr);
 
     /**
      * Recompute locations, normals, initial gaps and weights of the pairs
