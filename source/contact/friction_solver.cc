@@ -141,7 +141,10 @@ namespace dealvem
       if (end == std::string::npos)
         end = message.size();
       if (end > 200)
-        return message.substr(0, 200) + " ...";
+        {
+          const auto space = message.rfind(' ', 200);
+          return message.substr(0, space == std::string::npos ? 200 : space) + " ...";
+        }
       return message.substr(0, end);
     }
 
@@ -331,7 +334,7 @@ namespace dealvem
                               "multiplied by " + factor_string(factor) +
                               " but not from there with any smaller factor (steps down to " +
                               factor_string(continuation.min_step) + "; the last attempt, with the factor " +
-                              factor_string(last_target) + ", failed with: " + last_reason + ")." +
+                              factor_string(last_target) + ", failed with: " + headline(last_reason) + ")." +
                               (motions.empty() ? std::string() :
                                                  " Held only by friction: " + motions_and_bodies(motions) + ".") +
                               " Raise the friction coefficient, hold the bodies by Dirichlet, roller or point "
