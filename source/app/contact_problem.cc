@@ -1623,6 +1623,15 @@ namespace dealvem
                   std::cout << " " << h[0] << "/" << h[1] << "/" << h[2];
                 std::cout << ")";
               }
+            if (!fr.continuation_factors.empty())
+              {
+                // the plain Newton iteration failed; the continuation in the
+                // friction coefficient passed these factors of mu
+                std::cout << "; continuation in the friction coefficient, " << fr.n_failed_attempts
+                          << " failed attempt(s), converged with mu times";
+                for (const double f : fr.continuation_factors)
+                  std::cout << " " << f;
+              }
           }
         std::cout << std::endl;
       }

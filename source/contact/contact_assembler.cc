@@ -321,8 +321,12 @@ namespace dealvem
                                            const std::vector<PairState>            &state,
                                            const std::vector<double>               &reference,
                                            dealii::SparseMatrix<double>            &matrix,
-                                           dealii::Vector<double>                  &rhs) const
+                                           dealii::Vector<double>                  &rhs,
+                                           const double                             friction_factor) const
   {
+    AssertThrow(std::isfinite(friction_factor) && friction_factor > 0,
+                dealii::ExcMessage("assemble_friction(): the factor of the friction coefficients must be "
+                                   "positive and finite, not " + std::to_string(friction_factor) + "."));
     AssertThrow(settings.is_coulomb(),
                 dealii::ExcMessage("assemble_friction() needs 'Tangential = coulomb' or 'coulomb penalty'."));
     AssertDimension(state.size(), pairs.size());
@@ -338,7 +342,7 @@ namespace dealvem
         const double ct[4]  = {-p.tangent[0], -p.tangent[1], p.tangent[0], p.tangent[1]};
         const bool   closed = (state[i] != PairState::open);
         const double sigma  = (state[i] == PairState::slip_positive ? 1. : -1.);
-        const double mu     = friction_coefficient(i);
+        const double mu     = friction_factor * friction_coefficient(i);
 
         // a closed normal or sticking tangential row that the displacement
         // constraints fix already: as in assemble(), dropped if they agree

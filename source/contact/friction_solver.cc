@@ -4,6 +4,13 @@
 // ---------------------------------------------------------------------
 #include <dealvem/contact/friction_solver.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
 namespace dealvem
 {
   template <int dim>
@@ -38,9 +45,187 @@ namespace dealvem
 
 
 
+  template <int dim>
+  void
+  FrictionSolver<dim>::set_continuation(const Continuation &c)
+  {
+    AssertThrow(std::isfinite(c.first_factor) && c.first_factor > 1 && c.first_factor < 1e6,
+                dealii::ExcMessage("FrictionSolver: the first factor of the friction continuation must be above 1 "
+                                   "(and below 1e6), not " + std::to_string(c.first_factor) + "."));
+    AssertThrow(c.max_doublings <= 20,
+                dealii::ExcMessage("FrictionSolver: at most 20 doublings of the friction factor, not " +
+                                   std::to_string(c.max_doublings) + "."));
+    AssertThrow(std::isfinite(c.min_step) && c.min_step > 0 && c.min_step < 1,
+                dealii::ExcMessage("FrictionSolver: the smallest step of the friction continuation must lie in "
+                                   "(0, 1), not " + std::to_string(c.min_step) + "."));
+    AssertThrow(c.max_attempts >= 2,
+                dealii::ExcMessage("FrictionSolver: the friction continuation needs at least 2 attempts."));
+    continuation = c;
+  }
+
+
+
+  namespace
+  {
+    // The text of an exception without deal.II's location header.
+    std::string
+    reason_of(const std::exception &e)
+    {
+      std::string       what = e.what();
+      const std::string key  = "Additional information:";
+      const auto        pos  = what.find(key);
+      if (pos != std::string::npos)
+        what = what.substr(pos + key.size());
+      const auto trace = what.find("Stacktrace:");
+      if (trace != std::string::npos)
+        what = what.substr(0, trace);
+      // deal.II breaks the message into lines: one line again
+      std::string line;
+      for (const char ch : what)
+        if (ch == '\n' || ch == '\t' || ch == ' ')
+          {
+            if (!line.empty() && line.back() != ' ')
+              line += ' ';
+          }
+        else
+          line += ch;
+      what = line;
+      const auto first = what.find_first_not_of(" \t\n");
+      const auto last  = what.find_last_not_of(" \t\n");
+      return first == std::string::npos ? std::string() : what.substr(first, last - first + 1);
+    }
+
+    // The motions of RigidBodySupport::free_motions() ("[...] [...]"), each
+    // once, and the bodies they move.
+    std::string
+    motions_and_bodies(const std::string &motions)
+    {
+      std::vector<std::string> groups;
+      std::set<unsigned int>   bodies;
+      std::size_t              pos = 0;
+      while ((pos = motions.find('[', pos)) != std::string::npos)
+        {
+          const auto end = motions.find(']', pos);
+          if (end == std::string::npos)
+            break;
+          const std::string group = motions.substr(pos, end - pos + 1);
+          if (std::find(groups.begin(), groups.end(), group) == groups.end())
+            groups.push_back(group);
+          pos = end + 1;
+        }
+      const std::string key = "body ";
+      for (pos = motions.find(key); pos != std::string::npos; pos = motions.find(key, pos + 1))
+        {
+          std::size_t end = pos + key.size();
+          while (end < motions.size() && std::isdigit(static_cast<unsigned char>(motions[end])))
+            ++end;
+          if (end > pos + key.size())
+            bodies.insert(std::stoul(motions.substr(pos + key.size(), end - pos - key.size())));
+        }
+      if (groups.empty())
+        return motions;
+      std::string text = "bodies";
+      for (const auto b : bodies)
+        text += (b == *bodies.begin() ? " " : ", ") + std::to_string(b);
+      text += " (motions";
+      for (const auto &g : groups)
+        text += " " + g;
+      return text + ")";
+    }
+
+    // The first clause of a message, at most about 200 characters.
+    std::string
+    headline(const std::string &message)
+    {
+      auto end = std::min(message.find(" ("), message.find(". "));
+      if (end == std::string::npos)
+        end = message.size();
+      if (end > 200)
+        {
+          const auto space = message.rfind(' ', 200);
+          return message.substr(0, space == std::string::npos ? 200 : space) + " ...";
+        }
+      return message.substr(0, end);
+    }
+
+    std::string
+    factor_string(const double f)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << f;
+      return s.str();
+    }
+  } // namespace
+
+
+
   // The driver: the loop over linear solves; the states, the Coulomb test,
   // convergence, cycles, the iteration limit and the equilibrium safeguard
   // are FrictionStateUpdate's.
+  template <int dim>
+  typename FrictionStateUpdate<dim>::State
+  FrictionSolver<dim>::iterate(FrictionStateUpdate<dim>           &update,
+                               const dealii::SparseMatrix<double> &system_matrix,
+                               const dealii::Vector<double>       &system_rhs,
+                               dealii::SparseMatrix<double>       &matrix,
+                               dealii::Vector<double>             &x,
+                               const std::vector<PairState>       &start,
+                               const std::vector<double>          &reference,
+                               Result                             &result) const
+  {
+    const unsigned int n_pairs     = contact.n_pairs();
+    const auto         n           = system_matrix.m() - contact.n_multipliers();
+    const bool         multipliers = (settings.tangential == ContactSettings::Tangential::coulomb);
+    const double       factor      = update.get_friction_factor();
+    auto               state       = update.start(start);
+    dealii::Vector<double> rhs;
+    // count the solves of this attempt also when it fails
+    unsigned int n_counted = 0;
+    const auto   count     = [&]() {
+      result.n_iterations += state.n_iterations - n_counted;
+      for (unsigned int k = n_counted; k < state.history.size(); ++k)
+        result.history.push_back(state.history[k]);
+      n_counted = state.n_iterations;
+    };
+    try
+      {
+        do
+          {
+            matrix.copy_from(system_matrix);
+            rhs = system_rhs;
+            contact.assemble_friction(constraints, state.state, reference, matrix, rhs, factor);
+            if (!multipliers)
+              {
+                // the stick springs: the condensed solvers precondition them
+                // by tying their ends
+                std::vector<bool> sticking(n_pairs);
+                for (unsigned int i = 0; i < n_pairs; ++i)
+                  sticking[i] = (state.state[i] == PairState::stick);
+                solver.set_stick_directions(contact.stick_penalty_rows(constraints, sticking));
+              }
+            solver.set_context("Newton iteration " + std::to_string(state.n_iterations + 1) +
+                               " of the friction solve" +
+                               (factor != 1. ? " (friction coefficients times " + factor_string(factor) + ")" :
+                                               std::string()));
+            solver.solve(matrix, n, x, rhs);
+            constraints.distribute(x);
+            result.linear_iterations += solver.last_iterations();
+          }
+        while (!update.update(state, contact, x, reference));
+      }
+    catch (...)
+      {
+        count();
+        throw;
+      }
+    count();
+    return state;
+  }
+
+
+
+  // Solve the step; if the plain iteration fails, continue in the factor of
+  // the friction coefficients from a converging factor above 1 down to 1.
   template <int dim>
   typename FrictionSolver<dim>::Result
   FrictionSolver<dim>::solve(const dealii::SparseMatrix<double> &system_matrix,
@@ -50,43 +235,119 @@ namespace dealvem
                              const std::vector<PairState>       &start,
                              const std::vector<double>          &reference)
   {
-    const unsigned int n_pairs     = contact.n_pairs();
-    const auto         n           = system_matrix.m() - contact.n_multipliers();
-    const bool         multipliers = (settings.tangential == ContactSettings::Tangential::coulomb);
+    const unsigned int n_pairs = contact.n_pairs();
     AssertDimension(start.size(), n_pairs);
     AssertDimension(reference.size(), n_pairs);
     FrictionStateUpdate<dim> update(contact.get_pairs(), settings, c, contact.get_penalty());
     update.set_support(support);
-    auto                   state = update.start(start);
-    Result                 result;
-    dealii::Vector<double> rhs;
-    do
+    Result                                   result;
+    typename FrictionStateUpdate<dim>::State state;
+    const dealii::Vector<double>             x_start = x;
+    try
       {
-        matrix.copy_from(system_matrix);
-        rhs = system_rhs;
-        contact.assemble_friction(constraints, state.state, reference, matrix, rhs);
-        if (!multipliers)
-          {
-            // the stick springs: the condensed solvers precondition them by
-            // tying their ends
-            std::vector<bool> sticking(n_pairs);
-            for (unsigned int i = 0; i < n_pairs; ++i)
-              sticking[i] = (state.state[i] == PairState::stick);
-            solver.set_stick_directions(contact.stick_penalty_rows(constraints, sticking));
-          }
-        solver.set_context("Newton iteration " + std::to_string(state.n_iterations + 1) + " of the friction solve");
-        solver.solve(matrix, n, x, rhs);
-        constraints.distribute(x);
-        result.linear_iterations += solver.last_iterations();
+        state = iterate(update, system_matrix, system_rhs, matrix, x, start, reference, result);
       }
-    while (!update.update(state, contact, x, reference));
+    catch (const std::exception &plain_failure)
+      {
+        if (!continuation.enabled)
+          throw;
+        ++result.n_failed_attempts;
+        const std::string plain_reason = reason_of(plain_failure);
+
+        // 1. a factor at which the iteration converges
+        double       factor    = continuation.first_factor;
+        bool         converged = false;
+        unsigned int attempts  = 1;
+        for (unsigned int k = 0; k <= continuation.max_doublings && !converged; ++k, factor *= 2)
+          {
+            update.set_friction_factor(factor);
+            x = x_start;
+            ++attempts;
+            try
+              {
+                state     = iterate(update, system_matrix, system_rhs, matrix, x, start, reference, result);
+                converged = true;
+              }
+            catch (const std::exception &)
+              {
+                ++result.n_failed_attempts;
+              }
+            if (converged)
+              break;
+          }
+        if (!converged)
+          throw;
+        result.continuation_factors.push_back(factor);
+
+        // 2. lower it to 1, each attempt from the states of the last factor
+        // that converged
+        double      step = factor - 1;
+        std::string last_reason;
+        double      last_target = 1;
+        while (factor > 1)
+          {
+            const double target = std::max(1., factor - step);
+            AssertThrow(attempts < continuation.max_attempts,
+                        dealii::ExcMessage(
+                          "The friction continuation did not reach the friction coefficients as set within " +
+                          std::to_string(continuation.max_attempts) +
+                          " Newton iterations; it converged last with every coefficient multiplied by " +
+                          factor_string(factor) + ". The semismooth Newton iteration itself failed with: " +
+                          plain_reason));
+            ++attempts;
+            update.set_friction_factor(target);
+            const dealii::Vector<double> x_converged = x;
+            try
+              {
+                state  = iterate(update, system_matrix, system_rhs, matrix, x, state.state, reference, result);
+                factor = target;
+                step *= 2;
+                result.continuation_factors.push_back(factor);
+                continue;
+              }
+            catch (const std::exception &e)
+              {
+                ++result.n_failed_attempts;
+                last_reason = reason_of(e);
+                last_target = target;
+                x           = x_converged;
+              }
+            step = (factor - target) / 2;
+            if (step < continuation.min_step)
+              {
+                // name the rigid-body motions that the closed pairs hold
+                // only by friction
+                std::string motions;
+                if (support != nullptr)
+                  {
+                    std::vector<bool> closed(n_pairs), held(n_pairs, false);
+                    for (unsigned int i = 0; i < n_pairs; ++i)
+                      closed[i] = (state.state[i] != PairState::open);
+                    motions = support->free_motions(closed, held);
+                  }
+                AssertThrow(false,
+                            dealii::ExcMessage(
+                              "No static equilibrium: the loads need more friction than the contact "
+                              "interfaces can carry. The semismooth Newton iteration failed (" +
+                              headline(plain_reason) +
+                              "); continued in the friction coefficient, it converged with every coefficient "
+                              "multiplied by " + factor_string(factor) +
+                              " but not from there with any smaller factor (steps down to " +
+                              factor_string(continuation.min_step) + "; the last attempt, with the factor " +
+                              factor_string(last_target) + ", failed with: " + headline(last_reason) + ")." +
+                              (motions.empty() ? std::string() :
+                                                 " Held only by friction: " + motions_and_bodies(motions) + ".") +
+                              " Raise the friction coefficient, hold the bodies by Dirichlet, roller or point "
+                              "constraints, or reduce the load."));
+              }
+          }
+      }
 
     // converged: slips, friction forces, references for the next step and
-    // the dissipated energy
+    // the dissipated energy, all against the reference of the start of the
+    // step
     auto step                    = update.converged_step(state, reference);
     result.state                 = state.state;
-    result.n_iterations          = state.n_iterations;
-    result.history               = state.history;
     result.slip                  = std::move(step.slip);
     result.slip_increment        = std::move(step.slip_increment);
     result.tangential_multiplier = std::move(step.tangential_multiplier);

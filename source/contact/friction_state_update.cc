@@ -35,6 +35,18 @@ namespace dealvem
 
 
   template <int dim>
+  void
+  FrictionStateUpdate<dim>::set_friction_factor(const double factor)
+  {
+    AssertThrow(std::isfinite(factor) && factor > 0,
+                dealii::ExcMessage("FrictionStateUpdate: the factor of the friction coefficients must be positive "
+                                   "and finite, not " + std::to_string(factor) + "."));
+    friction_factor = factor;
+  }
+
+
+
+  template <int dim>
   std::vector<PairState>
   FrictionStateUpdate<dim>::initial_state() const
   {

@@ -330,14 +330,18 @@ namespace dealvem
      *   is the row of $\lambda_{t,i}$; with the penalty, $\lambda_{t,i}$ is
      *   replaced by $-\mu\sigma_i\lambda_{n,i}$ in the displacement rows
      *   (the matrix is no longer symmetric in both cases).
-     * @p reference holds the $r_i$.
+     * @p reference holds the $r_i$. Every friction coefficient $\mu$ is
+     * multiplied by @p friction_factor (1 for the model as set; the
+     * continuation of FrictionSolver solves with larger factors on its way
+     * to 1).
      */
     void
     assemble_friction(const dealii::AffineConstraints<double> &constraints,
                       const std::vector<PairState>            &state,
                       const std::vector<double>               &reference,
                       dealii::SparseMatrix<double>            &matrix,
-                      dealii::Vector<double>                  &rhs) const;
+                      dealii::Vector<double>                  &rhs,
+                      const double                             friction_factor = 1.) const;
 
     /// The friction coefficient of pair i.
     double

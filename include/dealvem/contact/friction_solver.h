@@ -71,8 +71,52 @@ namespace dealvem
    * before, or in three iterations in a row, or if a body would be free even
    * with every closed pair sticking (pulled off its partner), the load step
    * has no static equilibrium (for example a tangential load above $\mu$
-   * times the normal load on a body held only by friction) and solve()
-   * throws a message saying so.
+   * times the normal load on a body held only by friction), as far as this
+   * iteration can tell: near the friction limit it can also fail where an
+   * equilibrium exists, so solve() then decides by the continuation below
+   * and throws "No static equilibrium" only when that ends without one
+   * (or the plain failure when the continuation cannot start).
+   *
+   * <h3>Continuation in the friction coefficient</h3>
+   * Close to the friction limit the plain iteration can stop without an
+   * answer either way: a cycle or the iteration limit says nothing about
+   * whether an equilibrium exists, and the safeguard judges the iterates,
+   * not the problem (below the limit of the row of blocks of
+   * tests/contact/friction_limit the iteration cycled rather than saying
+   * that there is no equilibrium). With larger friction coefficients the
+   * stick zone is larger and the iteration easy, and the solution changes
+   * little with a small change of the coefficients. So when the iteration
+   * fails, solve() continues in a factor $f$ that multiplies every
+   * friction coefficient, inside the load step:
+   * 1. solve with $f = f_0$ (Continuation::first_factor, 2) from the states
+   *    the step started from; if that fails too, double $f$ up to
+   *    Continuation::max_doublings times; if no factor converges, the
+   *    failure of the plain iteration is passed on;
+   * 2. from the converged factor $f$ try $f' = \max(1, f - \delta)$,
+   *    starting from the states converged at $f$ ($\delta = f - 1$
+   *    first, i.e. straight to the target). If it converges, $f'$ becomes
+   *    the current factor and $\delta$ is doubled; if not, $\delta$ is
+   *    halved to half the distance just tried;
+   * 3. stop at $f = 1$, or, when $\delta$ falls below
+   *    Continuation::min_step, with "No static equilibrium": the
+   *    iteration converged with every coefficient multiplied by $f$ but not
+   *    from there with any factor down to 1. The message gives $f$, the
+   *    last failure, and the bodies and rigid-body motions that the closed
+   *    pairs hold only by friction.
+   *
+   * A failure a small step away from a converged neighbour is so taken as
+   * the absence of an equilibrium; the limit found this way is sharp to
+   * about $2\cdot 10^{-3}$ relative (the test finds it within that of the
+   * limits of statics, a friction limit and a friction-and-rocking one).
+   *
+   * Every attempt solves the same load step: the same load, the reference
+   * slips $r_i$ of the start of the step, and only the pair states carried
+   * from one factor to the next. The converged answer at $f = 1$ is
+   * therefore a solution of the original step, and the slip increments and
+   * the dissipated energy are those of the start-of-step reference (no
+   * energy of the intermediate factors is counted). A step that the plain
+   * iteration solves never enters the continuation, so its answer is
+   * unchanged.
    *
    * <h3>Driver and rule</h3>
    * solve() only owns the loop (assemble_friction() for the current
@@ -117,6 +161,32 @@ namespace dealvem
       /// $\sum_{\text{slip}} \lambda_{t,i}\,\Delta s_i$ (with the penalty, the
       /// plastic slip increment).
       double dissipated_energy = 0;
+      /// The factors of the friction coefficients at which the continuation
+      /// converged, in order, ending with 1; empty when the plain iteration
+      /// converged.
+      std::vector<double> continuation_factors;
+      /// Semismooth Newton iterations that did not converge (the plain one
+      /// and those of the continuation); their saddle-point solves are
+      /// counted in n_iterations.
+      unsigned int n_failed_attempts = 0;
+    };
+
+    /// The parameters of the continuation in the friction coefficient (see
+    /// the class documentation).
+    struct Continuation
+    {
+      /// Whether solve() continues in the friction coefficient when the
+      /// plain iteration fails; false passes its failure on.
+      bool enabled = true;
+      /// The first factor of the friction coefficients tried.
+      double first_factor = 2.;
+      /// How often that factor is doubled when it does not converge either.
+      unsigned int max_doublings = 4;
+      /// The smallest decrement of the factor; the step has no static
+      /// equilibrium when the factor cannot be lowered by this much.
+      double min_step = 1e-3;
+      /// At most this many Newton iterations (attempts) in one continuation.
+      unsigned int max_attempts = 200;
     };
 
     /// @p c is the constant of the complementarity functions (units E/h).
@@ -141,6 +211,10 @@ namespace dealvem
     std::vector<PairState>
     initial_state() const;
 
+    /// Set the parameters of the continuation in the friction coefficient.
+    void
+    set_continuation(const Continuation &continuation);
+
     /**
      * Solve one load step. @p system_matrix and @p system_rhs hold the
      * elasticity part (as for ActiveSetSolver); @p state holds the states to
@@ -157,12 +231,29 @@ namespace dealvem
           const std::vector<double>          &reference);
 
   private:
+    /**
+     * One semismooth Newton iteration from @p start with the friction
+     * coefficients multiplied by the factor set in @p update; adds its
+     * saddle-point solves to @p result (n_iterations, linear_iterations,
+     * history) also when it throws. Returns the converged state.
+     */
+    typename FrictionStateUpdate<dim>::State
+    iterate(FrictionStateUpdate<dim>           &update,
+            const dealii::SparseMatrix<double> &system_matrix,
+            const dealii::Vector<double>       &system_rhs,
+            dealii::SparseMatrix<double>       &matrix,
+            dealii::Vector<double>             &x,
+            const std::vector<PairState>       &start,
+            const std::vector<double>          &reference,
+            Result                             &result) const;
+
     const ContactAssembler<dim>             &contact;
     const dealii::AffineConstraints<double> &constraints;
     SaddlePointSolver                       &solver;
     ContactSettings                          settings;
     double                                   c;
     const RigidBodySupport                  *support = nullptr;
+    Continuation                             continuation;
   };
 } // namespace dealvem
 

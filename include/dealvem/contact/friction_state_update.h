@@ -177,11 +177,28 @@ namespace dealvem
     StepResult
     converged_step(const State &state, const std::vector<double> &reference) const;
 
-    /// The friction coefficient of pair @p i.
+    /**
+     * Multiply every friction coefficient by @p factor (positive, finite;
+     * 1, the default, is the model as set) in the rule. The continuation of
+     * FrictionSolver::solve() uses it together with the same factor in
+     * ContactAssembler::assemble_friction().
+     */
+    void
+    set_friction_factor(const double factor);
+
+    /// The factor of set_friction_factor().
+    double
+    get_friction_factor() const
+    {
+      return friction_factor;
+    }
+
+    /// The friction coefficient of pair @p i the rule uses: the one of its
+    /// interface times the factor of set_friction_factor().
     double
     friction_coefficient(const unsigned int i) const
     {
-      return settings.friction_coefficient_of(pairs[i].interface);
+      return friction_factor * settings.friction_coefficient_of(pairs[i].interface);
     }
 
   private:
@@ -190,6 +207,7 @@ namespace dealvem
     double                              c;
     double                              penalty;
     const RigidBodySupport             *support = nullptr;
+    double                              friction_factor = 1.;
   };
 } // namespace dealvem
 
