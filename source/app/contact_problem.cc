@@ -127,7 +127,7 @@ namespace dealvem
   ContactProblem::declare_parameters(dealii::ParameterHandler &prm, const unsigned int n_body_sections)
   {
     using namespace dealii::Patterns;
-    prm.declare_entry("Number of bodies", "1", Integer(1, 100000),
+    prm.declare_entry("Number of bodies", "1", Integer(1, max_body_sections),
                       "Number of body sections. Body 0 is given by the sections 'Mesh' and "
                       "'Material', bodies 1, 2, ... by the sections 'Body 1', 'Body 2', ... (any number). "
                       "Each body's cells get the body index as material id. A mesh section with "
@@ -278,6 +278,7 @@ namespace dealvem
     // reports its errors): "subsection Body b", "set Number of bodies = n"
     // and "include file", recursively
     unsigned int                 needed = default_body_sections;
+    unsigned int                 largest = 0;
     std::vector<std::string>     files{filename};
     std::set<std::string>        seen;
     while (!files.empty() && seen.size() < 100)
@@ -299,7 +300,8 @@ namespace dealvem
                 if (InputParsing::trim(w2).find_first_not_of("0123456789") == std::string::npos &&
                     w2.size() <= 6)
                   b = std::stoul(w2);
-                needed = std::max<unsigned int>(needed, b + 1);
+                needed  = std::max<unsigned int>(needed, b + 1);
+                largest = std::max<unsigned int>(largest, b);
               }
             else if (w0 == "set" && w1 == "Number")
               {
@@ -318,7 +320,14 @@ namespace dealvem
               }
           }
       }
-    return std::min(needed, 100000u);
+    AssertThrow(needed <= max_body_sections,
+                dealii::ExcMessage("Parameter file '" + filename + "': it names section 'Body " +
+                                   std::to_string(largest) + "' or sets 'Number of bodies' to " +
+                                   std::to_string(needed) + "; a parameter file describes at most " +
+                                   std::to_string(max_body_sections) +
+                                   " bodies by sections. Read an assembly of more bodies from one mesh file, a "
+                                   "body per material id ('Mesh/Parts as bodies = true')."));
+    return needed;
   }
 
 
@@ -339,12 +348,20 @@ namespace dealvem
                                      "ContactProblem::declare_parameters(prm, ContactProblem::body_sections(file)) "
                                      "(the program does)."));
     }
-    // sections of bodies beyond the number of bodies would be ignored
-    for (unsigned int b = n; prm.subsection_path_exists({"Body " + std::to_string(b)}); ++b)
-      InputParsing::check_section_unused(prm, "Body " + std::to_string(b),
-                                         "'Number of bodies' is " + std::to_string(n) + ": section 'Body " +
-                                           std::to_string(b) + "' is read only with 'Number of bodies' at least " +
-                                           std::to_string(b + 1) + ".");
+    // sections of bodies beyond the number of bodies would be ignored (one
+    // listing of the changed entries for all sections: a file may declare
+    // many)
+    for (const auto &path : InputParsing::changed_entries(prm, ""))
+      if (path.compare(0, 5, "Body ") == 0)
+        {
+          const std::string  section = path.substr(0, path.find('/'));
+          const unsigned int b       = std::stoul(section.substr(5));
+          if (b >= n)
+            InputParsing::check_section_unused(prm, section,
+                                               "'Number of bodies' is " + std::to_string(n) + ": section '" +
+                                                 section + "' is read only with 'Number of bodies' at least " +
+                                                 std::to_string(b + 1) + ".");
+        }
     prm.enter_subsection("Convergence study");
     n_cycles = prm.get_integer("Refinement cycles");
     prm.leave_subsection();

@@ -165,10 +165,11 @@ namespace dealvem
     // the sections that only contact problems (Number of bodies > 1) read:
     // a file that sets them describes another problem than this one
     {
+      // (the sections with a changed entry, from one listing)
       std::set<std::string> body_sections;
-      for (const auto &e : InputParsing::list_entries(prm))
-        if (e.path.compare(0, 5, "Body ") == 0)
-          body_sections.insert(e.path.substr(0, e.path.find('/')));
+      for (const auto &path : InputParsing::changed_entries(prm, ""))
+        if (path.compare(0, 5, "Body ") == 0)
+          body_sections.insert(path.substr(0, path.find('/')));
       for (const auto &section : body_sections)
         InputParsing::check_section_unused(prm, section,
                                            "'Number of bodies' is 1: section '" + section +

@@ -110,6 +110,10 @@ namespace dealvem
     /// The largest number of bodies (add_body(), add_parts()).
     static constexpr unsigned int max_bodies = 100000;
 
+    /// The largest number of body sections of a parameter file (more
+    /// bodies come from one mesh file with 'Parts as bodies').
+    static constexpr unsigned int max_body_sections = 500;
+
     /// Everything but the bodies, the contact pairs and the boundary
     /// conditions: the settings of sections "Discretization", "Contact",
     /// "Solver", "Load steps" and "Output" of the parameter file.
@@ -198,7 +202,8 @@ namespace dealvem
      * files it includes) needs: one more than the largest b of a
      * "subsection Body b", at least 'Number of bodies' and at least
      * default_body_sections. Call it before declare_parameters() to read a
-     * file with any number of bodies.
+     * file with any number of bodies (up to max_body_sections: more is an
+     * error naming the file).
      */
     static unsigned int
     body_sections(const std::string &filename);
