@@ -127,7 +127,10 @@ namespace dealvem
       if (l1 == 0 || l2 == 0 || l3 == 0)
         return 0;
       const double sine = cross(d1, d2) / (l1 * l2);
-      if ((d1 * d2) <= 0 || std::abs(sine) > corner_sine)
+      // a turn of round-off size is a straight side, not a circle of
+      // enormous radius: the arc through points 1e16 away from its centre
+      // would place a new vertex wrongly by the size of the coordinates
+      if ((d1 * d2) <= 0 || std::abs(sine) > corner_sine || std::abs(sine) < 1e-9)
         return 0;
       return 2 * cross(d1, d2) / (l1 * l2 * l3);
     }
@@ -150,7 +153,8 @@ namespace dealvem
     {
       Arc          arc;
       const double L = a.distance(b);
-      if (kappa == 0 || !std::isfinite(kappa) || std::abs(kappa) * L >= 2)
+      // (|kappa| L below 1e-9: straight to round-off, see menger_curvature())
+      if (kappa == 0 || !std::isfinite(kappa) || std::abs(kappa) * L >= 2 || std::abs(kappa) * L < 1e-9)
         return arc;
       arc.radius     = 1. / std::abs(kappa);
       const double s = std::sqrt(arc.radius * arc.radius - 0.25 * L * L);
