@@ -124,13 +124,31 @@ namespace dealvem
     // a row of many bodies resting on one another costs time linear in the
     // rows, and the dense test of step 3 only sees pieces held through one
     // another in a loop
-    {
-      std::vector<std::vector<unsigned int>> rows_of(n_pieces);
-      for (unsigned int r = 0; r < rows.size(); ++r)
-        if (!single[r])
+    // the rows that touch each piece and another one, and a piece's own
+    // rows plus its part of those rows whose other pieces are all held
+    std::vector<std::vector<unsigned int>> rows_of(n_pieces);
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      if (!single[r])
+        for (const auto &e : *rows[r])
+          if (rows_of[e.first / 3].empty() || rows_of[e.first / 3].back() != r)
+            rows_of[e.first / 3].push_back(r);
+    const auto restricted_gram = [&](const unsigned int p) {
+      Eigen::Matrix3d g = own[p];
+      for (const unsigned int r : rows_of[p])
+        {
+          Eigen::Vector3d v      = Eigen::Vector3d::Zero();
+          bool            others = false;
           for (const auto &e : *rows[r])
-            if (rows_of[e.first / 3].empty() || rows_of[e.first / 3].back() != r)
-              rows_of[e.first / 3].push_back(r);
+            if (e.first / 3 == p)
+              v(e.first % 3) += e.second;
+            else
+              others = others || !held[e.first / 3];
+          if (!others)
+            g += v * v.transpose();
+        }
+      return g;
+    };
+    {
       std::vector<unsigned int> work;
       std::vector<bool>         queued(n_pieces, false);
       const auto                queue_neighbours = [&](const unsigned int p) {
@@ -152,20 +170,7 @@ namespace dealvem
           queued[p] = false;
           if (held[p])
             continue;
-          Eigen::Matrix3d g = own[p];
-          for (const unsigned int r : rows_of[p])
-            {
-              Eigen::Vector3d v      = Eigen::Vector3d::Zero();
-              bool            others = false;
-              for (const auto &e : *rows[r])
-                if (e.first / 3 == p)
-                  v(e.first % 3) += e.second;
-                else
-                  others = others || !held[e.first / 3];
-              if (!others)
-                g += v * v.transpose();
-            }
-          if (full_rank(g))
+          if (full_rank(restricted_gram(p)))
             {
               held[p] = true;
               queue_neighbours(p);
@@ -193,21 +198,7 @@ namespace dealvem
         {
           // (the rows of held partners fix nothing of this piece beyond its
           // own rows: add its part of the rows that touch held pieces too)
-          Eigen::Matrix3d g = own[p];
-          for (unsigned int r = 0; r < rows.size(); ++r)
-            if (!single[r])
-              {
-                Eigen::Vector3d v      = Eigen::Vector3d::Zero();
-                bool            others = false;
-                for (const auto &e : *rows[r])
-                  if (e.first / 3 == p)
-                    v(e.first % 3) += e.second;
-                  else
-                    others = others || !held[e.first / 3];
-                if (!others)
-                  g += v * v.transpose();
-              }
-          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(g);
+          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(restricted_gram(p));
           const double vmax = std::max(eig.eigenvalues()(2), 0.);
           for (unsigned int k = 0; k < 3; ++k)
             if (vmax == 0 || eig.eigenvalues()(k) <= 1e-10 * vmax)
