@@ -475,8 +475,9 @@ namespace dealvem
         const auto        fields = InputParsing::split(entry, ':', true);
         AssertThrow(fields.size() == 2 || fields.size() == 3,
                     dealii::ExcMessage("Parameter '" + name +
-                                       "': expected 'master id : slave id' or 'master id : slave id : "
-                                       "friction coefficient'."));
+                                       "': expected 'master id : slave id', 'master id : slave id : "
+                                       "friction coefficient', or 'auto' (the interfaces found by contact "
+                                       "detection)."));
         double mu = -1;
         if (fields.size() == 3)
           {
