@@ -35,13 +35,16 @@
 #include <dealvem/vem/vem_values.h>
 
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <set>
 #include <sstream>
 
 namespace dealvem
@@ -73,7 +76,7 @@ namespace dealvem
       OutputFile    csv_file(filename);
       std::ostream &csv = csv_file.stream();
       csv << "interface,master_body,slave_body,master_id,slave_id,detected,length,normal_force,"
-             "tangential_force,force_x,force_y,centre_x,centre_y,open,stick,slip\n";
+             "tangential_force,force_x,force_y,centre_x,centre_y,open,stick,slip,friction_coefficient\n";
       csv << std::setprecision(15);
       for (unsigned int k = 0; k < interfaces.size(); ++k)
         {
@@ -81,7 +84,8 @@ namespace dealvem
           csv << k << "," << r.master_body << "," << r.slave_body << "," << r.master_id << "," << r.slave_id << ","
               << r.detected << "," << r.length << "," << r.normal_force << "," << r.tangential_force << ","
               << r.force[0] << "," << r.force[1] << "," << r.centre_of_pressure[0] << ","
-              << r.centre_of_pressure[1] << "," << r.n_open << "," << r.n_stick << "," << r.n_slip << "\n";
+              << r.centre_of_pressure[1] << "," << r.n_open << "," << r.n_stick << "," << r.n_slip << ","
+              << r.friction_coefficient << "\n";
         }
       csv_file.commit();
     }
@@ -119,6 +123,19 @@ namespace dealvem
       s << prefix << "-step-" << std::setw(3) << std::setfill('0') << step;
       return s.str();
     }
+    // A material name: letters, digits, '_', '-', '.' (not empty).
+    void
+    check_material_name(const std::string &name, const std::string &where)
+    {
+      if (name.empty() && where.find("Material/Name") != std::string::npos)
+        return; // the entry may stay empty
+      const bool valid = !name.empty() && std::all_of(name.begin(), name.end(), [](const char c) {
+                           return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+                         });
+      AssertThrow(valid, dealii::ExcMessage(where + ": the material name '" + name + "' is not valid: use letters, "
+                                            "digits, '_', '-' and '.' (and '*' in a friction entry for any "
+                                            "material)."));
+    }
   } // namespace
 
 
@@ -134,9 +151,14 @@ namespace dealvem
                       "'Parts as bodies = true' adds one body per part of its file.");
     const std::string part_materials_doc =
       "With 'Mesh/Parts as bodies': the materials of the parts, 'material id : E : nu; ...' (the "
-      "ids of the mesh file); parts not listed take this section's Young's modulus and Poisson's ratio.";
+      "ids of the mesh file), or 'material id : E : nu : name' with a material name for 'Contact/Friction "
+      "between materials'; parts not listed take this section's Young's modulus, Poisson's ratio and name.";
+    const std::string material_name_doc =
+      "A name of this body's material (letters, digits, '_', '-', '.'), for 'Contact/Friction between "
+      "materials'. Empty: none.";
     prm.enter_subsection("Material");
     prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
+    prm.declare_entry("Name", "", Anything(), material_name_doc);
     prm.leave_subsection();
     for (unsigned int b = 1; b < std::max(n_body_sections, 2u); ++b)
       {
@@ -149,6 +171,7 @@ namespace dealvem
         prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
                           "Poisson's ratio nu, -1 < nu < 0.5.");
         prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
+        prm.declare_entry("Name", "", Anything(), material_name_doc);
         prm.leave_subsection();
         prm.enter_subsection("Exact solution");
         prm.declare_entry("Displacement", "", Anything(),
@@ -181,6 +204,11 @@ namespace dealvem
                       "(body indices, '*' for any body; a pair of bodies beats a '*' entry, a later "
                       "entry an earlier one). They apply to detected interfaces and to pairs that give "
                       "no coefficient of their own; others take 'Friction coefficient'.");
+    prm.declare_entry("Friction between materials", "", Anything(),
+                      "Coulomb friction coefficients by pairs of materials, 'name a : name b : mu; ...' "
+                      "(the names of 'Material/Name' or of 'Part materials', '*' for any material). "
+                      "They apply where 'Friction between bodies' gives nothing; a pair of names beats a "
+                      "'*' entry, a later entry an earlier one.");
     prm.declare_entry("Normal", "unilateral", Selection("tied|unilateral"),
                       "tied: g = 0 at every pair (bilateral); unilateral: g >= 0, pressure >= 0, "
                       "complementarity, by a primal-dual active set.");
@@ -384,6 +412,7 @@ namespace dealvem
         const double      E     = prm.get_double("Young's modulus");
         const double      nu    = prm.get_double("Poisson's ratio");
         const std::string parts = prm.get("Part materials");
+        const std::string material_name = InputParsing::trim(prm.get("Name"));
         prm.leave_subsection();
         prm.enter_subsection("Exact solution");
         body.exact = prm.get("Displacement");
@@ -398,14 +427,18 @@ namespace dealvem
                                   prefix + "Material/Young's modulus", false, false,
                                   "Choose units that bring E nearer to 1.");
         body.material = std::make_shared<const ElasticMaterial>(E, nu, model);
-        // 'Part materials': material id : E : nu
+        check_material_name(material_name, "Parameter '" + prefix + "Material/Name'");
+        body.material_name = material_name;
+        // 'Part materials': material id : E : nu [: name]
         std::map<dealii::types::material_id, std::shared_ptr<const ConstitutiveLaw<2>>> part_laws;
+        std::map<dealii::types::material_id, std::string>                              part_names;
         for (const auto &entry : InputParsing::split(parts, ';'))
           {
             const std::string what   = prefix + "Material/Part materials entry '" + entry + "'";
             const auto        fields = InputParsing::split(entry, ':', true);
-            AssertThrow(fields.size() == 3,
-                        dealii::ExcMessage("Parameter '" + what + "': expected 'material id : E : nu'."));
+            AssertThrow(fields.size() == 3 || fields.size() == 4,
+                        dealii::ExcMessage("Parameter '" + what +
+                                           "': expected 'material id : E : nu' or 'material id : E : nu : name'."));
             const unsigned int id   = InputParsing::parse_unsigned(fields[0], what);
             const double       E_id = InputParsing::parse_double(fields[1], what);
             const double       nu_id = InputParsing::parse_double(fields[2], what);
@@ -417,7 +450,13 @@ namespace dealvem
                         dealii::ExcMessage("Parameter '" + what + "': material id " + std::to_string(id) +
                                            " is listed twice."));
             part_laws[id] = std::make_shared<const ElasticMaterial>(E_id, nu_id, model);
+            if (fields.size() == 4)
+              {
+                part_names[id] = InputParsing::trim(fields[3]);
+                check_material_name(part_names[id], "Parameter '" + what + "' (name)");
+              }
           }
+        AssertThrow(part_names.empty() || body.mesh.parts_as_bodies, dealii::ExcInternalError());
         AssertThrow(part_laws.empty() || body.mesh.parts_as_bodies,
                     dealii::ExcMessage("Parameter '" + prefix + "Material/Part materials' is set, but '" + prefix +
                                        "Mesh/Parts as bodies' is false: parts are read only from a mesh file "
@@ -445,6 +484,8 @@ namespace dealvem
         for (unsigned int i = 0; i < added.size(); ++i)
           {
             bodies[added[i]].exact = body.exact;
+            const auto name        = part_names.find(ids[i]);
+            bodies[added[i]].material_name = (name != part_names.end() ? name->second : body.material_name);
             bodies[added[i]].name  = "body " + std::to_string(added[i]) + " (material id " +
                                     std::to_string(ids[i]) + " of " + body.mesh.file_name + ")";
           }
@@ -527,6 +568,25 @@ namespace dealvem
         InputParsing::check_range(mu, 0, 1e6, what + " (friction coefficient)", false, false,
                                   "The Coulomb friction coefficient is a number >= 0.");
         set_friction_coefficient(body[0], body[1], mu);
+      }
+    for (const auto &entry : InputParsing::split(prm.get("Friction between materials"), ';'))
+      {
+        const std::string what   = "Contact/Friction between materials entry '" + entry + "'";
+        const auto        fields = InputParsing::split(entry, ':', true);
+        AssertThrow(fields.size() == 3,
+                    dealii::ExcMessage("Parameter '" + what + "': expected 'name a : name b : mu' (material "
+                                       "names from 'Material/Name' or 'Part materials', or '*')."));
+        std::string name[2];
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            name[k] = InputParsing::trim(fields[k]);
+            if (name[k] != "*")
+              check_material_name(name[k], "Parameter '" + what + "'");
+          }
+        const double mu = InputParsing::parse_double(fields[2], what);
+        InputParsing::check_range(mu, 0, 1e6, what + " (friction coefficient)", false, false,
+                                  "The Coulomb friction coefficient is a number >= 0.");
+        set_friction_coefficient(name[0], name[1], mu);
       }
     const std::string tangential_name       = prm.get("Tangential");
     prm.leave_subsection();
@@ -658,6 +718,36 @@ namespace dealvem
 
 
 
+  void
+  ContactProblem::set_material_name(const unsigned int body, const std::string &name)
+  {
+    AssertThrow(body < bodies.size(),
+                dealii::ExcMessage("ContactProblem::set_material_name(" + std::to_string(body) +
+                                   ", ...): there is no body " + std::to_string(body) + " (there are " +
+                                   std::to_string(bodies.size()) + ")."));
+    check_material_name(name, "ContactProblem::set_material_name()");
+    bodies[body].material_name = name;
+  }
+
+
+
+  void
+  ContactProblem::set_friction_coefficient(const std::string &material_a,
+                                           const std::string &material_b,
+                                           const double       mu)
+  {
+    for (const std::string &name : {material_a, material_b})
+      if (name != "*")
+        check_material_name(name, "ContactProblem::set_friction_coefficient(\"" + material_a + "\", \"" +
+                                    material_b + "\", mu)");
+    AssertThrow(std::isfinite(mu) && mu >= 0 && mu <= 1e6,
+                dealii::ExcMessage("ContactProblem::set_friction_coefficient(\"" + material_a + "\", \"" +
+                                   material_b + "\", mu): the friction coefficient must be a number from 0 to 1e6."));
+    material_friction.insert(material_friction.begin(), std::make_tuple(material_a, material_b, mu));
+  }
+
+
+
   double
   ContactProblem::friction_between(const unsigned int a, const unsigned int b) const
   {
@@ -675,6 +765,20 @@ namespace dealvem
             return (x == any || x == p) && (y == any || y == q);
           };
           if (matches(a, b) || matches(b, a))
+            return mu;
+        }
+    // then the materials, in the same order of precedence
+    const std::string &name_a = bodies[a].material_name, &name_b = bodies[b].material_name;
+    for (const unsigned int wildcards : {0u, 1u, 2u})
+      for (const auto &[x, y, mu] : material_friction)
+        {
+          const unsigned int n_any = (x == "*") + (y == "*");
+          if (n_any != wildcards)
+            continue;
+          const auto matches = [&](const std::string &p, const std::string &q) {
+            return (x == "*" || (!p.empty() && x == p)) && (y == "*" || (!q.empty() && y == q));
+          };
+          if (matches(name_a, name_b) || matches(name_b, name_a))
             return mu;
         }
     return -1;
@@ -730,6 +834,7 @@ namespace dealvem
     contact_pairs.clear();
     pair_friction.clear();
     body_friction.clear();
+    material_friction.clear();
     opt.detect_pairs = false;
     bc.clear();
     n_cycles = 1;
@@ -764,6 +869,11 @@ namespace dealvem
         AssertThrow(body_friction.empty(),
                     dealii::ExcMessage("Parameter 'Contact/Friction between bodies' gives friction coefficients, "
                                        "but 'Contact/Tangential' is '" + tangential_name +
+                                       "': a friction coefficient needs 'Tangential = coulomb' or "
+                                       "'coulomb penalty'."));
+        AssertThrow(material_friction.empty(),
+                    dealii::ExcMessage("Parameter 'Contact/Friction between materials' gives friction "
+                                       "coefficients, but 'Contact/Tangential' is '" + tangential_name +
                                        "': a friction coefficient needs 'Tangential = coulomb' or "
                                        "'coulomb penalty'."));
         for (unsigned int i = 0; i < pair_friction.size(); ++i)
@@ -806,6 +916,18 @@ namespace dealvem
                     dealii::ExcMessage("ContactProblem::set_friction_coefficient(): there is no body " +
                                        std::to_string(body) + " (there are " + std::to_string(bodies.size()) +
                                        ")."));
+    {
+      std::set<std::string> names;
+      for (const Body &body : bodies)
+        names.insert(body.material_name);
+      for (const auto &[a, b, mu] : material_friction)
+        for (const std::string &name : {a, b})
+          AssertThrow(name == "*" || names.count(name) != 0,
+                      dealii::ExcMessage("Friction between materials (parameter 'Contact/Friction between "
+                                         "materials' or ContactProblem::set_friction_coefficient()): no body has "
+                                         "the material '" + name + "' (names come from 'Material/Name', the "
+                                         "fourth field of 'Material/Part materials', or set_material_name())."));
+    }
     InputParsing::check_range(opt.detection.distance, 0, 10, "Contact/Detection distance");
     InputParsing::check_range(opt.detection.max_angle, 1, 89, "Contact/Detection angle");
     AssertThrow(opt.n_load_steps >= 1 && opt.n_load_steps <= 100000,
@@ -1525,6 +1647,9 @@ namespace dealvem
           ir.master_id   = cycle_pairs[k].first;
           ir.slave_id    = cycle_pairs[k].second;
           ir.detected    = (k >= contact_pairs.size());
+          if (contact_settings.tangential == ContactSettings::Tangential::coulomb ||
+              contact_settings.tangential == ContactSettings::Tangential::coulomb_penalty)
+            ir.friction_coefficient = contact_settings.friction_coefficient_of(k);
         }
       for (unsigned int i = 0; i < pairs.size(); ++i)
         {
@@ -2217,6 +2342,7 @@ namespace dealvem
         json.set(key + "open", double(r.n_open));
         json.set(key + "stick", double(r.n_stick));
         json.set(key + "slip", double(r.n_slip));
+        json.set(key + "friction_coefficient", r.friction_coefficient);
       }
     for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
       json.set("timings." + s.first, s.second);

@@ -22,6 +22,14 @@
 //    the base's bed joints carry the whole weight (1e-9), every bed joint
 //    carries the weight above it in its course (1e-8), and the number of
 //    interfaces is the number of joints of the bond; timings printed;
+// f) friction by pairs of materials: the block of
+//    examples/parameters/friction-drag.prm dragged until it slides on the
+//    base (normal force 10, four steps of 0.2): the friction force is
+//    mu * 10 to 1e-10 with mu
+//    from 'Friction between materials' ('Material/Name' of each body), a
+//    pair of names beating a '*', bodies beating materials; in the wall of
+//    b) the names of 'Part materials' reach every interface (reported
+//    coefficients); unknown and invalid names are errors;
 // e) misuse: 'Part materials' without 'Parts as bodies', a part material
 //    for an id the file lacks, 'Friction between bodies' naming a body that
 //    does not exist or used without Coulomb friction, 'auto' with nothing
@@ -295,6 +303,70 @@ namespace
   }
 
   void
+  friction_by_materials()
+  {
+    const std::string drag  = testing::source_dir() + "/examples/parameters/friction-drag.prm";
+    const std::string names = "subsection Material\n set Name = steel\nend\n"
+                              "subsection Body 1\n subsection Material\n  set Name = rubber\n end\nend\n"
+                              "subsection Boundary conditions and loads\n set Function constants = p=10, d=0.2\nend\n";
+    // the friction force of the last step (every closed pair slips) and
+    // the coefficient the interface reports
+    const auto slide = [&](const std::string &contact, const double mu, const std::string &what) {
+      const auto r = run_file(drag, names + "subsection Contact\n" + contact + "\nend\n");
+      const auto &last = r.steps.back();
+      // N = 10 (the load); F = mu N only if every closed pair is at its
+      // bound |T| <= mu N (the block slides, or tips onto one pair that
+      // is about to)
+      check_near(last.total_contact_force[1], 10, 1e-10 * 10, "f) " + what + ": N = p");
+      check_near(std::abs(last.total_contact_force[0]), mu * 10, 1e-10 * 10, "f) " + what + ": F = mu N");
+      check_near(r.interface_results.at(0).friction_coefficient, mu, 0, "f) " + what + ": reported coefficient");
+    };
+    slide(" set Friction between materials = steel : rubber : 0.5", 0.5, "a pair of materials");
+    slide(" set Friction between materials = steel : rubber : 0.5; * : rubber : 0.4", 0.5, "names beat '*'");
+    slide(" set Friction between materials = * : rubber : 0.4; steel : rubber : 0.5", 0.5, "names beat a later '*'");
+    slide(" set Friction between materials = rubber : * : 0.4", 0.4, "a wildcard");
+    slide(" set Friction between materials = steel : rubber : 0.4; steel : rubber : 0.45", 0.45, "the later entry");
+    slide(" set Friction between materials = steel : rubber : 0.5\n set Friction between bodies = 1 : 0 : 0.2", 0.2,
+          "bodies beat materials");
+    slide(" set Friction between materials = steel : steel : 0.5", 0.3, "no match: the common coefficient");
+    check_throws([&] { run_file(drag, names + "subsection Contact\n set Friction between materials = wood : "
+                                              "rubber : 0.5\nend\n"); },
+                 "no body has the material 'wood'", "f) an unknown material");
+    check_throws([&] { run_file(drag, "subsection Material\n set Name = st eel\nend\n"); },
+                 "Parameter 'Material/Name': the material name 'st eel' is not valid", "f) an invalid name");
+    check_throws([&] { run_file(drag, names + "subsection Contact\n set Friction between materials = steel : "
+                                              "rubber\nend\n"); },
+                 "expected 'name a : name b : mu'", "f) an entry without a coefficient");
+    check_throws([&] { run_file(drag, names + "subsection Contact\n set Tangential = multipliers\n set Friction "
+                                              "between materials = steel : rubber : 0.5\n set Friction "
+                                              "coefficient = 0\nend\n"); },
+                 "'Contact/Friction between materials' gives friction coefficients, but 'Contact/Tangential' is",
+                 "f) friction between materials without Coulomb friction");
+
+    // the parts of one gmsh file: the base (id 1) 'stone' by 'Part
+    // materials', the blocks 'brick' by 'Material/Name'
+    const std::string wall = testing::source_dir() + "/examples/parameters/assembly-wall.prm";
+    const auto        r    = run_file(wall, "subsection Material\n set Name = brick\n set Part materials = 1 : 5000 : "
+                                            "0.25 : stone\nend\nsubsection Contact\n set Tangential = coulomb\n set "
+                                            "Friction coefficient = 0.1\n set Friction between materials = stone : "
+                                            "brick : 2; brick : brick : 3\nend\n");
+    unsigned int n_stone = 0, n_brick = 0;
+    for (const auto &i : r.interface_results)
+      {
+        const bool base = (i.master_body == 0 || i.slave_body == 0);
+        check_near(i.friction_coefficient, base ? 2. : 3., 0, "f) wall: coefficient by the parts' materials");
+        (base ? n_stone : n_brick) += 1;
+      }
+    check(n_stone > 0 && n_brick > 0, "f) wall: interfaces with the base and between blocks");
+    check_throws([&] {
+      run_file(wall, "subsection Material\n set Part materials = 1 : 5000 : 0.25 : stone\nend\nsubsection "
+                     "Contact\n set Tangential = coulomb\n set Friction between materials = stone : mortar : "
+                     "0.5\nend\n");
+    },
+                 "no body has the material 'mortar'", "f) a material no part has");
+  }
+
+  void
   misuse()
   {
     const std::string wall = testing::source_dir() + "/examples/parameters/assembly-wall.prm";
@@ -342,6 +414,7 @@ main(int argc, char **argv)
   wall_from_gmsh();
   auto_against_hand();
   thousand_blocks();
+  friction_by_materials();
   misuse();
   return testing::finish();
 }

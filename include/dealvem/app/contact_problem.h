@@ -270,6 +270,29 @@ namespace dealvem
     void
     set_friction_coefficient(const unsigned int body_a, const unsigned int body_b, const double mu);
 
+    /**
+     * Give body @p body the material name @p name (letters, digits, '_',
+     * '-', '.'), used only to look up friction coefficients by pairs of
+     * materials (the parameter 'Material/Name', or the fourth field of
+     * 'Material/Part materials'). Several bodies may share a name. Bodies
+     * without a name match only the wildcard "*".
+     */
+    void
+    set_material_name(const unsigned int body, const std::string &name);
+
+    /**
+     * The Coulomb friction coefficient of the interfaces between bodies of
+     * the materials @p material_a and @p material_b (names given by
+     * set_material_name(), either order; "*" for any material). It applies
+     * where no coefficient between the two bodies is given (a pair's own
+     * coefficient beats set_friction_coefficient() by bodies, which beats
+     * this); among these entries a pair of names beats a wildcard and a
+     * later call an earlier one. run() stops with an error naming the
+     * material if no body has it.
+     */
+    void
+    set_friction_coefficient(const std::string &material_a, const std::string &material_b, const double mu);
+
     /// Number of bodies added (or read from the parameter file).
     unsigned int
     n_bodies() const
@@ -426,6 +449,10 @@ namespace dealvem
       unsigned int               n_slip = 0;
       /// Whether ContactDetection found the interface ("Pairs = auto").
       bool                       detected = false;
+      /// The Coulomb friction coefficient of the interface (its pair's own,
+      /// else by bodies, else by materials, else the common one; 0 without
+      /// Coulomb friction).
+      double                     friction_coefficient = 0;
     };
 
     /// One converged load step.
@@ -616,6 +643,9 @@ namespace dealvem
       std::shared_ptr<const PolygonalMesh<2>>    given;
       std::shared_ptr<const ConstitutiveLaw<2>> material;
       std::string                             exact; ///< exact displacement 'ux, uy' (may be empty)
+      /// The material name for friction by pairs of materials (may be
+      /// empty).
+      std::string                             material_name;
     };
     std::vector<Body>          bodies;
     BoundaryConditionParameters bc;
@@ -625,12 +655,15 @@ namespace dealvem
     /// Friction coefficients by pairs of bodies (set_friction_coefficient();
     /// invalid_unsigned_int: any body), the later entries first.
     std::vector<std::tuple<unsigned int, unsigned int, double>> body_friction;
+    /// Friction coefficients by pairs of material names ("*": any
+    /// material), the later entries first.
+    std::vector<std::tuple<std::string, std::string, double>> material_friction;
     /// The pairs and friction coefficients of the current cycle: the
     /// explicit ones, then the detected ones (made by insert_nodes()).
     std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> cycle_pairs;
     std::vector<double>        cycle_friction;
-    /// The friction coefficient between two bodies from body_friction
-    /// (negative: none given).
+    /// The friction coefficient between two bodies from body_friction,
+    /// else from material_friction (negative: none given).
     double
     friction_between(const unsigned int a, const unsigned int b) const;
     Options                    opt;
