@@ -98,7 +98,7 @@ main(int argc, char **argv)
   // large stiffness ratios: correct or refused, never a wrong answer
   for (const bool stiff_on_soft : {false, true})
   for (const double ratio : {1e9, 1e12})
-    for (const std::string solver : parallel ? std::vector<std::string>{"direct constraints"} :
+    for (const std::string &solver : parallel ? std::vector<std::string>{"direct constraints"} :
                                                std::vector<std::string>{"UMFPACK", "KLU", "direct constraints"})
       {
         std::ostringstream tag;
