@@ -623,12 +623,26 @@ namespace dealvem
     if (constraint_rows.empty())
       return;
 
-    // residual on the slave rows, and the matrix B_{.S}^T (slave rows x
-    // enforced multipliers)
+    // residual on the slave rows, and the matrix B_{I,S}^T (slave rows x
+    // the independent enforced multipliers I). A dependent row carries no
+    // force: the rows before it, on which it depends, carry all of it (see
+    // the class documentation); so B_{I,S}^T is square, and triangular up
+    // to permutation with the pivots of reinit().
     const unsigned int  n_s = slaves.size(), n_c = constraint_rows.size();
-    std::vector<int>    column(m, -1);
+    std::vector<bool>   dependent(m, false);
+    for (const auto r : dependent_rows)
+      dependent[r] = true;
+    std::vector<int>          column(m, -1);
+    std::vector<unsigned int> independent;
     for (unsigned int k = 0; k < n_c; ++k)
-      column[constraint_rows[k]] = k;
+      if (!dependent[constraint_rows[k]])
+        {
+          column[constraint_rows[k]] = independent.size();
+          independent.push_back(constraint_rows[k]);
+        }
+    AssertThrow(independent.size() == n_s,
+                dealii::ExcMessage("ContactConstraints: " + std::to_string(independent.size()) +
+                                   " independent constraint rows for " + std::to_string(n_s) + " slave DoFs."));
     dealii::Vector<double>                                    r(n_s);
     std::vector<std::vector<std::pair<unsigned int, double>>> M(n_s);
     for (unsigned int k = 0; k < n_s; ++k)
@@ -657,50 +671,23 @@ namespace dealvem
         r[k] = v;
       }
 
+    // B_{I,S}^T lambda_I = r_S
     dealii::DynamicSparsityPattern dsp(n_s, n_s);
-    dealii::SparsityPattern        sp;
-    dealii::SparseMatrix<double>   G;
-    dealii::Vector<double>         y(n_s);
-    if (n_s == n_c)
-      {
-        // square: B_{.S}^T lambda = r_S
-        for (unsigned int k = 0; k < n_s; ++k)
-          for (const auto &e : M[k])
-            dsp.add(k, e.first);
-        sp.copy_from(dsp);
-        G.reinit(sp);
-        for (unsigned int k = 0; k < n_s; ++k)
-          for (const auto &e : M[k])
-            G.add(k, e.first, e.second);
-      }
-    else
-      {
-        // minimum norm: lambda = M^T (M M^T)^{-1} r_S
-        std::vector<std::vector<std::pair<unsigned int, double>>> by_column(n_c);
-        for (unsigned int k = 0; k < n_s; ++k)
-          for (const auto &e : M[k])
-            by_column[e.first].emplace_back(k, e.second);
-        for (const auto &c : by_column)
-          for (const auto &p : c)
-            for (const auto &q : c)
-              dsp.add(p.first, q.first);
-        sp.copy_from(dsp);
-        G.reinit(sp);
-        for (const auto &c : by_column)
-          for (const auto &p : c)
-            for (const auto &q : c)
-              G.add(p.first, q.first, p.second * q.second);
-      }
+    for (unsigned int k = 0; k < n_s; ++k)
+      for (const auto &e : M[k])
+        dsp.add(k, e.first);
+    dealii::SparsityPattern sp;
+    sp.copy_from(dsp);
+    dealii::SparseMatrix<double> G(sp);
+    for (unsigned int k = 0; k < n_s; ++k)
+      for (const auto &e : M[k])
+        G.add(k, e.first, e.second);
+    dealii::Vector<double>      y(n_s);
     dealii::SparseDirectUMFPACK direct;
     direct.initialize(G);
     direct.vmult(y, r);
-    if (n_s == n_c)
-      for (unsigned int k = 0; k < n_c; ++k)
-        x[n + constraint_rows[k]] = y[k];
-    else
-      for (unsigned int k = 0; k < n_s; ++k)
-        for (const auto &e : M[k])
-          x[n + constraint_rows[e.first]] += e.second * y[k];
+    for (unsigned int k = 0; k < n_s; ++k)
+      x[n + independent[k]] = y[k];
     for (const auto &t : tied)
       for (const auto &e : t.entries)
         x[n + t.row] += e.second * x[n + e.first];

@@ -70,18 +70,25 @@ namespace dealvem
    * on one node whose partners are both fixed). If its reduced right-hand
    * side vanishes (relative to the values that entered it, and to
    * 1e-12 times the length scale) the row is dropped from the constraints
-   * and listed by get_dependent_rows(); its multiplier, like all
-   * multipliers, comes from the minimum-norm solution of
-   * $B_{\cdot S}^T\lambda = r_S$. Otherwise the constraints contradict each
-   * other and reinit() throws, naming the row, the rows it depends on and
-   * the two values.
+   * and listed by get_dependent_rows(), and its multiplier is zero: the
+   * rows before it, on which it depends, carry the force. (Where three
+   * bodies meet, e.g. a head joint ending on a bed joint, the pair of the
+   * later interface repeats what the two earlier ones impose. Any split of
+   * the force among dependent rows is an equilibrium; a split that gives
+   * the repeated pair a share, like the minimum-norm one used before, made
+   * the friction and active-set tests judge a pressure and a friction force
+   * that no physics fixes, and the Coulomb iteration cycled on them. With
+   * zero, the pair is closed and free of force, which is consistent with
+   * every contact model: unilateral sees a zero pressure at a zero gap,
+   * Coulomb a zero friction force.) Otherwise the constraints contradict
+   * each other and reinit() throws, naming the row, the rows it depends on
+   * and the two values.
    *
    * <b>Multipliers.</b> After the condensed solve, the residual
    * $r = f - K u$ lies in the range of $B^T$, and its restriction to the
    * slave DoFs determines $\lambda$: recover_multipliers() solves
-   * $B_{\cdot S}^T \lambda = r_S$ (a square system with UMFPACK when no row
-   * was dropped, the minimum-norm solution through
-   * $B_{\cdot S}^T B_{\cdot S}$ otherwise).
+   * $B_{I,S}^T \lambda_I = r_S$ for the independent rows $I$ (square, one
+   * row per slave, UMFPACK) and sets the dependent ones to zero.
    */
   class ContactConstraints
   {
