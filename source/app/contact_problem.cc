@@ -1280,6 +1280,9 @@ namespace dealvem
         results.insertion_reports.push_back(itf.report);
         data->pairs.insert(data->pairs.end(), itf.pairs.begin(), itf.pairs.end());
       }
+    // where three bodies meet, the pair that repeats the two others stays
+    // open (unilateral and Coulomb contact)
+    results.n_junction_pairs = NodeInsertion::mark_junctions(data->pairs, mesh);
     bool any_segment = false;
     for (const auto &itf : interfaces)
       any_segment = any_segment || !itf.segments.empty();
@@ -2012,8 +2015,12 @@ namespace dealvem
     const unsigned int n_inserted = inserted_nodes(results.insertion_reports);
     std::cout << "Contact problem: " << bodies.size() << " bodies, " << mesh.n_cells() << " cells, "
               << n << " DoFs, " << m << " multipliers" << std::endl
-              << "  node insertion: " << n_inserted << " nodes inserted, " << pairs.size()
-              << " node pairs" << std::endl;
+              << "  node insertion: " << n_inserted << " nodes inserted, " << pairs.size() << " node pairs"
+              << (results.n_junction_pairs > 0 ?
+                    " (" + std::to_string(results.n_junction_pairs) +
+                      " where three bodies meet repeat two others and stay open)" :
+                    std::string())
+              << std::endl;
     // (an assembly of many interfaces: the first ones, and the warnings of all)
     const unsigned int n_listed = 20;
     for (unsigned int i = 0; i < interfaces.size(); ++i)
@@ -2252,6 +2259,7 @@ namespace dealvem
         json.set("contact.pressure_max", pmax);
       }
     json.set("contact.open_end_warnings", double(results.n_open_end_warnings));
+    json.set("contact.junction_pairs", double(results.n_junction_pairs));
     {
       unsigned int n_unpaired = 0, n_closed = 0, n_merged = 0, n_unresolved = 0;
       double       max_closed = 0;

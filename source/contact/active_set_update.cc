@@ -39,10 +39,12 @@ namespace dealvem
       length = std::max(length, p.weight);
     const double gap_tol = 1e-12 * length;
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      state.active[i] = tied || pairs[i].initial_gap <= gap_tol;
+      state.active[i] = tied || (pairs[i].initial_gap <= gap_tol && !pairs[i].junction);
     if (support != nullptr && !tied && !support->holds(state.active))
       {
         state.n_closed_for_support = support->close_smallest_gaps(state.active);
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          state.active[i] = state.active[i] && !pairs[i].junction;
         const std::string free     = support->free_motions(state.active);
         AssertThrow(free.empty(),
                     dealii::ExcMessage("Contact: even with every contact pair closed, these rigid-body motions "
@@ -241,7 +243,7 @@ namespace dealvem
     for (unsigned int i = 0; i < n_pairs; ++i)
       {
         const double mu = -multipliers[i];
-        next[i]         = (mu / pairs[i].weight - c * gaps[i] > 1e-10 * scale);
+        next[i]         = (mu / pairs[i].weight - c * gaps[i] > 1e-10 * scale) && !pairs[i].junction;
       }
     if (next == state.active)
       {

@@ -55,9 +55,13 @@ namespace dealvem
       length = std::max(length, p.weight);
     std::vector<bool> closed(pairs.size());
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      closed[i] = pairs[i].initial_gap <= 1e-12 * length;
+      closed[i] = pairs[i].initial_gap <= 1e-12 * length && !pairs[i].junction;
     if (support != nullptr && !support->holds(closed))
-      support->close_smallest_gaps(closed);
+      {
+        support->close_smallest_gaps(closed);
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          closed[i] = closed[i] && !pairs[i].junction;
+      }
     std::vector<PairState> state(pairs.size());
     for (unsigned int i = 0; i < pairs.size(); ++i)
       state[i] = closed[i] ? PairState::stick : PairState::open;
@@ -171,7 +175,7 @@ namespace dealvem
     for (unsigned int i = 0; i < n_pairs; ++i)
       {
         const double p_hat = p[i] - c * gaps[i];
-        if (!(p_hat > 1e-10 * scale))
+        if (!(p_hat > 1e-10 * scale) || pairs[i].junction)
           next[i] = PairState::open;
         else if (std::abs(tau_hat[i]) <= friction_coefficient(i) * p_hat + 1e-10 * scale)
           next[i] = PairState::stick;

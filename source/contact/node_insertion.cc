@@ -1566,4 +1566,61 @@ namespace dealvem
           interface.pairs[s.midpoint].weight += 2. / 3. * s.length;
       }
   }
+
+
+  unsigned int
+  NodeInsertion::mark_junctions(std::vector<ContactNodePair> &pairs, const PolygonalMesh<2> &mesh)
+  {
+    // per vertex: the vertex pairs it is in (pair, partner)
+    std::map<unsigned int, std::vector<std::pair<unsigned int, unsigned int>>> at;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (!pairs[i].is_midpoint)
+        {
+          at[pairs[i].master_entity].emplace_back(i, pairs[i].slave_entity);
+          at[pairs[i].slave_entity].emplace_back(i, pairs[i].master_entity);
+        }
+    // the neighbours of the paired vertices along the boundary
+    std::map<unsigned int, std::vector<unsigned int>> boundary_neighbours;
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      if (mesh.edge(e).at_boundary())
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            const unsigned int v = mesh.edge(e).vertices[k];
+            if (at.count(v) != 0)
+              boundary_neighbours[v].push_back(mesh.edge(e).vertices[1 - k]);
+          }
+    // whether the boundary runs straight through v
+    const auto straight = [&](const unsigned int v) {
+      const auto &nb = boundary_neighbours[v];
+      if (nb.size() != 2)
+        return false;
+      const dealii::Tensor<1, 2> d0 = mesh.vertex(nb[0]) - mesh.vertex(v), d1 = mesh.vertex(nb[1]) - mesh.vertex(v);
+      return std::abs(d0[0] * d1[1] - d0[1] * d1[0]) <= 1e-9 * d0.norm() * d1.norm();
+    };
+    unsigned int n_marked = 0;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        pairs[p].junction = false;
+        if (pairs[p].is_midpoint)
+          continue;
+        const unsigned int a = pairs[p].master_entity, b = pairs[p].slave_entity;
+        for (const auto &[q, c] : at[a])
+          {
+            if (pairs[p].junction || q == p || pairs[q].interface == pairs[p].interface)
+              continue;
+            for (const auto &[r, c2] : at[b])
+              if (c2 == c && r != p && r != q && pairs[r].interface != pairs[p].interface)
+                {
+                  const bool sc = straight(c);
+                  const unsigned int n_straight = straight(a) + straight(b) + sc;
+                  pairs[p].junction = (n_straight == 1) ? sc :
+                                                          (pairs[p].interface > pairs[q].interface &&
+                                                           pairs[p].interface > pairs[r].interface);
+                  break;
+                }
+          }
+        n_marked += pairs[p].junction;
+      }
+    return n_marked;
+  }
 } // namespace dealvem

@@ -132,11 +132,29 @@ namespace
         check(itf->n_stick + itf->n_slip == 0 && itf->normal_force == 0,
               "b) head joint " + std::to_string(a) + "-" + std::to_string(b) + " of row 2 is open");
 
+    // where three bodies meet (a head joint ending on a bed joint or on
+    // the base: (1, 0.5), (3, 0.5), (2, 0), (2, 0.5)) the head joint's end
+    // pair repeats the two bed-joint pairs there: it is marked and open
+    {
+      std::vector<P> expected = {P(1, 0.5), P(3, 0.5), P(2, 0), P(2, 0.5)};
+      check(r.n_junction_pairs == 4, "b) 4 junction pairs, got " + std::to_string(r.n_junction_pairs));
+      unsigned int found = 0;
+      for (const auto &p : r.pairs)
+        for (const auto &e : expected)
+          if ((p.location - e).norm() < 1e-12 && std::abs(p.tangent[1]) > 0.99)
+            {
+              ++found;
+              check(p.status == "open" && p.multiplier == 0,
+                    "b) the head joint's pair at the junction is open and carries no force");
+            }
+      check(found == 4, "b) the 4 head-joint pairs at the junctions, found " + std::to_string(found));
+    }
+
     // Coulomb friction: the same statics for any mu, and Coulomb's law at
-    // every pair. Where a head joint of row 2 ends on the bed joint below,
-    // three bodies meet and the head joint's end pair repeats what the two
-    // bed joints impose; it carries no force (ContactConstraints). Before,
-    // it took a share of the force that made the friction iteration cycle
+    // every pair. Where a head joint ends on a bed joint, three bodies
+    // meet and the head joint's end pair repeats what the two bed joints
+    // impose; it stays open (NodeInsertion::mark_junctions()). Before, it
+    // took a share of the force that made the friction iteration cycle
     // ("The friction active set cycles") for mu < 0.68.
     for (const double mu : {0.1, 0.3, 0.6})
       {

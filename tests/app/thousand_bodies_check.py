@@ -3,7 +3,9 @@
 # from its resultants CSV (one line per interface): run by
 # tests/app/thousand_bodies.test.cmake. Body 0 is the base; bodies 1 to 1020
 # the blocks, course by course from the bottom (even courses 25 blocks,
-# odd courses 26), each 0.5 high, unit weight per area.
+# odd courses 26), each 0.5 high, unit weight per area. With the node
+# pairs' CSV and a friction coefficient mu as further arguments, also
+# Coulomb's law |tau| <= mu p at every closed pair (1e-10 of the largest p).
 import csv
 import sys
 
@@ -55,6 +57,20 @@ for c in range(-1, courses - 1):
         failures.append(f"bed joints on course {c}: vertical {vertical[c + 1]:.12g} (expected {above:.12g}), "
                         f"horizontal {horizontal[c + 1]:.3g} (expected 0)")
     above -= weight_of_course[c + 1]
+
+if len(sys.argv) > 3:
+    mu = float(sys.argv[3])
+    pairs = list(csv.DictReader(open(sys.argv[2])))
+    p_max = max(float(r["lumped_pressure"]) for r in pairs)
+    excess = max(abs(float(r["tangential_traction"])) - mu * float(r["lumped_pressure"])
+                 for r in pairs if r["status"] != "open")
+    counts = {s: sum(1 for r in pairs if r["status"] == s) for s in ("open", "stick", "slip")}
+    print(f"Coulomb, mu = {mu}: {counts['open']} open / {counts['stick']} stick / {counts['slip']} slip pairs; "
+          f"largest |tau| - mu p: {excess:.2e} (p up to {p_max:.3g})")
+    if excess > 1e-10 * p_max:
+        failures.append(f"|tau| exceeds mu p by {excess:.3g}")
+    if counts["slip"] == 0:
+        failures.append("no pair slips: the test does not exercise Coulomb's law")
 
 print(f"{len(rows)} interfaces between {len(bodies)} bodies; weight {weight}; base carries "
       f"{vertical[0]:.12g}; largest error of the bed joints' resultants {worst:.2e} of the weight")

@@ -524,6 +524,10 @@ namespace dealvem
       /// Contact constraints already imposed by the displacement constraints
       /// (see ContactAssembler::get_dropped_constraints()).
       unsigned int                 n_dropped_constraints = 0;
+      /// Pairs that close a triangle of pairs where three bodies meet
+      /// (NodeInsertion::mark_junctions()); unilateral and Coulomb contact
+      /// keep them open.
+      unsigned int                 n_junction_pairs = 0;
       /// @var unsigned int n_dofs
       /// Number of displacement DoFs (the size of solution).
       /// @var unsigned int n_multipliers

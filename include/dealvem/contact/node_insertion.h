@@ -59,6 +59,11 @@ namespace dealvem
     /// of the two parts ends there, not both parts): an active pair there
     /// means the contact zone may be cut off by the extent of a part.
     bool                   at_open_end = false;
+    /// True for a pair that closes a triangle of pairs where three bodies
+    /// meet (NodeInsertion::mark_junctions()): its constraints repeat those
+    /// of the two other pairs, and the unilateral and Coulomb iterations
+    /// keep it open (with tied normal contact it stays a constraint).
+    bool                   junction = false;
   };
 
   /**
@@ -279,6 +284,24 @@ namespace dealvem
      */
     static void
     update_geometry(const PolygonalMesh<2> &mesh, Interface &interface);
+
+    /**
+     * Mark the pairs of @p pairs (of all interfaces, on @p mesh) that close
+     * a triangle of vertex pairs where three bodies meet, and return their
+     * number. Pair P of one interface joins vertices a and b, and a and b
+     * are both paired, through other interfaces, with one vertex c: where a
+     * head joint of a wall ends on a bed joint, P is the head joint's end
+     * pair and c the point of the straight side below. While the two pairs
+     * at c are closed and stick, P imposes nothing they do not, and the
+     * force has no unique split among the three; a unilateral or Coulomb
+     * iteration that judges P's share cycles. Of each triangle the pair
+     * opposite the one vertex where the boundary runs straight (|sine| of
+     * the turn below 1e-9) is marked; without exactly one such vertex
+     * (corners of three bodies meeting), the pair of the latest interface.
+     * Midpoint pairs (k = 2) never close a triangle.
+     */
+    static unsigned int
+    mark_junctions(std::vector<ContactNodePair> &pairs, const PolygonalMesh<2> &mesh);
   };
 } // namespace dealvem
 
