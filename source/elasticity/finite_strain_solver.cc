@@ -151,7 +151,7 @@ namespace dealvem
       return tmp.l2_norm();
     };
 
-    double       F_ref       = load_factor * f_ext.l2_norm();
+    const double f_ext_norm  = f_ext.l2_norm();
     double       last_update = std::numeric_limits<double>::infinity();
     std::string  inversion; // the last inverted cell met in the step
     for (unsigned int it = 0;; ++it)
@@ -179,10 +179,12 @@ namespace dealvem
             fail("the iterate inverts a cell: " + exception_text(e));
           }
         const double r_norm = free_norm(r);
-        tmp                 = f_ext;
+        // the force scale at this iterate: the load or the internal forces
+        // (reactions included), whichever is larger
+        tmp = f_ext;
         tmp *= load_factor;
-        tmp -= r; // the internal forces, reactions included
-        F_ref = std::max(F_ref, tmp.l2_norm());
+        tmp -= r;
+        const double F_ref = std::max(std::abs(load_factor) * f_ext_norm, tmp.l2_norm());
 
         IterationRecord iteration;
         iteration.residual_norm     = r_norm;

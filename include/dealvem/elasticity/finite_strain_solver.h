@@ -54,8 +54,8 @@ namespace dealvem
    * A step has converged when, at an iterate that satisfies the constraints
    * (to $10^{-14}$ of the largest prescribed value), both
    * - the free residual $\|r\|_2 \le \max(\varepsilon_r F_{ref}, \varepsilon_a)$,
-   *   with $F_{ref}$ the largest of $\|\lambda f_{ext}\|_2$ and the norm of
-   *   the internal forces (reactions included) met in the step, and
+   *   with $F_{ref}$ the larger of $\|\lambda f_{ext}\|_2$ and the norm of
+   *   the internal forces (reactions included) at the iterate, and
    *   $\varepsilon_a$ = Parameters::absolute_residual_tolerance;
    * - the last update $\|\alpha\,\delta u\|_2 \le \varepsilon_u \|u\|_2$
    *   (or $\le \varepsilon_a$-sized when $u = 0$).
