@@ -106,14 +106,19 @@ namespace dealvem
    * and passes $\mathrm{diag}(d)$ to ElasticityOperator::add_stabilization()
    * in place of $K_c$. The floor keeps the stabilization positive where the
    * tangent loses definiteness (Saint Venant-Kirchhoff in strong
-   * compression). FiniteStrainAssembler sets $u^*$ to the last converged
-   * state at the start of every load step and keeps it during the Newton
-   * iterations of the step: the stabilization energy is then a fixed
+   * compression). FiniteStrainSolver sets $u^*$ to the last converged
+   * state at the start of every load step
+   * (FiniteStrainAssembler::freeze_stabilization()) and keeps it during the
+   * Newton iterations of the step: the stabilization energy is then a fixed
    * quadratic form within the step, its tangent $K_s$ is exact and Newton
    * converges quadratically, and the scale still follows the deformation
    * from step to step. (Re-evaluating the scale at every iterate would make
    * the tangent inexact unless the derivative of the scale were added,
-   * which involves the derivative of $A$.)
+   * which involves the derivative of $A$.) The price: the solution of a
+   * step depends on where the previous step ended, by a term of the size
+   * of the stabilization force (zero on $[P_k]^2$, of the order of the
+   * discretization error otherwise), so it depends slightly on the number
+   * of load steps.
    *
    * Why the trace rule for $k = 2$ too (the small-strain default for
    * $k = 2$ is the diagonal rule with $c_2 = 1/5$, chosen for contact
