@@ -96,6 +96,86 @@ namespace dealvem
 
 
 
+  namespace
+  {
+    // I - D Pi^c, with Pi^c the componentwise H1 projector onto [P_k]^2:
+    // int grad Pi^c v : grad p = int grad v : grad p for every p, and the
+    // mean of each component (vertex mean for k = 1, cell moment for
+    // k = 2) kept. It commutes with rotating the field (see the class
+    // documentation). Rows alpha >= 2 of B^c:
+    // int grad p_a : grad phi_i = int_dE (grad p_a n) . phi_i - int_E lap p_a . phi_i,
+    // the edge term by Gauss-Lobatto on the edge's nodes (exact: the
+    // integrand has degree 2k - 1), the cell term (k = 2, lap p_a constant)
+    // from the cell moment.
+    template <int dim>
+    void
+    componentwise_projector_complement(const VirtualElement<dim> &element, dealii::FullMatrix<double> &I_Pi)
+    {
+      const PolygonGeometry<dim> &geometry = element.get_geometry();
+      const unsigned int          k = element.get_degree(), n = element.n_dofs_per_cell(),
+                         n_p = element.n_polynomials(), N = geometry.n_vertices();
+      dealii::FullMatrix<double> Bc(n_p, n);
+      if (k == 1)
+        for (unsigned int v = 0; v < N; ++v)
+          {
+            Bc(0, 2 * v)     = 1. / N;
+            Bc(1, 2 * v + 1) = 1. / N;
+          }
+      else
+        {
+          Bc(0, 2 * (2 * N))     = 1.;
+          Bc(1, 2 * (2 * N) + 1) = 1.;
+        }
+      const double            h = geometry.diameter();
+      const dealii::Point<dim> &x_c = geometry.centroid();
+      for (unsigned int alpha = 2; alpha < n_p; ++alpha)
+        {
+          for (unsigned int e = 0; e < N; ++e)
+            {
+              const std::vector<unsigned int> nodes = element.edge_nodes(e);
+              const double                    L     = geometry.edge_length(e);
+              const dealii::Tensor<1, dim>    normal = geometry.edge_normal(e);
+              const double w1[2] = {L / 2., L / 2.}, w2[3] = {L / 6., 2. * L / 3., L / 6.};
+              for (unsigned int a = 0; a < nodes.size(); ++a)
+                {
+                  const dealii::Tensor<1, dim> flux =
+                    element.polynomial_gradient(alpha, element.node_location(nodes[a])) * normal;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    Bc(alpha, 2 * nodes[a] + c) += (k == 1 ? w1[a] : w2[a]) * flux[c];
+                }
+            }
+          if (k == 2)
+            {
+              // the gradient is linear: its differences are exact
+              const dealii::Tensor<2, dim> g0 = element.polynomial_gradient(alpha, x_c);
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  double laplacian = 0;
+                  for (unsigned int j = 0; j < dim; ++j)
+                    {
+                      dealii::Point<dim> x = x_c;
+                      x[j] += h;
+                      laplacian += (element.polynomial_gradient(alpha, x)[c][j] - g0[c][j]) / h;
+                    }
+                  Bc(alpha, 2 * (2 * N) + c) -= geometry.area() * laplacian;
+                }
+            }
+        }
+      const dealii::FullMatrix<double> &D = element.get_D();
+      dealii::FullMatrix<double>        Gc(n_p, n_p), Pi_c(n_p, n), DPi(n, n);
+      Bc.mmult(Gc, D);
+      Gc.gauss_jordan();
+      Gc.mmult(Pi_c, Bc);
+      D.mmult(DPi, Pi_c);
+      I_Pi.reinit(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          I_Pi(i, j) = (i == j ? 1. : 0.) - DPi(i, j);
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   FiniteStrainOperator<dim>::compute_stabilization(const VirtualElement<dim>    &element,
@@ -107,25 +187,43 @@ namespace dealvem
                                                    dealii::FullMatrix<double>   &K_s) const
   {
     AssertDimension(element.n_dofs_per_cell(), n_dofs_cell);
-    dealii::Vector<double>     zero(n_dofs_cell), r;
+    AssertThrow(gamma > 0 && std::isfinite(gamma),
+                dealii::ExcMessage("The stabilization factor gamma must be positive, got " + std::to_string(gamma) +
+                                   "."));
+    const unsigned int         n = n_dofs_cell;
+    dealii::Vector<double>     zero(n), r;
     dealii::FullMatrix<double> K_0, K_star;
     compute_consistency(law, zero, true, r, K_0);
-    dealii::FullMatrix<double> D(n_dofs_cell, n_dofs_cell);
+    dealii::FullMatrix<double> D(n, n);
     if (scaling == StabilizationScaling::initial_tangent)
-      for (unsigned int i = 0; i < n_dofs_cell; ++i)
+      for (unsigned int i = 0; i < n; ++i)
         D(i, i) = K_0(i, i);
     else
       {
         compute_consistency(law, frozen_u, true, r, K_star);
-        for (unsigned int i = 0; i < n_dofs_cell; ++i)
+        for (unsigned int i = 0; i < n; ++i)
           D(i, i) = std::max(K_star(i, i), stabilization_floor * K_0(i, i));
       }
-    // ElasticityOperator's rules read the diagonal (diagonal rule) or the
-    // trace (trace rule) of the matrix they are given
-    K_s = D;
-    ElasticityOperator<dim>::add_stabilization(element, K_s, gamma, rule);
-    for (unsigned int i = 0; i < n_dofs_cell; ++i)
-      K_s(i, i) -= D(i, i);
+    // the rules of ElasticityOperator on (I - Pi^c): trace,
+    // gamma tau (I - Pi^c)^T (I - Pi^c), or diagonal,
+    // (I - Pi^c)^T diag(gamma c_k max(d_i, 1e-3 tau)) (I - Pi^c)
+    const double gamma_tau = ElasticityOperator<dim>::stabilization_scaling(D, gamma);
+    dealii::Vector<double> s(n);
+    const bool             trace = rule == Stabilization::trace || rule == Stabilization::automatic;
+    const double           c_k   = (element.get_degree() == 1 ? 1. : 0.2);
+    for (unsigned int i = 0; i < n; ++i)
+      s[i] = trace ? gamma_tau : gamma * c_k * std::max(D(i, i), 1e-3 * gamma_tau / gamma);
+    dealii::FullMatrix<double> I_Pi;
+    componentwise_projector_complement(element, I_Pi);
+    K_s.reinit(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j <= i; ++j)
+        {
+          double v = 0;
+          for (unsigned int m = 0; m < n; ++m)
+            v += I_Pi(m, i) * s[m] * I_Pi(m, j);
+          K_s(i, j) = K_s(j, i) = v;
+        }
   }
 
 

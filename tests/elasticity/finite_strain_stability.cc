@@ -13,13 +13,13 @@
 // discrete operator (dense symmetric eigensolver, exact to round-off):
 // - at s = 0 (the small-strain operator) every rule is positive definite;
 // - trace rule, current-tangent scaling: positive definite at s = 1 and
-//   s = 1.9 (measured 443 and 251, largest 7.0e5 and 2.4e6);
+//   s = 1.9 (measured 441 and 243, largest 7.0e5 and 2.4e6);
 // - diagonal rule (the small-strain default for k = 2, c_2 = 1/5), current
-//   scaling: indefinite at s = 1 (measured -952): a spurious mode, along
+//   scaling: indefinite at s = 1 (measured -950): a spurious mode, along
 //   which Newton finds a wrong equilibrium when the fourth side carries
 //   the matching traction;
 // - trace rule with the plain small-strain scaling (initial tangent):
-//   indefinite at s = 1.9 (measured -1210): Neo-Hooke stiffens in
+//   indefinite at s = 1.9 (measured -1152): Neo-Hooke stiffens in
 //   compression, the initial scale does not follow.
 // Checked: the signs, with the smallest eigenvalue beyond 20 in absolute
 // value (round-off is about 1e-10 of the largest).

@@ -78,17 +78,29 @@ namespace dealvem
    * $\varepsilon(\Pi\varphi_i)$.
    *
    * <h3>Stabilization</h3>
-   * $\Pi^0\nabla$ does not see the part $(I-\Pi)u$ of the displacement
-   * outside $[P_k]^2$, so an energy on it is added:
-   * $\frac12 u^T K_s u$ with $K_s$ of ElasticityOperator's form
-   * (ElasticityOperator::add_stabilization()), $K_s = \gamma\tau(I-\Pi)^T(I-\Pi)$
+   * $\Pi^0\nabla$ does not see the part of the displacement outside
+   * $[P_k]^2$, so an energy on it is added, $\frac12 u^T K_s u$ with the
+   * rules of ElasticityOperator (the same scalings, see
+   * ElasticityOperator::stabilization_scaling()):
+   * $K_s = \gamma\tau(I-\Pi^c)^T(I-\Pi^c)$, $\tau = \mathrm{tr}(\mathrm{diag}(d))/n_{dofs}$
    * (Stabilization::trace, the default of FiniteStrainAssembler for both
-   * orders) or $(I-\Pi)^T \mathrm{diag}(\gamma c_k d_i)(I-\Pi)$
-   * (Stabilization::diagonal). It vanishes on $[P_k]^2$, so it does not act on
-   * rigid motions ($u = (Q - I)X + c$, linear in $X$ for any rotation
-   * $Q$) nor on homogeneous deformations: the patch test and the exact
-   * rotation hold at any size of the motion. Its internal force is
-   * $K_s u$ and its tangent $K_s$.
+   * orders) or $(I-\Pi^c)^T \mathrm{diag}(\gamma c_k \max(d_i, 10^{-3}\tau))(I-\Pi^c)$
+   * (Stabilization::diagonal), with the scales $d_i$ below. The projector is
+   * not the strain-elliptic $\Pi$ of VirtualElement but the componentwise
+   * H1 projector $\Pi^c$ onto $[P_k]^2$ in the DoF basis:
+   * $\int_E\nabla\Pi^c v:\nabla p = \int_E\nabla v:\nabla p$ for all
+   * $p\in[P_k]^2$ (computable: $\int_{\partial E}(\nabla p\,n)\cdot v
+   * - \int_E\Delta p\cdot v$, Gauss-Lobatto on the edge nodes and, for
+   * $k = 2$, the cell moment), and the mean of each component kept (vertex
+   * mean for $k = 1$, cell moment for $k = 2$). For $k = 1$ the two are the
+   * same; for $k = 2$ only $\Pi^c$ commutes with rotating the field,
+   * $\Pi^c(Qv) = Q\,\Pi^c v$, because the strain product does not
+   * ($\varepsilon(Qv) \ne Q\varepsilon(v)Q^T$). Both vanish on $[P_k]^2$,
+   * so the stabilization does not act on rigid motions
+   * ($u = (Q - I)X + c$, linear in $X$ for any rotation $Q$) nor on
+   * homogeneous deformations: the patch test and the exact rotation hold at
+   * any size of the motion. Its internal force is $K_s u$ and its tangent
+   * $K_s$.
    *
    * The scale is what matters at large strain. The small-strain rule takes
    * it from the diagonal of $K_c$ at $F = I$ (StabilizationScaling::initial_tangent).
@@ -101,10 +113,9 @@ namespace dealvem
    * $K_c^* = K_c(u^*)$ at a state $u^*$ instead, floored at
    * $\beta = $ stabilization_floor times the diagonal of $K_c(0)$:
    * @f[
-   *   d_i = \max\bigl((K_c(u^*))_{ii},\ \beta\,(K_c(0))_{ii}\bigr),
+   *   d_i = \max\bigl((K_c(u^*))_{ii},\ \beta\,(K_c(0))_{ii}\bigr)
    * @f]
-   * and passes $\mathrm{diag}(d)$ to ElasticityOperator::add_stabilization()
-   * in place of $K_c$. The floor keeps the stabilization positive where the
+   * (with the initial scaling $d_i = (K_c(0))_{ii}$). The floor keeps the stabilization positive where the
    * tangent loses definiteness (Saint Venant-Kirchhoff in strong
    * compression). FiniteStrainSolver sets $u^*$ to the last converged
    * state at the start of every load step
@@ -122,10 +133,11 @@ namespace dealvem
    *
    * Why the trace rule for $k = 2$ too (the small-strain default for
    * $k = 2$ is the diagonal rule with $c_2 = 1/5$, chosen for contact
-   * pressures): at finite strain the consistency tangent of a law that is
-   * not convex in $F$ (Neo-Hooke) is indefinite on the non-polynomial
-   * part of the cell's $\Pi^0\nabla$ fields, and the stabilization must
-   * dominate it. tests/elasticity/finite_strain_stability measures the
+   * pressures): at finite strain the tangent $A$ of a law that is only
+   * rank-one convex (Neo-Hooke) is not positive on all tensors, so the
+   * consistency energy of a polygon, which sees only the projection of the
+   * field, can be negative on modes the conforming continuum would not
+   * allow, and the stabilization must dominate it. tests/elasticity/finite_strain_stability measures the
    * smallest eigenvalue of the tangent at a homogeneous state (Voronoi,
    * 16 cells, $k = 2$, Neo-Hooke, $E = 7000$, $\nu = 0.3$; Dirichlet on
    * three sides): with the diagonal rule it is negative already at 30 %
@@ -137,23 +149,16 @@ namespace dealvem
    * the current-tangent scaling keeps it positive, because Neo-Hooke
    * stiffens in compression and the stabilization scale follows.
    *
-   * Objectivity: the consistency part is objective exactly
+   * Objectivity: the consistency part is objective
    * ($\Pi^0\nabla(Qv) = Q\,\Pi^0\nabla v$ for a constant rotation $Q$,
-   * and the laws are objective), and so is the whole element for $k = 1$
-   * with the trace rule (the projector commutes with $Q$ and the trace of
-   * the tangent is invariant). For $k = 2$ the stabilization is not: the
-   * projector $\Pi$ of VirtualElement is elliptic in the strain product,
-   * which does not commute with rotating the vector field, so
-   * $(I-\Pi)(Qx) \ne Q(I-\Pi)x$ for a general state $x$.
-   * tests/elasticity/finite_strain_objectivity measures the effect on a
-   * state with random non-polynomial parts: the internal forces of a
-   * rotated state differ from the rotated forces by 2.5 % (Neo-Hooke) and
-   * 3.4 % (Saint Venant-Kirchhoff) of the largest force, all of it from the
-   * stabilization. It vanishes for rigid motions and homogeneous
-   * deformations, where $(I-\Pi)u = 0$, and is of the size of the
-   * stabilization term itself, i.e. of the discretization error. A
-   * stabilization on a componentwise (rotation-commuting) projector would
-   * remove it.
+   * and the laws are objective), and so is the stabilization with the
+   * trace rule: $(I-\Pi^c)(Qx) = Q(I-\Pi^c)x$ and $\tau$ is invariant (the
+   * trace of $Q K_c Q^T$). tests/elasticity/finite_strain_objectivity checks
+   * the whole internal force of a rotated general state to round-off for
+   * $k = 1$ and $2$. (With $\Pi$ in place of $\Pi^c$, as first built,
+   * $k = 2$ deviated by 2.5 % to 3.4 % of the largest force on that state.)
+   * The diagonal rule scales each component of a node by its own diagonal
+   * entry, which a rotation mixes: it is not exactly objective.
    */
   template <int dim>
   class FiniteStrainOperator
@@ -200,8 +205,10 @@ namespace dealvem
      * @p law, scaled by the tangent at the local displacement @p frozen_u
      * (StabilizationScaling::current_tangent) or at zero
      * (StabilizationScaling::initial_tangent), with the factor @p gamma and
-     * the rule @p rule of ElasticityOperator. @p element is the space of
-     * the cell (VEMValues::get_element()).
+     * the rule @p rule of ElasticityOperator (Stabilization::automatic
+     * means the trace rule), acting on $(I-\Pi^c)u$ (see the class
+     * documentation). @p element is the space of the cell
+     * (VEMValues::get_element()). Throws unless $\gamma > 0$.
      */
     void
     compute_stabilization(const VirtualElement<dim>    &element,
