@@ -13,10 +13,10 @@
 // relative residuals e_i = |r_i| / F_ref, e_{i+1} with 1e-12 < e_{i+1}
 // (above round-off) and e_i < 1e-2 (inside the region of quadratic
 // convergence), the ratio e_{i+1} / e_i^2 must be below 100 (measured:
-// at most 3.2; a linearly converging iteration with rate 0.1 would give
+// at most 2.2; a linearly converging iteration with rate 0.1 would give
 // e_{i+1} / e_i^2 = 0.1 / e_i > 1e3 once e_i < 1e-4). The order estimate
 // log(e_{i+1}/e_i) / log(e_i/e_{i-1}) of the last triple above round-off is
-// printed, not checked: from one triple it is noisy (1.4 to 2.1 here).
+// printed, not checked: from one triple it is noisy (1.4 to 2.0 here).
 // Every step must converge within 12 Newton updates.
 #include <cmath>
 #include <iostream>
