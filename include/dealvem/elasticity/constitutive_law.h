@@ -44,7 +44,7 @@ namespace dealvem
    * The stabilization of the element scales with the trace of the
    * consistency matrix, hence with the tangent, and needs nothing else.
    *
-   * <h3>Finite strain (the next step)</h3>
+   * <h3>Finite strain</h3>
    * A hyperelastic law for large deformations (Saint Venant-Kirchhoff,
    * Neo-Hooke) gives the first Piola-Kirchhoff stress $P(F)$ and its
    * tangent $\partial P/\partial F$ (a general Tensor<4,dim>: $P$ is not
@@ -54,14 +54,18 @@ namespace dealvem
    * has_finite_strain_response(), and also implements the small-strain
    * functions (its linearization at $F = I$, with is_linear() false if its
    * small-strain stress is not linear), so every small-strain caller above
-   * keeps working with it. A Total Lagrangian operator evaluates $F = I +
-   * \Pi^0\nabla u$ at the polygon's quadrature points from the full-gradient
-   * projection of the space (VirtualElement::get_gradient_projector(),
-   * VEMValues::get_function_gradient_projections()) and integrates
-   * $P(F):\Pi^0\nabla v$; nothing in the small-strain callers changes. One
-   * interface rather than two keeps one MaterialLibrary per body for both
-   * kinds of analysis. In plane strain $F_{zz} = 1$; a plane-stress
-   * finite-strain law must solve $P_{zz} = 0$ for $F_{zz}$ itself.
+   * keeps working with it. The total Lagrangian operator
+   * (FiniteStrainOperator) evaluates $F = I + \Pi^0\nabla u$ at the
+   * polygon's quadrature points from the full-gradient projection of the
+   * space (VirtualElement::get_gradient_projector(),
+   * VEMValues::shape_gradient_projection()) and integrates
+   * $P(F):\Pi^0\nabla v$; FiniteStrainAssembler and FiniteStrainSolver
+   * (Newton with load steps) drive it; nothing in the small-strain callers
+   * changes. The laws: NeoHookeMaterial and SaintVenantKirchhoffMaterial
+   * (HyperelasticMaterial). One interface rather than two keeps one
+   * MaterialLibrary per body for both kinds of analysis. In plane strain
+   * $F_{zz} = 1$; a plane-stress finite-strain law must solve $P_{zz} = 0$
+   * for $F_{zz}$ itself.
    *
    * Laws are immutable (every function is const) and carry no history, so
    * one object may be shared by many cells and threads; a law with internal

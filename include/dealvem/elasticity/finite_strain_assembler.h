@@ -1,0 +1,152 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_elasticity_finite_strain_assembler_h
+#define dealvem_elasticity_finite_strain_assembler_h
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/elasticity_operator.h>
+#include <dealvem/elasticity/finite_strain_operator.h>
+#include <dealvem/elasticity/material_library.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * Assembles the internal force vector and the consistent tangent matrix
+   * of hyperelasticity at finite strain (total Lagrangian) with the
+   * virtual element of VEMDoFHandler::get_degree(), cell by cell with
+   * FiniteStrainOperator: what ElasticityAssembler is for linear
+   * elasticity, for a Newton driver (FiniteStrainSolver).
+   *
+   * With the internal force $f_{int}(u) = \sum_E (r_c + K_s u)$ and the
+   * external load $f_{ext}$ (body force and nominal tractions, dead loads
+   * in the reference configuration), the residual at the load factor
+   * $\lambda$ is $r(u) = \lambda f_{ext} - f_{int}(u)$ and the tangent
+   * $K(u) = \partial f_{int}/\partial u = \sum_E (K_c + K_s)$.
+   *
+   * The loads are ElasticityAssembler's (held inside and built on the same
+   * laws; ElasticityAssembler::local_load()): the body force
+   * $\int_E f_0\cdot\Pi^0\varphi_i$ per unit reference area and the nominal
+   * (first Piola-Kirchhoff) traction $T = PN$ per unit reference length
+   * on boundary ids. A pressure that follows the deformed boundary is a
+   * follower load with its own tangent and is not offered here.
+   *
+   * Every law of the library must have a finite-strain response
+   * (ConstitutiveLaw::has_finite_strain_response()) and a linear
+   * small-strain response (its linearization at $F = I$, as
+   * HyperelasticMaterial's), which ElasticityAssembler requires.
+   *
+   * The stabilization matrices $K_s$ are computed per cell by
+   * freeze_stabilization() from a given state and kept until the next call
+   * (see FiniteStrainOperator for the scaling and why it is frozen).
+   */
+  template <int dim>
+  class FiniteStrainAssembler
+  {
+  public:
+    /**
+     * Constructor: the laws of @p laws (shared), the stabilization factor
+     * @p gamma and rule @p stabilization of ElasticityOperator (default:
+     * the trace rule for both orders, see FiniteStrainOperator for why;
+     * Stabilization::automatic means the trace rule here too), and the
+     * @p scaling of the stabilization (FiniteStrainOperator). Throws unless $\gamma > 0$, every
+     * law has a finite-strain response, and every material id of the mesh
+     * has a law. The stabilization is frozen at $u = 0$.
+     */
+    FiniteStrainAssembler(const VEMDoFHandler<dim>   &dof_handler,
+                          const MaterialLibrary<dim> &laws,
+                          const double                gamma         = 1.0,
+                          const Stabilization         stabilization = Stabilization::trace,
+                          const StabilizationScaling  scaling       = StabilizationScaling::current_tangent);
+
+    /// Body force per unit reference area (2 components). The function
+    /// must outlive the assembler.
+    void
+    set_body_force(const dealii::Function<dim> &f);
+
+    /// Nominal traction $T = PN$ per unit reference length (2 components)
+    /// on the boundary edges with id @p id. The function must outlive the
+    /// assembler.
+    void
+    add_traction(const dealii::types::boundary_id id, const dealii::Function<dim> &g);
+
+    /// The DoF handler given to the constructor.
+    const VEMDoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /// The laws by material id.
+    const MaterialLibrary<dim> &
+    get_material_library() const
+    {
+      return laws;
+    }
+
+    /// The scaling of the stabilization given to the constructor.
+    StabilizationScaling
+    get_stabilization_scaling() const
+    {
+      return scaling;
+    }
+
+    /// The external load vector $f_{ext}$ at load factor 1 (unconstrained,
+    /// n_dofs() entries).
+    void
+    assemble_load_vector(dealii::Vector<double> &f_ext) const;
+
+    /**
+     * Compute and keep the stabilization matrix of every cell, scaled at the
+     * state @p u (global displacement; ignored for
+     * StabilizationScaling::initial_tangent). Throws ExcInvertedCell if
+     * @p u inverts a cell.
+     */
+    void
+    freeze_stabilization(const dealii::Vector<double> &u);
+
+    /**
+     * The residual $r(u) = \lambda f_{ext} - f_{int}(u)$ at the
+     * displacement @p u and the load factor @p load_factor, unconstrained
+     * (@p residual gets n_dofs() entries: at constrained DoFs it holds the
+     * reactions with the opposite sign). If @p tangent is not null, also
+     * the tangent matrix and its right-hand side @p rhs (the cell residuals)
+     * condensed with @p constraints by
+     * AffineConstraints::distribute_local_to_global, for the Newton update
+     * $K\,\delta u = r$ (the constraints of the update: see
+     * FiniteStrainSolver); @p tangent must have a sparsity pattern from
+     * VEMDoFHandler::make_sparsity_pattern with these constraints.
+     * Throws ExcInvertedCell (naming the cell) if @p u inverts a cell.
+     */
+    void
+    assemble(const dealii::Vector<double>            &u,
+             const double                             load_factor,
+             dealii::Vector<double>                  &residual,
+             const dealii::AffineConstraints<double> &constraints,
+             dealii::SparseMatrix<double>            *tangent,
+             dealii::Vector<double>                  *rhs) const;
+
+  private:
+    const VEMDoFHandler<dim>               &dof_handler;
+    MaterialLibrary<dim>                    laws;
+    /// The loads (and the law of a cell), shared with linear elasticity.
+    ElasticityAssembler<dim>                loads;
+    double                                  gamma;
+    Stabilization                           stabilization;
+    StabilizationScaling                    scaling;
+    std::vector<dealii::FullMatrix<double>> stabilization_matrices;
+  };
+} // namespace dealvem
+
+#endif

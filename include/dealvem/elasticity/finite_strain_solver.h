@@ -1,0 +1,199 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_elasticity_finite_strain_solver_h
+#define dealvem_elasticity_finite_strain_solver_h
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/elasticity/finite_strain_assembler.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace dealvem
+{
+  /**
+   * Newton's method with load steps for the finite-strain problem of a
+   * FiniteStrainAssembler: find $u$ with $r(u) = \lambda f_{ext} - f_{int}(u) = 0$
+   * at the load factors $\lambda_n = n/N$, $n = 1..N$, and the Dirichlet
+   * conditions scaled by the same factor.
+   *
+   * <h3>Dirichlet conditions</h3>
+   * The constraints given to the constructor are those of the full load:
+   * lines $u_i = \sum_j a_{ij}u_j + b_i$ as interpolate_boundary_values()
+   * or add_roller() make them (closed). At the load factor $\lambda$ the
+   * solver imposes $u_i = \sum_j a_{ij}u_j + \lambda b_i$. Each Newton
+   * update $\delta u$ is constrained by the same lines with the
+   * inhomogeneity $\lambda b_i + \sum_j a_{ij}u_j - u_i$ (what the current
+   * iterate misses), so the first update of a step carries the increment of
+   * the prescribed displacement into the whole body through the tangent of
+   * the last converged state (as deal.II's step-44 does), and the later ones
+   * are homogeneous.
+   *
+   * <h3>One Newton iteration</h3>
+   * Assemble $K(u)$ and $r(u)$ (FiniteStrainAssembler::assemble()), solve
+   * $K\,\delta u = r$ with the update constraints (SparseDirectUMFPACK),
+   * and set $u \leftarrow u + \alpha\,\delta u$ with a backtracking line
+   * search on the norm of the free residual (the residual condensed with
+   * the homogeneous constraints, i.e. without the reactions):
+   * $\alpha = 1, 1/2, 1/4, \ldots$ (at most Parameters::max_line_search_halvings
+   * halvings) until $\|r(u+\alpha\delta u)\| \le (1 - 10^{-4}\alpha)\|r(u)\|$
+   * and no cell is inverted. An update that moves prescribed DoFs (the
+   * first of a step) is taken in full unless it inverts a cell: its
+   * residual norm need not decrease, since the free residual at the old
+   * state does not see the new boundary values; when it is shortened, the
+   * next update carries the rest of the prescribed motion.
+   *
+   * <h3>Convergence</h3>
+   * A step has converged when, at an iterate that satisfies the constraints
+   * (to $10^{-14}$ of the largest prescribed value), both
+   * - the free residual $\|r\|_2 \le \max(\varepsilon_r F_{ref}, \varepsilon_a)$,
+   *   with $F_{ref}$ the larger of $\|\lambda f_{ext}\|_2$ and the norm of
+   *   the internal forces (reactions included) at the iterate, and
+   *   $\varepsilon_a$ = Parameters::absolute_residual_tolerance;
+   * - the last update $\|\alpha\,\delta u\|_2 \le \varepsilon_u \|u\|_2$
+   *   (or $\le \varepsilon_a$-sized when $u = 0$).
+   *
+   * If a step does not converge within Parameters::max_iterations
+   * iterations, or meets an inverted cell that the line search cannot
+   * avoid, the solution is reset to the last converged step (the earlier
+   * steps and their history are kept: get_solution(), get_history()), and
+   * an ExcMessage names the step, its load factor, the reason and the
+   * residual history of the step.
+   *
+   * <h3>Stabilization</h3>
+   * At the start of every load step the stabilization is frozen at the last
+   * converged state (FiniteStrainAssembler::freeze_stabilization()), so
+   * the tangent is exact within the step (FiniteStrainOperator).
+   */
+  template <int dim>
+  class FiniteStrainSolver
+  {
+  public:
+    /// The controls of the iteration.
+    struct Parameters
+    {
+      /// Number $N$ of equal load steps of run().
+      unsigned int n_load_steps = 10;
+      /// Largest number of Newton iterations (linear solves) per step.
+      unsigned int max_iterations = 30;
+      /// $\varepsilon_r$: the residual test, relative to $F_{ref}$.
+      double residual_tolerance = 1e-10;
+      /// $\varepsilon_u$: the update test, relative to $\|u\|$.
+      double update_tolerance = 1e-10;
+      /// $\varepsilon_a$: the absolute residual floor, for problems whose
+      /// forces are all zero (a rigid motion); a negative value means
+      /// $10^{-12} E_{min} L$ with the smallest
+      /// ConstitutiveLaw::characteristic_stiffness() $E_{min}$ and the
+      /// diameter $L$ of the mesh's bounding box.
+      double absolute_residual_tolerance = -1;
+      /// Whether to search along the Newton direction (else $\alpha = 1$
+      /// always, except on inversion).
+      bool line_search = true;
+      /// Largest number of halvings of $\alpha$.
+      unsigned int max_line_search_halvings = 10;
+    };
+
+    /// One Newton iteration: the state it starts from and its update.
+    struct IterationRecord
+    {
+      /// Free residual norm $\|r(u)\|_2$ at the iterate.
+      double residual_norm = 0;
+      /// $\|r\|_2 / F_{ref}$ (0 if $F_{ref} = 0$).
+      double relative_residual = 0;
+      /// Norm $\|\alpha\,\delta u\|_2$ of the update taken from the iterate
+      /// (0 on the last record of a converged step: no update).
+      double update_norm = 0;
+      /// The line-search step $\alpha$ (1: full Newton step).
+      double step_length = 1;
+    };
+
+    /// One load step.
+    struct StepRecord
+    {
+      /// The step number (1-based).
+      unsigned int step = 0;
+      /// Its load factor $\lambda$.
+      double load_factor = 0;
+      /// Whether it converged.
+      bool converged = false;
+      /// The iterations, one record per assembled iterate.
+      std::vector<IterationRecord> iterations;
+    };
+
+    /**
+     * Constructor: the assembler (held by reference, it must outlive the
+     * solver; not const, since the solver freezes its stabilization), the
+     * constraints of the full load (copied; closed, as for deal.II), and
+     * the parameters. The solution starts at zero. Throws if the
+     * constraints are not closed or the parameters are invalid (naming the
+     * parameter).
+     */
+    FiniteStrainSolver(FiniteStrainAssembler<dim>              &assembler,
+                       const dealii::AffineConstraints<double> &constraints,
+                       const Parameters                        &parameters);
+
+    /// Solve the load steps $\lambda = n/N$, $n = 1..N$
+    /// (Parameters::n_load_steps) from the current solution. Throws as
+    /// described in the class documentation when a step fails.
+    void
+    run();
+
+    /// Solve one load step to the load factor @p load_factor from the
+    /// current solution, recorded as step number @p step. Throws as run().
+    void
+    solve_step(const unsigned int step, const double load_factor);
+
+    /// The displacement of the last converged step (zero before the first).
+    const dealii::Vector<double> &
+    get_solution() const
+    {
+      return solution;
+    }
+
+    /// The load factor of the last converged step.
+    double
+    get_load_factor() const
+    {
+      return current_load_factor;
+    }
+
+    /// Every step attempted, the failed one last.
+    const std::vector<StepRecord> &
+    get_history() const
+    {
+      return history;
+    }
+
+    /// Print the history: one line per Newton iteration with the residual
+    /// norm, the relative residual, the update norm and $\alpha$.
+    void
+    print_history(std::ostream &out) const;
+
+    /// The history of one step as text (print_history()'s lines for it).
+    static std::string
+    step_history_text(const StepRecord &record);
+
+  private:
+    FiniteStrainAssembler<dim>       &assembler;
+    dealii::AffineConstraints<double> constraints;
+    /// The constraints with zero inhomogeneities: for the free residual.
+    dealii::AffineConstraints<double> homogeneous_constraints;
+    Parameters                        parameters;
+    dealii::SparsityPattern           sparsity;
+    dealii::SparseMatrix<double>      tangent;
+    dealii::Vector<double>            solution;
+    dealii::Vector<double>            f_ext;
+    double                            current_load_factor = 0;
+    double                            absolute_tolerance  = 0;
+    std::vector<StepRecord>           history;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,232 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+
+#include <dealvem/elasticity/elasticity_operator.h>
+#include <dealvem/elasticity/finite_strain_operator.h>
+#include <dealvem/vem/vem_values.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace dealvem
+{
+  template <int dim>
+  void
+  FiniteStrainOperator<dim>::reinit(const VEMValues<dim> &vem_values)
+  {
+    cell        = vem_values.get_cell();
+    n_dofs_cell = vem_values.dofs_per_cell();
+    n_q         = vem_values.n_quadrature_points();
+    JxW.resize(n_q);
+    G.resize(n_q * n_dofs_cell);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        JxW[q] = vem_values.JxW(q);
+        for (unsigned int i = 0; i < n_dofs_cell; ++i)
+          G[q * n_dofs_cell + i] = vem_values.shape_gradient_projection(i, q);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainOperator<dim>::deformation_gradients(const dealii::Vector<double>        &local_u,
+                                                   std::vector<dealii::Tensor<2, dim>> &F) const
+  {
+    AssertDimension(local_u.size(), n_dofs_cell);
+    F.resize(n_q);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        dealii::Tensor<2, dim> Fq;
+        for (unsigned int d = 0; d < dim; ++d)
+          Fq[d][d] = 1.;
+        for (unsigned int i = 0; i < n_dofs_cell; ++i)
+          Fq += local_u[i] * G[q * n_dofs_cell + i];
+        F[q] = Fq;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainOperator<dim>::compute_consistency(const ConstitutiveLaw<dim>   &law,
+                                                 const dealii::Vector<double> &local_u,
+                                                 const bool                    with_tangent,
+                                                 dealii::Vector<double>       &r_c,
+                                                 dealii::FullMatrix<double>   &K_c) const
+  {
+    AssertThrow(law.has_finite_strain_response(),
+                dealii::ExcMessage("FiniteStrainOperator: the constitutive law '" + law.get_name() + "' of cell " +
+                                   std::to_string(cell) +
+                                   " has no finite-strain response (first Piola-Kirchhoff stress and tangent)."));
+    std::vector<dealii::Tensor<2, dim>> F;
+    deformation_gradients(local_u, F);
+    r_c.reinit(n_dofs_cell);
+    if (with_tangent)
+      K_c.reinit(n_dofs_cell, n_dofs_cell);
+    std::vector<dealii::Tensor<2, dim>> AG(n_dofs_cell);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double J = dealii::determinant(F[q]);
+        AssertThrow(J > 0 && std::isfinite(J), ExcInvertedCell(cell, q, J));
+        const dealii::Tensor<2, dim> P    = law.first_piola_kirchhoff_stress(F[q]);
+        const auto                  *G_q  = &G[q * n_dofs_cell];
+        for (unsigned int i = 0; i < n_dofs_cell; ++i)
+          r_c[i] += dealii::scalar_product(P, G_q[i]) * JxW[q];
+        if (!with_tangent)
+          continue;
+        const dealii::Tensor<4, dim> A = law.first_piola_kirchhoff_tangent(F[q]);
+        for (unsigned int j = 0; j < n_dofs_cell; ++j)
+          AG[j] = dealii::double_contract<2, 0, 3, 1>(A, G_q[j]);
+        for (unsigned int i = 0; i < n_dofs_cell; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            K_c(i, j) += dealii::scalar_product(G_q[i], AG[j]) * JxW[q];
+      }
+    if (with_tangent)
+      for (unsigned int i = 0; i < n_dofs_cell; ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          K_c(j, i) = K_c(i, j);
+  }
+
+
+
+  namespace
+  {
+    // I - D Pi^c, with Pi^c the componentwise H1 projector onto [P_k]^2:
+    // int grad Pi^c v : grad p = int grad v : grad p for every p, and the
+    // mean of each component (vertex mean for k = 1, cell moment for
+    // k = 2) kept. It commutes with rotating the field (see the class
+    // documentation). Rows alpha >= 2 of B^c:
+    // int grad p_a : grad phi_i = int_dE (grad p_a n) . phi_i - int_E lap p_a . phi_i,
+    // the edge term by Gauss-Lobatto on the edge's nodes (exact: the
+    // integrand has degree 2k - 1), the cell term (k = 2, lap p_a constant)
+    // from the cell moment.
+    template <int dim>
+    void
+    componentwise_projector_complement(const VirtualElement<dim> &element, dealii::FullMatrix<double> &I_Pi)
+    {
+      const PolygonGeometry<dim> &geometry = element.get_geometry();
+      const unsigned int          k = element.get_degree(), n = element.n_dofs_per_cell(),
+                         n_p = element.n_polynomials(), N = geometry.n_vertices();
+      dealii::FullMatrix<double> Bc(n_p, n);
+      if (k == 1)
+        for (unsigned int v = 0; v < N; ++v)
+          {
+            Bc(0, 2 * v)     = 1. / N;
+            Bc(1, 2 * v + 1) = 1. / N;
+          }
+      else
+        {
+          Bc(0, 2 * (2 * N))     = 1.;
+          Bc(1, 2 * (2 * N) + 1) = 1.;
+        }
+      const double            h = geometry.diameter();
+      const dealii::Point<dim> &x_c = geometry.centroid();
+      for (unsigned int alpha = 2; alpha < n_p; ++alpha)
+        {
+          for (unsigned int e = 0; e < N; ++e)
+            {
+              const std::vector<unsigned int> nodes = element.edge_nodes(e);
+              const double                    L     = geometry.edge_length(e);
+              const dealii::Tensor<1, dim>    normal = geometry.edge_normal(e);
+              const double w1[2] = {L / 2., L / 2.}, w2[3] = {L / 6., 2. * L / 3., L / 6.};
+              for (unsigned int a = 0; a < nodes.size(); ++a)
+                {
+                  const dealii::Tensor<1, dim> flux =
+                    element.polynomial_gradient(alpha, element.node_location(nodes[a])) * normal;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    Bc(alpha, 2 * nodes[a] + c) += (k == 1 ? w1[a] : w2[a]) * flux[c];
+                }
+            }
+          if (k == 2)
+            {
+              // the gradient is linear: its differences are exact
+              const dealii::Tensor<2, dim> g0 = element.polynomial_gradient(alpha, x_c);
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  double laplacian = 0;
+                  for (unsigned int j = 0; j < dim; ++j)
+                    {
+                      dealii::Point<dim> x = x_c;
+                      x[j] += h;
+                      laplacian += (element.polynomial_gradient(alpha, x)[c][j] - g0[c][j]) / h;
+                    }
+                  Bc(alpha, 2 * (2 * N) + c) -= geometry.area() * laplacian;
+                }
+            }
+        }
+      const dealii::FullMatrix<double> &D = element.get_D();
+      dealii::FullMatrix<double>        Gc(n_p, n_p), Pi_c(n_p, n), DPi(n, n);
+      Bc.mmult(Gc, D);
+      Gc.gauss_jordan();
+      Gc.mmult(Pi_c, Bc);
+      D.mmult(DPi, Pi_c);
+      I_Pi.reinit(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          I_Pi(i, j) = (i == j ? 1. : 0.) - DPi(i, j);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  FiniteStrainOperator<dim>::compute_stabilization(const VirtualElement<dim>    &element,
+                                                   const ConstitutiveLaw<dim>   &law,
+                                                   const dealii::Vector<double> &frozen_u,
+                                                   const double                  gamma,
+                                                   const Stabilization           rule,
+                                                   const StabilizationScaling    scaling,
+                                                   dealii::FullMatrix<double>   &K_s) const
+  {
+    AssertDimension(element.n_dofs_per_cell(), n_dofs_cell);
+    AssertThrow(gamma > 0 && std::isfinite(gamma),
+                dealii::ExcMessage("The stabilization factor gamma must be positive, got " + std::to_string(gamma) +
+                                   "."));
+    const unsigned int         n = n_dofs_cell;
+    dealii::Vector<double>     zero(n), r;
+    dealii::FullMatrix<double> K_0, K_star;
+    compute_consistency(law, zero, true, r, K_0);
+    dealii::FullMatrix<double> D(n, n);
+    if (scaling == StabilizationScaling::initial_tangent)
+      for (unsigned int i = 0; i < n; ++i)
+        D(i, i) = K_0(i, i);
+    else
+      {
+        compute_consistency(law, frozen_u, true, r, K_star);
+        for (unsigned int i = 0; i < n; ++i)
+          D(i, i) = std::max(K_star(i, i), stabilization_floor * K_0(i, i));
+      }
+    // the rules of ElasticityOperator on (I - Pi^c): trace,
+    // gamma tau (I - Pi^c)^T (I - Pi^c), or diagonal,
+    // (I - Pi^c)^T diag(gamma c_k max(d_i, 1e-3 tau)) (I - Pi^c)
+    const double gamma_tau = ElasticityOperator<dim>::stabilization_scaling(D, gamma);
+    dealii::Vector<double> s(n);
+    const bool             trace = rule == Stabilization::trace || rule == Stabilization::automatic;
+    const double           c_k   = (element.get_degree() == 1 ? 1. : 0.2);
+    for (unsigned int i = 0; i < n; ++i)
+      s[i] = trace ? gamma_tau : gamma * c_k * std::max(D(i, i), 1e-3 * gamma_tau / gamma);
+    dealii::FullMatrix<double> I_Pi;
+    componentwise_projector_complement(element, I_Pi);
+    K_s.reinit(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j <= i; ++j)
+        {
+          double v = 0;
+          for (unsigned int m = 0; m < n; ++m)
+            v += I_Pi(m, i) * s[m] * I_Pi(m, j);
+          K_s(i, j) = K_s(j, i) = v;
+        }
+  }
+
+
+
+  template class FiniteStrainOperator<2>;
+} // namespace dealvem
