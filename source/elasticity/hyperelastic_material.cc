@@ -14,6 +14,9 @@ namespace dealvem
   HyperelasticMaterial::HyperelasticMaterial(const double E, const double nu, const ElasticMaterial::Model model)
     : E(E)
     , nu(nu)
+    , linear(std::isfinite(E) && E > 0 && std::isfinite(nu) && nu > -1. && nu < 0.5 ? E : 1.,
+             std::isfinite(E) && E > 0 && std::isfinite(nu) && nu > -1. && nu < 0.5 ? nu : 0.,
+             ElasticMaterial::Model::plane_strain)
   {
     std::ostringstream e_text;
     e_text << E;
@@ -37,24 +40,27 @@ namespace dealvem
   double
   HyperelasticMaterial::mu() const
   {
-    return E / (2. * (1. + nu));
+    return linear.mu();
   }
+
 
 
 
   double
   HyperelasticMaterial::lambda() const
   {
-    return E * nu / ((1. + nu) * (1. - 2. * nu));
+    return linear.lambda();
   }
+
 
 
 
   ElasticMaterial
   HyperelasticMaterial::linearization() const
   {
-    return ElasticMaterial(E, nu, ElasticMaterial::Model::plane_strain);
+    return linear;
   }
+
 
 
 
@@ -94,36 +100,27 @@ namespace dealvem
   dealii::SymmetricTensor<2, 2>
   HyperelasticMaterial::stress(const dealii::SymmetricTensor<2, 2> &strain) const
   {
-    const double                  l = lambda(), m = mu();
-    dealii::SymmetricTensor<2, 2> s  = 2. * m * strain;
-    const double                  tr = dealii::trace(strain);
-    s[0][0] += l * tr;
-    s[1][1] += l * tr;
-    return s;
+    return linear.stress(strain);
   }
+
 
 
 
   dealii::SymmetricTensor<4, 2>
   HyperelasticMaterial::tangent(const dealii::SymmetricTensor<2, 2> &) const
   {
-    // the same components as ElasticMaterial's, so that ElasticityOperator
-    // recognizes the isotropic form
-    const double                  l = lambda(), m = mu();
-    dealii::SymmetricTensor<4, 2> C;
-    C[0][0][0][0] = C[1][1][1][1] = l + 2. * m;
-    C[0][0][1][1] = C[1][1][0][0] = l;
-    C[0][1][0][1]                 = m;
-    return C;
+    return linear.tangent(dealii::SymmetricTensor<2, 2>());
   }
+
 
 
 
   double
   HyperelasticMaterial::stress_zz(const dealii::SymmetricTensor<2, 2> &strain) const
   {
-    return lambda() * dealii::trace(strain);
+    return linear.stress_zz(strain);
   }
+
 
 
 

@@ -157,6 +157,9 @@ namespace dealvem
   private:
     double E;
     double nu;
+    /// The linearization at $F = I$, which answers the small-strain
+    /// functions.
+    ElasticMaterial linear;
   };
 
 
