@@ -222,8 +222,12 @@ namespace dealvem
                 dealii::ExcMessage("Unsupported pieces: " + std::to_string(rest.size()) +
                                    " edge-connected pieces of the meshes are held only through one another "
                                    "(the first: " + pieces.describe(rest.front()) +
-                                   "); a mesh of that many separate pieces is not a meaningful input. Check the "
-                                   "mesh files for cells that share no edge with the rest of their body."));
+                                   "), more than the 400 whose free motions the dense check of such pieces can "
+                                   "find. Either a mesh file has that many cells that share no edge with the "
+                                   "rest of their body (check the files), or an assembly of that many bodies "
+                                   "is held only by contacts that this iteration left open or slipping: hold "
+                                   "more of them by Dirichlet, roller or point constraints, or by contacts that "
+                                   "stick."));
     const unsigned int N = 3 * rest.size();
     Eigen::MatrixXd    gram = Eigen::MatrixXd::Zero(N, N);
     std::vector<std::pair<unsigned int, double>> reduced;
