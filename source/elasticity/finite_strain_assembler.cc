@@ -114,11 +114,11 @@ namespace dealvem
     residual.reinit(n);
     if (tangent != nullptr)
       {
-        AssertThrow(rhs != nullptr && tangent->m() == n,
+        AssertThrow(rhs != nullptr && tangent->m() >= n && tangent->m() == tangent->n(),
                     dealii::ExcMessage("FiniteStrainAssembler::assemble(): the tangent needs a right-hand side "
-                                       "vector and n_dofs() rows."));
+                                       "vector and at least n_dofs() rows (square)."));
         *tangent = 0;
-        rhs->reinit(n);
+        rhs->reinit(tangent->m());
       }
     VEMValues<dim>            vem_values(dof_handler, dealii::update_quadrature_points | dealii::update_JxW_values);
     FiniteStrainOperator<dim> op;

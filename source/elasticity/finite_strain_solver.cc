@@ -6,6 +6,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
 
+#include <dealvem/contact/finite_strain_contact.h>
 #include <dealvem/elasticity/finite_strain_solver.h>
 
 #include <algorithm>
@@ -84,20 +85,79 @@ namespace dealvem
     solution.reinit(n);
     assembler.assemble_load_vector(f_ext);
 
+    const auto &vertices = dof_handler.get_mesh().get_vertices();
+    dealii::Point<dim> lo = vertices.front(), hi = vertices.front();
+    for (const auto &v : vertices)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lo[d] = std::min(lo[d], v[d]);
+          hi[d] = std::max(hi[d], v[d]);
+        }
+    length_scale       = lo.distance(hi);
     absolute_tolerance = parameters.absolute_residual_tolerance;
     if (absolute_tolerance < 0)
+      absolute_tolerance =
+        1e-12 * assembler.get_material_library().min_characteristic_stiffness() * length_scale;
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::set_contact(FiniteStrainContact &contact_in)
+  {
+    if constexpr (dim != 2)
       {
-        const auto &vertices = dof_handler.get_mesh().get_vertices();
-        dealii::Point<dim> lo = vertices.front(), hi = vertices.front();
-        for (const auto &v : vertices)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lo[d] = std::min(lo[d], v[d]);
-              hi[d] = std::max(hi[d], v[d]);
-            }
-        absolute_tolerance =
-          1e-12 * assembler.get_material_library().min_characteristic_stiffness() * lo.distance(hi);
+        AssertThrow(false, dealii::ExcMessage("FiniteStrainSolver::set_contact(): contact is two-dimensional."));
       }
+    else
+      {
+        const auto &dof_handler = assembler.get_dof_handler();
+        contact                 = &contact_in;
+        contact->mark_fixed_pairs(constraints);
+        const auto n = dof_handler.n_dofs();
+        const auto m = contact->n_constraints();
+        dealii::DynamicSparsityPattern dsp(n + m);
+        dof_handler.make_sparsity_pattern(dsp, constraints);
+        contact->add_sparsity(dsp, constraints);
+        tangent.clear();
+        sparsity.copy_from(dsp);
+        tangent.reinit(sparsity);
+        multipliers.reinit(m);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::set_constraints(const dealii::AffineConstraints<double> &new_constraints)
+  {
+    AssertThrow(new_constraints.is_closed(),
+                dealii::ExcMessage("FiniteStrainSolver::set_constraints(): the constraints must be closed."));
+    const auto &old_lines = constraints.get_lines();
+    const auto &new_lines = new_constraints.get_lines();
+    AssertThrow(old_lines.size() == new_lines.size(),
+                dealii::ExcMessage("FiniteStrainSolver::set_constraints(): the new constraints have " +
+                                   std::to_string(new_lines.size()) + " lines, the old ones " +
+                                   std::to_string(old_lines.size()) +
+                                   "; they must constrain the same DoFs."));
+    for (unsigned int l = 0; l < old_lines.size(); ++l)
+      {
+        bool same = old_lines[l].index == new_lines[l].index &&
+                    old_lines[l].entries.size() == new_lines[l].entries.size();
+        for (unsigned int e = 0; same && e < old_lines[l].entries.size(); ++e)
+          same = old_lines[l].entries[e].first == new_lines[l].entries[e].first;
+        AssertThrow(same,
+                    dealii::ExcMessage("FiniteStrainSolver::set_constraints(): the constraint of DoF " +
+                                       std::to_string(new_lines[l].index) +
+                                       " differs in the DoFs it constrains or depends on from the old "
+                                       "constraints; only values and coefficients may change."));
+      }
+    constraints.copy_from(new_constraints);
+    homogeneous_constraints.copy_from(new_constraints);
+    for (const auto &line : new_lines)
+      homogeneous_constraints.set_inhomogeneity(line.index, 0.);
   }
 
 
@@ -137,7 +197,12 @@ namespace dealvem
     // the stabilization scaled at the last converged state (FiniteStrainOperator)
     assembler.freeze_stabilization(solution);
 
-    dealii::Vector<double>            u = solution, r, rhs, du, u_trial, r_trial, tmp;
+    const auto   n = assembler.get_dof_handler().n_dofs();
+    const auto   m = contact != nullptr ? contact->n_constraints() : 0u;
+    record.with_contact = (contact != nullptr);
+
+    dealii::Vector<double>            u = solution, r, rhs, du, u_trial, r_trial, tmp, x;
+    dealii::Vector<double>            lambda = multipliers, lambda_new, lambda_trial;
     dealii::AffineConstraints<double> update_constraints;
     update_constraints.copy_from(constraints);
     // the largest prescribed value, for the test that the constraints hold
@@ -151,9 +216,47 @@ namespace dealvem
       return tmp.l2_norm();
     };
 
-    const double f_ext_norm  = f_ext.l2_norm();
-    double       last_update = std::numeric_limits<double>::infinity();
-    std::string  inversion; // the last inverted cell met in the step
+    // Contact: the pair weights (the scale of the complementarity
+    // function), the residual with the contact forces, and the
+    // complementarity residual phi.
+    std::vector<double> weight(m, 0.);
+    double              c = 0;
+    if (contact != nullptr)
+      {
+        c = contact->complementarity_constant();
+        for (unsigned int j = 0; j < m; ++j)
+          weight[j] = contact->get_pairs()[contact->pair_of(j)].weight;
+      }
+    FiniteStrainContact::Linearization lin;
+    // r <- r - sum_j lambda_j dg_j/du; returns |phi|_2
+    const auto add_contact = [&](const dealii::Vector<double> &u_at,
+                                 const dealii::Vector<double> &lambda_at,
+                                 dealii::Vector<double>       &residual) {
+      double phi2 = 0;
+      for (unsigned int j = 0; j < m; ++j)
+        {
+          if (contact->is_left_out(j))
+            {
+              phi2 += lambda_at[j] * lambda_at[j];
+              continue;
+            }
+          contact->linearize(j, u_at, lin, false);
+          if (lambda_at[j] != 0)
+            for (unsigned int k = 0; k < lin.dofs.size(); ++k)
+              residual[lin.dofs[k]] -= lambda_at[j] * lin.gradient[k];
+          const double k_j = c * weight[j];
+          const double phi = contact->is_bilateral() ?
+                               k_j * lin.value :
+                               lambda_at[j] - std::min(0., lambda_at[j] + k_j * lin.value);
+          phi2 += phi * phi;
+        }
+      return std::sqrt(phi2);
+    };
+
+    const double      f_ext_norm  = f_ext.l2_norm();
+    double            last_update = std::numeric_limits<double>::infinity();
+    std::string       inversion; // the last inverted cell met in the step
+    std::vector<bool> active(m, false), previous_active;
     for (unsigned int it = 0;; ++it)
       {
         // the update's constraints: what the iterate misses of
@@ -178,7 +281,6 @@ namespace dealvem
           {
             fail("the iterate inverts a cell: " + exception_text(e));
           }
-        const double r_norm = free_norm(r);
         // the force scale at this iterate: the load or the internal forces
         // (reactions included), whichever is larger
         tmp = f_ext;
@@ -186,12 +288,63 @@ namespace dealvem
         tmp -= r;
         const double F_ref = std::max(std::abs(load_factor) * f_ext_norm, tmp.l2_norm());
 
+        // contact: the active set of the iterate, the constraint rows and
+        // the geometric stiffness
+        double       phi_norm = 0;
+        unsigned int n_active = 0;
+        if (contact != nullptr)
+          {
+            previous_active = active;
+            double scale    = 0;
+            std::vector<double> g(m, 0.);
+            for (unsigned int j = 0; j < m; ++j)
+              if (!contact->is_left_out(j))
+                {
+                  g[j]  = contact->value(j, u);
+                  scale = std::max({scale, std::abs(lambda[j]) / weight[j], c * std::abs(g[j])});
+                }
+            for (unsigned int j = 0; j < m; ++j)
+              active[j] = !contact->is_left_out(j) &&
+                          (contact->is_bilateral() || -lambda[j] / weight[j] - c * g[j] > -1e-12 * scale);
+            for (unsigned int j = 0; j < m; ++j)
+              {
+                if (!active[j])
+                  {
+                    tangent.add(n + j, n + j, c * weight[j]);
+                    continue;
+                  }
+                ++n_active;
+                contact->linearize(j, u, lin, true);
+                const unsigned int                           nd = lin.dofs.size();
+                dealii::FullMatrix<double>                   M(nd + 1, nd + 1);
+                dealii::Vector<double>                       b(nd + 1);
+                std::vector<dealii::types::global_dof_index> indices = lin.dofs;
+                indices.push_back(n + j);
+                for (unsigned int k = 0; k < nd; ++k)
+                  {
+                    for (unsigned int l = 0; l < nd; ++l)
+                      M(k, l) = lambda[j] * lin.hessian(k, l);
+                    M(k, nd) = lin.gradient[k];
+                    M(nd, k) = lin.gradient[k];
+                  }
+                b[nd] = -lin.value;
+                update_constraints.distribute_local_to_global(M, b, indices, tangent, rhs);
+              }
+            phi_norm = add_contact(u, lambda, r);
+          }
+        const double r_norm = free_norm(r);
+        const double merit  = std::sqrt(r_norm * r_norm + phi_norm * phi_norm);
+
         IterationRecord iteration;
         iteration.residual_norm     = r_norm;
         iteration.relative_residual = F_ref > 0 ? r_norm / F_ref : 0.;
         iteration.update_norm       = 0;
         iteration.step_length       = 0;
-        if (!moves_prescribed && r_norm <= std::max(parameters.residual_tolerance * F_ref, absolute_tolerance) &&
+        iteration.n_active          = n_active;
+        iteration.contact_residual  = phi_norm;
+        const double tolerance      = std::max(parameters.residual_tolerance * F_ref, absolute_tolerance);
+        if (!moves_prescribed && r_norm <= tolerance && phi_norm <= tolerance &&
+            (contact == nullptr || (it > 0 && active == previous_active)) &&
             last_update <= parameters.update_tolerance * u.l2_norm())
           {
             record.iterations.push_back(iteration);
@@ -206,26 +359,41 @@ namespace dealvem
                                       " (the line search met inverted cells, the last: " + inversion + ")"));
           }
 
-        // the Newton direction
+        // the Newton direction (and the new multipliers)
         dealii::SparseDirectUMFPACK direct;
         direct.initialize(tangent);
-        du.reinit(u.size());
-        direct.vmult(du, rhs);
-        update_constraints.distribute(du);
+        x.reinit(n + m);
+        direct.vmult(x, rhs);
+        update_constraints.distribute(x);
+        du.reinit(n);
+        for (unsigned int i = 0; i < n; ++i)
+          du[i] = x[i];
+        lambda_new.reinit(m);
+        for (unsigned int j = 0; j < m; ++j)
+          lambda_new[j] = active[j] ? x[n + j] : 0.;
 
         // backtracking: halve alpha while the trial inverts a cell or (for
         // an update that keeps the prescribed DoFs) does not decrease the
-        // free residual enough
+        // merit (the free residual, with contact also phi) enough
         double      alpha       = 1;
         bool        accepted    = false;
         std::string last_failure;
+        const auto  try_step = [&](const double a) {
+          u_trial = u;
+          u_trial.add(a, du);
+          lambda_trial = lambda;
+          lambda_trial.sadd(1. - a, a, lambda_new);
+          assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr);
+          const double phi = (contact != nullptr) ? add_contact(u_trial, lambda_trial, r_trial) : 0.;
+          const double rn  = free_norm(r_trial);
+          return std::sqrt(rn * rn + phi * phi);
+        };
         for (unsigned int h = 0; h <= parameters.max_line_search_halvings; ++h, alpha *= 0.5)
           {
-            u_trial = u;
-            u_trial.add(alpha, du);
+            double trial_merit = 0;
             try
               {
-                assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr);
+                trial_merit = try_step(alpha);
               }
             catch (const ExcInvertedCell &e)
               {
@@ -233,8 +401,7 @@ namespace dealvem
                 inversion    = last_failure;
                 continue;
               }
-            if (!parameters.line_search || moves_prescribed ||
-                free_norm(r_trial) <= (1. - 1e-4 * alpha) * r_norm)
+            if (!parameters.line_search || moves_prescribed || trial_merit <= (1. - 1e-4 * alpha) * merit)
               {
                 accepted = true;
                 break;
@@ -245,12 +412,10 @@ namespace dealvem
           {
             // no decrease found (e.g. a residual at round-off): take the full
             // step if it inverts nothing
-            alpha   = 1;
-            u_trial = u;
-            u_trial.add(1., du);
+            alpha = 1;
             try
               {
-                assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr);
+                try_step(1.);
                 accepted = true;
               }
             catch (const ExcInvertedCell &e)
@@ -270,8 +435,32 @@ namespace dealvem
         iteration.update_norm = last_update;
         iteration.step_length = alpha;
         record.iterations.push_back(iteration);
-        u = u_trial;
+        u      = u_trial;
+        lambda = lambda_trial;
       }
+
+    // pairs whose gap the displacement constraints fix: the prescribed
+    // motion must not make them penetrate (or, tied, move apart)
+    if (contact != nullptr)
+      for (unsigned int j = 0; j < m; ++j)
+        {
+          const unsigned int i = contact->pair_of(j);
+          if (!contact->is_fixed(i) || contact->get_pairs()[i].junction)
+            continue;
+          const double g = contact->value(j, u);
+          if ((contact->is_bilateral() && std::abs(g) > 1e-10 * length_scale) ||
+              (!contact->is_bilateral() && g < -1e-10 * length_scale))
+            {
+              const auto &p = contact->get_pairs()[i];
+              fail("the displacement constraints fix both nodes of the contact pair at (" +
+                   number(p.slave_location[0]) + ", " + number(p.slave_location[1]) + ") of interface " +
+                   std::to_string(p.interface) + ", and they make its " +
+                   (contact->is_tangential(j) ? "tangential" : "normal") + " constraint " +
+                   (contact->is_bilateral() ? "fail (value " : "penetrate (gap ") + number(g) +
+                   "): the prescribed motions of the two bodies contradict the contact.");
+            }
+        }
+    multipliers = lambda;
     solution            = u;
     current_load_factor = load_factor;
     history.push_back(record);
@@ -289,13 +478,18 @@ namespace dealvem
       n_updates += (it.step_length > 0 ? 1 : 0);
     s << "  step " << record.step << ", load factor " << std::setprecision(6) << record.load_factor << ": "
       << (record.converged ? "converged" : "NOT converged") << " after " << n_updates << " Newton updates\n";
-    s << "    it   |r|          |r|/F_ref    |alpha du|   alpha\n";
+    s << "    it   |r|          |r|/F_ref    |alpha du|   alpha"
+      << (record.with_contact ? "    active   |phi|" : "") << "\n";
     for (unsigned int i = 0; i < record.iterations.size(); ++i)
       {
         const auto &it = record.iterations[i];
         s << "    " << std::setw(3) << i << "  " << std::scientific << std::setprecision(3) << it.residual_norm
           << "    " << it.relative_residual << "    " << it.update_norm << "    " << std::defaultfloat
-          << std::setprecision(4) << it.step_length << "\n";
+          << std::setprecision(4) << std::setw(6) << std::left << it.step_length << std::right;
+        if (record.with_contact)
+          s << "   " << std::setw(6) << it.n_active << "   " << std::scientific << std::setprecision(3)
+            << it.contact_residual << std::defaultfloat;
+        s << "\n";
       }
     return s.str();
   }

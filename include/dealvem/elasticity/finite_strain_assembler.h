@@ -126,7 +126,11 @@ namespace dealvem
      * AffineConstraints::distribute_local_to_global, for the Newton update
      * $K\,\delta u = r$ (the constraints of the update: see
      * FiniteStrainSolver); @p tangent must have a sparsity pattern from
-     * VEMDoFHandler::make_sparsity_pattern with these constraints.
+     * VEMDoFHandler::make_sparsity_pattern with these constraints. The
+     * tangent may have more rows than n_dofs() (an augmented system, as
+     * FiniteStrainSolver's with contact): the rows and columns beyond
+     * n_dofs() are zeroed and left to the caller, and @p rhs gets the
+     * tangent's size.
      * Throws ExcInvertedCell (naming the cell) if @p u inverts a cell.
      */
     void

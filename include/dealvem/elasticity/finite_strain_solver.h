@@ -18,6 +18,8 @@
 
 namespace dealvem
 {
+  class FiniteStrainContact;
+
   /**
    * Newton's method with load steps for the finite-strain problem of a
    * FiniteStrainAssembler: find $u$ with $r(u) = \lambda f_{ext} - f_{int}(u) = 0$
@@ -71,6 +73,31 @@ namespace dealvem
    * At the start of every load step the stabilization is frozen at the last
    * converged state (FiniteStrainAssembler::freeze_stabilization()), so
    * the tangent is exact within the step (FiniteStrainOperator).
+   *
+   * <h3>Contact</h3>
+   * With set_contact(), the node pairs of a FiniteStrainContact are
+   * enforced by Lagrange multipliers $\lambda_j$ (nodal forces in the
+   * current configuration): the residual becomes
+   * $r(u) - \sum_j \lambda_j\,\partial g_j/\partial u$ and each Newton
+   * iteration solves, by a semismooth Newton (primal-dual active set)
+   * step,
+   * @f[ \begin{pmatrix} K(u) + \sum_j \lambda_j \nabla^2 g_j & G_{\mathcal A}^T \\
+   *                     G_{\mathcal A} & 0 \end{pmatrix}
+   *     \begin{pmatrix} \delta u \\ \lambda^{new}_{\mathcal A} \end{pmatrix} =
+   *     \begin{pmatrix} \lambda_{load} f_{ext} - f_{int}(u) \\ -g_{\mathcal A}(u) \end{pmatrix},
+   *     \qquad \lambda^{new}_j = 0 \ (j \notin \mathcal A), @f]
+   * with $G$ the rows $\partial g_j/\partial u$ and the active set
+   * $\mathcal A = \{j : -\lambda_j/w_j - c\,g_j(u) > 0\}$ of the iterate
+   * (every constraint for tied contact), $w_j$ the pair's weight and $c$
+   * FiniteStrainContact::complementarity_constant(). The line search then
+   * acts on $(u, \lambda)$ together, on the norm of the free residual and
+   * the complementarity residual
+   * $\phi_j = \lambda_j - \min(0, \lambda_j + c\,w_j g_j)$ (for tied
+   * contact $c\,w_j g_j$). A step has converged when, in addition to the
+   * tests above, the active set did not change in the last iteration and
+   * $\|\phi\|_2 \le \max(\varepsilon_r F_{ref}, \varepsilon_a)$.
+   * The iteration records get the number of active constraints and
+   * $\|\phi\|_2$.
    */
   template <int dim>
   class FiniteStrainSolver
@@ -112,6 +139,10 @@ namespace dealvem
       double update_norm = 0;
       /// The line-search step $\alpha$ (1: full Newton step).
       double step_length = 1;
+      /// With contact: the number of active constraints at the iterate.
+      unsigned int n_active = 0;
+      /// With contact: the complementarity residual $\|\phi\|_2$ (force).
+      double contact_residual = 0;
     };
 
     /// One load step.
@@ -125,6 +156,8 @@ namespace dealvem
       bool converged = false;
       /// The iterations, one record per assembled iterate.
       std::vector<IterationRecord> iterations;
+      /// Whether the step was solved with contact (set_contact()).
+      bool with_contact = false;
     };
 
     /**
@@ -138,6 +171,31 @@ namespace dealvem
     FiniteStrainSolver(FiniteStrainAssembler<dim>              &assembler,
                        const dealii::AffineConstraints<double> &constraints,
                        const Parameters                        &parameters);
+
+    /**
+     * Enforce the contact constraints of @p contact (held by reference; it
+     * must outlive the solver and be built on the assembler's DoF handler)
+     * in the following steps; see the class documentation. Marks the pairs
+     * that the displacement constraints fix
+     * (FiniteStrainContact::mark_fixed_pairs()) and rebuilds the matrix
+     * for n_dofs() + FiniteStrainContact::n_constraints() unknowns. The
+     * multipliers start at zero.
+     */
+    void
+    set_contact(FiniteStrainContact &contact);
+
+    /**
+     * Replace the constraints by @p new_constraints (closed) from the next
+     * solve_step() on, keeping the solution: for prescribed motions that do
+     * not scale with the load factor (a rotation imposed step by step:
+     * set the constraints of step $n$ and call solve_step(n, 1.)). The new
+     * constraints must constrain the same DoFs through the same DoFs as
+     * the old ones (only the inhomogeneities and the coefficients may
+     * change), so that the matrix structure stays valid; throws naming the
+     * first DoF that differs otherwise.
+     */
+    void
+    set_constraints(const dealii::AffineConstraints<double> &new_constraints);
 
     /// Solve the load steps $\lambda = n/N$, $n = 1..N$
     /// (Parameters::n_load_steps) from the current solution. Throws as
@@ -155,6 +213,14 @@ namespace dealvem
     get_solution() const
     {
       return solution;
+    }
+
+    /// The contact multipliers of the last converged step (one per
+    /// FiniteStrainContact constraint; empty without contact).
+    const dealii::Vector<double> &
+    get_multipliers() const
+    {
+      return multipliers;
     }
 
     /// The load factor of the last converged step.
@@ -190,6 +256,11 @@ namespace dealvem
     dealii::SparseMatrix<double>      tangent;
     dealii::Vector<double>            solution;
     dealii::Vector<double>            f_ext;
+    /// The contact constraints (set_contact()), or null.
+    FiniteStrainContact              *contact = nullptr;
+    dealii::Vector<double>            multipliers;
+    /// The diameter of the mesh's bounding box.
+    double                            length_scale = 0;
     double                            current_load_factor = 0;
     double                            absolute_tolerance  = 0;
     std::vector<StepRecord>           history;

@@ -1,0 +1,357 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+
+#include <dealvem/contact/finite_strain_contact.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace dealvem
+{
+  namespace
+  {
+    // J v: v turned by +90 degrees
+    dealii::Tensor<1, 2>
+    turn_left(const dealii::Tensor<1, 2> &v)
+    {
+      dealii::Tensor<1, 2> r;
+      r[0] = -v[1];
+      r[1] = v[0];
+      return r;
+    }
+
+    // R(theta) v
+    dealii::Tensor<1, 2>
+    rotate(const dealii::Tensor<1, 2> &v, const double theta)
+    {
+      const double         c = std::cos(theta), s = std::sin(theta);
+      dealii::Tensor<1, 2> r;
+      r[0] = c * v[0] - s * v[1];
+      r[1] = s * v[0] + c * v[1];
+      return r;
+    }
+  } // namespace
+
+
+
+  FiniteStrainContact::FiniteStrainContact(const VEMDoFHandler<2>                      &dof_handler,
+                                           const std::vector<NodeInsertion::Interface> &interfaces,
+                                           const ContactSettings::Normal                normal,
+                                           const double                                 c)
+    : dof_handler(dof_handler)
+    , model(normal)
+    , c(c)
+  {
+    AssertThrow(std::isfinite(c) && c > 0,
+                dealii::ExcMessage("FiniteStrainContact: the complementarity constant must be positive."));
+    // the pairs of all interfaces, and for each pair the pairs next to it
+    // along its interface (vertex pairs: through the sub-edges; midpoint
+    // pairs: the two ends of their sub-edge)
+    std::vector<std::vector<unsigned int>> neighbours;
+    std::vector<NodeInsertion::Interface::NormalSide> side_of_pair;
+    for (const auto &interface : interfaces)
+      {
+        const unsigned int offset = pairs.size();
+        for (const auto &p : interface.pairs)
+          {
+            pairs.push_back(p);
+            side_of_pair.push_back(interface.normal_side);
+          }
+        neighbours.resize(pairs.size());
+        for (auto s : interface.segments)
+          {
+            s.first += offset;
+            s.second += offset;
+            neighbours[s.first].push_back(s.second);
+            neighbours[s.second].push_back(s.first);
+            if (s.midpoint != dealii::numbers::invalid_unsigned_int)
+              {
+                s.midpoint += offset;
+                neighbours[s.midpoint] = {s.first, s.second};
+              }
+            segments.push_back(s);
+          }
+      }
+    AssertThrow(!pairs.empty(), dealii::ExcMessage("FiniteStrainContact: the interfaces have no node pairs."));
+
+    const auto node_of = [&](const unsigned int i, const bool master) {
+      const auto        &p      = pairs[i];
+      const unsigned int entity = master ? p.master_entity : p.slave_entity;
+      AssertThrow(!p.is_midpoint || dof_handler.get_degree() == 2,
+                  dealii::ExcMessage("FiniteStrainContact: pair " + std::to_string(i) +
+                                     " pairs edge midpoints, but the DoF handler has degree " +
+                                     std::to_string(dof_handler.get_degree()) + "."));
+      return p.is_midpoint ? dof_handler.edge_node(entity) : dof_handler.vertex_node(entity);
+    };
+
+    data.resize(pairs.size());
+    fixed.assign(pairs.size(), false);
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        auto &d       = data[i];
+        d.master_node = node_of(i, true);
+        d.slave_node  = node_of(i, false);
+        d.n0          = pairs[i].normal;
+        d.t0          = turn_left(d.n0);
+        const dealii::Tensor<1, 2> a0 =
+          dof_handler.node_location(d.slave_node) - dof_handler.node_location(d.master_node);
+        d.tied_normal     = a0 * d.n0;
+        d.tied_tangential = a0 * d.t0;
+
+        // the chord ends: the two neighbours, or the pair itself and its
+        // one neighbour at the end of a chain
+        const auto &nb = neighbours[i];
+        if (nb.empty())
+          continue;
+        const unsigned int minus = nb.size() >= 2 ? nb[0] : i;
+        const unsigned int plus  = nb.size() >= 2 ? nb[1] : nb[0];
+        std::vector<std::pair<bool, double>> sides; // (master side?, weight)
+        switch (side_of_pair[i])
+          {
+            case NodeInsertion::Interface::NormalSide::master:
+              sides = {{true, 1.}};
+              break;
+            case NodeInsertion::Interface::NormalSide::slave:
+              sides = {{false, 1.}};
+              break;
+            case NodeInsertion::Interface::NormalSide::bisector:
+              sides = {{true, 0.5}, {false, 0.5}};
+              break;
+          }
+        for (const auto &[master, weight] : sides)
+          {
+            Chord chord;
+            chord.minus     = node_of(minus, master);
+            chord.plus      = node_of(plus, master);
+            chord.reference = dof_handler.node_location(chord.plus) - dof_handler.node_location(chord.minus);
+            chord.weight    = weight;
+            if (chord.reference.norm() > 0)
+              d.chords.push_back(chord);
+          }
+        // a bisector with one degenerate side: the other side turns it alone
+        if (d.chords.size() == 1)
+          d.chords[0].weight = 1.;
+      }
+  }
+
+
+
+  void
+  FiniteStrainContact::mark_fixed_pairs(const dealii::AffineConstraints<double> &constraints)
+  {
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        bool all = true;
+        for (const unsigned int node : {data[i].master_node, data[i].slave_node})
+          for (unsigned int comp = 0; comp < 2; ++comp)
+            all = all && constraints.is_constrained(VEMDoFHandler<2>::node_dof(node, comp));
+        fixed[i] = all;
+      }
+  }
+
+
+
+  dealii::Point<2>
+  FiniteStrainContact::position(const unsigned int node, const dealii::Vector<double> &u) const
+  {
+    dealii::Point<2> x = dof_handler.node_location(node);
+    x[0] += u[VEMDoFHandler<2>::node_dof(node, 0)];
+    x[1] += u[VEMDoFHandler<2>::node_dof(node, 1)];
+    return x;
+  }
+
+
+
+  double
+  FiniteStrainContact::turn(const PairData                     &d,
+                            const dealii::Vector<double>       &u,
+                            std::vector<dealii::Tensor<1, 2>> *chords) const
+  {
+    double theta = 0;
+    if (chords != nullptr)
+      chords->clear();
+    for (const auto &chord : d.chords)
+      {
+        const dealii::Tensor<1, 2> now   = position(chord.plus, u) - position(chord.minus, u);
+        const dealii::Tensor<1, 2> &ref  = chord.reference;
+        const double               cross = ref[0] * now[1] - ref[1] * now[0];
+        theta += chord.weight * std::atan2(cross, ref * now);
+        if (chords != nullptr)
+          chords->push_back(now);
+      }
+    return theta;
+  }
+
+
+
+  std::array<dealii::Point<2>, 2>
+  FiniteStrainContact::current_positions(const unsigned int i, const dealii::Vector<double> &u) const
+  {
+    return {{position(data[i].master_node, u), position(data[i].slave_node, u)}};
+  }
+
+
+
+  dealii::Tensor<1, 2>
+  FiniteStrainContact::current_normal(const unsigned int i, const dealii::Vector<double> &u) const
+  {
+    return rotate(data[i].n0, turn(data[i], u, nullptr));
+  }
+
+
+
+  double
+  FiniteStrainContact::value(const unsigned int j, const dealii::Vector<double> &u) const
+  {
+    const unsigned int   i     = pair_of(j);
+    const PairData      &d     = data[i];
+    const bool           tang  = is_tangential(j);
+    const double         theta = turn(d, u, nullptr);
+    const dealii::Tensor<1, 2> e = rotate(tang ? d.t0 : d.n0, theta);
+    const dealii::Tensor<1, 2> a = position(d.slave_node, u) - position(d.master_node, u);
+    const double offset = is_bilateral() ? (tang ? d.tied_tangential : d.tied_normal) : 0.;
+    return a * e - offset;
+  }
+
+
+
+  void
+  FiniteStrainContact::linearize(const unsigned int            j,
+                                 const dealii::Vector<double> &u,
+                                 Linearization                &result,
+                                 const bool                    with_hessian) const
+  {
+    const unsigned int i    = pair_of(j);
+    const PairData    &d    = data[i];
+    const bool         tang = is_tangential(j);
+
+    std::vector<dealii::Tensor<1, 2>> chords;
+    const double                      theta = turn(d, u, &chords);
+    const dealii::Tensor<1, 2>        e     = rotate(tang ? d.t0 : d.n0, theta);
+    const dealii::Tensor<1, 2>        Je    = turn_left(e);
+    const dealii::Tensor<1, 2>        a     = position(d.slave_node, u) - position(d.master_node, u);
+    const double offset = is_bilateral() ? (tang ? d.tied_tangential : d.tied_normal) : 0.;
+    result.value        = a * e - offset;
+
+    // The variables v = (a, d_1, ..., d_m), each a 2-vector, and how they
+    // depend on the nodes: a = x_B - x_A, d_s = x_plus - x_minus.
+    const unsigned int n_var = 1 + d.chords.size();
+    std::vector<unsigned int> nodes;               // the distinct nodes
+    std::vector<std::vector<std::pair<unsigned int, double>>> uses(n_var); // (local node, sign)
+    const auto local = [&](const unsigned int node) {
+      const auto it = std::find(nodes.begin(), nodes.end(), node);
+      if (it != nodes.end())
+        return static_cast<unsigned int>(it - nodes.begin());
+      nodes.push_back(node);
+      return static_cast<unsigned int>(nodes.size() - 1);
+    };
+    uses[0] = {{local(d.slave_node), 1.}, {local(d.master_node), -1.}};
+    for (unsigned int s = 0; s < d.chords.size(); ++s)
+      uses[1 + s] = {{local(d.chords[s].plus), 1.}, {local(d.chords[s].minus), -1.}};
+
+    // gradient and Hessian in the variables
+    std::vector<dealii::Tensor<1, 2>> w(d.chords.size());
+    for (unsigned int s = 0; s < d.chords.size(); ++s)
+      w[s] = turn_left(chords[s]) / chords[s].norm_square();
+    const double aJe = a * Je, ae = a * e;
+    std::vector<dealii::Tensor<1, 2>> gv(n_var);
+    gv[0] = e;
+    for (unsigned int s = 0; s < d.chords.size(); ++s)
+      gv[1 + s] = d.chords[s].weight * aJe * w[s];
+
+    // Hv[p][q]: the 2x2 block d^2 g / dv_p dv_q
+    std::vector<std::vector<dealii::Tensor<2, 2>>> Hv;
+    if (with_hessian)
+      {
+        Hv.assign(n_var, std::vector<dealii::Tensor<2, 2>>(n_var));
+        for (unsigned int s = 0; s < d.chords.size(); ++s)
+          {
+            const double cs = d.chords[s].weight;
+            Hv[0][1 + s]    = cs * dealii::outer_product(Je, w[s]);
+            Hv[1 + s][0]    = dealii::transpose(Hv[0][1 + s]);
+            for (unsigned int r = 0; r < d.chords.size(); ++r)
+              Hv[1 + s][1 + r] = -cs * d.chords[r].weight * ae * dealii::outer_product(w[s], w[r]);
+            dealii::Tensor<2, 2> J;
+            J[0][1] = -1;
+            J[1][0] = 1;
+            const double dd = chords[s].norm_square();
+            Hv[1 + s][1 + s] += cs * aJe * (J / dd - 2. / dd * dealii::outer_product(w[s], chords[s]));
+          }
+      }
+
+    // to the DoFs of the nodes
+    const unsigned int n_local = 2 * nodes.size();
+    result.dofs.resize(n_local);
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      for (unsigned int comp = 0; comp < 2; ++comp)
+        result.dofs[2 * k + comp] = VEMDoFHandler<2>::node_dof(nodes[k], comp);
+    result.gradient.reinit(n_local);
+    for (unsigned int p = 0; p < n_var; ++p)
+      for (const auto &[node, sign] : uses[p])
+        for (unsigned int comp = 0; comp < 2; ++comp)
+          result.gradient[2 * node + comp] += sign * gv[p][comp];
+    if (with_hessian)
+      {
+        result.hessian.reinit(n_local, n_local);
+        for (unsigned int p = 0; p < n_var; ++p)
+          for (unsigned int q = 0; q < n_var; ++q)
+            for (const auto &[node_p, sign_p] : uses[p])
+              for (const auto &[node_q, sign_q] : uses[q])
+                for (unsigned int k = 0; k < 2; ++k)
+                  for (unsigned int l = 0; l < 2; ++l)
+                    result.hessian(2 * node_p + k, 2 * node_q + l) += sign_p * sign_q * Hv[p][q][k][l];
+      }
+  }
+
+
+
+  void
+  FiniteStrainContact::add_sparsity(dealii::DynamicSparsityPattern          &dsp,
+                                    const dealii::AffineConstraints<double> &constraints) const
+  {
+    const auto n = dof_handler.n_dofs();
+    AssertThrow(dsp.n_rows() == n + n_constraints() && dsp.n_cols() == n + n_constraints(),
+                dealii::ExcMessage("FiniteStrainContact::add_sparsity(): the pattern must have n_dofs() + "
+                                   "n_constraints() rows and columns."));
+    dealii::Vector<double> zero(n);
+    Linearization          lin;
+    for (unsigned int j = 0; j < n_constraints(); ++j)
+      {
+        dsp.add(n + j, n + j);
+        if (is_left_out(j))
+          continue;
+        linearize(j, zero, lin, false);
+        std::vector<dealii::types::global_dof_index> indices = lin.dofs;
+        indices.push_back(n + j);
+        constraints.add_entries_local_to_global(indices, dsp, true);
+      }
+  }
+
+
+
+  std::vector<double>
+  FiniteStrainContact::current_weights(const dealii::Vector<double> &u) const
+  {
+    std::vector<double> w(pairs.size(), 0.);
+    for (const auto &s : segments)
+      {
+        const double L = position(data[s.second].slave_node, u).distance(position(data[s.first].slave_node, u));
+        if (s.midpoint == dealii::numbers::invalid_unsigned_int)
+          {
+            w[s.first] += L / 2;
+            w[s.second] += L / 2;
+          }
+        else
+          {
+            w[s.first] += L / 6;
+            w[s.second] += L / 6;
+            w[s.midpoint] += 2 * L / 3;
+          }
+      }
+    return w;
+  }
+} // namespace dealvem

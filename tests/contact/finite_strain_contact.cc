@@ -1,0 +1,333 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// Contact at finite strain, small sliding (FiniteStrainContact with
+// FiniteStrainSolver): two stacked blocks [0,1]x[0,1] (body 0, quads,
+// master side on top, id 3) and [0,1]x[1,2] (body 1, Voronoi, slave side
+// at the bottom, id 12), non-matching meshes made matching by node
+// insertion; plane strain Neo-Hooke, E = 7000, nu = 0.3.
+// (a) The linearization: the gradient and the Hessian of every constraint
+//     (unilateral and tied, normal from the master, the slave or the
+//     bisector, k = 1 and 2) at a random displacement of 5 % of the size
+//     against central differences: relative error below 1e-6, and the
+//     Hessian symmetric to 1e-12.
+// (b) The contact patch test at finite strain: the bottom (id 2) and the
+//     top (id 13) get the homogeneous deformation F = R(phi) diag(l1, 0.7)
+//     (30 % compression; l1 the lateral stretch of plane strain uniaxial
+//     stress, so the sides are free of traction), phi = 0, 30 and 90
+//     degrees, in 10 load steps; unilateral and tied contact, k = 1 and 2.
+//     Every DoF equals (F - I) X to 1e-10 of the largest displacement, every
+//     pair is active with |g| <= 1e-12, the Cauchy pressure -lambda/w(u) is
+//     the exact -sigma_yy of diag(l1, 0.7) at every pair to 1e-8 relative,
+//     and tied tangential multipliers vanish to 1e-8 of the normal ones.
+// (c) Two materials (E = 7000 below, 700 above), confined (rollers on the
+//     sides, bottom held, top moved down by 0.6: 30 % of the height):
+//     each block is homogeneous, F = diag(1, l_a) and diag(1, l_b), with
+//     l_a + l_b = 1.4 and equal sigma_yy; the pressure at every pair matches
+//     to 1e-8.
+// (d) Newton: the last iterations of the last step converge quadratically
+//     (|r_{i+1}| / |r_i|^2 bounded, relative to F_ref).
+#include <deal.II/base/function.h>
+
+#include <dealvem/contact/finite_strain_contact.h>
+#include <dealvem/contact/node_insertion.h>
+#include <dealvem/elasticity/boundary_conditions.h>
+#include <dealvem/elasticity/finite_strain_assembler.h>
+#include <dealvem/elasticity/finite_strain_solver.h>
+#include <dealvem/elasticity/hyperelastic_material.h>
+#include <dealvem/mesh/generators.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "../finite_strain_common.h"
+#include "../tests.h"
+
+using namespace dealvem;
+
+namespace
+{
+  // lower block quads, upper block Voronoi (material id 1, ids + 10)
+  void
+  two_blocks(PolygonalMesh<2> &mesh, const unsigned int n_lower, const unsigned int n_upper)
+  {
+    PolygonalMeshGenerators::structured_quads(mesh, dealii::Point<2>(0, 0), dealii::Point<2>(1, 1), n_lower, n_lower);
+    PolygonalMesh<2> upper;
+    PolygonalMeshGenerators::voronoi(upper, dealii::Point<2>(0, 1), dealii::Point<2>(1, 2), n_upper, 30, 5);
+    for (unsigned int c = 0; c < upper.n_cells(); ++c)
+      upper.set_material_id(c, 1);
+    for (unsigned int e = 0; e < upper.n_edges(); ++e)
+      if (upper.edge(e).at_boundary())
+        upper.set_edge_boundary_id(e, upper.edge(e).boundary_id + 10);
+    mesh.append(upper);
+  }
+
+  // the lateral stretch l1 with sigma_xx(diag(l1, l2)) = 0
+  double
+  lateral_stretch(const HyperelasticMaterial &law, const double l2)
+  {
+    double lo = 0.5, hi = 2.0;
+    for (unsigned int i = 0; i < 200; ++i)
+      {
+        const double         mid = 0.5 * (lo + hi);
+        dealii::Tensor<2, 2> F;
+        F[0][0] = mid;
+        F[1][1] = l2;
+        (law.cauchy_stress(F)[0][0] > 0 ? hi : lo) = mid;
+      }
+    return 0.5 * (lo + hi);
+  }
+
+  dealii::Tensor<2, 2>
+  rotation(const double phi)
+  {
+    dealii::Tensor<2, 2> R;
+    R[0][0] = std::cos(phi);
+    R[0][1] = -std::sin(phi);
+    R[1][0] = std::sin(phi);
+    R[1][1] = std::cos(phi);
+    return R;
+  }
+
+  // (a)
+  void
+  check_linearization(const unsigned int k, const ContactSettings::Normal model,
+                      const NodeInsertion::Interface::NormalSide side)
+  {
+    PolygonalMesh<2> mesh;
+    two_blocks(mesh, 3, 9);
+    std::vector<NodeInsertion::Interface> interfaces = {NodeInsertion::insert(mesh, 3, 12, k, {})};
+    interfaces[0].normal_side = side;
+    VEMDoFHandler<2> dof_handler(mesh);
+    dof_handler.distribute_dofs(k);
+    FiniteStrainContact contact(dof_handler, interfaces, model, 7000.);
+    std::mt19937                           gen(17 + k);
+    std::uniform_real_distribution<double> dist(-0.05, 0.05);
+    dealii::Vector<double>                 u(dof_handler.n_dofs());
+    for (auto &x : u)
+      x = dist(gen);
+    const double h = 1e-6;
+    double       grad_err = 0, hess_err = 0, asym = 0, grad_scale = 0, hess_scale = 0;
+    FiniteStrainContact::Linearization lin, lp, lm;
+    for (unsigned int j = 0; j < contact.n_constraints(); ++j)
+      {
+        contact.linearize(j, u, lin, true);
+        testing::check_near(lin.value, contact.value(j, u), 1e-15, "value() and linearize() agree");
+        for (unsigned int a = 0; a < lin.dofs.size(); ++a)
+          {
+            dealii::Vector<double> up = u, um = u;
+            up[lin.dofs[a]] += h;
+            um[lin.dofs[a]] -= h;
+            const double fd = (contact.value(j, up) - contact.value(j, um)) / (2 * h);
+            grad_err        = std::max(grad_err, std::abs(fd - lin.gradient[a]));
+            grad_scale      = std::max(grad_scale, std::abs(lin.gradient[a]));
+            contact.linearize(j, up, lp, false);
+            contact.linearize(j, um, lm, false);
+            for (unsigned int b = 0; b < lin.dofs.size(); ++b)
+              {
+                const double fd2 = (lp.gradient[b] - lm.gradient[b]) / (2 * h);
+                hess_err         = std::max(hess_err, std::abs(fd2 - lin.hessian(b, a)));
+                hess_scale       = std::max(hess_scale, std::abs(lin.hessian(b, a)));
+                asym             = std::max(asym, std::abs(lin.hessian(a, b) - lin.hessian(b, a)));
+              }
+          }
+      }
+    const std::string what = "k = " + std::to_string(k) + ", " + ContactSettings::normal_name(model) +
+                             ", normal side " + std::to_string(static_cast<int>(side)) + ": ";
+    testing::check(hess_scale > 1e-3, what + "the Hessians are not zero (the normals turn)");
+    testing::check_small(grad_err / grad_scale, 1e-6, what + "gradient against central differences");
+    testing::check_small(hess_err / hess_scale, 1e-6, what + "Hessian against central differences");
+    testing::check_small(asym / hess_scale, 1e-12, what + "Hessian symmetry");
+  }
+
+  // the pressure -lambda/w(u) at every normal constraint
+  std::vector<double>
+  pressures(const FiniteStrainContact &contact, const FiniteStrainSolver<2> &solver)
+  {
+    const auto          w = contact.current_weights(solver.get_solution());
+    std::vector<double> p(contact.n_pairs());
+    for (unsigned int i = 0; i < contact.n_pairs(); ++i)
+      p[i] = -solver.get_multipliers()[i] / w[i];
+    return p;
+  }
+
+  void
+  check_quadratic(const FiniteStrainSolver<2> &solver, const std::string &what)
+  {
+    const auto &it = solver.get_history().back().iterations;
+    // the relative residuals above round-off: e_{i+1} <= C e_i^2
+    double worst = 0;
+    for (unsigned int i = 1; i + 1 < it.size(); ++i)
+      if (it[i].relative_residual > 1e-7 && it[i + 1].relative_residual > 1e-13)
+        worst = std::max(worst, it[i + 1].relative_residual / std::pow(it[i].relative_residual, 2));
+    testing::check(worst < 1e3, what + "quadratic convergence, max e_{i+1}/e_i^2 = " + std::to_string(worst));
+  }
+
+  // (b)
+  void
+  patch_test(const unsigned int k, const ContactSettings::Normal model, const double phi_degrees)
+  {
+    const double      E = 7000, nu = 0.3;
+    NeoHookeMaterial  law(E, nu);
+    PolygonalMesh<2>  mesh;
+    two_blocks(mesh, 3, 12);
+    std::vector<NodeInsertion::Interface> interfaces = {NodeInsertion::insert(mesh, 3, 12, k, {})};
+    VEMDoFHandler<2> dof_handler(mesh);
+    dof_handler.distribute_dofs(k);
+
+    // the homogeneous deformation at the time t: compression 1 - 0.3 t, the
+    // lateral stretch of uniaxial stress, the rotation phi t
+    const double phi = phi_degrees * M_PI / 180;
+    const auto   deformation = [&](const double t) {
+      dealii::Tensor<2, 2> D;
+      D[0][0] = lateral_stretch(law, 1 - 0.3 * t);
+      D[1][1] = 1 - 0.3 * t;
+      return std::make_pair(rotation(phi * t) * D, D);
+    };
+
+    FiniteStrainAssembler<2>          assembler(dof_handler, testing::one_law_library(dof_handler, law));
+    dealii::AffineConstraints<double> constraints;
+    testing::dirichlet_constraints(dof_handler, {2, 13}, testing::HomogeneousDeformation(deformation(0.1).first),
+                                   constraints);
+    FiniteStrainContact               contact(dof_handler, interfaces, model, E / 0.1);
+    FiniteStrainSolver<2>::Parameters parameters;
+    FiniteStrainSolver<2>             solver(assembler, constraints, parameters);
+    solver.set_contact(contact);
+    std::vector<dealii::Point<2>> support;
+    dof_handler.map_dofs_to_support_points(support);
+    // ten steps; each one's boundary data is the homogeneous deformation
+    // of its time, so every step is a patch test
+    double dof_err = 0, p_err = 0, g_max = 0, t_max = 0, n_max = 0, p_exact = 0, l1 = 0;
+    bool   all_active = true;
+    for (unsigned int n = 1; n <= 10; ++n)
+      {
+        const auto [F, D] = deformation(0.1 * n);
+        const testing::HomogeneousDeformation exact(F);
+        testing::dirichlet_constraints(dof_handler, {2, 13}, exact, constraints);
+        solver.set_constraints(constraints);
+        solver.solve_step(n, 1.);
+        const auto &u     = solver.get_solution();
+        double      u_max = 0, err = 0;
+        for (unsigned int i = 0; i < u.size(); ++i)
+          {
+            u_max = std::max(u_max, std::abs(exact.value(support[i], i % 2)));
+            err   = std::max(err, std::abs(u[i] - exact.value(support[i], i % 2)));
+          }
+        dof_err    = std::max(dof_err, err / u_max);
+        p_exact    = -law.cauchy_stress(D)[1][1];
+        l1         = D[0][0];
+        const auto p = pressures(contact, solver);
+        for (unsigned int i = 0; i < contact.n_pairs(); ++i)
+          {
+            p_err = std::max(p_err, std::abs(p[i] - p_exact) / p_exact);
+            g_max = std::max(g_max, std::abs(contact.value(i, u)));
+            n_max = std::max(n_max, std::abs(solver.get_multipliers()[i]));
+            if (contact.is_bilateral())
+              t_max = std::max(t_max, std::abs(solver.get_multipliers()[contact.n_pairs() + i]));
+          }
+        all_active = all_active &&
+                     solver.get_history().back().iterations.back().n_active == contact.n_constraints();
+      }
+
+    const std::string what = "patch test, k = " + std::to_string(k) + ", " +
+                             ContactSettings::normal_name(model) + ", rotation " +
+                             std::to_string(static_cast<int>(phi_degrees)) + " degrees (" +
+                             std::to_string(contact.n_pairs()) + " pairs): ";
+    testing::check_small(dof_err, 1e-10, what + "max DoF error / max |u| over the steps");
+    testing::check(all_active, what + "every constraint active at every step");
+    testing::check_small(p_err, 1e-8, what + "max |p - p_exact| / p_exact over the steps");
+    testing::check_small(g_max, 1e-12, what + "max |g|");
+    testing::check_small(t_max / n_max, 1e-8, what + "tangential multipliers / normal ones");
+    check_quadratic(solver, what);
+    std::cout << what << "Newton updates per step:";
+    for (const auto &record : solver.get_history())
+      std::cout << " " << record.iterations.size() - 1;
+    std::cout << std::endl;
+    if (k == 2 && phi_degrees == 90 && model == ContactSettings::Normal::unilateral)
+      {
+        std::cout << "pressure p = " << p_exact << " (E = " << E << ", lateral stretch " << l1
+                  << "); Newton history of the last step:\n";
+        std::cout << FiniteStrainSolver<2>::step_history_text(solver.get_history().back());
+      }
+  }
+
+  // (c)
+  void
+  confined_two_materials(const unsigned int k)
+  {
+    const double     nu = 0.3;
+    NeoHookeMaterial lower(7000, nu), upper(700, nu);
+    PolygonalMesh<2> mesh;
+    two_blocks(mesh, 4, 10);
+    std::vector<NodeInsertion::Interface> interfaces = {NodeInsertion::insert(mesh, 3, 12, k, {})};
+    VEMDoFHandler<2> dof_handler(mesh);
+    dof_handler.distribute_dofs(k);
+    MaterialLibrary<2> laws;
+    laws.add(0, lower);
+    laws.add(1, upper);
+
+    // sigma_yy of diag(1, l)
+    const auto sigma = [](const HyperelasticMaterial &law, const double l) {
+      dealii::Tensor<2, 2> F;
+      F[0][0] = 1;
+      F[1][1] = l;
+      return law.cauchy_stress(F)[1][1];
+    };
+    // l_a + l_b = 1.4 and sigma_a(l_a) = sigma_b(l_b): bisection in l_a
+    double lo = 0.7, hi = 1.0;
+    for (unsigned int i = 0; i < 200; ++i)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (sigma(lower, mid) - sigma(upper, 1.4 - mid) > 0 ? hi : lo) = mid;
+      }
+    const double la = 0.5 * (lo + hi), p_exact = -sigma(lower, la);
+
+    FiniteStrainAssembler<2>          assembler(dof_handler, laws);
+    dealii::AffineConstraints<double> constraints;
+    for (const dealii::types::boundary_id id : {0, 1, 10, 11})
+      BoundaryConditions::add_roller(dof_handler, id, constraints);
+    dealii::Functions::ConstantFunction<2> zero(0., 2);
+    BoundaryConditions::interpolate_boundary_values(dof_handler, {2}, zero, {{false, true}}, constraints);
+    dealii::Functions::ConstantFunction<2> top(-0.6, 2);
+    BoundaryConditions::interpolate_boundary_values(dof_handler, {13}, top, {{false, true}}, constraints);
+    constraints.close();
+    FiniteStrainContact               contact(dof_handler, interfaces, ContactSettings::Normal::unilateral, 7000 / 0.1);
+    FiniteStrainSolver<2>::Parameters parameters;
+    parameters.n_load_steps = 6;
+    FiniteStrainSolver<2> solver(assembler, constraints, parameters);
+    solver.set_contact(contact);
+    solver.run();
+
+    const std::string what = "confined, two materials, k = " + std::to_string(k) + ": ";
+    const auto        p    = pressures(contact, solver);
+    double            err  = 0;
+    for (const double pi : p)
+      err = std::max(err, std::abs(pi - p_exact));
+    testing::check_small(err / p_exact, 1e-8, what + "max |p - p_exact| / p_exact");
+    // the interface has moved to y = l_a
+    double y_err = 0;
+    for (unsigned int i = 0; i < contact.n_pairs(); ++i)
+      y_err = std::max(y_err, std::abs(contact.current_positions(i, solver.get_solution())[1][1] - la));
+    testing::check_small(y_err, 1e-10, what + "interface at y = l_a");
+    check_quadratic(solver, what);
+  }
+} // namespace
+
+int
+main()
+{
+  using Side = NodeInsertion::Interface::NormalSide;
+  for (const unsigned int k : {1u, 2u})
+    for (const auto model : {ContactSettings::Normal::unilateral, ContactSettings::Normal::tied})
+      for (const auto side : {Side::master, Side::slave, Side::bisector})
+        check_linearization(k, model, side);
+  for (const unsigned int k : {1u, 2u})
+    for (const auto model : {ContactSettings::Normal::tied, ContactSettings::Normal::unilateral})
+      for (const double phi : {0., 30., 90.})
+        patch_test(k, model, phi);
+  for (const unsigned int k : {1u, 2u})
+    confined_two_materials(k);
+  return testing::finish();
+}
