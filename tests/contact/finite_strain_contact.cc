@@ -28,6 +28,10 @@
 //     to 1e-8.
 // (d) Newton: the last iterations of the last step converge quadratically
 //     (|r_{i+1}| / |r_i|^2 bounded, relative to F_ref).
+// (e) Bad input: set_constraints() with constraints on other DoFs, and a
+//     prescribed motion that pushes the fully constrained interface nodes
+//     of the two blocks into each other (both blocks held on their whole
+//     boundary), are errors that say what is wrong.
 #include <deal.II/base/function.h>
 
 #include <dealvem/contact/finite_strain_contact.h>
@@ -313,6 +317,40 @@ namespace
     testing::check_small(y_err, 1e-10, what + "interface at y = l_a");
     check_quadratic(solver, what);
   }
+  // (e)
+  void
+  bad_input()
+  {
+    NeoHookeMaterial law(7000, 0.3);
+    PolygonalMesh<2> mesh;
+    two_blocks(mesh, 3, 12);
+    std::vector<NodeInsertion::Interface> interfaces = {NodeInsertion::insert(mesh, 3, 12, 1, {})};
+    VEMDoFHandler<2> dof_handler(mesh);
+    dof_handler.distribute_dofs(1);
+    FiniteStrainAssembler<2>          assembler(dof_handler, testing::one_law_library(dof_handler, law));
+    dealii::AffineConstraints<double> constraints, other;
+    dealii::Functions::ZeroFunction<2> zero(2);
+    testing::dirichlet_constraints(dof_handler, {2, 13}, zero, constraints);
+    testing::dirichlet_constraints(dof_handler, {2}, zero, other);
+    FiniteStrainSolver<2>::Parameters parameters;
+    FiniteStrainSolver<2>             solver(assembler, constraints, parameters);
+    testing::check_throws([&]() { solver.set_constraints(other); }, "they must constrain the same DoFs",
+                          "set_constraints() with other DoFs");
+
+    // every boundary held: the lower block lifted by 0.01 into the upper one
+    dealii::AffineConstraints<double>      held;
+    dealii::Functions::ConstantFunction<2> up(std::vector<double>{0., 0.01});
+    BoundaryConditions::interpolate_boundary_values(dof_handler, {0, 1, 2, 3}, up, {{true, true}}, held);
+    BoundaryConditions::interpolate_boundary_values(dof_handler, {10, 11, 12, 13}, zero, {{true, true}}, held);
+    held.close();
+    FiniteStrainContact   contact(dof_handler, interfaces, ContactSettings::Normal::unilateral, 7e4);
+    FiniteStrainSolver<2> held_solver(assembler, held, parameters);
+    held_solver.set_contact(contact);
+    testing::check_throws([&]() { held_solver.solve_step(1, 1.); }, "the prescribed motions of the two bodies contradict the contact",
+                          "fixed pairs pushed into each other");
+    testing::check(held_solver.get_history().size() == 1 && !held_solver.get_history()[0].converged,
+                   "the failed step is recorded as not converged");
+  }
 } // namespace
 
 int
@@ -329,5 +367,6 @@ main()
         patch_test(k, model, phi);
   for (const unsigned int k : {1u, 2u})
     confined_two_materials(k);
+  bad_input();
   return testing::finish();
 }
