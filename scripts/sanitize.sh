@@ -3,7 +3,9 @@
 # AddressSanitizer + LeakSanitizer + UBSan (-DDEALVEM_SANITIZE=ON) in
 # ./build-sanitize (override with BUILD_DIR), build it (ccache when present)
 # and run the ctest suite without the labels "long" and "sanitize_slow"
-# (tests too slow at -O0 with the sanitizers; they run in the normal suite).
+# (tests too slow at -O0 with the sanitizers; they run in the normal suite;
+# their programs are not even built here unless -DDEALVEM_SANITIZE_SLOW=ON is
+# added to the configure line, see CMakeLists.txt).
 # Any sanitizer report makes the test, and so this script, fail.
 #   SANITIZE_BUILD_ONLY=1  only configure and build
 #   extra arguments are passed to ctest (e.g. -R app/)

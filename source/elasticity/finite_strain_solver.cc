@@ -176,6 +176,34 @@ namespace dealvem
   void
   FiniteStrainSolver<dim>::solve_step(const unsigned int step, const double load_factor)
   {
+    if (parameters.extrapolate && n_converged >= 2)
+      {
+        const auto n_records = history.size();
+        try
+          {
+            attempt_step(step, load_factor, true);
+            return;
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            // the failed attempt's record goes; the step starts again from
+            // the last converged state
+            history.resize(n_records);
+          }
+        attempt_step(step, load_factor, false);
+        // (a second failure has thrown above with its own record)
+        history.back().restarted = true;
+        return;
+      }
+    attempt_step(step, load_factor, false);
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::attempt_step(const unsigned int step, const double load_factor, const bool extrapolate)
+  {
     AssertThrow(std::isfinite(load_factor),
                 dealii::ExcMessage("FiniteStrainSolver: the load factor of step " + std::to_string(step) +
                                    " is not finite."));
@@ -256,6 +284,34 @@ namespace dealvem
     const double      f_ext_norm  = f_ext.l2_norm();
     double            last_update = std::numeric_limits<double>::infinity();
     std::string       inversion; // the last inverted cell met in the step
+
+    // the first iterate: the extrapolation of the last two converged steps
+    if (extrapolate && n_converged >= 2)
+      {
+        double s = 0;
+        if (current_load_factor != previous_load_factor)
+          s = (load_factor - current_load_factor) / (current_load_factor - previous_load_factor);
+        else if (current_step != previous_step)
+          s = static_cast<double>(static_cast<int>(step) - static_cast<int>(current_step)) /
+              (static_cast<int>(current_step) - static_cast<int>(previous_step));
+        if (std::isfinite(s) && s > 0 && s <= 4)
+          {
+            u_trial = solution;
+            u_trial.sadd(1. + s, -s, previous_solution);
+            try
+              {
+                assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr);
+                u = u_trial;
+                if (m > 0 && previous_multipliers.size() == m)
+                  lambda.sadd(1. + s, -s, previous_multipliers);
+                record.extrapolated = true;
+              }
+            catch (const ExcInvertedCell &)
+              {
+                // start from the last converged state
+              }
+          }
+      }
     std::vector<bool> active(m, false), previous_active;
     for (unsigned int it = 0;; ++it)
       {
@@ -460,9 +516,15 @@ namespace dealvem
                    "): the prescribed motions of the two bodies contradict the contact.");
             }
         }
-    multipliers = lambda;
-    solution            = u;
-    current_load_factor = load_factor;
+    previous_solution    = solution;
+    previous_multipliers = multipliers;
+    previous_load_factor = current_load_factor;
+    previous_step        = current_step;
+    solution             = u;
+    multipliers          = lambda;
+    current_load_factor  = load_factor;
+    current_step         = step;
+    ++n_converged;
     history.push_back(record);
   }
 
@@ -477,7 +539,10 @@ namespace dealvem
     for (const auto &it : record.iterations)
       n_updates += (it.step_length > 0 ? 1 : 0);
     s << "  step " << record.step << ", load factor " << std::setprecision(6) << record.load_factor << ": "
-      << (record.converged ? "converged" : "NOT converged") << " after " << n_updates << " Newton updates\n";
+      << (record.converged ? "converged" : "NOT converged") << " after " << n_updates << " Newton updates"
+      << (record.extrapolated ? " (from the extrapolated state)" : "")
+      << (record.restarted ? " (restarted from the last converged state: the extrapolated start failed)" : "")
+      << "\n";
     s << "    it   |r|          |r|/F_ref    |alpha du|   alpha"
       << (record.with_contact ? "    active   |phi|" : "") << "\n";
     for (unsigned int i = 0; i < record.iterations.size(); ++i)

@@ -249,7 +249,7 @@ namespace
     for (const auto &record : solver.get_history())
       std::cout << " " << record.iterations.size() - 1;
     std::cout << std::endl;
-    if (k == 2 && phi_degrees == 90 && model == ContactSettings::Normal::unilateral)
+    if (phi_degrees == 90 && model == ContactSettings::Normal::unilateral)
       {
         std::cout << "pressure p = " << p_exact << " (E = " << E << ", lateral stretch " << l1
                   << "); Newton history of the last step:\n";
