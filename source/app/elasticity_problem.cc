@@ -192,6 +192,11 @@ namespace dealvem
         // the load steps of the Newton solve: step n applies n/N of the
         // loads and Dirichlet values (FiniteStrainSolver), at the time
         // n * Final time / N of the output series
+        AssertThrow(prm.subsection_path_exists({"Load steps"}),
+                    dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the section 'Load steps' "
+                                       "(its number of load steps) is not declared: call "
+                                       "ContactProblem::declare_parameters() on the ParameterHandler too, as "
+                                       "the program does."));
         prm.enter_subsection("Load steps");
         const long steps = prm.get_integer("Number of steps");
         final_time       = prm.get_double("Final time");

@@ -15,6 +15,10 @@
 #   the boundary, 6 steps): the largest cell Cauchy stress is below 1e-10
 #   (E = 1000: the small-strain answer would be 2.72 E) and the errors
 #   against the rotation are at round-off;
+# - a hyperelastic law at small strain (the default): the program solves
+#   linear elasticity with the law's linearization, says so, and a uniform
+#   tension under a traction matches the plane-strain linear solution of
+#   the same E, nu to round-off;
 # - a Newton step that cannot converge (the prescribed F_yy = -0.2 inverts
 #   the cells at load factor 0.9): non-zero exit with the solver's message
 #   naming step 9 and its load factor; the files of steps 1-8 are kept and
@@ -154,6 +158,36 @@ check_steps("${json}" rotation 6 "90 degree rotation")
 check_json_roundoff("${json}" "90 degree rotation" cycles 0 max_cauchy_norm)
 foreach(e L2 H1_seminorm)
   check_json_roundoff("${json}" "90 degree rotation" cycles 0 errors ${e})
+endforeach()
+
+# --- a hyperelastic law at small strain: its linearization, the linear law
+# sigma_xx = p = 1, plane strain, E = 1000, nu = 0.3:
+# eps_xx = (1 - nu^2) p / E = 9.1e-4, eps_yy = -nu (1 + nu) p / E = -3.9e-4
+file(WRITE ${WORK_DIR}/small-strain-svk.prm "subsection Mesh
+  set Type         = structured quads
+  set Subdivisions = 4, 4
+end
+subsection Material
+  set Young's modulus = 1000
+  set Poisson's ratio = 0.3
+  set Law             = saint venant-kirchhoff
+end
+subsection Boundary conditions and loads
+  set Roller   = 0, 2
+  set Traction = 1 : 1, 0
+end
+subsection Exact solution
+  set Displacement = 9.1e-4*x, -3.9e-4*y
+end
+subsection Output
+  set Base name = small-strain-svk
+end
+")
+run_dealvem("saint venant-kirchhoff at small strain" TRUE
+  "the program solves linear elasticity with the law's linearization at F = I" ${WORK_DIR}/small-strain-svk.prm)
+file(READ ${WORK_DIR}/output/small-strain-svk.json json)
+foreach(e L2 H1_seminorm)
+  check_json_roundoff("${json}" "saint venant-kirchhoff at small strain" cycles 0 errors ${e})
 endforeach()
 
 # --- a load step that inverts the cells: a clean failure, earlier steps kept
