@@ -19,6 +19,9 @@
 #   linear elasticity with the law's linearization, says so, and a uniform
 #   tension under a traction matches the plane-strain linear solution of
 #   the same E, nu to round-off;
+# - the contact patch test of examples/step-2 with 'Material/Law =
+#   neo-hooke': solved at small strain with the linearization (a note says
+#   so), the pressure is p = 10 at every pair to 1e-10;
 # - a Newton step that cannot converge (the prescribed F_yy = -0.2 inverts
 #   the cells at load factor 0.9): non-zero exit with the solver's message
 #   naming step 9 and its load factor; the files of steps 1-8 are kept and
@@ -188,6 +191,25 @@ run_dealvem("saint venant-kirchhoff at small strain" TRUE
 file(READ ${WORK_DIR}/output/small-strain-svk.json json)
 foreach(e L2 H1_seminorm)
   check_json_roundoff("${json}" "saint venant-kirchhoff at small strain" cycles 0 errors ${e})
+endforeach()
+
+# --- a contact problem with a hyperelastic law: small strain, linearization
+file(READ ${SOURCE_DIR}/examples/step-2/patch-test.prm contact_prm)
+file(WRITE ${WORK_DIR}/patch-test-neo-hooke.prm "${contact_prm}
+subsection Material
+  set Law = neo-hooke
+end
+subsection Output
+  set Base name = patch-test-neo-hooke
+end
+")
+run_dealvem("contact patch test, neo-hooke" TRUE
+  "contact problems are solved at small strain, with the law's linearization at F = I"
+  ${WORK_DIR}/patch-test-neo-hooke.prm)
+file(READ ${WORK_DIR}/output/patch-test-neo-hooke.json json)
+foreach(key pressure_min pressure_max)
+  string(JSON p GET "${json}" contact ${key})
+  check_relative(10 ${p} 10 "contact patch test, neo-hooke: ${key}")
 endforeach()
 
 # --- a load step that inverts the cells: a clean failure, earlier steps kept
