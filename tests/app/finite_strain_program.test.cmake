@@ -6,7 +6,8 @@
 #   non-convex mesh (k = 1, Saint Venant-Kirchhoff), 4 load steps: the
 #   virtual elements contain it, so the errors against the exact
 #   displacement (JSON) are at round-off (below 1e-10) and the monitored
-#   corner (1, 1) moves by (F - I)(1, 1) = (0.4, -0.25) to 1e-10 relative;
+#   corner (1, 1) moves by (F - I)(1, 1) = (0.4, -0.25) to 1e-10 relative,
+#   the Cauchy stress of the output has the norm of the law's at F (1e-10);
 #   every step converged, wrote its VTU file and appears in the .pvd;
 # - examples/parameters/finite-strain-cook.prm (Cook's membrane, k = 2,
 #   2178 DoFs): the tip u_y within 0.5 % of the reference 8.69919 (the
@@ -85,10 +86,14 @@ endfunction()
 
 # --- homogeneous finite deformation, exact on polygons
 set(exact "0.1*x + 0.3*y, 0.05*x - 0.3*y")
-foreach(variant "voronoi;2;neo-hooke" "nonconvex;1;saint venant-kirchhoff")
+# (the last field: |sigma| of the law at F, E = 10, nu = 0.3, computed
+# independently: sigma = (mu F F^T + (lambda ln J - mu) I) / J for Neo-Hooke,
+# F S F^T / J with S = lambda tr(E) I + 2 mu E for Saint Venant-Kirchhoff)
+foreach(variant "voronoi;2;neo-hooke;5.14082506187988" "nonconvex;1;saint venant-kirchhoff;2.21590388540504")
   list(GET variant 0 type)
   list(GET variant 1 k)
   list(GET variant 2 law)
+  list(GET variant 3 sigma_norm)
   string(REPLACE " " "_" tag "${type}-${law}")
   file(WRITE ${WORK_DIR}/homogeneous-${type}.prm "subsection Mesh
   set Type            = ${type}
@@ -130,6 +135,9 @@ end
   string(JSON uy GET "${json}" cycles 0 finite_strain monitor_point uy)
   check_value(${ux} 0.4 "homogeneous ${type}: u_x(1, 1)")
   check_value(${uy} -0.25 "homogeneous ${type}: u_y(1, 1)")
+  # the Cauchy stress of the output is the law's at F in every cell
+  string(JSON s GET "${json}" cycles 0 max_cauchy_norm)
+  check_relative(${sigma_norm} ${s} 10 "homogeneous ${type}: |Cauchy stress|")
   string(JSON l GET "${json}" material law)
   if(NOT l STREQUAL "${law}")
     message(FATAL_ERROR "FAIL homogeneous ${type}: material.law = '${l}'")
