@@ -1178,7 +1178,14 @@ namespace dealvem
             if (!solver.get_history().empty())
               record_step(solver.get_history().back());
             json.set(key + "converged_steps", double(n - 1));
-            write_summary("running");
+            // (a failure to write the summary must not hide the solver's
+            // message; run() tries again with the status 'failed')
+            try
+              {
+                write_summary("running");
+              }
+            catch (...)
+              {}
             if (this_process == 0)
               {
                 std::cout << "Newton history (cycle " << cycle << "):" << std::endl;
