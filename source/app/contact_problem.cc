@@ -262,9 +262,14 @@ namespace dealvem
                       "t = k * 'Final time' / 'Number of steps' of the load and Dirichlet expressions; "
                       "Coulomb friction measures the slip against the previous step. With more than one "
                       "step every step writes its VTU and CSV files (base name + '-step-NNN') and a "
-                      "ParaView time series (base name + '.pvd').");
+                      "ParaView time series (base name + '.pvd'). One body with 'Finite strain/Enabled = "
+                      "true': the load steps of the Newton solve, step k applying k/N of the loads and "
+                      "Dirichlet values (expressions without t), each written to base name + '-step-NNN.vtu' "
+                      "and the series base name + '.pvd'.");
     prm.declare_entry("Final time", "1", Double(),
-                      "Contact problems: the time t of the last load step (> 0).");
+                      "Contact problems: the time t of the last load step (> 0). One body at finite strain: "
+                      "the time of the last step in the .pvd series and the JSON summary (step k at "
+                      "k * 'Final time' / 'Number of steps').");
     prm.leave_subsection();
     prm.enter_subsection("Output");
     prm.declare_entry("Write pictures", "true", Bool(),
@@ -395,7 +400,24 @@ namespace dealvem
     prm.leave_subsection();
     prm.enter_subsection("Material");
     const auto model = ElasticMaterial::parse_model(prm.get("Model"));
+    const auto law   = MaterialLaws::parse(prm.get("Law"), "Material/Law");
     prm.leave_subsection();
+    // 'Material/Law' applies to every body; contact problems are solved at
+    // small strain, where a hyperelastic law is its linearization at F = I,
+    // the linear law of the same E and nu (ElasticMaterial, built below)
+    MaterialLaws::check_model(law, model, "Material/Law", "Material/Model");
+    FiniteStrainParameters::refuse(prm, "'Number of bodies' is " + std::to_string(n) +
+                                          ": the program solves contact problems at small strain. Set "
+                                          "'Finite strain/Enabled = false' (a hyperelastic 'Material/Law' "
+                                          "then enters by its linearization).");
+    InputParsing::check_section_unused(prm, "Finite strain",
+                                       "the program solves contact problems at small strain, without the Newton "
+                                       "controls of finite strain.");
+    if (MaterialLaws::is_hyperelastic(law) && root)
+      std::cout << "note: 'Material/Law = " << MaterialLaws::name(law)
+                << "': contact problems are solved at small strain, with the law's linearization at F = I "
+                   "(the linear law of the same E and nu) for every body."
+                << std::endl;
     std::string exact0;
     for (unsigned int b = 0; b < n; ++b)
       {

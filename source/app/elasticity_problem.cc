@@ -18,6 +18,9 @@
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/elasticity/boundary_conditions.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/finite_strain_assembler.h>
+#include <dealvem/elasticity/finite_strain_solver.h>
+#include <dealvem/elasticity/hyperelastic_material.h>
 #include <dealvem/elasticity/force_balance.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
@@ -29,6 +32,7 @@
 #include <dealvem/solvers/p_multigrid.h>
 #include <dealvem/solvers/parallel_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/vem_values.h>
 
 #include <filesystem>
 #include <iomanip>
@@ -77,13 +81,15 @@ namespace dealvem
                       "Poisson's ratio nu, -1 < nu < 0.5.");
     prm.declare_entry("Model", "plane strain", Selection("plane strain|plane stress"),
                       "2D model of the material.");
+    prm.declare_entry("Law", "linear", Anything(), MaterialLaws::law_documentation);
     prm.leave_subsection();
 
     prm.enter_subsection("Discretization");
     prm.declare_entry("Order", "2", Integer(1, 2), "Order k of the virtual elements (1 or 2).");
     prm.declare_entry("Stabilization", "automatic", Selection("automatic|diagonal|trace"),
                       "Stabilization of the element stiffness: 'automatic' (trace for k = 1, diagonal "
-                      "for k = 2), 'diagonal' (the D-recipe, "
+                      "for k = 2; trace for both at finite strain, where the diagonal rule is too weak), "
+                      "'diagonal' (the D-recipe, "
                       "gamma c_k (I-Pi)^T diag(max(K_c,ii, 1e-3 tau)) (I-Pi), c_1 = 1, c_2 = 1/5: every "
                       "degree of freedom stabilized like its own consistency stiffness) or 'trace' "
                       "(dofi-dofi, gamma tau (I-Pi)^T (I-Pi), tau = trace(K_c)/n_dofs).");
@@ -154,6 +160,8 @@ namespace dealvem
                       "Write the summary <base name>.json (one body: all cycles in one file, "
                       "rewritten after each cycle).");
     prm.leave_subsection();
+
+    FiniteStrainParameters::declare_parameters(prm);
   }
 
 
@@ -178,9 +186,44 @@ namespace dealvem
     }
     InputParsing::check_section_unused(prm, "Contact",
                                        "'Number of bodies' is 1, and contact needs at least two bodies.");
-    InputParsing::check_section_unused(prm, "Load steps",
-                                       "'Number of bodies' is 1: the one-body program solves the static "
-                                       "problem at t = 1; load steps are run by contact problems.");
+    finite_strain.parse_parameters(prm);
+    if (finite_strain.enabled)
+      {
+        // the load steps of the Newton solve: step n applies n/N of the
+        // loads and Dirichlet values (FiniteStrainSolver), at the time
+        // n * Final time / N of the output series
+        AssertThrow(prm.subsection_path_exists({"Load steps"}),
+                    dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the section 'Load steps' "
+                                       "(its number of load steps) is not declared: call "
+                                       "ContactProblem::declare_parameters() on the ParameterHandler too, as "
+                                       "the program does."));
+        prm.enter_subsection("Load steps");
+        const long steps = prm.get_integer("Number of steps");
+        final_time       = prm.get_double("Final time");
+        prm.leave_subsection();
+        AssertThrow(steps >= 1 && steps <= 100000,
+                    dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(steps) +
+                                       ": it must be at least 1 (and at most 100000); with 'Finite "
+                                       "strain/Enabled = true' it is the number of load steps of the Newton "
+                                       "solve."));
+        n_load_steps = steps;
+        InputParsing::check_range(final_time, 0, 1e300, "Load steps/Final time", true, false,
+                                  "It is the time of the last load step in the output series.");
+        AssertThrow(!distributed,
+                    dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the run has " +
+                                       std::to_string(n_processes) +
+                                       " MPI processes: the finite-strain solve runs in one process (run "
+                                       "the program without mpirun)."));
+      }
+    else
+      InputParsing::check_section_unused(prm, "Finite strain",
+                                         "'Finite strain/Enabled' is false: the Newton controls and the monitor "
+                                         "point are read only at finite strain.");
+    if (!finite_strain.enabled)
+      InputParsing::check_section_unused(prm, "Load steps",
+                                         "'Number of bodies' is 1: the one-body program solves the static "
+                                         "problem at t = 1; load steps are run by contact problems and, with "
+                                         "'Finite strain/Enabled = true', by the finite-strain solve.");
     for (const auto &e : InputParsing::changed_entries(prm, "Output"))
       if (e == "Output/Write pictures" || e == "Output/Write CSV")
         pcout << "warning: the parameter file sets '" << e
@@ -201,12 +244,25 @@ namespace dealvem
     youngs_modulus = prm.get_double("Young's modulus");
     poissons_ratio = prm.get_double("Poisson's ratio");
     model          = ElasticMaterial::parse_model(prm.get("Model"));
+    law            = MaterialLaws::parse(prm.get("Law"), "Material/Law");
     prm.leave_subsection();
     InputParsing::check_range(youngs_modulus, ElasticMaterial::min_youngs_modulus,
                               ElasticMaterial::max_youngs_modulus, "Material/Young's modulus", false,
                               false, "Choose units that bring E nearer to 1.");
+    AssertThrow(!finite_strain.enabled || MaterialLaws::is_hyperelastic(law),
+                dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': "
+                                   "the linear law has no finite-strain response. Set 'Material/Law' to "
+                                   "'neo-hooke' or 'saint venant-kirchhoff', or 'Finite strain/Enabled' to "
+                                   "false."));
+    MaterialLaws::check_model(law, model, "Material/Law", "Material/Model");
     // validates E and nu
-    (void)ElasticMaterial(youngs_modulus, poissons_ratio, model);
+    (void)MaterialLaws::make_law(law, youngs_modulus, poissons_ratio, model);
+    if (MaterialLaws::is_hyperelastic(law) && !finite_strain.enabled)
+      pcout << "note: 'Material/Law = " << MaterialLaws::name(law)
+            << "' at small strain ('Finite strain/Enabled = false'): the program solves linear elasticity with "
+               "the law's linearization at F = I, the linear law of the same E and nu. Set 'Finite "
+               "strain/Enabled = true' for the hyperelastic response."
+            << std::endl;
 
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Order");
@@ -245,6 +301,12 @@ namespace dealvem
                                      "steps) are run by contact problems ('Number of bodies' at least 2)."));
     }
 
+    if (finite_strain.enabled)
+      for (const auto &e : InputParsing::changed_entries(prm, "Solver"))
+        pcout << "warning: the parameter file sets '" << e
+              << "', but with 'Finite strain/Enabled = true' every Newton update is solved by UMFPACK; "
+                 "the setting has no effect."
+              << std::endl;
     prm.enter_subsection("Solver");
     solver_type           = prm.get("Type");
     if (solver_type == "GMRES-AMG" || solver_type == "CG-AMG constraints")
@@ -563,7 +625,10 @@ namespace dealvem
 
     // the verification of the solve: residual and the force and moment
     // balance of the body (every edge-connected piece is part of it)
+    // (at finite strain the Newton solver's residual test is the check:
+    // the linear balance does not hold for the deformed body)
     std::vector<ForceBalance::Body> balance;
+    if (!finite_strain.enabled)
     {
       ElasticityAssembler<2> assembler(dof_handler, materials, gamma, stabilization);
       bc.add_loads(assembler);
@@ -642,8 +707,9 @@ namespace dealvem
             }
     }
     const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
-    const std::string vtu    = prefix + (distributed ? ".pvtu" : ".vtu");
-    if (write_vtu)
+    const std::string vtu    = prefix + (distributed ? ".pvtu" : finite_strain.enabled ? ".pvd" : ".vtu");
+    // (finite strain: every load step wrote its file and the series)
+    if (write_vtu && !finite_strain.enabled)
       {
         dealii::TimerOutput::Scope t(*timer, "output");
         if (distributed)
@@ -683,7 +749,11 @@ namespace dealvem
           << " DoFs, h = " << hmax << ", solver " << solver_description;
     if (solver_iterations > 1)
       pcout << " (" << solver_iterations << " iterations)";
-    pcout << ", max von Mises " << max_vm << std::endl;
+    if (finite_strain.enabled)
+      pcout << ", max |Cauchy stress| " << max_cauchy_norm << std::endl;
+    else
+      pcout << ", max von Mises " << max_vm << std::endl;
+    if (!balance.empty())
     {
       const auto [imbalance, residual] = ForceBalance::worst(balance);
       pcout << "  verification: in equilibrium (relative imbalance " << imbalance << ", residual " << residual
@@ -710,7 +780,10 @@ namespace dealvem
     json.set(key + "dofs", double(dof_handler.n_dofs()));
     json.set(key + "h_max", hmax);
     json.set(key + "h_min", hmin);
-    json.set(key + "max_von_mises", max_vm);
+    if (finite_strain.enabled)
+      json.set(key + "max_cauchy_norm", max_cauchy_norm);
+    else
+      json.set(key + "max_von_mises", max_vm);
     json.set(key + "solver", solver_description);
     json.set(key + "solver_iterations", double(solver_iterations));
     json.set(key + "solver_setup_seconds", solver_setup_time);
@@ -821,8 +894,13 @@ namespace dealvem
   ElasticityProblem::run_cycles()
   {
     json_written = false;
+    // a hyperelastic law enters the small-strain paths (assembly, stresses,
+    // errors) by its linearization, the linear law of the same E and nu
     materials = {{dealii::types::material_id(mesh_parameters.material_id),
                   ElasticMaterial(youngs_modulus, poissons_ratio, model)}};
+    laws      = MaterialLibrary<2>();
+    laws.add(dealii::types::material_id(mesh_parameters.material_id),
+             MaterialLaws::make_law(law, youngs_modulus, poissons_ratio, model));
     exact.reset();
     if (!InputParsing::trim(exact_displacement).empty())
       exact = std::make_unique<InputParsing::ParsedFunction>(InputParsing::split(exact_displacement, ','),
@@ -839,10 +917,22 @@ namespace dealvem
     json.set("material.E", youngs_modulus);
     json.set("material.nu", poissons_ratio);
     json.set("material.model", ElasticMaterial::model_name(model));
+    json.set("material.law", MaterialLaws::name(law));
+    json.set("finite_strain.enabled", finite_strain.enabled ? "true" : "false");
+    if (finite_strain.enabled)
+      {
+        json.set("finite_strain.load_steps", double(n_load_steps));
+        json.set("finite_strain.final_time", final_time);
+        json.set("finite_strain.max_newton_iterations", double(finite_strain.solver.max_iterations));
+        json.set("finite_strain.residual_tolerance", finite_strain.solver.residual_tolerance);
+        json.set("finite_strain.update_tolerance", finite_strain.solver.update_tolerance);
+        json.set("finite_strain.line_search", finite_strain.solver.line_search ? "true" : "false");
+      }
     json.set("discretization.order", double(degree));
     json.set("discretization.gamma", gamma);
     json.set("discretization.stabilization",
-             std::string(stabilization == Stabilization::trace || (stabilization == Stabilization::automatic && degree == 1) ?
+             std::string(stabilization == Stabilization::trace ||
+                             (stabilization == Stabilization::automatic && (degree == 1 || finite_strain.enabled)) ?
                            "trace" :
                            "diagonal"));
     json.set("solver.type", solver_type);
@@ -857,6 +947,11 @@ namespace dealvem
             setup_distributed_system();
             assemble_distributed_system();
             solve_distributed();
+          }
+        else if (finite_strain.enabled)
+          {
+            setup_system();
+            solve_finite_strain(cycle);
           }
         else
           {
@@ -909,7 +1004,248 @@ namespace dealvem
       pcout << "Summary written to " << output_folder + "/" + base_name + ".json" << std::endl;
     if (write_vtu)
       pcout << "ParaView files: " << output_folder << "/" << base_name
-            << (n_cycles > 1 ? "-cycle*" : "") << (distributed ? ".pvtu (one .vtu piece per process)" : ".vtu")
+            << (n_cycles > 1 ? "-cycle*" : "")
+            << (distributed           ? ".pvtu (one .vtu piece per process)" :
+                finite_strain.enabled ? ".pvd (the load steps, <base name>-step-NNN.vtu)" :
+                                        ".vtu")
             << std::endl;
+  }
+
+
+
+  namespace
+  {
+    // The Cauchy stress and J = det F of a finite-strain state: per cell the
+    // means over the cell's quadrature (F = I + Pi0 grad u at each point),
+    // per vertex the mean of the cells around it.
+    struct CauchyFields
+    {
+      std::vector<dealii::Tensor<2, 2>> cell_stress;
+      std::vector<double>               cell_J;
+      std::vector<std::pair<std::string, std::vector<double>>> vertex_fields;
+      double                                                   max_norm = 0;
+    };
+
+    CauchyFields
+    cauchy_fields(const VEMDoFHandler<2> &dof_handler, const MaterialLibrary<2> &laws,
+                  const dealii::Vector<double> &u)
+    {
+      const PolygonalMesh<2> &mesh = dof_handler.get_mesh();
+      CauchyFields            out;
+      out.cell_stress.resize(mesh.n_cells());
+      out.cell_J.resize(mesh.n_cells());
+      VEMValues<2> values(dof_handler, dealii::update_quadrature_points | dealii::update_JxW_values);
+      std::vector<dealii::Tensor<2, 2>> gradients;
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          values.reinit(c);
+          values.get_function_gradient_projections(u, gradients);
+          const ConstitutiveLaw<2> &law = laws.get_law(values.material_id());
+          double                    area = 0;
+          for (unsigned int q = 0; q < values.n_quadrature_points(); ++q)
+            {
+              dealii::Tensor<2, 2> F = gradients[q];
+              F[0][0] += 1;
+              F[1][1] += 1;
+              const double J = dealii::determinant(F);
+              // sigma = P F^T / J (the law throws for J <= 0, which a
+              // converged state does not have)
+              const dealii::Tensor<2, 2> P = law.first_piola_kirchhoff_stress(F);
+              out.cell_stress[c] += (P * dealii::transpose(F) / J) * values.JxW(q);
+              out.cell_J[c] += J * values.JxW(q);
+              area += values.JxW(q);
+            }
+          out.cell_stress[c] /= area;
+          out.cell_J[c] /= area;
+          out.max_norm = std::max(out.max_norm, out.cell_stress[c].norm());
+        }
+      const std::vector<std::string> names = {"cauchy_xx", "cauchy_yy", "cauchy_xy", "det_F"};
+      std::vector<std::vector<double>> fields(4, std::vector<double>(mesh.n_vertices(), 0.));
+      std::vector<unsigned int>        count(mesh.n_vertices(), 0);
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        for (const unsigned int v : mesh.cell(c).vertices)
+          {
+            fields[0][v] += out.cell_stress[c][0][0];
+            fields[1][v] += out.cell_stress[c][1][1];
+            fields[2][v] += out.cell_stress[c][0][1];
+            fields[3][v] += out.cell_J[c];
+            ++count[v];
+          }
+      for (unsigned int i = 0; i < 4; ++i)
+        {
+          for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+            if (count[v] > 0)
+              fields[i][v] /= count[v];
+          out.vertex_fields.emplace_back(names[i], std::move(fields[i]));
+        }
+      return out;
+    }
+
+    std::string
+    step_suffix(const unsigned int step)
+    {
+      std::ostringstream s;
+      s << "-step-" << std::setw(3) << std::setfill('0') << step;
+      return s.str();
+    }
+  } // namespace
+
+
+
+  void
+  ElasticityProblem::solve_finite_strain(const unsigned int cycle)
+  {
+    dealii::TimerOutput::Scope t(*timer, "finite strain solve");
+    // the trace rule is the finite-strain default for both orders (see
+    // FiniteStrainAssembler); an explicit choice is passed on
+    const Stabilization      rule = (stabilization == Stabilization::automatic ? Stabilization::trace : stabilization);
+    FiniteStrainAssembler<2> assembler(dof_handler, laws, gamma, rule);
+    bc.add_finite_strain_loads(assembler, "Finite strain/Enabled");
+    {
+      dealii::Vector<double> f_ext;
+      assembler.assemble_load_vector(f_ext);
+      for (unsigned int i = 0; i < f_ext.size(); ++i)
+        check_load_entry(i, f_ext[i]);
+    }
+    FiniteStrainSolver<2>::Parameters parameters = finite_strain.solver;
+    parameters.n_load_steps                     = n_load_steps;
+    FiniteStrainSolver<2> solver(assembler, constraints, parameters);
+
+    // the monitor point: a vertex of the mesh
+    unsigned int monitor = dealii::numbers::invalid_unsigned_int;
+    if (finite_strain.has_monitor_point)
+      {
+        double nearest = 1e300;
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          {
+            const double d = mesh.vertex(v).distance(finite_strain.monitor_point);
+            if (d < nearest)
+              {
+                nearest = d;
+                monitor = v;
+              }
+          }
+        std::ostringstream msg;
+        msg << "Parameter 'Finite strain/Monitor point' = (" << finite_strain.monitor_point
+            << ") is not a vertex of the mesh of cycle " << cycle << ": the nearest vertex (" << mesh.vertex(monitor)
+            << ") is " << nearest << " away. Give the coordinates of a vertex (a corner of the domain, say).";
+        AssertThrow(nearest <= 1e-8 * mesh.extent(), dealii::ExcMessage(msg.str()));
+      }
+
+    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
+    const std::string key    = "cycles." + std::to_string(cycle) + ".finite_strain.";
+    std::vector<std::pair<double, std::string>> series;
+    newton_updates  = 0;
+    max_cauchy_norm = 0;
+    pcout << "  finite strain: " << laws.get_law(mesh_parameters.material_id).get_name() << ", " << n_load_steps
+          << " load step" << (n_load_steps > 1 ? "s" : "") << std::endl;
+    // the JSON record of a step (also of the failed one)
+    const auto record_step = [&](const FiniteStrainSolver<2>::StepRecord &r) {
+      const std::string k = key + "steps." + std::to_string(r.step) + ".";
+      json.set(k + "load_factor", r.load_factor);
+      json.set(k + "time", r.load_factor * final_time);
+      json.set(k + "converged", r.converged ? "true" : "false");
+      json.set(k + "newton_iterations", double(r.iterations.empty() ? 0 : r.iterations.size() - 1));
+      if (!r.iterations.empty())
+        {
+          json.set(k + "residual", r.iterations.back().residual_norm);
+          json.set(k + "relative_residual", r.iterations.back().relative_residual);
+        }
+    };
+    const auto write_summary = [&](const std::string &status) {
+      if (write_json && this_process == 0)
+        {
+          json.set("status", status);
+          json.write(output_folder + "/" + base_name + ".json");
+          json_written = true;
+        }
+    };
+
+    for (unsigned int n = 1; n <= n_load_steps; ++n)
+      {
+        const double load_factor = double(n) / n_load_steps;
+        const double time        = n * final_time / n_load_steps;
+        try
+          {
+            solver.solve_step(n, load_factor);
+          }
+        catch (...)
+          {
+            // the converged steps stay as written; the failed step is
+            // recorded, the history printed, and the solver's message
+            // (step, load factor, reason) goes on to the program
+            solution = solver.get_solution();
+            if (!solver.get_history().empty())
+              record_step(solver.get_history().back());
+            json.set(key + "converged_steps", double(n - 1));
+            // (a failure to write the summary must not hide the solver's
+            // message; run() tries again with the status 'failed')
+            try
+              {
+                write_summary("running");
+              }
+            catch (...)
+              {}
+            if (this_process == 0)
+              {
+                std::cout << "Newton history (cycle " << cycle << "):" << std::endl;
+                solver.print_history(std::cout);
+              }
+            throw;
+          }
+        const auto &r = solver.get_history().back();
+        record_step(r);
+        newton_updates += r.iterations.size() - 1;
+        solution = solver.get_solution();
+        const CauchyFields cauchy = cauchy_fields(dof_handler, laws, solution);
+        max_cauchy_norm           = cauchy.max_norm;
+        json.set(key + "steps." + std::to_string(n) + ".max_cauchy_norm", cauchy.max_norm);
+        pcout << "  load step " << n << " of " << n_load_steps << " (load factor " << load_factor << ", t = " << time
+              << "): " << r.iterations.size() - 1 << " Newton update" << (r.iterations.size() == 2 ? "" : "s")
+              << ", residual " << r.iterations.back().residual_norm << " (relative "
+              << r.iterations.back().relative_residual << "), max |Cauchy stress| " << cauchy.max_norm;
+        if (monitor != dealii::numbers::invalid_unsigned_int)
+          {
+            const unsigned int node = dof_handler.vertex_node(monitor);
+            const double       ux   = solution(VEMDoFHandler<2>::node_dof(node, 0));
+            const double       uy   = solution(VEMDoFHandler<2>::node_dof(node, 1));
+            pcout << ", u(" << mesh.vertex(monitor) << ") = (" << ux << ", " << uy << ")";
+            json.set(key + "steps." + std::to_string(n) + ".monitor_ux", ux);
+            json.set(key + "steps." + std::to_string(n) + ".monitor_uy", uy);
+            if (n == n_load_steps)
+              {
+                json.set(key + "monitor_point.x", mesh.vertex(monitor)[0]);
+                json.set(key + "monitor_point.y", mesh.vertex(monitor)[1]);
+                json.set(key + "monitor_point.ux", ux);
+                json.set(key + "monitor_point.uy", uy);
+              }
+          }
+        pcout << std::endl;
+        if (write_vtu)
+          {
+            const std::string       file = prefix + step_suffix(n) + ".vtu";
+            const StressRecovery<2> linearized(dof_handler, materials, solution);
+            write_vtu_file(file, dof_handler, solution, linearized, cauchy.vertex_fields);
+            series.emplace_back(time, std::filesystem::path(file).filename().string());
+            write_pvd_file(prefix + ".pvd", series);
+          }
+        json.set(key + "converged_steps", double(n));
+        write_summary("running");
+      }
+    json.set(key + "newton_iterations", double(newton_updates));
+    if (!solver.get_history().empty())
+      {
+        json.set(key + "final_residual", solver.get_history().back().iterations.back().residual_norm);
+        json.set(key + "final_relative_residual", solver.get_history().back().iterations.back().relative_residual);
+      }
+    if (this_process == 0)
+      {
+        std::cout << "Newton history (cycle " << cycle << "):" << std::endl;
+        solver.print_history(std::cout);
+      }
+    solver_description = "Newton with UMFPACK, " + std::to_string(n_load_steps) + " load step" +
+                         (n_load_steps > 1 ? "s" : "");
+    solver_iterations  = newton_updates;
+    used_solver_type   = "UMFPACK";
   }
 } // namespace dealvem

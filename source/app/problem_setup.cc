@@ -3,13 +3,18 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <dealvem/app/problem_setup.h>
+#include <dealvem/base/output_file.h>
 #include <dealvem/elasticity/boundary_conditions.h>
+#include <dealvem/elasticity/hyperelastic_material.h>
 
 #include <deal.II/base/function.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <iomanip>
 #include <sstream>
 
 namespace dealvem
@@ -527,6 +532,31 @@ namespace dealvem
 
 
   void
+  BoundaryConditionParameters::add_finite_strain_loads(FiniteStrainAssembler<2> &assembler,
+                                                       const std::string        &switch_name) const
+  {
+    for (const auto &p : pressures)
+      AssertThrow(false, dealii::ExcMessage(
+                           "Parameter '" + p.name + "': a pressure acts on the deformed boundary (a follower "
+                           "load), which the finite-strain solver does not offer, and '" + switch_name +
+                           "' is true. Give the load as a nominal traction (force per unit length of the "
+                           "undeformed boundary, a dead load) in 'Boundary conditions and loads/Traction', or "
+                           "solve at small strain."));
+    for (const auto &r : rigid_boundaries)
+      AssertThrow(false, dealii::ExcMessage(
+                           "Parameter '" + r.name + "': a rigid boundary part is a small-displacement "
+                           "condition (its constraints and resultant do not follow a finite rotation), and '" +
+                           switch_name + "' is true. Use Dirichlet conditions or tractions, or solve at small "
+                           "strain."));
+    if (body_force)
+      assembler.set_body_force(*body_force);
+    for (const auto &t : tractions)
+      assembler.add_traction(t.id, *t.function);
+  }
+
+
+
+  void
   BoundaryConditionParameters::set_time(const double t)
   {
     for (auto &d : dirichlet)
@@ -595,5 +625,189 @@ namespace dealvem
     for (const auto &r : rigid_boundaries)
       ids.insert(r.id);
     return ids;
+  }
+
+
+  namespace MaterialLaws
+  {
+    const char *const law_documentation =
+      "Constitutive law: 'linear' (isotropic linear elasticity), 'neo-hooke' (compressible Neo-Hooke, "
+      "psi = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2) or 'saint venant-kirchhoff' (psi = lambda/2 "
+      "(tr E)^2 + mu E:E, E the Green-Lagrange strain), each with this section's Young's modulus and "
+      "Poisson's ratio (mu = E/(2(1+nu)), lambda = E nu/((1+nu)(1-2nu))). The hyperelastic laws need "
+      "'Model = plane strain'. Their finite-strain response is used with 'Finite strain/Enabled = true' "
+      "(one body); at small strain (the default, and always in contact problems, where this entry applies "
+      "to every body) the program solves linear elasticity with the law's linearization at F = I, which "
+      "is the linear law of the same E and nu.";
+
+    Law
+    parse(const std::string &value, const std::string &parameter)
+    {
+      // lower case, runs of white space as one blank
+      std::string v;
+      for (const char c : InputParsing::trim(value))
+        {
+          const char l = std::tolower(static_cast<unsigned char>(c));
+          if (std::isspace(static_cast<unsigned char>(l)))
+            {
+              if (!v.empty() && v.back() != ' ')
+                v += ' ';
+            }
+          else
+            v += l;
+        }
+      if (v == "linear")
+        return Law::linear;
+      if (v == "neo-hooke" || v == "neo-hookean")
+        return Law::neo_hooke;
+      if (v == "saint venant-kirchhoff")
+        return Law::saint_venant_kirchhoff;
+      AssertThrow(false, dealii::ExcMessage("Parameter '" + parameter + "' = '" + value +
+                                            "' is not a law of the program: use 'linear', 'neo-hooke' or "
+                                            "'saint venant-kirchhoff'."));
+      return Law::linear;
+    }
+
+
+
+    std::string
+    name(const Law law)
+    {
+      switch (law)
+        {
+          case Law::linear:
+            return "linear";
+          case Law::neo_hooke:
+            return "neo-hooke";
+          case Law::saint_venant_kirchhoff:
+            return "saint venant-kirchhoff";
+        }
+      return "";
+    }
+
+
+
+    void
+    check_model(const Law                    law,
+                const ElasticMaterial::Model model,
+                const std::string           &law_parameter,
+                const std::string           &model_parameter)
+    {
+      AssertThrow(!is_hyperelastic(law) || model == ElasticMaterial::Model::plane_strain,
+                  dealii::ExcMessage("Parameter '" + law_parameter + "' = '" + name(law) + "' needs '" +
+                                     model_parameter + " = plane strain', but it is '" +
+                                     ElasticMaterial::model_name(model) +
+                                     "': the hyperelastic laws are implemented in plane strain only (plane "
+                                     "stress at finite strain needs the thickness stretch from a zero "
+                                     "out-of-plane stress at every point, which is not done)."));
+    }
+
+
+
+    std::shared_ptr<const ConstitutiveLaw<2>>
+    make_law(const Law law, const double E, const double nu, const ElasticMaterial::Model model)
+    {
+      check_model(law, model, "Material/Law", "Material/Model");
+      switch (law)
+        {
+          case Law::neo_hooke:
+            return std::make_shared<const NeoHookeMaterial>(E, nu, model);
+          case Law::saint_venant_kirchhoff:
+            return std::make_shared<const SaintVenantKirchhoffMaterial>(E, nu, model);
+          case Law::linear:
+            break;
+        }
+      return std::make_shared<const ElasticMaterial>(E, nu, model);
+    }
+  } // namespace MaterialLaws
+
+
+
+  void
+  FiniteStrainParameters::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    using namespace dealii::Patterns;
+    prm.enter_subsection("Finite strain");
+    prm.declare_entry("Enabled", "false", Bool(),
+                      "One body: solve at finite strain (total Lagrangian hyperelasticity, Newton's method "
+                      "with the load steps of 'Load steps/Number of steps': step n of N applies n/N of the "
+                      "loads and of the Dirichlet values) with the hyperelastic 'Material/Law' (not 'linear', "
+                      "which has no finite-strain response). Loads are dead: body force per unit reference "
+                      "area, 'Traction' per unit reference length (nominal); 'Pressure' and 'Rigid boundary' "
+                      "are refused. One MPI process; each Newton update is solved by UMFPACK. Every step "
+                      "writes <base name>-step-NNN.vtu (with the Cauchy stress and J = det F as point "
+                      "fields), the series <base name>.pvd, and the Newton history is printed and kept in "
+                      "the JSON summary. false: small strain. Contact problems are solved at small strain.");
+    prm.declare_entry("Maximum Newton iterations", "30", Integer(1, 1000),
+                      "Largest number of Newton updates (linear solves) per load step; a step that does not "
+                      "converge within them stops the run (the converged steps' files are kept).");
+    prm.declare_entry("Residual tolerance", "1e-10", Double(0, 1),
+                      "Newton: the free residual norm must fall below this times the larger of the external "
+                      "and internal force norms (0 < tolerance < 1).");
+    prm.declare_entry("Update tolerance", "1e-10", Double(0, 1),
+                      "Newton: the last update must be below this times the displacement norm "
+                      "(0 < tolerance < 1).");
+    prm.declare_entry("Line search", "true", Bool(),
+                      "Newton: backtrack along the update (step lengths 1, 1/2, ..., 2^-10) until the "
+                      "residual norm decreases; false takes every update whole (shortened only where it "
+                      "would invert a cell).");
+    prm.declare_entry("Monitor point", "", Anything(),
+                      "A mesh vertex 'x, y' whose displacement is printed after every load step and written "
+                      "to the JSON summary (e.g. the tip of Cook's membrane). Empty: none.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  FiniteStrainParameters::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite strain");
+    enabled                   = prm.get_bool("Enabled");
+    solver.max_iterations     = prm.get_integer("Maximum Newton iterations");
+    solver.residual_tolerance = prm.get_double("Residual tolerance");
+    solver.update_tolerance   = prm.get_double("Update tolerance");
+    solver.line_search        = prm.get_bool("Line search");
+    const std::string point   = prm.get("Monitor point");
+    prm.leave_subsection();
+    InputParsing::check_range(solver.residual_tolerance, 0, 1, "Finite strain/Residual tolerance", true, true);
+    InputParsing::check_range(solver.update_tolerance, 0, 1, "Finite strain/Update tolerance", true, true);
+    has_monitor_point = !InputParsing::trim(point).empty();
+    if (has_monitor_point)
+      {
+        const auto xy = InputParsing::split(point, ',');
+        AssertThrow(xy.size() == 2, dealii::ExcMessage("Parameter 'Finite strain/Monitor point' = '" + point +
+                                                       "': expected two coordinates 'x, y'."));
+        for (unsigned int d = 0; d < 2; ++d)
+          monitor_point[d] = InputParsing::parse_double(xy[d], "Finite strain/Monitor point");
+      }
+  }
+
+
+
+  void
+  FiniteStrainParameters::refuse(dealii::ParameterHandler &prm, const std::string &reason)
+  {
+    prm.enter_subsection("Finite strain");
+    const bool on = prm.get_bool("Enabled");
+    prm.leave_subsection();
+    AssertThrow(!on, dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but " + reason));
+  }
+
+
+
+  void
+  write_pvd_file(const std::string &filename, const std::vector<std::pair<double, std::string>> &datasets)
+  {
+    OutputFile    file(filename);
+    std::ostream &pvd = file.stream();
+    pvd << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+        << "  <Collection>\n";
+    for (const auto &[time, name] : datasets)
+      pvd << "    <DataSet timestep=\"" << std::setprecision(17) << time << "\" group=\"\" part=\"0\" file=\""
+          << name << "\"/>\n";
+    pvd << "  </Collection>\n</VTKFile>\n";
+    file.commit();
   }
 } // namespace dealvem

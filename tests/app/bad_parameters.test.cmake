@@ -55,6 +55,39 @@ bad_case(contact_penalty_factor "Parameter 'Contact/Penalty factor' = 1e+13 is o
 string(REGEX REPLACE "(subsection Body 1.*Young's modulus *)= 7000" "\\1= 1e-300" prm "${contact_prm}")
 bad_case(contact_body_E "Parameter 'Body 1/Material/Young's modulus' = 1e-300 is out of range" "${prm}")
 
+# ---- material law and finite strain (section 'Finite strain', 'Material/Law')
+set(fs_on "subsection Finite strain\n  set Enabled = true\nend\n")
+bad_case(unknown_law "Parameter 'Material/Law' = 'mooney-rivlin' is not a law of the program: use 'linear', 'neo-hooke' or 'saint venant-kirchhoff'"
+  "${small_mesh}${ok_bc}subsection Material\n  set Law = mooney-rivlin\nend\n")
+bad_case(finite_strain_linear "Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': the linear law has no finite-strain response"
+  "${small_mesh}${ok_bc}${fs_on}")
+bad_case(plane_stress_hyperelastic "Parameter 'Material/Law' = 'neo-hooke' needs 'Material/Model = plane strain', but it is 'plane stress'"
+  "${small_mesh}${ok_bc}subsection Material\n  set Law = neo-hooke\n  set Model = plane stress\nend\n")
+# (also at small strain: the law is refused before its linearization is taken)
+bad_case(plane_stress_svk_finite "Parameter 'Material/Law' = 'saint venant-kirchhoff' needs 'Material/Model = plane strain'"
+  "${small_mesh}${ok_bc}${fs_on}subsection Material\n  set Law = saint venant-kirchhoff\n  set Model = plane stress\nend\n")
+set(neo "subsection Material\n  set Law = neo-hooke\nend\n")
+bad_case(finite_strain_zero_steps "Parameter 'Load steps/Number of steps' is 0: it must be at least 1"
+  "${small_mesh}${ok_bc}${fs_on}${neo}subsection Load steps\n  set Number of steps = 0\nend\n")
+bad_case(finite_strain_final_time "Parameter 'Load steps/Final time' = 0 is out of range"
+  "${small_mesh}${ok_bc}${fs_on}${neo}subsection Load steps\n  set Final time = 0\nend\n")
+bad_case(load_steps_small_strain "load steps are run by contact problems and, with 'Finite strain/Enabled = true', by the finite-strain solve"
+  "${small_mesh}${ok_bc}${neo}subsection Load steps\n  set Number of steps = 4\nend\n")
+bad_case(finite_strain_pressure "Parameter 'Boundary conditions and loads/Pressure entry '3 : 1'': a pressure acts on the deformed boundary"
+  "${small_mesh}${fs_on}${neo}subsection Boundary conditions and loads\n  set Dirichlet = 0 : xy : 0, 0\n  set Pressure = 3 : 1\nend\n")
+bad_case(finite_strain_rigid "a rigid boundary part is a small-displacement condition"
+  "${small_mesh}${fs_on}${neo}subsection Boundary conditions and loads\n  set Dirichlet = 2 : xy : 0, 0\n  set Rigid boundary = 3 : 0, -1\nend\n")
+bad_case(finite_strain_residual_tolerance "Parameter 'Finite strain/Residual tolerance' = 0 is out of range"
+  "${small_mesh}${ok_bc}${neo}subsection Finite strain\n  set Enabled = true\n  set Residual tolerance = 0\nend\n")
+bad_case(finite_strain_monitor "Parameter 'Finite strain/Monitor point' = (0.3 0.3) is not a vertex of the mesh"
+  "${small_mesh}${ok_bc}${neo}subsection Finite strain\n  set Enabled = true\n  set Monitor point = 0.3, 0.3\nend\n")
+bad_case(finite_strain_monitor_text "Parameter 'Finite strain/Monitor point' = '1': expected two coordinates 'x, y'"
+  "${small_mesh}${ok_bc}${neo}subsection Finite strain\n  set Enabled = true\n  set Monitor point = 1\nend\n")
+bad_case(finite_strain_contact "Parameter 'Finite strain/Enabled' is true, but 'Number of bodies' is 2: the program solves contact problems at small strain"
+  "${contact_prm}subsection Material\n  set Law = neo-hooke\nend\n${fs_on}")
+bad_case(contact_plane_stress_law "Parameter 'Material/Law' = 'neo-hooke' needs 'Material/Model = plane strain'"
+  "${contact_prm}subsection Material\n  set Law = neo-hooke\n  set Model = plane stress\nend\n")
+
 # ---- the size of a run
 bad_case(huge_subdivisions "This run is very large: more than 2e+07 DoFs"
   "subsection Mesh\n  set Type = structured quads\n  set Subdivisions = 10000, 10000\nend\n${ok_bc}")

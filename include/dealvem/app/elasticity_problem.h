@@ -22,6 +22,7 @@
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/material.h>
+#include <dealvem/elasticity/material_library.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
@@ -59,6 +60,16 @@ namespace dealvem
    * summary and the console output. Errors are summed over the processes,
    * so the convergence table is the serial one. With one process the serial
    * path runs, unless the constructor asks for the distributed one.
+   *
+   * <h3>Finite strain</h3>
+   * With 'Finite strain/Enabled = true' and a hyperelastic 'Material/Law'
+   * (FiniteStrainParameters, MaterialLaws), solve() is replaced by
+   * solve_finite_strain(): FiniteStrainAssembler and FiniteStrainSolver
+   * with the 'Load steps/Number of steps' load steps (loads and Dirichlet
+   * values scaled by n/N), one VTU file per step and a .pvd series, the
+   * Newton history on the console and in the JSON summary. Serial only.
+   * A hyperelastic law without the switch is solved at small strain with
+   * its linearization (the linear law of the same E and nu).
    */
   class ElasticityProblem
   {
@@ -150,10 +161,22 @@ namespace dealvem
     solve_distributed();
     void
     output_results(const unsigned int cycle);
+    /// The finite-strain solve of one cycle: Newton with load steps, the
+    /// files of every converged step and the JSON record of every step
+    /// (a failed step is recorded before its error is passed on).
+    void
+    solve_finite_strain(const unsigned int cycle);
 
     MeshParameters         mesh_parameters;
     double                 youngs_modulus = 1000, poissons_ratio = 0.3;
     ElasticMaterial::Model model = ElasticMaterial::Model::plane_strain;
+    /// 'Material/Law'.
+    MaterialLaws::Law      law = MaterialLaws::Law::linear;
+    /// The section 'Finite strain'.
+    FiniteStrainParameters finite_strain;
+    /// 'Load steps/Number of steps' and 'Final time' (finite strain only).
+    unsigned int           n_load_steps = 1;
+    double                 final_time   = 1;
     unsigned int           degree = 2;
     double                 gamma  = 1.0;
     Stabilization          stabilization = Stabilization::automatic;
@@ -180,6 +203,12 @@ namespace dealvem
 
     // the state of a run
     std::map<dealii::types::material_id, ElasticMaterial> materials;
+    /// The law of 'Material/Law' by material id (finite strain).
+    MaterialLibrary<2>                                    laws;
+    /// Finite strain, last cycle: Newton updates summed over the steps, and
+    /// the largest norm of the cell-averaged Cauchy stress of the last step.
+    unsigned int                                          newton_updates   = 0;
+    double                                                max_cauchy_norm  = 0;
     std::unique_ptr<dealii::Function<2>>                  exact;
     std::unique_ptr<dealii::TimerOutput>                  timer;
     PolygonalMesh<2>                                      mesh;

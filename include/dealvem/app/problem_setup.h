@@ -12,7 +12,11 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <dealvem/app/input_parsing.h>
+#include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
+#include <dealvem/elasticity/finite_strain_assembler.h>
+#include <dealvem/elasticity/finite_strain_solver.h>
+#include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
@@ -166,6 +170,17 @@ namespace dealvem
     add_loads(ElasticityAssembler<2> &assembler) const;
 
     /**
+     * Hand the loads to a finite-strain assembler: the body force (per unit
+     * reference area) and the tractions (nominal, per unit reference
+     * length; dead loads). A pressure follows the deformed boundary and a
+     * rigid boundary part carries a resultant that turns with it: neither
+     * is a dead load, so either one is refused with a message naming its
+     * entry and @p switch_name (the parameter that asked for finite strain).
+     */
+    void
+    add_finite_strain_loads(FiniteStrainAssembler<2> &assembler, const std::string &switch_name) const;
+
+    /**
      * Set the time t of every expression of this section (Dirichlet data,
      * loads, point constraints, rigid boundaries, body force). Load steps
      * call this before apply_constraints() and add_loads().
@@ -232,6 +247,124 @@ namespace dealvem
     std::shared_ptr<dealii::Function<2>>           body_force;
     std::string                                    body_force_name;
   };
+
+
+  /**
+   * The constitutive law of the parameter file, entry 'Material/Law':
+   * `linear` (ElasticMaterial, the default), `neo-hooke` (NeoHookeMaterial)
+   * or `saint venant-kirchhoff` (SaintVenantKirchhoffMaterial), each from
+   * the section's Young's modulus and Poisson's ratio. (The entry
+   * 'Material/Model' was taken before: it is the 2D model, plane strain or
+   * plane stress, and stays so.) Shared by ElasticityProblem and
+   * ContactProblem.
+   */
+  namespace MaterialLaws
+  {
+    /// The laws the program offers.
+    enum class Law
+    {
+      linear,
+      neo_hooke,
+      saint_venant_kirchhoff
+    };
+
+    /// The documentation string of the entry 'Law'.
+    extern const char *const law_documentation;
+
+    /**
+     * The law named @p value (white space around it and case ignored;
+     * 'neo-hookean' is taken for 'neo-hooke'). Throws for any other name,
+     * naming @p parameter, the value and the valid names.
+     */
+    Law
+    parse(const std::string &value, const std::string &parameter);
+
+    /// The name as the parameter file writes it ("neo-hooke", ...).
+    std::string
+    name(const Law law);
+
+    /// Whether @p law is a hyperelastic law (has a finite-strain response).
+    inline bool
+    is_hyperelastic(const Law law)
+    {
+      return law != Law::linear;
+    }
+
+    /**
+     * Throw unless @p law and the 2D @p model go together: the hyperelastic
+     * laws are implemented in plane strain only. The message names
+     * @p law_parameter and @p model_parameter with their values.
+     */
+    void
+    check_model(const Law                    law,
+                const ElasticMaterial::Model model,
+                const std::string           &law_parameter,
+                const std::string           &model_parameter);
+
+    /**
+     * The law @p law with Young's modulus @p E, Poisson's ratio @p nu and
+     * the 2D @p model (checked by check_model() with the default names
+     * 'Material/Law' and 'Material/Model').
+     */
+    std::shared_ptr<const ConstitutiveLaw<2>>
+    make_law(const Law law, const double E, const double nu, const ElasticMaterial::Model model);
+  } // namespace MaterialLaws
+
+
+
+  /**
+   * The finite-strain switch of the parameter file, section 'Finite
+   * strain': 'Enabled' (false: small strain, the default) and the Newton
+   * controls of FiniteStrainSolver::Parameters ('Maximum Newton
+   * iterations', 'Residual tolerance', 'Update tolerance', 'Line search'),
+   * plus an optional 'Monitor point' whose displacement is reported per
+   * load step. The number of load steps comes from the section 'Load
+   * steps' ('Number of steps'), which the elasticity problem reads when
+   * finite strain is enabled.
+   */
+  class FiniteStrainParameters
+  {
+  public:
+    /// Declare the section 'Finite strain' (at the top level of @p prm).
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// Read the section (at the top level of @p prm); throws naming the
+    /// parameter for a malformed monitor point.
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * For a problem that the program solves at small strain only: throw if
+     * 'Finite strain/Enabled' is true, with a message that names the
+     * parameter and ends with @p reason (which problem, and why).
+     */
+    static void
+    refuse(dealii::ParameterHandler &prm, const std::string &reason);
+
+    /// 'Finite strain/Enabled'.
+    bool enabled = false;
+
+    /// The Newton controls (n_load_steps is set by the problem from 'Load
+    /// steps/Number of steps').
+    FiniteStrainSolver<2>::Parameters solver;
+
+    /// Whether 'Monitor point' was given.
+    bool has_monitor_point = false;
+
+    /// The monitor point (a vertex of the mesh).
+    dealii::Point<2> monitor_point;
+  };
+
+
+
+  /**
+   * Write a ParaView collection (.pvd) @p filename of the files @p datasets
+   * (time, file name relative to the .pvd's folder), in the given order,
+   * through OutputFile (replaced only when written completely).
+   */
+  void
+  write_pvd_file(const std::string &filename, const std::vector<std::pair<double, std::string>> &datasets);
 } // namespace dealvem
 
 #endif
