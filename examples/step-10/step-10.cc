@@ -624,7 +624,9 @@ namespace Step10
     std::ofstream file(filename);
     file << out.str();
     file.close();
-    AssertThrow(file, dealii::ExcMessage("step-10: cannot write the picture " + filename));
+    AssertThrow(file, dealii::ExcMessage("step-10: cannot write the picture " + filename +
+                                         " (with --write-doc-picture the path comes from __FILE__, which "
+                                         "may be relative to the build directory: run from there)"));
   }
 } // namespace Step10
 
