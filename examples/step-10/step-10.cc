@@ -259,8 +259,9 @@ namespace Step10
   // function: the $n\times n$ grid of deal.II (colorized: boundary id 0 on
   // the left side, 1 on the right), and centroidal Voronoi meshes of the
   // unit square (30 Lloyd iterations, seed 5) with their vertices moved.
-  // The map is bilinear, so the mapped Voronoi cells stay polygons with
-  // straight edges, only stretched and sheared.
+  // Only the vertices are mapped, the edges stay straight between them;
+  // the sides of the square are lines $s$ or $t$ = const, which the
+  // bilinear map keeps straight, so both meshes cover the panel exactly.
   Point
   panel_point(const Point &p)
   {
