@@ -405,7 +405,6 @@ namespace dealvem
     // 'Material/Law' applies to every body; contact problems are solved at
     // small strain, where a hyperelastic law is its linearization at F = I,
     // the linear law of the same E and nu (ElasticMaterial, built below)
-    MaterialLaws::check_model(law, model, "Material/Law", "Material/Model");
     FiniteStrainParameters::refuse(prm, "'Number of bodies' is " + std::to_string(n) +
                                           ": the program solves contact problems at small strain. Set "
                                           "'Finite strain/Enabled = false' (a hyperelastic 'Material/Law' "

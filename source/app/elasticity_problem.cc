@@ -23,6 +23,7 @@
 #include <dealvem/elasticity/hyperelastic_material.h>
 #include <dealvem/elasticity/force_balance.h>
 #include <dealvem/postprocessing/error_norms.h>
+#include <dealvem/postprocessing/finite_strain_output.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/base/output_file.h>
 #include <dealvem/base/run_files.h>
@@ -254,7 +255,6 @@ namespace dealvem
                                    "the linear law has no finite-strain response. Set 'Material/Law' to "
                                    "'neo-hooke' or 'saint venant-kirchhoff', or 'Finite strain/Enabled' to "
                                    "false."));
-    MaterialLaws::check_model(law, model, "Material/Law", "Material/Model");
     // validates E and nu
     (void)MaterialLaws::make_law(law, youngs_modulus, poissons_ratio, model);
     if (MaterialLaws::is_hyperelastic(law) && !finite_strain.enabled)
@@ -1227,7 +1227,7 @@ namespace dealvem
             const StressRecovery<2> linearized(dof_handler, materials, solution);
             write_vtu_file(file, dof_handler, solution, linearized, cauchy.vertex_fields);
             series.emplace_back(time, std::filesystem::path(file).filename().string());
-            write_pvd_file(prefix + ".pvd", series);
+            write_pvd_record(prefix + ".pvd", series);
           }
         json.set(key + "converged_steps", double(n));
         write_summary("running");

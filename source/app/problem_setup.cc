@@ -687,27 +687,9 @@ namespace dealvem
 
 
 
-    void
-    check_model(const Law                    law,
-                const ElasticMaterial::Model model,
-                const std::string           &law_parameter,
-                const std::string           &model_parameter)
-    {
-      AssertThrow(!is_hyperelastic(law) || model == ElasticMaterial::Model::plane_strain,
-                  dealii::ExcMessage("Parameter '" + law_parameter + "' = '" + name(law) + "' needs '" +
-                                     model_parameter + " = plane strain', but it is '" +
-                                     ElasticMaterial::model_name(model) +
-                                     "': the hyperelastic laws are implemented in plane strain only (plane "
-                                     "stress at finite strain needs the thickness stretch from a zero "
-                                     "out-of-plane stress at every point, which is not done)."));
-    }
-
-
-
     std::shared_ptr<const ConstitutiveLaw<2>>
     make_law(const Law law, const double E, const double nu, const ElasticMaterial::Model model)
     {
-      check_model(law, model, "Material/Law", "Material/Model");
       switch (law)
         {
           case Law::neo_hooke:
@@ -792,22 +774,5 @@ namespace dealvem
     const bool on = prm.get_bool("Enabled");
     prm.leave_subsection();
     AssertThrow(!on, dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but " + reason));
-  }
-
-
-
-  void
-  write_pvd_file(const std::string &filename, const std::vector<std::pair<double, std::string>> &datasets)
-  {
-    OutputFile    file(filename);
-    std::ostream &pvd = file.stream();
-    pvd << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-        << "  <Collection>\n";
-    for (const auto &[time, name] : datasets)
-      pvd << "    <DataSet timestep=\"" << std::setprecision(17) << time << "\" group=\"\" part=\"0\" file=\""
-          << name << "\"/>\n";
-    pvd << "  </Collection>\n</VTKFile>\n";
-    file.commit();
   }
 } // namespace dealvem

@@ -61,11 +61,6 @@ bad_case(unknown_law "Parameter 'Material/Law' = 'mooney-rivlin' is not a law of
   "${small_mesh}${ok_bc}subsection Material\n  set Law = mooney-rivlin\nend\n")
 bad_case(finite_strain_linear "Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': the linear law has no finite-strain response"
   "${small_mesh}${ok_bc}${fs_on}")
-bad_case(plane_stress_hyperelastic "Parameter 'Material/Law' = 'neo-hooke' needs 'Material/Model = plane strain', but it is 'plane stress'"
-  "${small_mesh}${ok_bc}subsection Material\n  set Law = neo-hooke\n  set Model = plane stress\nend\n")
-# (also at small strain: the law is refused before its linearization is taken)
-bad_case(plane_stress_svk_finite "Parameter 'Material/Law' = 'saint venant-kirchhoff' needs 'Material/Model = plane strain'"
-  "${small_mesh}${ok_bc}${fs_on}subsection Material\n  set Law = saint venant-kirchhoff\n  set Model = plane stress\nend\n")
 set(neo "subsection Material\n  set Law = neo-hooke\nend\n")
 bad_case(finite_strain_zero_steps "Parameter 'Load steps/Number of steps' is 0: it must be at least 1"
   "${small_mesh}${ok_bc}${fs_on}${neo}subsection Load steps\n  set Number of steps = 0\nend\n")
@@ -85,8 +80,6 @@ bad_case(finite_strain_monitor_text "Parameter 'Finite strain/Monitor point' = '
   "${small_mesh}${ok_bc}${neo}subsection Finite strain\n  set Enabled = true\n  set Monitor point = 1\nend\n")
 bad_case(finite_strain_contact "Parameter 'Finite strain/Enabled' is true, but 'Number of bodies' is 2: the program solves contact problems at small strain"
   "${contact_prm}subsection Material\n  set Law = neo-hooke\nend\n${fs_on}")
-bad_case(contact_plane_stress_law "Parameter 'Material/Law' = 'neo-hooke' needs 'Material/Model = plane strain'"
-  "${contact_prm}subsection Material\n  set Law = neo-hooke\n  set Model = plane stress\nend\n")
 
 # ---- the size of a run
 bad_case(huge_subdivisions "This run is very large: more than 2e+07 DoFs"

@@ -3,7 +3,8 @@
 # 'Finite strain/Enabled = true'), run from parameter files as a user would:
 # - a homogeneous deformation F = [[1.1, 0.3], [0.05, 0.7]] prescribed on
 #   the whole boundary of a Voronoi mesh (k = 2, Neo-Hooke) and of a
-#   non-convex mesh (k = 1, Saint Venant-Kirchhoff), 4 load steps: the
+#   non-convex mesh (k = 1, Saint Venant-Kirchhoff), and in plane stress
+#   on perturbed quads (k = 1, Neo-Hooke), 4 load steps: the
 #   virtual elements contain it, so the errors against the exact
 #   displacement (JSON) are at round-off (below 1e-10) and the monitored
 #   corner (1, 1) moves by (F - I)(1, 1) = (0.4, -0.25) to 1e-10 relative,
@@ -89,13 +90,20 @@ set(exact "0.1*x + 0.3*y, 0.05*x - 0.3*y")
 # (the last field: |sigma| of the law at F, E = 10, nu = 0.3, computed
 # independently: sigma = (mu F F^T + (lambda ln J - mu) I) / J for Neo-Hooke,
 # F S F^T / J with S = lambda tr(E) I + 2 mu E for Saint Venant-Kirchhoff)
-foreach(variant "voronoi;2;neo-hooke;5.14082506187988" "nonconvex;1;saint venant-kirchhoff;2.21590388540504")
+# In plane stress (Neo-Hooke, k = 1) the thickness stretch f solves
+# mu (f^2 - 1) + lambda ln(f det F) = 0 (f = 1.11920738772318) and sigma is
+# the in-plane block at J = f det F.
+foreach(variant "voronoi;2;neo-hooke;5.14082506187988;plane strain"
+                "nonconvex;1;saint venant-kirchhoff;2.21590388540504;plane strain"
+                "perturbed quads;1;neo-hooke;3.86350519847767;plane stress")
   list(GET variant 0 type)
   list(GET variant 1 k)
   list(GET variant 2 law)
   list(GET variant 3 sigma_norm)
+  list(GET variant 4 model)
   string(REPLACE " " "_" tag "${type}-${law}")
-  file(WRITE ${WORK_DIR}/homogeneous-${type}.prm "subsection Mesh
+  string(REPLACE " " "_" type_tag "${type}")
+  file(WRITE ${WORK_DIR}/homogeneous-${type_tag}.prm "subsection Mesh
   set Type            = ${type}
   set Number of cells = 40
   set Subdivisions    = 5, 4
@@ -104,6 +112,7 @@ subsection Material
   set Young's modulus = 10
   set Poisson's ratio = 0.3
   set Law             = ${law}
+  set Model           = ${model}
 end
 subsection Discretization
   set Order = ${k}
@@ -122,12 +131,12 @@ subsection Load steps
   set Number of steps = 4
 end
 subsection Output
-  set Base name = homogeneous-${type}
+  set Base name = homogeneous-${type_tag}
 end
 ")
-  run_dealvem("homogeneous F, ${type}, k = ${k}, ${law}" TRUE "Newton history"
-    ${WORK_DIR}/homogeneous-${type}.prm)
-  file(READ ${WORK_DIR}/output/homogeneous-${type}.json json)
+  run_dealvem("homogeneous F, ${type}, k = ${k}, ${law}, ${model}" TRUE "Newton history"
+    ${WORK_DIR}/homogeneous-${type_tag}.prm)
+  file(READ ${WORK_DIR}/output/homogeneous-${type_tag}.json json)
   foreach(e L2 H1_seminorm)
     check_json_roundoff("${json}" "homogeneous ${type}" cycles 0 errors ${e})
   endforeach()
@@ -142,7 +151,7 @@ end
   if(NOT l STREQUAL "${law}")
     message(FATAL_ERROR "FAIL homogeneous ${type}: material.law = '${l}'")
   endif()
-  check_steps("${json}" homogeneous-${type} 4 "homogeneous ${type}")
+  check_steps("${json}" homogeneous-${type_tag} 4 "homogeneous ${type}")
 endforeach()
 
 # --- Cook's membrane: the tip displacement within 0.5 % of the reference

@@ -291,20 +291,8 @@ namespace dealvem
     }
 
     /**
-     * Throw unless @p law and the 2D @p model go together: the hyperelastic
-     * laws are implemented in plane strain only. The message names
-     * @p law_parameter and @p model_parameter with their values.
-     */
-    void
-    check_model(const Law                    law,
-                const ElasticMaterial::Model model,
-                const std::string           &law_parameter,
-                const std::string           &model_parameter);
-
-    /**
      * The law @p law with Young's modulus @p E, Poisson's ratio @p nu and
-     * the 2D @p model (checked by check_model() with the default names
-     * 'Material/Law' and 'Material/Model').
+     * the 2D @p model (plane strain or plane stress, for every law).
      */
     std::shared_ptr<const ConstitutiveLaw<2>>
     make_law(const Law law, const double E, const double nu, const ElasticMaterial::Model model);
@@ -357,14 +345,6 @@ namespace dealvem
   };
 
 
-
-  /**
-   * Write a ParaView collection (.pvd) @p filename of the files @p datasets
-   * (time, file name relative to the .pvd's folder), in the given order,
-   * through OutputFile (replaced only when written completely).
-   */
-  void
-  write_pvd_file(const std::string &filename, const std::vector<std::pair<double, std::string>> &datasets);
 } // namespace dealvem
 
 #endif
