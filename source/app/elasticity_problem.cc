@@ -1047,11 +1047,10 @@ namespace dealvem
               dealii::Tensor<2, 2> F = gradients[q];
               F[0][0] += 1;
               F[1][1] += 1;
-              const double J = dealii::determinant(F);
-              // sigma = P F^T / J (the law throws for J <= 0, which a
-              // converged state does not have)
-              const dealii::Tensor<2, 2> P = law.first_piola_kirchhoff_stress(F);
-              out.cell_stress[c] += (P * dealii::transpose(F) / J) * values.JxW(q);
+              // sigma = P F^T / J, J = f det F in plane stress (throws for
+              // det F <= 0, which a converged state does not have)
+              double J = 0;
+              out.cell_stress[c] += finite_strain_cauchy_stress(law, F, J) * values.JxW(q);
               out.cell_J[c] += J * values.JxW(q);
               area += values.JxW(q);
             }

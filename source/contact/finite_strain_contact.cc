@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 
 namespace dealvem
 {
@@ -42,12 +43,40 @@ namespace dealvem
                                            const std::vector<NodeInsertion::Interface> &interfaces,
                                            const ContactSettings::Normal                normal,
                                            const double                                 c)
+    : FiniteStrainContact(dof_handler, interfaces, normal, c, Options())
+  {}
+
+
+
+  FiniteStrainContact::FiniteStrainContact(const VEMDoFHandler<2>                      &dof_handler,
+                                           const std::vector<NodeInsertion::Interface> &interfaces,
+                                           const ContactSettings::Normal                normal,
+                                           const double                                 c,
+                                           const Options                               &options)
     : dof_handler(dof_handler)
     , model(normal)
     , c(c)
   {
     AssertThrow(std::isfinite(c) && c > 0,
                 dealii::ExcMessage("FiniteStrainContact: the complementarity constant must be positive."));
+    AssertThrow(options.base == nullptr || options.base->size() == dof_handler.n_dofs(),
+                dealii::ExcMessage("FiniteStrainContact: the base displacement has " +
+                                   std::to_string(options.base == nullptr ? 0 : options.base->size()) +
+                                   " entries, the DoF handler " + std::to_string(dof_handler.n_dofs()) + "."));
+    const auto mu_of = [&](const unsigned int interface) {
+      double m = options.friction_coefficient;
+      if (interface < options.friction_coefficients.size() && options.friction_coefficients[interface] >= 0)
+        m = options.friction_coefficients[interface];
+      AssertThrow(std::isfinite(m) && m >= 0,
+                  dealii::ExcMessage("FiniteStrainContact: the friction coefficient of interface " +
+                                     std::to_string(interface) + " is " + std::to_string(m) +
+                                     "; it must be finite and not negative."));
+      AssertThrow(m == 0 || normal == ContactSettings::Normal::unilateral,
+                  dealii::ExcMessage("FiniteStrainContact: interface " + std::to_string(interface) +
+                                     " has the friction coefficient " + std::to_string(m) +
+                                     ", but tied contact has no friction (it sticks everywhere)."));
+      return m;
+    };
     // the pairs of all interfaces, and for each pair the pairs next to it
     // along its interface (vertex pairs: through the sub-edges; midpoint
     // pairs: the two ends of their sub-edge)
@@ -56,10 +85,13 @@ namespace dealvem
     for (const auto &interface : interfaces)
       {
         const unsigned int offset = pairs.size();
+        const double interface_mu = mu_of(&interface - interfaces.data());
         for (const auto &p : interface.pairs)
           {
             pairs.push_back(p);
             side_of_pair.push_back(interface.normal_side);
+            mu.push_back(interface_mu);
+            frictional = frictional || interface_mu > 0;
           }
         neighbours.resize(pairs.size());
         for (auto s : interface.segments)
@@ -88,6 +120,15 @@ namespace dealvem
       return p.is_midpoint ? dof_handler.edge_node(entity) : dof_handler.vertex_node(entity);
     };
 
+    // positions in the base configuration X + u_b
+    const auto base_location = [&](const unsigned int node) {
+      dealii::Point<2> x = dof_handler.node_location(node);
+      if (options.base != nullptr)
+        for (unsigned int comp = 0; comp < 2; ++comp)
+          x[comp] += (*options.base)[VEMDoFHandler<2>::node_dof(node, comp)];
+      return x;
+    };
+
     data.resize(pairs.size());
     fixed.assign(pairs.size(), false);
     for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -97,8 +138,7 @@ namespace dealvem
         d.slave_node  = node_of(i, false);
         d.n0          = pairs[i].normal;
         d.t0          = turn_left(d.n0);
-        const dealii::Tensor<1, 2> a0 =
-          dof_handler.node_location(d.slave_node) - dof_handler.node_location(d.master_node);
+        const dealii::Tensor<1, 2> a0 = base_location(d.slave_node) - base_location(d.master_node);
         d.tied_normal     = a0 * d.n0;
         d.tied_tangential = a0 * d.t0;
 
@@ -127,7 +167,7 @@ namespace dealvem
             Chord chord;
             chord.minus     = node_of(minus, master);
             chord.plus      = node_of(plus, master);
-            chord.reference = dof_handler.node_location(chord.plus) - dof_handler.node_location(chord.minus);
+            chord.reference = base_location(chord.plus) - base_location(chord.minus);
             chord.weight    = weight;
             if (chord.reference.norm() > 0)
               d.chords.push_back(chord);
@@ -135,6 +175,65 @@ namespace dealvem
         // a bisector with one degenerate side: the other side turns it alone
         if (d.chords.size() == 1)
           d.chords[0].weight = 1.;
+      }
+
+    // the slip origin: a.t in the configuration where the slip starts, t
+    // turned there from the base by the pair's chords
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        auto &d = data[i];
+        if (options.slip_origin == nullptr)
+          {
+            d.slip_origin = d.tied_tangential;
+            continue;
+          }
+        AssertThrow(options.slip_origin->size() == dof_handler.n_dofs(),
+                    dealii::ExcMessage("FiniteStrainContact: the slip origin has " +
+                                       std::to_string(options.slip_origin->size()) + " entries, the DoF handler " +
+                                       std::to_string(dof_handler.n_dofs()) + "."));
+        const dealii::Tensor<1, 2> a =
+          position(d.slave_node, *options.slip_origin) - position(d.master_node, *options.slip_origin);
+        std::vector<dealii::Tensor<1, 2>> chords_at_origin;
+        const double                      theta = turn(d, *options.slip_origin, &chords_at_origin);
+        // a pair that was open at the origin has no history there: it
+        // sticks, once closed, where its nodes face each other (its slip is
+        // a.t itself: the nodes the pairing made opposite each other stay
+        // so). The gap at the origin is taken across the origin's
+        // chords of the normal side (not R(theta) n0: the normal of the
+        // insertion and the chord agree only where the side is straight,
+        // and a small disagreement times the tangential distance of the two
+        // material points at the origin would read as a gap).
+        dealii::Tensor<1, 2> n_origin = rotate(d.n0, theta);
+        dealii::Tensor<1, 2> chord_sum;
+        for (unsigned int c = 0; c < chords_at_origin.size(); ++c)
+          chord_sum += d.chords[c].weight * chords_at_origin[c] / chords_at_origin[c].norm();
+        if (chord_sum.norm() > 0)
+          {
+            dealii::Tensor<1, 2> perpendicular = turn_left(chord_sum / chord_sum.norm());
+            if (perpendicular * n_origin < 0)
+              perpendicular = -perpendicular;
+            n_origin = perpendicular;
+          }
+        double length = 0;
+        for (const auto &chord : d.chords)
+          length = std::max(length, chord.reference.norm());
+        const double gap_at_origin = a * n_origin;
+        if (gap_at_origin > 1e-6 * (a.norm() + length))
+          {
+            d.slip_origin = 0;
+            if (options.contact_origin != nullptr)
+              {
+                const auto &uc = *options.contact_origin;
+                AssertThrow(uc.size() == dof_handler.n_dofs(),
+                            dealii::ExcMessage("FiniteStrainContact: the contact origin has " +
+                                               std::to_string(uc.size()) + " entries, the DoF handler " +
+                                               std::to_string(dof_handler.n_dofs()) + "."));
+                const dealii::Tensor<1, 2> ac = position(d.slave_node, uc) - position(d.master_node, uc);
+                d.slip_origin                 = ac * rotate(d.t0, turn(d, uc, nullptr));
+              }
+          }
+        else
+          d.slip_origin = a * rotate(d.t0, theta);
       }
   }
 
@@ -213,8 +312,7 @@ namespace dealvem
     const double         theta = turn(d, u, nullptr);
     const dealii::Tensor<1, 2> e = rotate(tang ? d.t0 : d.n0, theta);
     const dealii::Tensor<1, 2> a = position(d.slave_node, u) - position(d.master_node, u);
-    const double offset = is_bilateral() ? (tang ? d.tied_tangential : d.tied_normal) : 0.;
-    return a * e - offset;
+    return a * e - offset(d, tang);
   }
 
 
@@ -234,8 +332,7 @@ namespace dealvem
     const dealii::Tensor<1, 2>        e     = rotate(tang ? d.t0 : d.n0, theta);
     const dealii::Tensor<1, 2>        Je    = turn_left(e);
     const dealii::Tensor<1, 2>        a     = position(d.slave_node, u) - position(d.master_node, u);
-    const double offset = is_bilateral() ? (tang ? d.tied_tangential : d.tied_normal) : 0.;
-    result.value        = a * e - offset;
+    result.value                      = a * e - offset(d, tang);
 
     // The variables v = (a, d_1, ..., d_m), each a 2-vector, and how they
     // depend on the nodes: a = x_B - x_A, d_s = x_plus - x_minus.
@@ -328,7 +425,23 @@ namespace dealvem
         std::vector<dealii::types::global_dof_index> indices = lin.dofs;
         indices.push_back(n + j);
         constraints.add_entries_local_to_global(indices, dsp, true);
+        // the slip equation lambda_t = mu |lambda_n| sign(.) couples the
+        // tangential multiplier to the normal one
+        if (frictional && is_tangential(j))
+          dsp.add(n + j, n + pair_of(j));
       }
+  }
+
+
+
+  std::string
+  FiniteStrainContact::describe(const unsigned int j) const
+  {
+    const auto &p = pairs[pair_of(j)];
+    std::ostringstream s;
+    s << "the contact pair at (" << p.slave_location[0] << ", " << p.slave_location[1] << ") of interface "
+      << p.interface;
+    return s.str();
   }
 
 

@@ -6,7 +6,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
 
-#include <dealvem/contact/finite_strain_contact.h>
+#include <dealvem/elasticity/finite_strain_constraints.h>
 #include <dealvem/elasticity/finite_strain_solver.h>
 
 #include <algorithm>
@@ -104,7 +104,7 @@ namespace dealvem
 
   template <int dim>
   void
-  FiniteStrainSolver<dim>::set_contact(FiniteStrainContact &contact_in)
+  FiniteStrainSolver<dim>::set_contact(FiniteStrainConstraints &contact_in)
   {
     if constexpr (dim != 2)
       {
@@ -114,7 +114,7 @@ namespace dealvem
       {
         const auto &dof_handler = assembler.get_dof_handler();
         contact                 = &contact_in;
-        contact->mark_fixed_pairs(constraints);
+        contact->mark_prescribed(constraints);
         const auto n = dof_handler.n_dofs();
         const auto m = contact->n_constraints();
         dealii::DynamicSparsityPattern dsp(n + m);
@@ -158,6 +158,47 @@ namespace dealvem
     homogeneous_constraints.copy_from(new_constraints);
     for (const auto &line : new_lines)
       homogeneous_constraints.set_inhomogeneity(line.index, 0.);
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::set_state(const dealii::Vector<double> &u,
+                                     const dealii::Vector<double> &lambda,
+                                     const double                  load_factor,
+                                     const unsigned int            step,
+                                     const dealii::Vector<double> *previous_u,
+                                     const double                  previous_load_factor_in,
+                                     const unsigned int            previous_step_in)
+  {
+    const auto n = assembler.get_dof_handler().n_dofs();
+    const auto m = contact != nullptr ? contact->n_constraints() : 0u;
+    AssertThrow(u.size() == n && (previous_u == nullptr || previous_u->size() == n),
+                dealii::ExcMessage("FiniteStrainSolver::set_state(): a displacement has " +
+                                   std::to_string(previous_u != nullptr && previous_u->size() != n ?
+                                                    previous_u->size() :
+                                                    u.size()) +
+                                   " entries, the DoF handler " + std::to_string(n) + "."));
+    AssertThrow(lambda.size() == m,
+                dealii::ExcMessage("FiniteStrainSolver::set_state(): " + std::to_string(lambda.size()) +
+                                   " multipliers given, the contact has " + std::to_string(m) +
+                                   " constraints (set_contact() first)."));
+    AssertThrow(std::isfinite(u.l2_norm()) && std::isfinite(lambda.l2_norm()) && std::isfinite(load_factor),
+                dealii::ExcMessage("FiniteStrainSolver::set_state(): the state is not finite."));
+    solution            = u;
+    multipliers         = lambda;
+    current_load_factor = load_factor;
+    current_step        = step;
+    n_converged         = 1;
+    if (previous_u != nullptr)
+      {
+        previous_solution    = *previous_u;
+        previous_multipliers = lambda; // the multipliers are not extrapolated
+        previous_load_factor = previous_load_factor_in;
+        previous_step        = previous_step_in;
+        n_converged          = 2;
+      }
   }
 
 
@@ -210,6 +251,9 @@ namespace dealvem
     StepRecord record;
     record.step        = step;
     record.load_factor = load_factor;
+    // the factor of the prescribed values: the load factor, or 1 when the
+    // constraints hold the motion of the step itself
+    const double motion_factor = parameters.scale_prescribed_motion ? load_factor : 1.;
 
     const auto fail = [&](const std::string &reason) {
       record.converged = false;
@@ -236,7 +280,7 @@ namespace dealvem
     // the largest prescribed value, for the test that the constraints hold
     double prescribed = 0;
     for (const auto &line : constraints.get_lines())
-      prescribed = std::max(prescribed, std::abs(load_factor * line.inhomogeneity));
+      prescribed = std::max(prescribed, std::abs(motion_factor * line.inhomogeneity));
 
     const auto free_norm = [&](const dealii::Vector<double> &residual) {
       tmp = residual;
@@ -253,9 +297,9 @@ namespace dealvem
       {
         c = contact->complementarity_constant();
         for (unsigned int j = 0; j < m; ++j)
-          weight[j] = contact->get_pairs()[contact->pair_of(j)].weight;
+          weight[j] = contact->weight(j);
       }
-    FiniteStrainContact::Linearization lin;
+    FiniteStrainConstraints::Linearization lin;
     // r <- r - sum_j lambda_j dg_j/du; returns |phi|_2
     const auto add_contact = [&](const dealii::Vector<double> &u_at,
                                  const dealii::Vector<double> &lambda_at,
@@ -273,9 +317,19 @@ namespace dealvem
             for (unsigned int k = 0; k < lin.dofs.size(); ++k)
               residual[lin.dofs[k]] -= lambda_at[j] * lin.gradient[k];
           const double k_j = c * weight[j];
-          const double phi = contact->is_bilateral() ?
-                               k_j * lin.value :
-                               lambda_at[j] - std::min(0., lambda_at[j] + k_j * lin.value);
+          double       phi = 0;
+          const auto kind = contact->kind(j);
+          if (kind == FiniteStrainConstraints::Kind::equality)
+            phi = k_j * lin.value;
+          else if (kind == FiniteStrainConstraints::Kind::unilateral)
+            phi = lambda_at[j] - std::min(0., lambda_at[j] + k_j * lin.value);
+          else
+            {
+              // Coulomb: lambda_t = proj_[-b, b](lambda_t + c w s)
+              const unsigned int i     = contact->normal_of(j);
+              const double       bound = contact->friction_coefficient_of(j) * std::max(0., -lambda_at[i]);
+              phi = lambda_at[j] - std::clamp(lambda_at[j] + k_j * lin.value, -bound, bound);
+            }
           phi2 += phi * phi;
         }
       return std::sqrt(phi2);
@@ -312,7 +366,17 @@ namespace dealvem
               }
           }
       }
-    std::vector<bool> active(m, false), previous_active;
+    // the state of every constraint at the iterate: out of the system
+    // (multiplier zero), a constraint row (active normal contact, tied,
+    // stick), or slip in the positive or negative tangential direction
+    enum State : int
+    {
+      inactive   = 0,
+      constraint = 1,
+      slip_plus  = 2,
+      slip_minus = 3
+    };
+    std::vector<int> active(m, inactive), previous_active;
     for (unsigned int it = 0;; ++it)
       {
         // the update's constraints: what the iterate misses of
@@ -320,7 +384,7 @@ namespace dealvem
         double mismatch = 0;
         for (const auto &line : constraints.get_lines())
           {
-            double target = load_factor * line.inhomogeneity;
+            double target = motion_factor * line.inhomogeneity;
             for (const auto &entry : line.entries)
               target += entry.second * u[entry.first];
             const double miss = target - u[line.index];
@@ -347,7 +411,7 @@ namespace dealvem
         // contact: the active set of the iterate, the constraint rows and
         // the geometric stiffness
         double       phi_norm = 0;
-        unsigned int n_active = 0;
+        unsigned int n_active = 0, n_slip = 0;
         if (contact != nullptr)
           {
             previous_active = active;
@@ -360,31 +424,67 @@ namespace dealvem
                   scale = std::max({scale, std::abs(lambda[j]) / weight[j], c * std::abs(g[j])});
                 }
             for (unsigned int j = 0; j < m; ++j)
-              active[j] = !contact->is_left_out(j) &&
-                          (contact->is_bilateral() || -lambda[j] / weight[j] - c * g[j] > -1e-12 * scale);
+              {
+                active[j] = inactive;
+                if (contact->is_left_out(j))
+                  continue;
+                if (contact->kind(j) == FiniteStrainConstraints::Kind::equality)
+                  active[j] = constraint;
+                else if (contact->kind(j) == FiniteStrainConstraints::Kind::unilateral)
+                  active[j] = (-lambda[j] / weight[j] - c * g[j] > -1e-12 * scale) ? constraint : inactive;
+              }
+            // Coulomb (after the normal states): stick where the trial force
+            // lambda_t + c w s lies within the bound mu |lambda_n|, else slip
+            for (unsigned int j = 0; j < m; ++j)
+              if (contact->kind(j) == FiniteStrainConstraints::Kind::friction && !contact->is_left_out(j))
+                {
+                  const unsigned int i = contact->normal_of(j);
+                  if (active[i] == inactive)
+                    continue;
+                  const double bound = contact->friction_coefficient_of(j) * std::max(0., -lambda[i]);
+                  const double trial = lambda[j] + c * weight[j] * g[j];
+                  if (std::abs(trial) <= bound + 1e-12 * scale * weight[j])
+                    active[j] = constraint;
+                  else
+                    active[j] = trial > 0 ? slip_plus : slip_minus;
+                }
             for (unsigned int j = 0; j < m; ++j)
               {
-                if (!active[j])
+                if (active[j] == inactive)
                   {
                     tangent.add(n + j, n + j, c * weight[j]);
                     continue;
                   }
-                ++n_active;
+                if (contact->kind(j) != FiniteStrainConstraints::Kind::friction)
+                  ++n_active;
+                else if (active[j] != constraint)
+                  ++n_slip;
                 contact->linearize(j, u, lin, true);
                 const unsigned int                           nd = lin.dofs.size();
                 dealii::FullMatrix<double>                   M(nd + 1, nd + 1);
                 dealii::Vector<double>                       b(nd + 1);
                 std::vector<dealii::types::global_dof_index> indices = lin.dofs;
                 indices.push_back(n + j);
+                const bool slip = (active[j] != constraint);
                 for (unsigned int k = 0; k < nd; ++k)
                   {
                     for (unsigned int l = 0; l < nd; ++l)
                       M(k, l) = lambda[j] * lin.hessian(k, l);
                     M(k, nd) = lin.gradient[k];
-                    M(nd, k) = lin.gradient[k];
+                    M(nd, k) = slip ? 0. : lin.gradient[k];
                   }
-                b[nd] = -lin.value;
+                b[nd] = slip ? 0. : -lin.value;
+                // slip: c w (lambda_t + mu sigma lambda_n) = 0 (scaled as
+                // the rows of the inactive constraints)
+                if (slip)
+                  M(nd, nd) = c * weight[j];
                 update_constraints.distribute_local_to_global(M, b, indices, tangent, rhs);
+                if (slip)
+                  {
+                    const unsigned int i     = contact->normal_of(j);
+                    const double       sigma = (active[j] == slip_plus) ? 1. : -1.;
+                    tangent.add(n + j, n + i, c * weight[j] * contact->friction_coefficient_of(j) * sigma);
+                  }
               }
             phi_norm = add_contact(u, lambda, r);
           }
@@ -397,6 +497,7 @@ namespace dealvem
         iteration.update_norm       = 0;
         iteration.step_length       = 0;
         iteration.n_active          = n_active;
+        iteration.n_slip            = n_slip;
         iteration.contact_residual  = phi_norm;
         const double tolerance      = std::max(parameters.residual_tolerance * F_ref, absolute_tolerance);
         if (!moves_prescribed && r_norm <= tolerance && phi_norm <= tolerance &&
@@ -426,7 +527,7 @@ namespace dealvem
           du[i] = x[i];
         lambda_new.reinit(m);
         for (unsigned int j = 0; j < m; ++j)
-          lambda_new[j] = active[j] ? x[n + j] : 0.;
+          lambda_new[j] = (active[j] != inactive) ? x[n + j] : 0.;
 
         // backtracking: halve alpha while the trial inverts a cell or (for
         // an update that keeps the prescribed DoFs) does not decrease the
@@ -497,24 +598,20 @@ namespace dealvem
 
     // pairs whose gap the displacement constraints fix: the prescribed
     // motion must not make them penetrate (or, tied, move apart)
-    if (contact != nullptr)
+    if (contact != nullptr && parameters.check_fixed_pairs)
       for (unsigned int j = 0; j < m; ++j)
         {
-          const unsigned int i = contact->pair_of(j);
-          if (!contact->is_fixed(i) || contact->get_pairs()[i].junction)
+          const auto kind = contact->kind(j);
+          // (the slip of Coulomb friction may be anything)
+          if (!contact->is_prescribed(j) || kind == FiniteStrainConstraints::Kind::friction)
             continue;
           const double g = contact->value(j, u);
-          if ((contact->is_bilateral() && std::abs(g) > 1e-10 * length_scale) ||
-              (!contact->is_bilateral() && g < -1e-10 * length_scale))
-            {
-              const auto &p = contact->get_pairs()[i];
-              fail("the displacement constraints fix both nodes of the contact pair at (" +
-                   number(p.slave_location[0]) + ", " + number(p.slave_location[1]) + ") of interface " +
-                   std::to_string(p.interface) + ", and they make its " +
-                   (contact->is_tangential(j) ? "tangential" : "normal") + " constraint " +
-                   (contact->is_bilateral() ? "fail (value " : "penetrate (gap ") + number(g) +
-                   "): the prescribed motions of the two bodies contradict the contact.");
-            }
+          if ((kind == FiniteStrainConstraints::Kind::equality && std::abs(g) > 1e-10 * length_scale) ||
+              (kind == FiniteStrainConstraints::Kind::unilateral && g < -1e-10 * length_scale))
+            fail("the displacement constraints fix both nodes of " + contact->describe(j) + ", and they make its " +
+                 "constraint " + std::to_string(j) + " " +
+                 (kind == FiniteStrainConstraints::Kind::equality ? "fail (value " : "penetrate (gap ") + number(g) +
+                 "): the prescribed motions of the two bodies contradict the contact.");
         }
     previous_solution    = solution;
     previous_multipliers = multipliers;
@@ -543,8 +640,11 @@ namespace dealvem
       << (record.extrapolated ? " (from the extrapolated state)" : "")
       << (record.restarted ? " (restarted from the last converged state: the extrapolated start failed)" : "")
       << "\n";
+    bool with_slip = false;
+    for (const auto &it : record.iterations)
+      with_slip = with_slip || it.n_slip > 0;
     s << "    it   |r|          |r|/F_ref    |alpha du|   alpha"
-      << (record.with_contact ? "    active   |phi|" : "") << "\n";
+      << (record.with_contact ? "    active   |phi|" : "") << (with_slip ? "        slip" : "") << "\n";
     for (unsigned int i = 0; i < record.iterations.size(); ++i)
       {
         const auto &it = record.iterations[i];
@@ -554,6 +654,8 @@ namespace dealvem
         if (record.with_contact)
           s << "   " << std::setw(6) << it.n_active << "   " << std::scientific << std::setprecision(3)
             << it.contact_residual << std::defaultfloat;
+        if (with_slip)
+          s << "   " << std::setw(5) << it.n_slip;
         s << "\n";
       }
     return s.str();

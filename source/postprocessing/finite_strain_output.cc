@@ -5,6 +5,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <dealvem/base/output_file.h>
+#include <dealvem/elasticity/hyperelastic_material.h>
 #include <dealvem/postprocessing/finite_strain_output.h>
 #include <dealvem/vem/vem_values.h>
 
@@ -15,6 +16,26 @@
 
 namespace dealvem
 {
+  dealii::Tensor<2, 2>
+  finite_strain_cauchy_stress(const ConstitutiveLaw<2> &law, const dealii::Tensor<2, 2> &F, double &J)
+  {
+    AssertThrow(law.has_finite_strain_response(),
+                dealii::ExcMessage("The law " + law.get_name() + " has no finite-strain response."));
+    const double det_F = dealii::determinant(F);
+    AssertThrow(std::isfinite(det_F) && det_F > 0,
+                dealii::ExcMessage("det F = " + std::to_string(det_F) + ": an inverted or collapsed state."));
+    // in plane stress the law knows its thickness stretch f: J = f det F
+    if (const auto *hyperelastic = dynamic_cast<const HyperelasticMaterial *>(&law))
+      {
+        J = hyperelastic->out_of_plane_stretch(F) * det_F;
+        return hyperelastic->cauchy_stress(F);
+      }
+    J = det_F;
+    return law.first_piola_kirchhoff_stress(F) * dealii::transpose(F) / det_F;
+  }
+
+
+
   template <int dim>
   void
   write_finite_strain_vtu_file(const std::string            &filename,
@@ -49,13 +70,13 @@ namespace dealvem
             dealii::Tensor<2, dim> F = grads[q];
             for (unsigned int d = 0; d < dim; ++d)
               F[d][d] += 1.;
-            const double J = dealii::determinant(F);
-            AssertThrow(std::isfinite(J) && J > 0,
-                        dealii::ExcMessage(what + "det F = " + std::to_string(J) + " at quadrature point " +
+            const double det_F = dealii::determinant(F);
+            AssertThrow(std::isfinite(det_F) && det_F > 0,
+                        dealii::ExcMessage(what + "det F = " + std::to_string(det_F) + " at quadrature point " +
                                            std::to_string(q) + " of cell " + std::to_string(c) +
                                            " (an inverted or collapsed cell)."));
-            const dealii::Tensor<2, dim> P = law.first_piola_kirchhoff_stress(F);
-            sigma_sum += (P * dealii::transpose(F)) / J * values.JxW(q);
+            double J = det_F;
+            sigma_sum += finite_strain_cauchy_stress(law, F, J) * values.JxW(q);
             J_sum += J * values.JxW(q);
             area += values.JxW(q);
           }

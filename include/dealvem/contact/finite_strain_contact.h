@@ -13,6 +13,7 @@
 
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/contact/node_insertion.h>
+#include <dealvem/elasticity/finite_strain_constraints.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <array>
@@ -90,8 +91,35 @@ namespace dealvem
    * the partners stay opposite each other (homogeneous deformations, a flat
    * interface of which one side stays flat) and an approximation of the
    * order of the relative tangential motion times the curvature otherwise.
+   * For finite sliding, FiniteSliding makes the pairs again in the current
+   * configuration at every load step and builds this class with that
+   * configuration as its base (Options::base).
+   *
+   * <h3>Coulomb friction</h3>
+   * With unilateral contact and Options::friction_coefficient $\mu > 0$,
+   * every pair gets a second, tangential constraint (constraint
+   * n_pairs() + i, as for tied contact) whose value is the slip since the
+   * base configuration,
+   * @f[ s(u) = a\cdot t(u) - a_o\cdot t(u_o), @f]
+   * with $a_o$ the vector between the pair's nodes in the configuration
+   * $u_o$ where the slip starts (Options::slip_origin, by default the base
+   * configuration, where $t(u_b) = t_0$); a pair whose gap across the
+   * chord of its normal side was open at $u_o$ (above $10^{-6}$ of the
+   * distance of its nodes plus the chord) has no history there: its slip
+   * is measured from Options::contact_origin, the configuration where the
+   * contact is taken to begin, or is $a\cdot t(u)$ itself without one (it
+   * sticks, once closed, with its nodes opposite each other). Its multiplier $\lambda_t$ is the friction force
+   * (the slave node receives $-\lambda_t\,\partial s/\partial x_B$);
+   * FiniteStrainSolver enforces the Coulomb law
+   * $\lambda_t = \mathrm{proj}_{[-\mu\lambda_n^-,\ \mu\lambda_n^-]}
+   * (\lambda_t + c\,w\,s)$, $\lambda_n^- = \max(0, -\lambda_n)$, by a
+   * semismooth Newton method: stick ($s = 0$ over the step) or slip
+   * ($\lambda_t = \mu\lambda_n^-\,\mathrm{sign}(\lambda_t + c\,w\,s)$).
+   * The law is the incremental (backward Euler) Coulomb law of a load
+   * step: its whole history is the base configuration, where the step
+   * started.
    */
-  class FiniteStrainContact
+  class FiniteStrainContact : public FiniteStrainConstraints
   {
   public:
     /**
@@ -109,6 +137,47 @@ namespace dealvem
                         const ContactSettings::Normal                normal,
                         const double                                 c);
 
+    /// What the constructor takes beyond the normal model.
+    struct Options
+    {
+      /// Coulomb friction coefficient $\mu \ge 0$ of unilateral contact
+      /// (0: frictionless), for every interface without its own entry.
+      double friction_coefficient = 0;
+      /// Friction coefficient per interface (in the order of the
+      /// constructor's interfaces; negative or missing entries use
+      /// friction_coefficient).
+      std::vector<double> friction_coefficients;
+      /// The base configuration $X + u_b$ in which the pairs were made and
+      /// their normals given (ContactNodePair::normal): the reference of
+      /// the turn angle, of the tied offsets and of the slip. Null: $u_b = 0$
+      /// (the pairs of node insertion in the reference configuration). The
+      /// vector is read by the constructor only.
+      const dealii::Vector<double> *base = nullptr;
+      /// The configuration $X + u_o$ from which the slip of Coulomb friction
+      /// is measured (where the load step started; FiniteSliding pairs the
+      /// nodes at the end of the step and measures the slip from its
+      /// start). Null: the base. Read by the constructor only.
+      const dealii::Vector<double> *slip_origin = nullptr;
+      /// For the pairs that were open at the slip origin (new contacts):
+      /// the configuration from which their slip is measured instead (the
+      /// point where they are taken to have touched; FiniteSliding: where
+      /// the first pass of the step made its pairs). Null: $a\cdot t$ itself
+      /// (they stick with their nodes opposite each other).
+      const dealii::Vector<double> *contact_origin = nullptr;
+    };
+
+    /**
+     * Constructor as above with @p options: Coulomb friction and the base
+     * configuration. Throws if a friction coefficient is negative or not
+     * finite, or positive with tied contact, or if the base vector does not
+     * have n_dofs() entries.
+     */
+    FiniteStrainContact(const VEMDoFHandler<2>                      &dof_handler,
+                        const std::vector<NodeInsertion::Interface> &interfaces,
+                        const ContactSettings::Normal                normal,
+                        const double                                 c,
+                        const Options                               &options);
+
     /// The normal model.
     ContactSettings::Normal
     get_model() const
@@ -125,7 +194,7 @@ namespace dealvem
 
     /// The complementarity constant given to the constructor.
     double
-    complementarity_constant() const
+    complementarity_constant() const override
     {
       return c;
     }
@@ -144,13 +213,29 @@ namespace dealvem
       return pairs.size();
     }
 
-    /// Number of constraints (multipliers): one per pair (unilateral), two
-    /// per pair (tied: constraint i is the normal one of pair i, constraint
-    /// n_pairs() + i the tangential one).
-    unsigned int
-    n_constraints() const
+    /// Whether unilateral contact has Coulomb friction (some interface
+    /// with $\mu > 0$): then every pair has a tangential constraint.
+    bool
+    is_frictional() const
     {
-      return (is_bilateral() ? 2 : 1) * pairs.size();
+      return frictional;
+    }
+
+    /// The friction coefficient of pair @p i (0 without friction).
+    double
+    friction_coefficient(const unsigned int i) const
+    {
+      return mu[i];
+    }
+
+    /// Number of constraints (multipliers): one per pair (frictionless
+    /// unilateral), two per pair (tied, or Coulomb friction: constraint i
+    /// is the normal one of pair i, constraint n_pairs() + i the tangential
+    /// one).
+    unsigned int
+    n_constraints() const override
+    {
+      return (is_bilateral() || frictional ? 2 : 1) * pairs.size();
     }
 
     /// The pair of constraint @p j.
@@ -160,7 +245,8 @@ namespace dealvem
       return j % pairs.size();
     }
 
-    /// Whether constraint @p j is a tangential one (tied contact).
+    /// Whether constraint @p j is a tangential one (tied contact or
+    /// Coulomb friction).
     bool
     is_tangential(const unsigned int j) const
     {
@@ -178,7 +264,7 @@ namespace dealvem
     /// Whether constraint @p j is left out: a junction pair or a pair fixed
     /// by the displacement constraints (see the class documentation).
     bool
-    is_left_out(const unsigned int j) const
+    is_left_out(const unsigned int j) const override
     {
       const unsigned int i = pair_of(j);
       return pairs[i].junction || fixed[i];
@@ -192,24 +278,65 @@ namespace dealvem
       return fixed[i];
     }
 
-    /// The value, gradient and Hessian of one constraint.
-    struct Linearization
+    /// Whether pair @p i is left out (a junction pair or fixed).
+    bool
+    is_pair_left_out(const unsigned int i) const
     {
-      /// $g_j(u)$: the current gap (unilateral), or the violation of the
-      /// tied constraint.
-      double value = 0;
-      /// The displacement DoFs the constraint depends on.
-      std::vector<dealii::types::global_dof_index> dofs;
-      /// $\partial g_j/\partial u$ at dofs.
-      dealii::Vector<double> gradient;
-      /// $\partial^2 g_j/\partial u^2$ over dofs.
-      dealii::FullMatrix<double> hessian;
-    };
+      return pairs[i].junction || fixed[i];
+    }
+
+    /// @name The interface of FiniteStrainSolver (FiniteStrainConstraints)
+    /// @{
+    Kind
+    kind(const unsigned int j) const override
+    {
+      if (is_bilateral())
+        return Kind::equality;
+      return is_tangential(j) ? Kind::friction : Kind::unilateral;
+    }
+
+    unsigned int
+    normal_of(const unsigned int j) const override
+    {
+      return pair_of(j);
+    }
+
+    double
+    friction_coefficient_of(const unsigned int j) const override
+    {
+      return mu[pair_of(j)];
+    }
+
+    /// The pair's tributary weight (ContactNodePair::weight).
+    double
+    weight(const unsigned int j) const override
+    {
+      return pairs[pair_of(j)].weight;
+    }
+
+    /// Calls mark_fixed_pairs().
+    void
+    mark_prescribed(const dealii::AffineConstraints<double> &constraints) override
+    {
+      mark_fixed_pairs(constraints);
+    }
+
+    /// Whether the pair of constraint @p j is fixed (and not a junction).
+    bool
+    is_prescribed(const unsigned int j) const override
+    {
+      return fixed[pair_of(j)] && !pairs[pair_of(j)].junction;
+    }
+
+    /// "the contact pair at (x, y) of interface i" (the slave location).
+    std::string
+    describe(const unsigned int j) const override;
+    /// @}
 
     /// The value of constraint @p j at the displacement @p u (n_dofs()
     /// entries).
     double
-    value(const unsigned int j, const dealii::Vector<double> &u) const;
+    value(const unsigned int j, const dealii::Vector<double> &u) const override;
 
     /// Value, gradient and Hessian of constraint @p j at @p u; the Hessian
     /// only if @p with_hessian.
@@ -217,7 +344,7 @@ namespace dealvem
     linearize(const unsigned int            j,
               const dealii::Vector<double> &u,
               Linearization                &result,
-              const bool                    with_hessian = true) const;
+              const bool                    with_hessian = true) const override;
 
     /**
      * Add the couplings of the constraints to @p dsp, of size n_dofs() +
@@ -225,10 +352,13 @@ namespace dealvem
      * displacement constraints @p constraints condensed as
      * VEMDoFHandler::make_sparsity_pattern() does: the constraint rows and
      * columns, the Hessian blocks among the DoFs of a constraint, and the
-     * diagonal of every multiplier.
+     * diagonal of every multiplier; with friction also the coupling of
+     * each tangential multiplier to its pair's normal one (the slip
+     * equation).
      */
     void
-    add_sparsity(dealii::DynamicSparsityPattern &dsp, const dealii::AffineConstraints<double> &constraints) const;
+    add_sparsity(dealii::DynamicSparsityPattern          &dsp,
+                 const dealii::AffineConstraints<double> &constraints) const override;
 
     /// The tributary weight of every pair in the current configuration: the
     /// weights of ContactNodePair::weight with the slave sub-edge lengths
@@ -259,7 +389,8 @@ namespace dealvem
       unsigned int         master_node = 0, slave_node = 0;
       std::vector<Chord>   chords;
       dealii::Tensor<1, 2> n0, t0;
-      double               tied_normal = 0, tied_tangential = 0; ///< (X_B - X_A).n0, .t0
+      double               tied_normal = 0, tied_tangential = 0; ///< (x_B - x_A).n0, .t0 at the base
+      double               slip_origin = 0; ///< a.t at the origin of the slip (Coulomb)
     };
 
     /// The angle theta of pair @p i at @p u (and, if not null, the values
@@ -270,6 +401,16 @@ namespace dealvem
     dealii::Point<2>
     position(const unsigned int node, const dealii::Vector<double> &u) const;
 
+    /// What the value of a constraint subtracts from $a\cdot e$: the base
+    /// offsets of tied contact and of the slip, 0 for the unilateral gap.
+    double
+    offset(const PairData &d, const bool tangential) const
+    {
+      if (tangential)
+        return is_bilateral() ? d.tied_tangential : d.slip_origin;
+      return is_bilateral() ? d.tied_normal : 0.;
+    }
+
     const VEMDoFHandler<2>      &dof_handler;
     ContactSettings::Normal      model;
     double                       c;
@@ -277,6 +418,8 @@ namespace dealvem
     std::vector<ContactSegment>  segments; ///< of all interfaces, pair indices global
     std::vector<PairData>        data;
     std::vector<bool>            fixed;
+    bool                         frictional = false;
+    std::vector<double>          mu; ///< friction coefficient of each pair
   };
 } // namespace dealvem
 

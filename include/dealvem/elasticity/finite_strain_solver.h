@@ -18,7 +18,7 @@
 
 namespace dealvem
 {
-  class FiniteStrainContact;
+  class FiniteStrainConstraints;
 
   /**
    * Newton's method with load steps for the finite-strain problem of a
@@ -111,6 +111,18 @@ namespace dealvem
    * $\|\phi\|_2 \le \max(\varepsilon_r F_{ref}, \varepsilon_a)$.
    * The iteration records get the number of active constraints and
    * $\|\phi\|_2$.
+   *
+   * With Coulomb friction (FiniteStrainContact::is_frictional()), each
+   * tangential constraint of an active pair is a row of the system too:
+   * where the trial force $\lambda_t + c\,w\,s$ lies within
+   * $\mu\max(0, -\lambda_n)$ the stick row $\partial s/\partial u\,\delta u
+   * = -s$, else the slip row
+   * $\lambda_t^{new} + \mu\sigma\lambda_n^{new} = 0$ with $\sigma$ the sign
+   * of the trial force (a row of multipliers only; the system is then not
+   * symmetric, which the direct solver does not mind). $\phi$ gets
+   * $\lambda_t - \mathrm{proj}_{[-b, b]}(\lambda_t + c\,w\,s)$, and the
+   * step has converged only when no pair changed between stick, slip and
+   * open in the last iteration.
    */
   template <int dim>
   class FiniteStrainSolver
@@ -143,6 +155,18 @@ namespace dealvem
       /// commercial codes do by default, instead of the last converged
       /// state; see the class documentation.
       bool extrapolate = true;
+      /// Whether the prescribed values of the constraints scale with the
+      /// load factor (the default: the constraints hold the full load).
+      /// false: the constraints hold the values of the step being solved
+      /// (set_constraints() before each step, as FiniteSliding does for
+      /// prescribed motions that do not follow the forces).
+      bool scale_prescribed_motion = true;
+      /// Whether a converged step checks the contact pairs whose nodes the
+      /// displacement constraints fix (FiniteStrainConstraints::is_prescribed()):
+      /// the prescribed motion must not make them penetrate (tied: move
+      /// apart). FiniteSliding checks them itself after the last pass of
+      /// the pairing, where the partners are opposite each other.
+      bool check_fixed_pairs = true;
     };
 
     /// One Newton iteration: the state it starts from and its update.
@@ -161,6 +185,8 @@ namespace dealvem
       unsigned int n_active = 0;
       /// With contact: the complementarity residual $\|\phi\|_2$ (force).
       double contact_residual = 0;
+      /// With Coulomb friction: the number of slipping pairs at the iterate.
+      unsigned int n_slip = 0;
     };
 
     /// One load step.
@@ -198,16 +224,17 @@ namespace dealvem
                        const Parameters                        &parameters);
 
     /**
-     * Enforce the contact constraints of @p contact (held by reference; it
+     * Enforce the constraints of @p contact (a FiniteStrainContact, or any
+     * FiniteStrainConstraints; held by reference; it
      * must outlive the solver and be built on the assembler's DoF handler)
      * in the following steps; see the class documentation. Marks the pairs
      * that the displacement constraints fix
-     * (FiniteStrainContact::mark_fixed_pairs()) and rebuilds the matrix
-     * for n_dofs() + FiniteStrainContact::n_constraints() unknowns. The
+     * (FiniteStrainConstraints::mark_prescribed()) and rebuilds the matrix
+     * for n_dofs() + FiniteStrainConstraints::n_constraints() unknowns. The
      * multipliers start at zero.
      */
     void
-    set_contact(FiniteStrainContact &contact);
+    set_contact(FiniteStrainConstraints &contact);
 
     /**
      * Replace the constraints by @p new_constraints (closed) from the next
@@ -221,6 +248,27 @@ namespace dealvem
      */
     void
     set_constraints(const dealii::AffineConstraints<double> &new_constraints);
+
+    /**
+     * Start the next step from the state @p u (displacement) and
+     * @p lambda (contact multipliers, n_constraints() of the contact set by
+     * set_contact(); empty without contact), taken as converged at
+     * @p load_factor and step number @p step; with @p previous_u, the
+     * displacement of the step before (at @p previous_load_factor,
+     * @p previous_step), the next step may start from the extrapolation
+     * (Parameters::extrapolate; the multipliers are not extrapolated). For
+     * a solver built on a new mesh (FiniteSliding: the state transferred
+     * from the last mesh). The history is kept. Throws if a size does not
+     * match or a value is not finite.
+     */
+    void
+    set_state(const dealii::Vector<double> &u,
+              const dealii::Vector<double> &lambda,
+              const double                  load_factor,
+              const unsigned int            step,
+              const dealii::Vector<double> *previous_u           = nullptr,
+              const double                  previous_load_factor = 0,
+              const unsigned int            previous_step        = 0);
 
     /// Solve the load steps $\lambda = n/N$, $n = 1..N$
     /// (Parameters::n_load_steps) from the current solution. Throws as
@@ -287,7 +335,7 @@ namespace dealvem
     dealii::Vector<double>            solution;
     dealii::Vector<double>            f_ext;
     /// The contact constraints (set_contact()), or null.
-    FiniteStrainContact              *contact = nullptr;
+    FiniteStrainConstraints          *contact = nullptr;
     dealii::Vector<double>            multipliers;
     /// The diameter of the mesh's bounding box.
     double                            length_scale = 0;

@@ -5,6 +5,7 @@
 #ifndef dealvem_postprocessing_finite_strain_output_h
 #define dealvem_postprocessing_finite_strain_output_h
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/elasticity/material_library.h>
@@ -17,6 +18,18 @@
 namespace dealvem
 {
   /**
+   * The in-plane Cauchy stress $\sigma = J^{-1}PF^T$ of @p law at the
+   * in-plane deformation gradient @p F, and in @p J the volume ratio: $J =
+   * \det F$ in plane strain, $J = f\det F$ in plane stress with the
+   * thickness stretch $f$ of the law (HyperelasticMaterial::
+   * out_of_plane_stretch()), so that $\sigma$ is the in-plane block of the
+   * 3D Cauchy stress in both models. Throws if @p law has no finite-strain
+   * response or $\det F \le 0$.
+   */
+  dealii::Tensor<2, 2>
+  finite_strain_cauchy_stress(const ConstitutiveLaw<2> &law, const dealii::Tensor<2, 2> &F, double &J);
+
+  /**
    * Write a finite-strain state as a VTK XML unstructured grid (.vtu,
    * ASCII) for ParaView: the polygons (VTK_POLYGON cells) at their
    * reference positions with
@@ -25,8 +38,10 @@ namespace dealvem
    *   deformed body;
    * - cell data: "cauchy_stress" (xx, yy, xy of the in-plane Cauchy stress
    *   $\sigma = J^{-1}PF^T$, averaged over the cell's quadrature points with
-   *   their reference weights), "det_F" (the mean of $J = \det F$ over the
-   *   cell, its area ratio), "body_id" (material id) and "cell_id".
+   *   their reference weights; finite_strain_cauchy_stress()), "det_F"
+   *   (the mean of $J$ over the cell: its area ratio in plane strain, its
+   *   volume ratio $f\det F$ in plane stress), "body_id" (material id) and
+   *   "cell_id".
    *
    * $F = I + \Pi^0_{k-1}\nabla u$ at the quadrature points of each cell
    * (VEMValues::get_function_gradient_projections()), and $P(F)$ from the

@@ -1,0 +1,370 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#ifndef dealvem_contact_finite_sliding_h
+#define dealvem_contact_finite_sliding_h
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+
+#include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/node_insertion.h>
+#include <dealvem/elasticity/finite_strain_solver.h>
+#include <dealvem/elasticity/material_library.h>
+#include <dealvem/mesh/polygonal_mesh.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace dealvem
+{
+  class FiniteStrainContact;
+  template <int dim>
+  class VEMDoFHandler;
+  template <int dim>
+  class FiniteStrainAssembler;
+
+  /**
+   * Contact at finite strain with finite sliding: node insertion made
+   * again in the current configuration at every load step.
+   *
+   * Node-to-node contact after node insertion is exact while the partners
+   * stay opposite each other. When the bodies slide by more than a small
+   * part of an edge, the pairs of the reference configuration tear apart.
+   * This class keeps the <em>original</em> mesh $M_0$ (without inserted
+   * nodes) and, before every load step $n$:
+   *
+   * 1. <b>Pairs in the current configuration.</b> The vertices of $M_0$ are
+   *    moved to their current positions $x = X + u(X)$ (a copy $C$; in the
+   *    first pass of a step, $u$ is the linear extrapolation in time of
+   *    the last two steps, where the step is expected to end, or the last
+   *    step's state $u_{n-1}$ when there is no such extrapolation),
+   *    and NodeInsertion::insert() pairs the interface nodes of $C$ by
+   *    projection, splitting the edges of $C$ where a partner lands. No
+   *    gap is closed and no vertex moved (Parameters::insertion has
+   *    Settings::close_discretisation_gaps = false and a merge fraction of
+   *    $10^{-9}$): every gap the insertion sees is real, and a partner that
+   *    lands closer than $10^{-9}$ edge lengths to a vertex is paired with it.
+   * 2. <b>Back to the reference configuration.</b> A vertex inserted into
+   *    the original edge $(a, b)$ of $C$ at the chord parameter
+   *    $s = (x - x_a)\cdot(x_b - x_a)/|x_b - x_a|^2$ is a vertex of the new
+   *    reference mesh $M_n$ at $X = X_a + s\,(X_b - X_a)$: the material
+   *    point the partner faces now. For $k = 2$ the current edge is the
+   *    curve $x(s) = X(s) + u(s)$ with the quadratic trace $u$, not the
+   *    chord: $s$ is corrected by a Gauss-Newton iteration to the point of
+   *    the curve closest to the partner. $M_n$ is $M_0$ with these vertices, so
+   *    the nodes inserted at earlier steps that no longer face a partner
+   *    are gone.
+   * 3. <b>The state on the new mesh.</b> The displacement $u_{n-1}$ is
+   *    carried over node by node: the vertices and the cell moments of
+   *    $M_0$ keep their values; a node on an interface edge (an inserted
+   *    vertex, a sub-edge midpoint for $k = 2$) takes the value of the
+   *    trace of $u_{n-1}$ on that edge at its parameter $s$ (the trace is
+   *    a polynomial of degree $k$ on each sub-edge of $M_{n-1}$, so this is
+   *    exact for the nodes it adds, and the trace of a removed node is
+   *    replaced by its interpolant). The multipliers start from the
+   *    pressure and friction traction of the nearest old pair, times the
+   *    new tributary weight.
+   * 4. <b>The step.</b> A FiniteStrainContact is built on the new pairs
+   *    with the configuration where they were made as its base
+   *    (FiniteStrainContact::Options::base: normals and turn angles) and
+   *    the configuration where the step started as the origin of the slip
+   *    (Options::slip_origin). FiniteStrainSolver solves the step with its
+   *    semismooth Newton method (frictionless or Coulomb friction).
+   * 5. <b>Pairs at the end of the step.</b> Within the step the pairs are
+   *    fixed, so partners that slide apart by $\delta$ transmit their
+   *    force between points $\delta$ apart: a couple of the order of
+   *    $\lambda\delta$, which the turning normal of the consistent
+   *    linearization spreads over the neighbouring nodes. The pairing is
+   *    therefore made again at the converged state and the step solved
+   *    again from it (steps 1--4 with the new state as the pairing
+   *    configuration; the slip is still measured from the start of the
+   *    step), until the partners of every active pair coincide at
+   *    convergence: the largest tangential distance of partners over the
+   *    shortest sub-edge at the pair is below Parameters::pairing_tolerance
+   *    (StepRecord::pairing_offset, StepRecord::n_passes). The state each
+   *    pass starts from is the last pass's, so the later passes take one
+   *    or two Newton updates.
+   *
+   * <h3>Frictional history</h3>
+   * Coulomb friction is enforced by Lagrange multipliers in its incremental
+   * form: a pair sticks ($s = 0$ over the step) or slips with the force
+   * $\mu\lambda_n$. The history of that law is the position where the step
+   * starts, and the pairs are made at that position: the history of a
+   * pair moves with its material point by construction. The only state
+   * that has to move between the meshes is the multipliers, which serve
+   * as Newton's first iterate.
+   *
+   * <h3>Limits</h3>
+   * - Pairs are made between Newton solves (step 5), not within one; the
+   *   first pass of a step pairs where the step starts, so a step should
+   *   not slide by more than about one sub-edge (StepRecord::max_slip: the
+   *   largest slip of the step over the shortest slave sub-edge at its
+   *   pair).
+   * - The stabilization of each pass is frozen at the state the pass starts
+   *   from (FiniteStrainSolver), the end of the last pass.
+   * - For $k = 2$ the partners are found on the chords of the current
+   *   edges, then moved onto the curves (step 2); the midpoints of two
+   *   paired sub-edges that curve differently are apart by the difference
+   *   of the two parametrizations, $O(h^3\kappa)$, which
+   *   StepRecord::pairing_offset does not count (vertex pairs only).
+   * - Tied contact (Normal::tied) makes its pairs once, in the reference
+   *   configuration, and keeps them: it does not slide.
+   */
+  class FiniteSliding
+  {
+  public:
+    /// One contact interface: the boundary ids of its two sides and its
+    /// friction coefficient.
+    struct InterfaceData
+    {
+      /// The boundary id of the master side.
+      dealii::types::boundary_id master_id = 0;
+      /// The boundary id of the slave side.
+      dealii::types::boundary_id slave_id = 0;
+      /// Coulomb friction coefficient (0: frictionless).
+      double friction_coefficient = 0;
+    };
+
+    /// The settings.
+    struct Parameters
+    {
+      /// The order k of the virtual elements (1 or 2).
+      unsigned int degree = 1;
+      /// Unilateral (frictionless or Coulomb) or tied.
+      ContactSettings::Normal normal = ContactSettings::Normal::unilateral;
+      /// The complementarity constant $c$ (FiniteStrainContact), a
+      /// stiffness per length; 0: $E_{min}/h_{min}$, the smallest
+      /// characteristic stiffness of the laws over the smallest cell
+      /// diameter of the original mesh.
+      double complementarity_constant = 0;
+      /// Make the pairs again at every step (finite sliding); false keeps
+      /// the pairs of the reference configuration (small sliding).
+      bool reinsert = true;
+      /// The rules of node insertion (see the class documentation for the
+      /// defaults, which differ from NodeInsertion's).
+      NodeInsertion::Settings insertion = default_insertion();
+      /// Newton's controls; scale_prescribed_motion is set to false (the
+      /// constraints function gives the motion at the time of the step).
+      FiniteStrainSolver<2>::Parameters newton;
+      /// The pairs of a step are made again at its converged state until
+      /// the largest tangential distance of the partners of an active pair,
+      /// over the shortest slave sub-edge at the pair, is below this.
+      double pairing_tolerance = 1e-9;
+      /// At most this many passes (pairing and Newton solve) per step; a
+      /// step that does not meet the tolerance then throws, naming the
+      /// offset.
+      unsigned int max_pairing_passes = 8;
+
+      /// NodeInsertion::Settings without gap closing and without merges
+      /// beyond $10^{-9}$ edge lengths.
+      static NodeInsertion::Settings
+      default_insertion();
+    };
+
+    /// The Dirichlet constraints at the time @p time on @p dof_handler
+    /// (the values of that time, not scaled): fill @p constraints and close
+    /// them. Called for every step, on the mesh of the step.
+    using ConstraintsFunction = std::function<
+      void(const VEMDoFHandler<2> &dof_handler, const double time, dealii::AffineConstraints<double> &constraints)>;
+
+    /// Add the loads (body force, tractions) to a new assembler; the
+    /// functions given to it must outlive this object.
+    using LoadsFunction = std::function<void(FiniteStrainAssembler<2> &assembler)>;
+
+    /// What a load step did.
+    struct StepRecord
+    {
+      /// The step number.
+      unsigned int step = 0;
+      /// The time of the step.
+      double time = 0;
+      /// The load factor of the forces at that time.
+      double load_factor = 0;
+      /// Newton's record of each pass of the step.
+      std::vector<FiniteStrainSolver<2>::StepRecord> newton;
+      /// Number of passes (pairing and Newton solve) of the step.
+      unsigned int n_passes = 0;
+      /// After the last pass: the largest tangential distance of the
+      /// partners of an active vertex pair over the shortest slave sub-edge
+      /// there.
+      double pairing_offset = 0;
+      /// The pairing offset after each pass (the fixed-point history).
+      std::vector<double> pairing_offsets;
+      /// Vertices inserted into $M_0$ for the last pass of the step.
+      unsigned int n_inserted = 0;
+      /// Node pairs of the last pass.
+      unsigned int n_pairs = 0;
+      /// DoFs of the step's mesh.
+      unsigned int n_dofs = 0;
+      /// Wall time of pairing, new mesh, DoFs, transfer and the setup of
+      /// the solver (seconds, all passes).
+      double setup_time = 0;
+      /// Wall time of the Newton solves (seconds, all passes).
+      double solve_time = 0;
+      /// The normal part of the contact force on the slave side of each
+      /// interface (current configuration, per unit thickness).
+      std::vector<dealii::Tensor<1, 2>> normal_force;
+      /// The friction part of that force.
+      std::vector<dealii::Tensor<1, 2>> friction_force;
+      /// Number of active pairs at convergence.
+      unsigned int n_active = 0;
+      /// Number of slipping pairs at convergence.
+      unsigned int n_slipping = 0;
+      /// The largest |slip| of the step over the shortest slave sub-edge
+      /// at its pair (current lengths).
+      double max_slip = 0;
+    };
+
+    /**
+     * Constructor: the original mesh @p mesh (copied; every body, with the
+     * boundary ids of the interfaces and no inserted nodes), the laws by
+     * material id, the interfaces, and the settings. Throws if there is no
+     * interface, the degree is not 1 or 2, a friction coefficient is
+     * negative or given with tied contact, or a setting is out of range.
+     */
+    FiniteSliding(const PolygonalMesh<2>           &mesh,
+                  const MaterialLibrary<2>         &laws,
+                  const std::vector<InterfaceData> &interfaces,
+                  const Parameters                 &parameters);
+
+    ~FiniteSliding();
+
+    /// The Dirichlet constraints (required before the first step).
+    void
+    set_constraints_function(const ConstraintsFunction &f);
+
+    /// The loads and, optionally, the load factor of the forces as a
+    /// function of time (default: the time itself).
+    void
+    set_loads(const LoadsFunction &f, const std::function<double(double)> &load_factor = {});
+
+    /// Solve the step @p step at the time @p time from the last converged
+    /// state. Throws (FiniteStrainSolver's message, with the step) if Newton
+    /// fails; the state stays at the last converged step, on the step's
+    /// mesh.
+    void
+    solve_step(const unsigned int step, const double time);
+
+    /// Steps 1..n at the times $t_0 + (t_1 - t_0)\,i/n$.
+    void
+    run(const unsigned int n_steps, const double t0 = 0, const double t1 = 1);
+
+    /// The mesh of the last step (reference coordinates, with its inserted
+    /// vertices).
+    const PolygonalMesh<2> &
+    get_mesh() const;
+
+    /// The original mesh $M_0$.
+    const PolygonalMesh<2> &
+    get_original_mesh() const
+    {
+      return original;
+    }
+
+    /// The DoF handler of the last step's mesh.
+    const VEMDoFHandler<2> &
+    get_dof_handler() const;
+
+    /// The displacement of the last converged step on get_dof_handler().
+    const dealii::Vector<double> &
+    get_solution() const;
+
+    /// Its multipliers (FiniteStrainContact's constraints).
+    const dealii::Vector<double> &
+    get_multipliers() const;
+
+    /// The contact constraints of the last step (its pairs, normals,
+    /// weights).
+    const FiniteStrainContact &
+    get_contact() const;
+
+    /// The interfaces of the last pairing (pairs in the current
+    /// configuration of the start of the last step).
+    const std::vector<NodeInsertion::Interface> &
+    get_interfaces() const
+    {
+      return interfaces;
+    }
+
+    /// One record per converged step.
+    const std::vector<StepRecord> &
+    get_history() const
+    {
+      return history;
+    }
+
+  private:
+    /// A mesh with its DoF handler (the handler refers to the mesh).
+    struct Discretization
+    {
+      std::unique_ptr<PolygonalMesh<2>> mesh;
+      std::unique_ptr<VEMDoFHandler<2>> dof_handler;
+      ~Discretization();
+    };
+
+    /// Pair in the configuration @p u_pair (on the current mesh), make the
+    /// new mesh and DoF handler, transfer the states, build the contact
+    /// and the solver. @p first_pass: the step starts from the last
+    /// converged state (else from @p u_pair at the step's own load factor).
+    void
+    prepare_pass(const double time, const double load_factor, const unsigned int step, const bool first_pass,
+                 StepRecord &record);
+
+    /// The values of the states @p u (on @p from) at the nodes of @p to.
+    dealii::Vector<double>
+    transfer(const Discretization &from, const dealii::Vector<double> &u, const Discretization &to) const;
+
+    /// The tangential offsets and the slip of the pairs at the solution
+    /// (StepRecord::pairing_offset, max_slip) and the forces.
+    void
+    evaluate(StepRecord &record) const;
+
+    PolygonalMesh<2>           original;
+    MaterialLibrary<2>         laws;
+    std::vector<InterfaceData> interface_data;
+    Parameters                 parameters;
+    ConstraintsFunction        constraints_function;
+    LoadsFunction              loads_function;
+    std::function<double(double)> load_factor_function;
+
+    /// The original edges of the interfaces: (a, b, cell) of $M_0$.
+    std::vector<std::array<unsigned int, 3>> interface_edges;
+
+    /// The discretization of the current pass and that of the start of the
+    /// step (the last converged step's; null before the first step).
+    std::unique_ptr<Discretization>           current, start;
+    std::unique_ptr<FiniteStrainAssembler<2>> assembler;
+    std::unique_ptr<FiniteStrainContact>      contact;
+    std::unique_ptr<FiniteStrainSolver<2>>    solver;
+    std::vector<NodeInsertion::Interface>     interfaces;
+    dealii::AffineConstraints<double>         constraints;
+
+    /// On the current discretization: the state of the last pass (the last
+    /// converged step after a step).
+    dealii::Vector<double> solution, multipliers;
+    /// On the start discretization: the last two converged steps (the
+    /// second for the extrapolation; empty before two steps).
+    dealii::Vector<double> start_solution, start_previous_solution, start_multipliers;
+    /// Whether the last solve_step() failed (the start of the step stays).
+    bool last_failed = false;
+    /// The discretization of the first pass of the step that made its pairs
+    /// where the step is expected to end (an extrapolation, or the end of
+    /// a pass), and that configuration: where the contacts that begin
+    /// within the step are taken to begin (FiniteStrainContact::Options::
+    /// contact_origin).
+    std::unique_ptr<Discretization> first_pass_disc;
+    dealii::Vector<double>          first_pass_pairing;
+    double                 last_time = 0, previous_time = 0;
+    double                 last_load_factor = 0, previous_load_factor = 0;
+    unsigned int           last_step = 0, previous_step = 0, n_converged = 0;
+    std::vector<StepRecord> history;
+  };
+} // namespace dealvem
+
+#endif

@@ -1,0 +1,782 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+
+#include <dealvem/base/number_string.h>
+#include <dealvem/contact/finite_sliding.h>
+#include <dealvem/contact/finite_strain_contact.h>
+#include <dealvem/elasticity/finite_strain_assembler.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace dealvem
+{
+  namespace
+  {
+    // The nodes of an original interface edge (a, b) of M_0 in a mesh made
+    // from M_0 by splitting edges: the vertices from a to b along the loop
+    // of the edge's cell, their parameters s on the chord (in that mesh's
+    // coordinates, or in the coordinates of the given points), and the
+    // sub-edges between them.
+    struct Chain
+    {
+      std::vector<unsigned int> vertices;
+      std::vector<double>       s;
+      std::vector<unsigned int> edges;
+    };
+
+    Chain
+    make_chain(const PolygonalMesh<2> &mesh, const unsigned int a, const unsigned int b, const unsigned int cell,
+               const std::vector<dealii::Point<2>> &x)
+    {
+      Chain       chain;
+      const auto &loop = mesh.cell(cell).vertices;
+      const auto  n    = loop.size();
+      const auto  it   = std::find(loop.begin(), loop.end(), a);
+      AssertThrow(it != loop.end(), dealii::ExcInternalError());
+      unsigned int i = it - loop.begin();
+      const dealii::Tensor<1, 2> d  = x[b] - x[a];
+      const double               dd = d.norm_square();
+      for (unsigned int k = 0; k <= n; ++k, i = (i + 1) % n)
+        {
+          const unsigned int v = loop[i];
+          chain.vertices.push_back(v);
+          chain.s.push_back(v == a ? 0. : (v == b ? 1. : (x[v] - x[a]) * d / dd));
+          if (v == b)
+            break;
+          chain.edges.push_back(mesh.cell(cell).edges[i]);
+        }
+      AssertThrow(chain.vertices.back() == b,
+                  dealii::ExcMessage("FiniteSliding: the interface edge (" + std::to_string(a) + ", " +
+                                     std::to_string(b) + ") is not a run of the loop of cell " +
+                                     std::to_string(cell) + "."));
+      return chain;
+    }
+
+    // the trace of the field @p u (DoF handler @p dofs of @p mesh) on the
+    // chain at the parameter s, component comp
+    double
+    trace_value(const Chain &chain, const VEMDoFHandler<2> &dofs, const dealii::Vector<double> &u, const double s,
+                const unsigned int comp)
+    {
+      unsigned int i = 0;
+      while (i + 2 < chain.vertices.size() && s > chain.s[i + 1])
+        ++i;
+      const double len = chain.s[i + 1] - chain.s[i];
+      const double t   = len > 0 ? (s - chain.s[i]) / len : 0.;
+      const double u0  = u[VEMDoFHandler<2>::node_dof(dofs.vertex_node(chain.vertices[i]), comp)];
+      const double u1  = u[VEMDoFHandler<2>::node_dof(dofs.vertex_node(chain.vertices[i + 1]), comp)];
+      if (dofs.get_degree() == 1)
+        return (1 - t) * u0 + t * u1;
+      const double um = u[VEMDoFHandler<2>::node_dof(dofs.edge_node(chain.edges[i]), comp)];
+      // quadratic through (0, u0), (1/2, um), (1, u1)
+      return u0 * (1 - t) * (1 - 2 * t) + um * 4 * t * (1 - t) + u1 * t * (2 * t - 1);
+    }
+
+    std::uint64_t
+    edge_key(const unsigned int a, const unsigned int b)
+    {
+      return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+    }
+
+    dealii::Tensor<1, 2>
+    turn_left(const dealii::Tensor<1, 2> &v)
+    {
+      dealii::Tensor<1, 2> r;
+      r[0] = -v[1];
+      r[1] = v[0];
+      return r;
+    }
+  } // namespace
+
+
+
+  NodeInsertion::Settings
+  FiniteSliding::Parameters::default_insertion()
+  {
+    NodeInsertion::Settings s;
+    s.merge_fraction            = 1e-9;
+    s.close_discretisation_gaps = false;
+    return s;
+  }
+
+
+
+  FiniteSliding::Discretization::~Discretization()
+  {
+    dof_handler.reset();
+    mesh.reset();
+  }
+
+
+
+  FiniteSliding::FiniteSliding(const PolygonalMesh<2>           &mesh_in,
+                               const MaterialLibrary<2>         &laws,
+                               const std::vector<InterfaceData> &interfaces_in,
+                               const Parameters                 &parameters_in)
+    : original(mesh_in)
+    , laws(laws)
+    , interface_data(interfaces_in)
+    , parameters(parameters_in)
+  {
+    AssertThrow(!interface_data.empty(), dealii::ExcMessage("FiniteSliding: no contact interface given."));
+    AssertThrow(parameters.degree == 1 || parameters.degree == 2,
+                dealii::ExcMessage("FiniteSliding: the degree must be 1 or 2, not " +
+                                   std::to_string(parameters.degree) + "."));
+    AssertThrow(std::isfinite(parameters.complementarity_constant) && parameters.complementarity_constant >= 0,
+                dealii::ExcMessage("FiniteSliding: the complementarity constant must be positive (or 0 for the "
+                                   "default rule)."));
+    AssertThrow(std::isfinite(parameters.pairing_tolerance) && parameters.pairing_tolerance > 0,
+                dealii::ExcMessage("FiniteSliding: the pairing tolerance must be positive."));
+    AssertThrow(parameters.max_pairing_passes >= 1,
+                dealii::ExcMessage("FiniteSliding: max_pairing_passes must be at least 1."));
+    std::set<dealii::types::boundary_id> ids;
+    for (unsigned int i = 0; i < interface_data.size(); ++i)
+      {
+        const double mu = interface_data[i].friction_coefficient;
+        AssertThrow(std::isfinite(mu) && mu >= 0,
+                    dealii::ExcMessage("FiniteSliding: interface " + std::to_string(i) +
+                                       " has the friction coefficient " + std::to_string(mu) +
+                                       "; it must be finite and not negative."));
+        AssertThrow(mu == 0 || parameters.normal == ContactSettings::Normal::unilateral,
+                    dealii::ExcMessage("FiniteSliding: interface " + std::to_string(i) +
+                                       " has friction, but the contact is tied."));
+        ids.insert(interface_data[i].master_id);
+        ids.insert(interface_data[i].slave_id);
+      }
+    for (unsigned int e = 0; e < original.n_edges(); ++e)
+      {
+        const auto &edge = original.edge(e);
+        if (edge.at_boundary() && ids.count(edge.boundary_id) > 0)
+          interface_edges.push_back({{edge.vertices[0], edge.vertices[1], edge.cells[0]}});
+      }
+    if (parameters.complementarity_constant == 0)
+      parameters.complementarity_constant =
+        this->laws.min_characteristic_stiffness() / original.cell_diameter_range().first;
+    parameters.newton.scale_prescribed_motion = false;
+    parameters.newton.check_fixed_pairs       = !parameters.reinsert;
+    if (parameters.normal == ContactSettings::Normal::tied)
+      parameters.reinsert = false;
+  }
+
+
+
+  FiniteSliding::~FiniteSliding()
+  {
+    // the solver and the contact refer to the assembler and the DoF
+    // handler, which refers to the mesh
+    solver.reset();
+    contact.reset();
+    assembler.reset();
+    current.reset();
+    start.reset();
+    first_pass_disc.reset();
+  }
+
+
+
+  void
+  FiniteSliding::set_constraints_function(const ConstraintsFunction &f)
+  {
+    constraints_function = f;
+  }
+
+
+
+  void
+  FiniteSliding::set_loads(const LoadsFunction &f, const std::function<double(double)> &load_factor)
+  {
+    loads_function       = f;
+    load_factor_function = load_factor;
+  }
+
+
+
+  const PolygonalMesh<2> &
+  FiniteSliding::get_mesh() const
+  {
+    AssertThrow(current != nullptr, dealii::ExcMessage("FiniteSliding: no step has been solved yet."));
+    return *current->mesh;
+  }
+
+
+
+  const VEMDoFHandler<2> &
+  FiniteSliding::get_dof_handler() const
+  {
+    AssertThrow(current != nullptr, dealii::ExcMessage("FiniteSliding: no step has been solved yet."));
+    return *current->dof_handler;
+  }
+
+
+
+  const dealii::Vector<double> &
+  FiniteSliding::get_solution() const
+  {
+    return solution;
+  }
+
+
+
+  const dealii::Vector<double> &
+  FiniteSliding::get_multipliers() const
+  {
+    return multipliers;
+  }
+
+
+
+  const FiniteStrainContact &
+  FiniteSliding::get_contact() const
+  {
+    AssertThrow(contact != nullptr, dealii::ExcMessage("FiniteSliding: no step has been solved yet."));
+    return *contact;
+  }
+
+
+
+  dealii::Vector<double>
+  FiniteSliding::transfer(const Discretization &from, const dealii::Vector<double> &u_old,
+                          const Discretization &to) const
+  {
+    if (&from == &to)
+      return u_old;
+    const auto &old_mesh = *from.mesh;
+    const auto &old_dofs = *from.dof_handler;
+    const auto &new_mesh = *to.mesh;
+    const auto &new_dofs = *to.dof_handler;
+    const auto  n0       = original.n_vertices();
+    dealii::Vector<double> u_new(new_dofs.n_dofs());
+    const auto copy = [&](const unsigned int new_node, const unsigned int old_node) {
+      for (unsigned int comp = 0; comp < 2; ++comp)
+        u_new[VEMDoFHandler<2>::node_dof(new_node, comp)] = u_old[VEMDoFHandler<2>::node_dof(old_node, comp)];
+    };
+    // the vertices and the cell moments of M_0, and the edges of M_0 that
+    // are not interface edges, keep their values
+    for (unsigned int v = 0; v < n0; ++v)
+      copy(new_dofs.vertex_node(v), old_dofs.vertex_node(v));
+    if (parameters.degree == 2)
+      {
+        for (unsigned int cell = 0; cell < new_mesh.n_cells(); ++cell)
+          copy(new_dofs.cell_node(cell), old_dofs.cell_node(cell));
+        std::map<std::uint64_t, unsigned int> old_edges;
+        for (unsigned int e = 0; e < old_mesh.n_edges(); ++e)
+          {
+            const auto &ev = old_mesh.edge(e).vertices;
+            if (ev[0] < n0 && ev[1] < n0)
+              old_edges[edge_key(ev[0], ev[1])] = e;
+          }
+        for (unsigned int e = 0; e < new_mesh.n_edges(); ++e)
+          {
+            const auto &ev = new_mesh.edge(e).vertices;
+            if (ev[0] < n0 && ev[1] < n0)
+              {
+                const auto it = old_edges.find(edge_key(ev[0], ev[1]));
+                if (it != old_edges.end())
+                  copy(new_dofs.edge_node(e), old_dofs.edge_node(it->second));
+              }
+          }
+      }
+    // the nodes on the interface edges: the old trace at their parameters
+    for (const auto &[a, b, cell] : interface_edges)
+      {
+        const Chain new_chain = make_chain(new_mesh, a, b, cell, new_mesh.get_vertices());
+        const Chain old_chain = make_chain(old_mesh, a, b, cell, old_mesh.get_vertices());
+        const auto  set       = [&](const unsigned int node, const double s) {
+          for (unsigned int comp = 0; comp < 2; ++comp)
+            u_new[VEMDoFHandler<2>::node_dof(node, comp)] = trace_value(old_chain, old_dofs, u_old, s, comp);
+        };
+        for (unsigned int k = 1; k + 1 < new_chain.vertices.size(); ++k)
+          set(new_dofs.vertex_node(new_chain.vertices[k]), new_chain.s[k]);
+        if (parameters.degree == 2)
+          for (unsigned int k = 0; k + 1 < new_chain.vertices.size(); ++k)
+            set(new_dofs.edge_node(new_chain.edges[k]), 0.5 * (new_chain.s[k] + new_chain.s[k + 1]));
+      }
+    return u_new;
+  }
+
+
+
+  void
+  FiniteSliding::prepare_pass(const double time, const double load_factor, const unsigned int step,
+                              const bool first_pass, StepRecord &record)
+  {
+    const auto   clock  = std::chrono::steady_clock::now();
+    const auto   degree = parameters.degree;
+    const auto   n0     = original.n_vertices();
+    const double c      = parameters.complementarity_constant;
+
+    if (current != nullptr && !parameters.reinsert)
+      {
+        // small sliding: the pairs of the reference configuration stay
+        constraints.clear();
+        constraints_function(*current->dof_handler, time, constraints);
+        solver->set_constraints(constraints);
+        record.n_pairs = contact->n_pairs();
+        record.n_dofs  = current->dof_handler->n_dofs();
+        return;
+      }
+
+    // where the pairs are made: a later pass at the end of the last pass;
+    // the first pass of a step where the step is expected to end, the
+    // linear extrapolation of the last two steps in time (else where it
+    // starts)
+    const Discretization  *pair_disc = first_pass ? start.get() : current.get();
+    dealii::Vector<double> u_pair    = first_pass ? start_solution : solution;
+    const bool extrapolate = first_pass && n_converged >= 2 && start_previous_solution.size() == u_pair.size() &&
+                             last_time != previous_time;
+    // whether the pairs are made where the step is expected to end (an
+    // extrapolation or the end of a pass), not where it starts
+    bool predicted = !first_pass;
+    if (extrapolate)
+      {
+        const double s = (time - last_time) / (last_time - previous_time);
+        if (std::isfinite(s) && s > 0 && s <= 4)
+          {
+            u_pair.sadd(1. + s, -s, start_previous_solution);
+            predicted = true;
+          }
+      }
+
+    // 1. the original vertices at their positions there, paired by node
+    // insertion
+    std::vector<dealii::Point<2>>         x_pair(n0);
+    std::unique_ptr<Discretization>       next;
+    std::vector<NodeInsertion::Interface> new_interfaces;
+    const auto pair_at = [&](const dealii::Vector<double> &u) {
+      for (unsigned int v = 0; v < n0; ++v)
+        {
+          x_pair[v] = original.vertex(v);
+          if (pair_disc != nullptr)
+            for (unsigned int comp = 0; comp < 2; ++comp)
+              x_pair[v][comp] += u[VEMDoFHandler<2>::node_dof(pair_disc->dof_handler->vertex_node(v), comp)];
+        }
+      next       = std::make_unique<Discretization>();
+      next->mesh = std::make_unique<PolygonalMesh<2>>(original);
+      for (unsigned int v = 0; v < n0; ++v)
+        next->mesh->move_vertex(v, x_pair[v]);
+      new_interfaces.clear();
+      for (unsigned int i = 0; i < interface_data.size(); ++i)
+        new_interfaces.push_back(NodeInsertion::insert(*next->mesh, interface_data[i].master_id,
+                                                       interface_data[i].slave_id, degree, parameters.insertion, i));
+    };
+    try
+      {
+        pair_at(u_pair);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        // the extrapolated configuration may not be a valid one: pair where
+        // the step starts
+        AssertThrow(extrapolate, dealii::ExcMessage("FiniteSliding: pairing the interfaces in the current "
+                                                    "configuration of step " +
+                                                    std::to_string(step) + " failed: " + info.str()));
+        u_pair    = start_solution;
+        predicted = false;
+        try
+          {
+            pair_at(u_pair);
+          }
+        catch (const dealii::ExceptionBase &e2)
+          {
+            std::ostringstream info2;
+            e2.print_info(info2);
+            AssertThrow(false, dealii::ExcMessage("FiniteSliding: pairing the interfaces in the current "
+                                                  "configuration of step " +
+                                                  std::to_string(step) + " failed: " + info2.str()));
+          }
+      }
+
+    // 2. the inserted vertices back to the reference configuration, by
+    // their parameter on the original edge
+    std::vector<dealii::Point<2>> x_now = next->mesh->get_vertices();
+    for (unsigned int v = 0; v < n0; ++v)
+      x_now[v] = x_pair[v];
+    std::vector<dealii::Point<2>> reference(next->mesh->n_vertices());
+    std::vector<bool>             placed(next->mesh->n_vertices(), false);
+    for (unsigned int v = 0; v < n0; ++v)
+      {
+        reference[v] = original.vertex(v);
+        placed[v]    = true;
+      }
+    // For k = 2 the current edge is the curve x(s) = X(s) + u(s), u the
+    // quadratic trace on each sub-edge where the pairs are made: the
+    // inserted vertex goes to the point of that curve closest to its
+    // partner (the chord's point is off by O(h^2 kappa) where it curves).
+    std::map<unsigned int, unsigned int> partner; // inserted vertex -> its partner vertex
+    if (degree == 2 && pair_disc != nullptr)
+      for (const auto &interface : new_interfaces)
+        for (const auto &pair : interface.pairs)
+          if (!pair.is_midpoint)
+            {
+              if (pair.master_entity >= n0)
+                partner[pair.master_entity] = pair.slave_entity;
+              if (pair.slave_entity >= n0)
+                partner[pair.slave_entity] = pair.master_entity;
+            }
+    for (const auto &[a, b, cell] : interface_edges)
+      {
+        Chain chain = make_chain(*next->mesh, a, b, cell, x_now);
+        if (!partner.empty() && chain.vertices.size() > 2)
+          {
+            const Chain                old_chain = make_chain(*pair_disc->mesh, a, b, cell,
+                                                              pair_disc->mesh->get_vertices());
+            const dealii::Tensor<1, 2> dX        = original.vertex(b) - original.vertex(a);
+            const auto                 curve     = [&](const double s) {
+              dealii::Point<2> x = original.vertex(a) + s * dX;
+              for (unsigned int comp = 0; comp < 2; ++comp)
+                x[comp] += trace_value(old_chain, *pair_disc->dof_handler, u_pair, s, comp);
+              return x;
+            };
+            for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
+              {
+                const auto it = partner.find(chain.vertices[k]);
+                if (it == partner.end())
+                  continue;
+                const dealii::Point<2> target = x_now[it->second];
+                const double           lo = chain.s[k - 1], hi = chain.s[k + 1];
+                double                 s  = chain.s[k];
+                for (unsigned int iteration = 0; iteration < 30; ++iteration)
+                  {
+                    // Gauss-Newton on |x(s) - target|^2, the tangent by
+                    // central differences (the curve is quadratic on each
+                    // sub-edge)
+                    const double               e  = 1e-6 * (hi - lo);
+                    const dealii::Tensor<1, 2> dx = (curve(s + e) - curve(s - e)) / (2 * e);
+                    const double               step = ((curve(s) - target) * dx) / dx.norm_square();
+                    s = std::clamp(s - step, lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo));
+                    if (std::abs(step) < 1e-15)
+                      break;
+                  }
+                chain.s[k] = s;
+              }
+          }
+        for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
+          {
+            const unsigned int v = chain.vertices[k];
+            reference[v]         = original.vertex(a) + chain.s[k] * (original.vertex(b) - original.vertex(a));
+            placed[v]            = true;
+          }
+      }
+    for (unsigned int v = 0; v < next->mesh->n_vertices(); ++v)
+      {
+        AssertThrow(placed[v], dealii::ExcMessage("FiniteSliding: an inserted vertex lies on no interface edge of "
+                                                  "the original mesh."));
+        next->mesh->move_vertex(v, reference[v]);
+      }
+    next->mesh->validate();
+    next->dof_handler = std::make_unique<VEMDoFHandler<2>>(*next->mesh);
+    next->dof_handler->distribute_dofs(degree);
+    record.n_inserted = 0;
+    for (const auto &i : new_interfaces)
+      record.n_inserted += i.report.n_inserted_master + i.report.n_inserted_slave;
+
+    // 3. the states on the new mesh: where the pairs were made, where the
+    // step started, and the step before (for the extrapolation)
+    const auto n_new  = next->dof_handler->n_dofs();
+    const auto states = [&](const Discretization *from, const dealii::Vector<double> &u) {
+      return from == nullptr ? dealii::Vector<double>(n_new) : transfer(*from, u, *next);
+    };
+    const dealii::Vector<double> u_base   = states(pair_disc, u_pair);
+    const dealii::Vector<double> u_origin = states(start.get(), start_solution);
+    // where the contacts that begin within the step begin: the first
+    // pairing configuration of the step that predicts its end (until there
+    // is one, this pass's)
+    if (first_pass)
+      first_pass_disc.reset();
+    const dealii::Vector<double> u_contact =
+      first_pass_disc == nullptr ? u_base : states(first_pass_disc.get(), first_pass_pairing);
+    dealii::Vector<double>       u_previous;
+    const bool with_previous = first_pass && n_converged >= 2 && start_previous_solution.size() > 0;
+    if (with_previous)
+      u_previous = states(start.get(), start_previous_solution);
+
+    // 4. the contact of the new pairs
+    FiniteStrainContact::Options options;
+    options.base        = &u_base;
+    options.slip_origin    = &u_origin;
+    options.contact_origin = &u_contact;
+    for (const auto &i : interface_data)
+      options.friction_coefficients.push_back(i.friction_coefficient);
+    auto new_contact = std::make_unique<FiniteStrainContact>(*next->dof_handler, new_interfaces, parameters.normal, c,
+                                                             options);
+
+    // the multipliers: the traction of the nearest pair of the same
+    // interface where the pairs were made, times the new weight
+    dealii::Vector<double> lambda(new_contact->n_constraints());
+    const dealii::Vector<double> &lambda_old = first_pass ? start_multipliers : multipliers;
+    if (contact != nullptr && pair_disc != nullptr && lambda_old.size() == contact->n_constraints())
+      {
+        const auto old_weights = contact->current_weights(u_pair);
+        const auto new_weights = new_contact->current_weights(u_base);
+        const auto np_old = contact->n_pairs(), np_new = new_contact->n_pairs();
+        const bool both_tangential =
+          new_contact->n_constraints() == 2 * np_new && contact->n_constraints() == 2 * np_old;
+        for (unsigned int i = 0; i < np_new; ++i)
+          {
+            const auto   x       = new_contact->current_positions(i, u_base)[1];
+            const auto   id      = new_contact->get_pairs()[i].interface;
+            double       best    = std::numeric_limits<double>::max();
+            unsigned int nearest = np_old;
+            for (unsigned int o = 0; o < np_old; ++o)
+              if (contact->get_pairs()[o].interface == id)
+                {
+                  const double d = contact->current_positions(o, u_pair)[1].distance_square(x);
+                  if (d < best)
+                    {
+                      best    = d;
+                      nearest = o;
+                    }
+                }
+            if (nearest == np_old || old_weights[nearest] <= 0)
+              continue;
+            lambda[i] = lambda_old[nearest] / old_weights[nearest] * new_weights[i];
+            if (both_tangential)
+              lambda[np_new + i] = lambda_old[np_old + nearest] / old_weights[nearest] * new_weights[i];
+          }
+      }
+
+    // the new objects replace the old ones (in the order of their
+    // references; the start of the step stays)
+    solver.reset();
+    contact.reset();
+    assembler.reset();
+    if (predicted && first_pass_disc == nullptr && parameters.reinsert)
+      {
+        // a copy of this pass's mesh and DoFs with its pairing state
+        first_pass_disc              = std::make_unique<Discretization>();
+        first_pass_disc->mesh        = std::make_unique<PolygonalMesh<2>>(*next->mesh);
+        first_pass_disc->dof_handler = std::make_unique<VEMDoFHandler<2>>(*first_pass_disc->mesh);
+        first_pass_disc->dof_handler->distribute_dofs(degree);
+        first_pass_pairing = u_base;
+      }
+    current    = std::move(next);
+    contact    = std::move(new_contact);
+    interfaces = std::move(new_interfaces);
+
+    assembler = std::make_unique<FiniteStrainAssembler<2>>(*current->dof_handler, laws);
+    if (loads_function)
+      loads_function(*assembler);
+    constraints.clear();
+    constraints_function(*current->dof_handler, time, constraints);
+    AssertThrow(constraints.is_closed(),
+                dealii::ExcMessage("FiniteSliding: the constraints function must close the constraints."));
+    solver = std::make_unique<FiniteStrainSolver<2>>(*assembler, constraints, parameters.newton);
+    solver->set_contact(*contact);
+    if (first_pass)
+      {
+        solver->set_state(u_origin, lambda, last_load_factor, last_step, with_previous ? &u_previous : nullptr,
+                          previous_load_factor, previous_step);
+        solution = u_origin;
+      }
+    else
+      {
+        solver->set_state(u_base, lambda, load_factor, step);
+        solution = u_base;
+      }
+    multipliers = lambda;
+    record.n_pairs = contact->n_pairs();
+    record.n_dofs  = current->dof_handler->n_dofs();
+    record.setup_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+  }
+
+
+
+  void
+  FiniteSliding::evaluate(StepRecord &record) const
+  {
+    const auto np = contact->n_pairs();
+    record.normal_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
+    record.friction_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
+    record.n_active = record.n_slipping = 0;
+    record.max_slip = record.pairing_offset = 0;
+    // the shortest current slave sub-edge at each pair
+    std::vector<double> h(np, std::numeric_limits<double>::max());
+    unsigned int        offset = 0;
+    for (const auto &interface : interfaces)
+      {
+        for (const auto &s : interface.segments)
+          {
+            const double L = contact->current_positions(offset + s.first, solution)[1].distance(
+              contact->current_positions(offset + s.second, solution)[1]);
+            for (const unsigned int p : {s.first, s.second, s.midpoint})
+              if (p != dealii::numbers::invalid_unsigned_int)
+                h[offset + p] = std::min(h[offset + p], L);
+          }
+        offset += interface.pairs.size();
+      }
+    const bool two = (contact->n_constraints() == 2 * np);
+    for (unsigned int i = 0; i < np; ++i)
+      {
+        if (contact->is_left_out(i))
+          continue;
+        const auto interface = contact->get_pairs()[i].interface;
+        const auto n         = contact->current_normal(i, solution);
+        const auto t         = turn_left(n);
+        const bool active    = multipliers[i] != 0;
+        if (active)
+          {
+            record.normal_force[interface] -= multipliers[i] * n;
+            ++record.n_active;
+            // (midpoint pairs of k = 2 on a curved interface are apart by
+            // the difference of the two sides' parametrizations, O(h^3))
+            const auto   x   = contact->current_positions(i, solution);
+            const double off = std::abs((x[1] - x[0]) * t);
+            if (h[i] < std::numeric_limits<double>::max() && !contact->get_pairs()[i].is_midpoint)
+              record.pairing_offset = std::max(record.pairing_offset, off / h[i]);
+          }
+        if (two)
+          {
+            const double lt = multipliers[np + i];
+            record.friction_force[interface] -= lt * t;
+            if (contact->is_frictional() && active && lt != 0 &&
+                std::abs(lt) >= contact->friction_coefficient(i) * std::abs(multipliers[i]) * (1 - 1e-9))
+              ++record.n_slipping;
+            if (contact->is_frictional() && h[i] < std::numeric_limits<double>::max())
+              record.max_slip = std::max(record.max_slip, std::abs(contact->value(np + i, solution)) / h[i]);
+          }
+      }
+  }
+
+
+
+  void
+  FiniteSliding::solve_step(const unsigned int step, const double time)
+  {
+    AssertThrow(constraints_function,
+                dealii::ExcMessage("FiniteSliding: set_constraints_function() must be called before the first step."));
+    AssertThrow(std::isfinite(time),
+                dealii::ExcMessage("FiniteSliding: the time of step " + std::to_string(step) + " is not finite."));
+    StepRecord record;
+    record.step        = step;
+    record.time        = time;
+    record.load_factor = load_factor_function ? load_factor_function(time) : time;
+    AssertThrow(std::isfinite(record.load_factor),
+                dealii::ExcMessage("FiniteSliding: the load factor at the time " + std::to_string(time) +
+                                   " is not finite."));
+
+    // the converged state of the last step is where this one starts
+    if (!last_failed && current != nullptr && parameters.reinsert)
+      {
+        if (start != nullptr && n_converged >= 2)
+          start_previous_solution = transfer(*start, start_solution, *current);
+        else
+          start_previous_solution.reinit(0);
+        // the objects of the last pass refer to it and stay alive with it
+        start             = std::move(current);
+        start_solution    = solution;
+        start_multipliers = multipliers;
+      }
+    last_failed = true;
+
+    for (unsigned int pass = 1;; ++pass)
+      {
+        prepare_pass(time, record.load_factor, step, pass == 1, record);
+        const auto clock = std::chrono::steady_clock::now();
+        try
+          {
+            solver->solve_step(step, record.load_factor);
+          }
+        catch (const dealii::ExceptionBase &e)
+          {
+            // the state stays at the last converged step, on this mesh
+            if (!parameters.reinsert)
+              {
+                solution    = solver->get_solution();
+                multipliers = solver->get_multipliers();
+              }
+            else
+              {
+                solution = start != nullptr ? transfer(*start, start_solution, *current) :
+                                              dealii::Vector<double>(current->dof_handler->n_dofs());
+                multipliers.reinit(contact->n_constraints());
+              }
+            std::ostringstream info;
+            e.print_info(info);
+            AssertThrow(false, dealii::ExcMessage("FiniteSliding: step " + std::to_string(step) + " (time " +
+                                                  std::to_string(time) + "), pass " + std::to_string(pass) +
+                                                  " of the pairing: " + info.str()));
+          }
+        record.solve_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
+        record.newton.push_back(solver->get_history().back());
+        record.n_passes = pass;
+        solution        = solver->get_solution();
+        multipliers     = solver->get_multipliers();
+        evaluate(record);
+        record.pairing_offsets.push_back(record.pairing_offset);
+        if (!parameters.reinsert || record.pairing_offset <= parameters.pairing_tolerance)
+          break;
+        AssertThrow(pass < parameters.max_pairing_passes,
+                    dealii::ExcMessage("FiniteSliding: step " + std::to_string(step) + " (time " +
+                                       std::to_string(time) + "): after " + std::to_string(pass) +
+                                       " passes of pairing at the converged state, partners of active pairs are "
+                                       "still " +
+                                       internal::number_string(record.pairing_offset) +
+                                       " sub-edge lengths apart (tolerance " +
+                                       internal::number_string(parameters.pairing_tolerance) + "; by pass: " +
+                                       [&] {
+                                         std::string list;
+                                         for (const double o : record.pairing_offsets)
+                                           list += (list.empty() ? "" : ", ") + internal::number_string(o);
+                                         return list;
+                                       }() +
+                                       "); take smaller steps or raise Parameters::max_pairing_passes."));
+      }
+
+    // the pairs whose two nodes the constraints fix: the prescribed motion
+    // must not make them penetrate (the solver leaves this check to the
+    // last pass, where the partners are opposite each other)
+    if (parameters.reinsert)
+      {
+        const double length = original.extent();
+        for (unsigned int i = 0; i < contact->n_pairs(); ++i)
+          if (contact->is_fixed(i) && !contact->get_pairs()[i].junction)
+            {
+              const double g = contact->value(i, solution);
+              AssertThrow(g >= -1e-10 * length,
+                          dealii::ExcMessage("FiniteSliding: step " + std::to_string(step) + " (time " +
+                                             std::to_string(time) +
+                                             "): the displacement constraints fix both nodes of the contact pair "
+                                             "at (" +
+                                             std::to_string(contact->get_pairs()[i].slave_location[0]) + ", " +
+                                             std::to_string(contact->get_pairs()[i].slave_location[1]) +
+                                             ") of interface " + std::to_string(contact->get_pairs()[i].interface) +
+                                             " and make it penetrate (gap " + std::to_string(g) +
+                                             "): the prescribed motions of the two bodies contradict the contact."));
+            }
+      }
+
+    last_failed          = false;
+    previous_time        = last_time;
+    last_time            = time;
+    previous_load_factor = last_load_factor;
+    previous_step        = last_step;
+    last_load_factor     = record.load_factor;
+    last_step            = step;
+    ++n_converged;
+    history.push_back(record);
+  }
+
+
+
+  void
+  FiniteSliding::run(const unsigned int n_steps, const double t0, const double t1)
+  {
+    const unsigned int first = last_step + 1;
+    for (unsigned int i = 1; i <= n_steps; ++i)
+      solve_step(first + i - 1, t0 + (t1 - t0) * i / n_steps);
+  }
+} // namespace dealvem
