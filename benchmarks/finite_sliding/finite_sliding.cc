@@ -15,7 +15,7 @@
 // displacement is free). Pairs made at every step and at the converged
 // state (FiniteSliding's passes).
 //
-//   benchmark_finite_sliding [--n N] [--steps S]
+//   benchmark_finite_sliding [--n N] [--steps S] [--mu MU]
 //
 // prints a line per step: DoFs, pairs, inserted vertices, passes, Newton
 // updates, pairing offset, the setup time (pairing, mesh, DoFs, transfer,
@@ -44,6 +44,7 @@ main(int argc, char **argv)
   try
     {
       unsigned int n = 48, steps = 6;
+      double       mu = 0.3;
       for (int i = 1; i + 1 < argc; i += 2)
         {
           const std::string a = argv[i];
@@ -51,6 +52,8 @@ main(int argc, char **argv)
             n = std::stoul(argv[i + 1]);
           else if (a == "--steps")
             steps = std::stoul(argv[i + 1]);
+          else if (a == "--mu")
+            mu = std::stod(argv[i + 1]);
           else
             {
               std::cerr << "unknown option " << a << "\n";
@@ -72,7 +75,7 @@ main(int argc, char **argv)
 
       FiniteSliding::Parameters parameters;
       parameters.degree = 2;
-      FiniteSliding sliding(mesh, laws, {{3, 12, 0.3}}, parameters);
+      FiniteSliding sliding(mesh, laws, {{3, 12, mu}}, parameters);
       const double  dt   = 1. / steps;
       const double  push = 0.25 / n; // per step after the first
       sliding.set_constraints_function(

@@ -603,8 +603,10 @@ namespace dealvem
     record.friction_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
     record.n_active = record.n_slipping = 0;
     record.max_slip = record.pairing_offset = 0;
-    // the shortest current slave sub-edge at each pair
-    std::vector<double> h(np, std::numeric_limits<double>::max());
+    // at each pair, the shortest current slave sub-edge (for the slip) and
+    // the length of the sub-edges it touches (the chord over which its
+    // normal turns: the scale of the pairing offset)
+    std::vector<double> h(np, std::numeric_limits<double>::max()), chord(np, 0.);
     unsigned int        offset = 0;
     for (const auto &interface : interfaces)
       {
@@ -614,7 +616,10 @@ namespace dealvem
               contact->current_positions(offset + s.second, solution)[1]);
             for (const unsigned int p : {s.first, s.second, s.midpoint})
               if (p != dealii::numbers::invalid_unsigned_int)
-                h[offset + p] = std::min(h[offset + p], L);
+                {
+                  h[offset + p] = std::min(h[offset + p], L);
+                  chord[offset + p] += L;
+                }
           }
         offset += interface.pairs.size();
       }
@@ -635,8 +640,8 @@ namespace dealvem
             // the difference of the two sides' parametrizations, O(h^3))
             const auto   x   = contact->current_positions(i, solution);
             const double off = std::abs((x[1] - x[0]) * t);
-            if (h[i] < std::numeric_limits<double>::max() && !contact->get_pairs()[i].is_midpoint)
-              record.pairing_offset = std::max(record.pairing_offset, off / h[i]);
+            if (chord[i] > 0 && !contact->get_pairs()[i].is_midpoint)
+              record.pairing_offset = std::max(record.pairing_offset, off / chord[i]);
           }
         if (two)
           {
@@ -725,7 +730,7 @@ namespace dealvem
                                        " passes of pairing at the converged state, partners of active pairs are "
                                        "still " +
                                        internal::number_string(record.pairing_offset) +
-                                       " sub-edge lengths apart (tolerance " +
+                                       " of the sub-edges at the pair apart (tolerance " +
                                        internal::number_string(parameters.pairing_tolerance) + "; by pass: " +
                                        [&] {
                                          std::string list;

@@ -423,6 +423,10 @@ namespace dealvem
                   g[j]  = contact->value(j, u);
                   scale = std::max({scale, std::abs(lambda[j]) / weight[j], c * std::abs(g[j])});
                 }
+            // gaps below 1e-12 of the mesh size are closed: a body that only
+            // contact holds, touching with a gap of coordinate round-off
+            // and no force yet, starts supported
+            const double gap_floor = c * 1e-12 * length_scale;
             for (unsigned int j = 0; j < m; ++j)
               {
                 active[j] = inactive;
@@ -431,7 +435,7 @@ namespace dealvem
                 if (contact->kind(j) == FiniteStrainConstraints::Kind::equality)
                   active[j] = constraint;
                 else if (contact->kind(j) == FiniteStrainConstraints::Kind::unilateral)
-                  active[j] = (-lambda[j] / weight[j] - c * g[j] > -1e-12 * scale) ? constraint : inactive;
+                  active[j] = (-lambda[j] / weight[j] - c * g[j] > -1e-12 * scale - gap_floor) ? constraint : inactive;
               }
             // Coulomb (after the normal states): stick where the trial force
             // lambda_t + c w s lies within the bound mu |lambda_n|, else slip

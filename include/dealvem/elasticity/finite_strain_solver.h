@@ -101,6 +101,9 @@ namespace dealvem
    *     \qquad \lambda^{new}_j = 0 \ (j \notin \mathcal A), @f]
    * with $G$ the rows $\partial g_j/\partial u$ and the active set
    * $\mathcal A = \{j : -\lambda_j/w_j - c\,g_j(u) > 0\}$ of the iterate
+   * (gaps below $10^{-12}$ of the mesh's size count as closed, so that a
+   * body held only by contact, touching with a gap of coordinate
+   * round-off, starts supported)
    * (every constraint for tied contact), $w_j$ the pair's weight and $c$
    * FiniteStrainContact::complementarity_constant(). The line search then
    * acts on $(u, \lambda)$ together, on the norm of the free residual and
