@@ -543,7 +543,8 @@ namespace dealvem
           u_trial = u;
           u_trial.add(a, du);
           lambda_trial = lambda;
-          lambda_trial.sadd(1. - a, a, lambda_new);
+          if (m > 0) // (deal.II's debug mode refuses sadd() on empty vectors)
+            lambda_trial.sadd(1. - a, a, lambda_new);
           assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr);
           const double phi = (contact != nullptr) ? add_contact(u_trial, lambda_trial, r_trial) : 0.;
           const double rn  = free_norm(r_trial);
