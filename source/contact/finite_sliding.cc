@@ -367,37 +367,35 @@ namespace dealvem
       for (unsigned int v = 0; v < n0; ++v)
         next->mesh->move_vertex(v, x_pair[v]);
       new_interfaces.clear();
-      for (unsigned int i = 0; i < interface_data.size(); ++i)
-        new_interfaces.push_back(NodeInsertion::insert(*next->mesh, interface_data[i].master_id,
-                                                       interface_data[i].slave_id, degree, parameters.insertion, i));
+      try
+        {
+          for (unsigned int i = 0; i < interface_data.size(); ++i)
+            new_interfaces.push_back(NodeInsertion::insert(*next->mesh, interface_data[i].master_id,
+                                                           interface_data[i].slave_id, degree, parameters.insertion,
+                                                           i));
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          AssertThrow(false, dealii::ExcMessage("FiniteSliding: pairing the interfaces in the current "
+                                                "configuration of step " +
+                                                std::to_string(step) + " failed: " + info.str()));
+        }
     };
     try
       {
         pair_at(u_pair);
       }
-    catch (const dealii::ExceptionBase &e)
+    catch (const dealii::ExceptionBase &)
       {
-        std::ostringstream info;
-        e.print_info(info);
-        // the extrapolated configuration may not be a valid one: pair where
+        // an extrapolated configuration may not be a valid one: pair where
         // the step starts
-        AssertThrow(extrapolate, dealii::ExcMessage("FiniteSliding: pairing the interfaces in the current "
-                                                    "configuration of step " +
-                                                    std::to_string(step) + " failed: " + info.str()));
+        if (!(first_pass && predicted))
+          throw;
         u_pair    = start_solution;
         predicted = false;
-        try
-          {
-            pair_at(u_pair);
-          }
-        catch (const dealii::ExceptionBase &e2)
-          {
-            std::ostringstream info2;
-            e2.print_info(info2);
-            AssertThrow(false, dealii::ExcMessage("FiniteSliding: pairing the interfaces in the current "
-                                                  "configuration of step " +
-                                                  std::to_string(step) + " failed: " + info2.str()));
-          }
+        pair_at(u_pair);
       }
 
     // 2. the inserted vertices back to the reference configuration, by
