@@ -281,9 +281,10 @@ def main():
             if key.endswith("SAN_OPTIONS") or key.startswith("OMPI_MCA_"):
                 env[key] = value
     env.setdefault("OMP_NUM_THREADS", "1")
-    # Leaks are the test suite's business (scripts/sanitize.sh): attributing
-    # OpenMPI's leaks needs the slow unwinder, which triples the run time.
-    # Here: memory errors and UB, the fast unwinder, no leak check.
+    # Leaks are the test suite's business (scripts/sanitize.sh): the leak
+    # check at exit, with the symbolization of OpenMPI's suppressed leaks,
+    # doubles the time of a short run. Here: memory errors and UB, no leak
+    # check.
     opts = dict(o.split("=", 1) for o in env.get("ASAN_OPTIONS", "").split(":") if "=" in o)
     opts.update({"detect_leaks": "0", "fast_unwind_on_malloc": "1",
                  "allocator_may_return_null": "1", "max_allocation_size_mb": "4096",

@@ -410,13 +410,17 @@ namespace dealvem
         reference[v] = original.vertex(v);
         placed[v]    = true;
       }
-    // For k = 2 the current edge is the curve x(s) = X(s) + u(s), u the
-    // quadratic trace on each sub-edge where the pairs are made: the
-    // inserted vertex goes to the point of that curve closest to its
-    // partner (the chord's point is off by O(h^2 kappa) where it curves).
+    // The current edge is the curve x(s) = X(s) + u(s), u the trace on
+    // the sub-edges of the mesh where the pairs are made (linear or
+    // quadratic on each), not the chord of the original edge through its
+    // moved end points that the insertion sees: the two differ by the kinks
+    // (k = 1) and the curvature (k = 2) of the trace. The inserted vertex
+    // goes to the point of that curve closest to its partner; with the
+    // chord's parameter, partners that coincide in the pairing
+    // configuration would start apart and the pairing of a curved or
+    // stretched side would never reach a fixed point.
     std::map<unsigned int, unsigned int> partner; // inserted vertex -> its partner vertex
-    if (degree == 2 && pair_disc != nullptr)
-      for (const auto &interface : new_interfaces)
+    for (const auto &interface : new_interfaces)
         for (const auto &pair : interface.pairs)
           if (!pair.is_midpoint)
             {
@@ -425,10 +429,11 @@ namespace dealvem
               if (pair.slave_entity >= n0)
                 partner[pair.slave_entity] = pair.master_entity;
             }
+    std::vector<std::tuple<unsigned int, unsigned int, Chain>> chains;
     for (const auto &[a, b, cell] : interface_edges)
       {
         Chain chain = make_chain(*next->mesh, a, b, cell, x_now);
-        if (!partner.empty() && chain.vertices.size() > 2)
+        if (pair_disc != nullptr && !partner.empty() && chain.vertices.size() > 2)
           {
             const Chain                old_chain = make_chain(*pair_disc->mesh, a, b, cell,
                                                               pair_disc->mesh->get_vertices());
@@ -439,29 +444,122 @@ namespace dealvem
                 x[comp] += trace_value(old_chain, *pair_disc->dof_handler, u_pair, s, comp);
               return x;
             };
+            std::vector<double> corrected(chain.vertices.size(), -1.);
             for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
               {
                 const auto it = partner.find(chain.vertices[k]);
                 if (it == partner.end())
                   continue;
                 const dealii::Point<2> target = x_now[it->second];
-                const double           lo = chain.s[k - 1], hi = chain.s[k + 1];
-                double                 s  = chain.s[k];
-                for (unsigned int iteration = 0; iteration < 30; ++iteration)
+                // (the whole edge: the neighbours' parameters are still
+                // chord parameters of the current configuration, or already
+                // reference ones; the order is checked below)
+                const double           lo = 0, hi = 1;
+                const double           margin = 1e-9;
+                double                 best_s = chain.s[k], best_d = curve(best_s).distance(target);
+                // on each sub-edge of the old mesh within (lo, hi) the
+                // curve is a polynomial: Gauss-Newton on |x(s) - target|^2
+                // there (exact in one update for k = 1), the tangent by
+                // central differences; the closest of these points wins
+                for (unsigned int piece = 0; piece + 1 < old_chain.s.size(); ++piece)
                   {
-                    // Gauss-Newton on |x(s) - target|^2, the tangent by
-                    // central differences (the curve is quadratic on each
-                    // sub-edge)
-                    const double               e  = 1e-6 * (hi - lo);
-                    const dealii::Tensor<1, 2> dx = (curve(s + e) - curve(s - e)) / (2 * e);
-                    const double               step = ((curve(s) - target) * dx) / dx.norm_square();
-                    s = std::clamp(s - step, lo + 1e-9 * (hi - lo), hi - 1e-9 * (hi - lo));
-                    if (std::abs(step) < 1e-15)
-                      break;
+                    const double s0 = std::max(lo + margin, old_chain.s[piece]);
+                    const double s1 = std::min(hi - margin, old_chain.s[piece + 1]);
+                    if (!(s1 > s0))
+                      continue;
+                    double s = std::clamp(chain.s[k], s0, s1);
+                    for (unsigned int iteration = 0; iteration < 30; ++iteration)
+                      {
+                        const double e = 1e-6 * (s1 - s0);
+                        const double sm = std::max(s0, s - e), sp = std::min(s1, s + e);
+                        const dealii::Tensor<1, 2> dx   = (curve(sp) - curve(sm)) / (sp - sm);
+                        const double               step = ((curve(s) - target) * dx) / dx.norm_square();
+                        const double               next_s = std::clamp(s - step, s0, s1);
+                        const bool                 done   = std::abs(next_s - s) < 1e-15;
+                        s                                 = next_s;
+                        if (done)
+                          break;
+                      }
+                    const double d = curve(s).distance(target);
+                    if (d < best_d)
+                      {
+                        best_d = d;
+                        best_s = s;
+                      }
                   }
-                chain.s[k] = s;
+                // a partner far from the curve (an open pair: its gap is
+                // larger than the edge) need not face its node exactly:
+                // it keeps the chord's parameter
+                if (best_d < 0.5 * x_now[a].distance(x_now[b]))
+                  corrected[k] = best_s;
               }
+            // the material points must keep their order along the edge;
+            // where they do not (two partners far apart whose closest
+            // points cross), all nodes of the edge keep the chord's
+            // parameters
+            std::vector<double> s_new = chain.s;
+            for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
+              if (corrected[k] >= 0)
+                s_new[k] = corrected[k];
+            bool monotone = true;
+            for (unsigned int k = 0; k + 1 < s_new.size(); ++k)
+              monotone = monotone && s_new[k + 1] > s_new[k];
+            if (monotone)
+              chain.s = s_new;
           }
+        chains.push_back({a, b, std::move(chain)});
+      }
+
+    // Later passes of a step: the material points of the inserted nodes
+    // are relaxed (Aitken's delta-squared method). Repeating the pairing
+    // plainly converges slowly where sticking pairs drag their partners
+    // along (factors up to 0.9 per pass), and flips between two
+    // mirror-image pairings where a partner sits at a kink of a polygonal
+    // side (factor -1). A node is followed from pass to pass by its
+    // partner vertex and its original edge; the factor comes from the
+    // last two changes of all of them.
+    std::map<std::array<unsigned int, 3>, std::pair<double, double>> relaxed; // key -> (s, change)
+    {
+      double rd = 0, dd = 0;
+      for (const auto &[a, b, chain] : chains)
+        for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
+          if (const auto it = partner.find(chain.vertices[k]); it != partner.end() && !first_pass)
+            {
+              const auto old = pairing_history.find({{it->second, a, b}});
+              if (old == pairing_history.end())
+                continue;
+              const double length = original.vertex(a).distance(original.vertex(b));
+              const double r      = (chain.s[k] - old->second.first) * length;
+              if (std::isfinite(old->second.second))
+                {
+                  rd += old->second.second * (r - old->second.second);
+                  dd += (r - old->second.second) * (r - old->second.second);
+                }
+            }
+      if (first_pass)
+        pairing_relaxation = 1;
+      else if (dd > 0)
+        pairing_relaxation = std::clamp(-pairing_relaxation * rd / dd, 0.1, 10.);
+    }
+    for (auto &[a, b, chain] : chains)
+      {
+        const double length = original.vertex(a).distance(original.vertex(b));
+        for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
+          if (const auto it = partner.find(chain.vertices[k]); it != partner.end())
+            {
+              const std::array<unsigned int, 3> key{{it->second, a, b}};
+              const auto                        old = pairing_history.find(key);
+              double                            change = std::numeric_limits<double>::quiet_NaN();
+              if (!first_pass && old != pairing_history.end())
+                {
+                  change          = (chain.s[k] - old->second.first) * length;
+                  const double sr = old->second.first + pairing_relaxation * change / length;
+                  // within the neighbours, whose order the insertion fixed
+                  if (sr > chain.s[k - 1] && sr < chain.s[k + 1])
+                    chain.s[k] = sr;
+                }
+              relaxed[key] = {chain.s[k], change};
+            }
         for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
           {
             const unsigned int v = chain.vertices[k];
@@ -469,6 +567,7 @@ namespace dealvem
             placed[v]            = true;
           }
       }
+    pairing_history = std::move(relaxed);
     for (unsigned int v = 0; v < next->mesh->n_vertices(); ++v)
       {
         AssertThrow(placed[v], dealii::ExcMessage("FiniteSliding: an inserted vertex lies on no interface edge of "
@@ -639,7 +738,9 @@ namespace dealvem
             const auto   x   = contact->current_positions(i, solution);
             const double off = std::abs((x[1] - x[0]) * t);
             if (chord[i] > 0 && !contact->get_pairs()[i].is_midpoint)
-              record.pairing_offset = std::max(record.pairing_offset, off / chord[i]);
+              {
+                record.pairing_offset = std::max(record.pairing_offset, off / chord[i]);
+              }
           }
         if (two)
           {
