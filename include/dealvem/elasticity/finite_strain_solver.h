@@ -62,6 +62,12 @@ namespace dealvem
    * - the last update $\|\alpha\,\delta u\|_2 \le \varepsilon_u \|u\|_2$
    *   (or $\le \varepsilon_a$-sized when $u = 0$).
    *
+   * An iterate whose last update changed $u$ only at round-off
+   * ($\le 10^{-13}\|u\|_2$) counts as converged with a residual up to 100
+   * times that bound: where the bodies' stiffnesses differ by $10^3$ the
+   * floating-point residual of the discrete solution itself can lie just
+   * above it (a stiff die on a soft slab: $1.3\cdot 10^{-10} F_{ref}$).
+   *
    * If a step does not converge within Parameters::max_iterations
    * iterations, or meets an inverted cell that the line search cannot
    * avoid, the solution is reset to the last converged step (the earlier
