@@ -12,6 +12,7 @@
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/contact/active_set_solver.h>
+#include <dealvem/contact/finite_sliding.h>
 #include <dealvem/contact/contact_pressure.h>
 #include <dealvem/contact/distributed_contact_solver.h>
 #include <dealvem/contact/friction_solver.h>
@@ -21,6 +22,7 @@
 #include <dealvem/elasticity/force_balance.h>
 #include <dealvem/elasticity/material_library.h>
 #include <dealvem/postprocessing/error_norms.h>
+#include <dealvem/postprocessing/finite_strain_output.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/base/number_string.h>
 #include <dealvem/base/output_file.h>
@@ -246,6 +248,14 @@ namespace dealvem
                       "chord deviation of the edge, or below the coordinate precision), by moving "
                       "the inserted node onto its partner. Larger gaps (bodies apart, or surfaces of "
                       "different curvature as in Hertz contact) are kept. false keeps every gap.");
+    prm.declare_entry("Pairing tolerance", "1e-8", Double(1e-14, 0.1),
+                      "Finite strain ('Finite strain/Enabled = true', finite sliding): the pairs are made again "
+                      "at the converged state of each step until the partners of every active pair are closer "
+                      "than this fraction of the slave sub-edges at the pair.");
+    prm.declare_entry("Maximum pairing passes", "12", Integer(1, 1000),
+                      "Finite strain (finite sliding): at most this many passes (pairing and Newton solve) per "
+                      "load step; a step that does not meet 'Pairing tolerance' then stops the program with the "
+                      "offset of every pass.");
     prm.declare_entry("Maximum active set iterations", "50", Integer(1),
                       "Iteration limit of the active set (per load step; with Coulomb friction, of the "
                       "semismooth Newton iteration over open/stick/slip).");
@@ -402,17 +412,36 @@ namespace dealvem
     const auto model = ElasticMaterial::parse_model(prm.get("Model"));
     const auto law   = MaterialLaws::parse(prm.get("Law"), "Material/Law");
     prm.leave_subsection();
-    // 'Material/Law' applies to every body; contact problems are solved at
-    // small strain, where a hyperelastic law is its linearization at F = I,
-    // the linear law of the same E and nu (ElasticMaterial, built below)
-    FiniteStrainParameters::refuse(prm, "'Number of bodies' is " + std::to_string(n) +
-                                          ": the program solves contact problems at small strain. Set "
-                                          "'Finite strain/Enabled = false' (a hyperelastic 'Material/Law' "
-                                          "then enters by its linearization).");
-    InputParsing::check_section_unused(prm, "Finite strain",
-                                       "the program solves contact problems at small strain, without the Newton "
-                                       "controls of finite strain.");
-    if (MaterialLaws::is_hyperelastic(law) && root)
+    // 'Material/Law' applies to every body. With 'Finite strain/Enabled'
+    // the problem is solved at finite strain with finite sliding
+    // (run_finite_sliding()); else at small strain, where a hyperelastic law
+    // is its linearization at F = I, the linear law of the same E and nu
+    // (ElasticMaterial, built below)
+    {
+      FiniteStrainParameters finite_strain;
+      finite_strain.parse_parameters(prm);
+      opt.finite_strain = finite_strain.enabled;
+      opt.newton        = finite_strain.solver;
+      AssertThrow(!finite_strain.enabled || MaterialLaws::is_hyperelastic(law),
+                  dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': "
+                                     "finite strain needs a hyperelastic law ('neo-hooke' or "
+                                     "'saint-venant-kirchhoff')."));
+      AssertThrow(!finite_strain.enabled || !finite_strain.has_monitor_point,
+                  dealii::ExcMessage("Parameter 'Finite strain/Monitor point' is set, but contact problems do "
+                                     "not use it: the history of the contact forces is written to "
+                                     "<base name>-history.csv."));
+      if (!finite_strain.enabled)
+        InputParsing::check_section_unused(prm, "Finite strain",
+                                           "'Finite strain/Enabled' is false: the program solves the contact "
+                                           "problem at small strain, without the Newton controls of finite "
+                                           "strain.");
+    }
+    const auto body_law = [&](const double E, const double nu) -> std::shared_ptr<const ConstitutiveLaw<2>> {
+      if (opt.finite_strain)
+        return MaterialLaws::make_law(law, E, nu, model);
+      return std::make_shared<const ElasticMaterial>(E, nu, model);
+    };
+    if (MaterialLaws::is_hyperelastic(law) && !opt.finite_strain && root)
       std::cout << "note: 'Material/Law = " << MaterialLaws::name(law)
                 << "': contact problems are solved at small strain, with the law's linearization at F = I "
                    "(the linear law of the same E and nu) for every body."
@@ -447,7 +476,7 @@ namespace dealvem
         InputParsing::check_range(E, ElasticMaterial::min_youngs_modulus, ElasticMaterial::max_youngs_modulus,
                                   prefix + "Material/Young's modulus", false, false,
                                   "Choose units that bring E nearer to 1.");
-        body.material = std::make_shared<const ElasticMaterial>(E, nu, model);
+        body.material = body_law(E, nu);
         check_material_name(material_name, "Parameter '" + prefix + "Material/Name'");
         body.material_name = material_name;
         // 'Part materials': material id : E : nu [: name]
@@ -470,7 +499,7 @@ namespace dealvem
             AssertThrow(part_laws.count(id) == 0,
                         dealii::ExcMessage("Parameter '" + what + "': material id " + std::to_string(id) +
                                            " is listed twice."));
-            part_laws[id] = std::make_shared<const ElasticMaterial>(E_id, nu_id, model);
+            part_laws[id] = body_law(E_id, nu_id);
             if (fields.size() == 4)
               {
                 part_names[id] = InputParsing::trim(fields[3]);
@@ -519,6 +548,7 @@ namespace dealvem
     opt.stabilization_factor = prm.get_double("Stabilization factor");
     opt.stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
                          prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
+                     prm.get("Stabilization") == "boundary" ? Stabilization::boundary :
                                                                   Stabilization::automatic);
     prm.leave_subsection();
     bc.parse_parameters(prm);
@@ -568,6 +598,8 @@ namespace dealvem
     opt.detection.distance                  = prm.get_double("Detection distance");
     opt.detection.max_angle                 = prm.get_double("Detection angle");
     opt.detection.merge_fraction            = opt.insertion.merge_fraction;
+    opt.pairing_tolerance                   = prm.get_double("Pairing tolerance");
+    opt.max_pairing_passes                  = prm.get_integer("Maximum pairing passes");
     for (const auto &entry : InputParsing::split(prm.get("Friction between bodies"), ';'))
       {
         const std::string what   = "Contact/Friction between bodies entry '" + entry + "'";
@@ -1023,7 +1055,10 @@ namespace dealvem
     std::cout << run_files.removal_note(run_files.start());
     try
       {
-        run_cycles();
+        if (opt.finite_strain)
+          run_finite_sliding();
+        else
+          run_cycles();
       }
     catch (...)
       {
@@ -1032,6 +1067,167 @@ namespace dealvem
         throw;
       }
     run_files.complete();
+  }
+
+
+
+  void
+  ContactProblem::run_finite_sliding()
+  {
+    const auto &cs = opt.contact;
+    const auto  refuse = [](const bool ok, const std::string &what) {
+      AssertThrow(ok, dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true (finite sliding), but " + what));
+    };
+    refuse(n_processes == 1, "the program runs on " + std::to_string(n_processes) +
+                               " MPI processes: finite sliding runs on one (each Newton update is solved by "
+                               "UMFPACK).");
+    refuse(n_cycles == 1, "'Convergence study/Refinement cycles' is " + std::to_string(n_cycles) +
+                            ": finite sliding solves one mesh.");
+    refuse(!opt.detect_pairs, "'Contact/Pairs' has 'auto': give the interfaces as 'master id : slave id'.");
+    refuse(!contact_pairs.empty(), "'Contact/Pairs' is empty: give the interfaces as 'master id : slave id'.");
+    refuse(body_friction.empty() && material_friction.empty(),
+           "'Contact/Friction between bodies' or 'Friction between materials' is set: give the friction "
+           "coefficient per pair ('master id : slave id : mu') or by 'Contact/Friction coefficient'.");
+    const bool tied = cs.normal == ContactSettings::Normal::tied;
+    refuse(tied ? cs.tangential == ContactSettings::Tangential::multipliers :
+                  (cs.tangential == ContactSettings::Tangential::frictionless ||
+                   cs.tangential == ContactSettings::Tangential::coulomb),
+           "'Contact/Normal' is '" + std::string(tied ? "tied" : "unilateral") + "' with 'Contact/Tangential = " +
+             ContactSettings::tangential_name(cs.tangential) +
+             "': finite sliding takes 'frictionless' or 'coulomb' (friction by Lagrange multipliers) with a "
+             "unilateral normal, and 'multipliers' with a tied one.");
+    for (const auto &b : bodies)
+      refuse(b.material->has_finite_strain_response(),
+             "the law of " + b.name + " ('" + b.material->get_name() + "') has no finite-strain response.");
+
+    // the bodies in one mesh, their laws by material id (= body index)
+    PolygonalMesh<2>   mesh;
+    MaterialLibrary<2> laws;
+    make_body_meshes(0, mesh, laws);
+    bc.check_boundary_ids(mesh);
+    std::vector<FiniteSliding::InterfaceData> interfaces;
+    for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+      interfaces.push_back({contact_pairs[i].first, contact_pairs[i].second,
+                            cs.is_coulomb() ? (pair_friction[i] >= 0 ? pair_friction[i] : cs.friction_coefficient) :
+                                              0.});
+    FiniteSliding::Parameters parameters;
+    parameters.degree             = opt.degree;
+    parameters.normal             = cs.normal;
+    parameters.newton             = opt.newton;
+    parameters.pairing_tolerance  = opt.pairing_tolerance;
+    parameters.max_pairing_passes = opt.max_pairing_passes;
+    if (opt.stabilization != Stabilization::automatic)
+      parameters.stabilization = opt.stabilization;
+    FiniteSliding sliding(mesh, laws, interfaces, parameters);
+    // the Dirichlet data and the loads are expressions of t, as in the
+    // small-strain path: the loads at the time of the step, unscaled
+    sliding.set_constraints_function(
+      [this](const VEMDoFHandler<2> &dofs, const double t, dealii::AffineConstraints<double> &constraints) {
+        bc.set_time(t);
+        bc.apply_constraints(dofs, constraints);
+        constraints.close();
+      });
+    sliding.set_loads([this](FiniteStrainAssembler<2> &assembler) {
+      bc.add_finite_strain_loads(assembler, "Finite strain/Enabled");
+    },
+                      [](const double) { return 1.; });
+
+    const std::string prefix = opt.output_folder + "/" + opt.base_name;
+    std::vector<std::pair<double, std::string>> series;
+    JsonSummary                                 json;
+    json.set("program", "dealvem");
+    json.set("problem", "finite sliding");
+    json.set("bodies", double(bodies.size()));
+    json.set("order", double(opt.degree));
+    json.set("load_steps", double(opt.n_load_steps));
+    const auto write_json = [&](const std::string &status) {
+      if (opt.write_json)
+        {
+          json.set("status", status);
+          json.write(prefix + ".json");
+        }
+    };
+    std::ostringstream csv;
+    csv << "step,time,passes,newton_updates,pairing_offset,dofs,pairs,active,slipping";
+    for (unsigned int i = 0; i < interfaces.size(); ++i)
+      csv << ",normal_x_" << i << ",normal_y_" << i << ",friction_x_" << i << ",friction_y_" << i;
+    csv << "\n";
+    std::cout << "Finite strain with finite sliding: " << bodies.size() << " bodies, " << interfaces.size()
+              << " interface" << (interfaces.size() == 1 ? "" : "s") << ", k = " << opt.degree << ", "
+              << opt.n_load_steps << " load step" << (opt.n_load_steps == 1 ? "" : "s") << std::endl;
+    for (unsigned int n = 1; n <= opt.n_load_steps; ++n)
+      {
+        const double time = opt.final_time * n / opt.n_load_steps;
+        try
+          {
+            sliding.solve_step(n, time);
+          }
+        catch (...)
+          {
+            json.set("converged_steps", double(n - 1));
+            try
+              {
+                write_json("failed");
+              }
+            catch (...)
+              {}
+            throw;
+          }
+        const auto  &r       = sliding.get_history().back();
+        unsigned int updates = 0;
+        for (const auto &pass : r.newton)
+          updates += pass.iterations.empty() ? 0 : pass.iterations.size() - 1;
+        std::cout << "  step " << n << " (t = " << time << "): " << r.n_passes << " pairing pass"
+                  << (r.n_passes == 1 ? "" : "es") << ", " << updates << " Newton updates, " << r.n_active
+                  << " active pairs (" << r.n_slipping << " slipping), offset " << r.pairing_offset;
+        for (unsigned int i = 0; i < interfaces.size(); ++i)
+          std::cout << "; interface " << i << ": normal force (" << r.normal_force[i] << "), friction force ("
+                    << r.friction_force[i] << ")";
+        std::cout << std::endl;
+        csv << n << ',' << internal::number_string(time) << ',' << r.n_passes << ',' << updates << ','
+            << internal::number_string(r.pairing_offset) << ',' << r.n_dofs << ',' << r.n_pairs << ',' << r.n_active << ','
+            << r.n_slipping;
+        const std::string key = "steps." + std::to_string(n) + ".";
+        json.set(key + "time", time);
+        json.set(key + "passes", double(r.n_passes));
+        json.set(key + "newton_updates", double(updates));
+        json.set(key + "pairing_offset", r.pairing_offset);
+        json.set(key + "active_pairs", double(r.n_active));
+        json.set(key + "slipping_pairs", double(r.n_slipping));
+        for (unsigned int i = 0; i < interfaces.size(); ++i)
+          {
+            for (unsigned int d = 0; d < 2; ++d)
+              csv << ',' << internal::number_string(r.normal_force[i][d]);
+            for (unsigned int d = 0; d < 2; ++d)
+              csv << ',' << internal::number_string(r.friction_force[i][d]);
+            const std::string k = key + "interfaces." + std::to_string(i) + ".";
+            json.set(k + "normal_force_x", r.normal_force[i][0]);
+            json.set(k + "normal_force_y", r.normal_force[i][1]);
+            json.set(k + "friction_force_x", r.friction_force[i][0]);
+            json.set(k + "friction_force_y", r.friction_force[i][1]);
+            // (mu where every active pair of the interface slips)
+            if (r.normal_force[i].norm() > 0)
+              json.set(k + "friction_to_normal", r.friction_force[i].norm() / r.normal_force[i].norm());
+          }
+        csv << "\n";
+        json.set("converged_steps", double(n));
+        if (opt.write_vtu)
+          {
+            std::ostringstream file;
+            file << prefix << "-step-" << std::setw(3) << std::setfill('0') << n << ".vtu";
+            write_finite_strain_vtu_file(file.str(), sliding.get_dof_handler(), laws, sliding.get_solution());
+            series.emplace_back(time, std::filesystem::path(file.str()).filename().string());
+            write_pvd_record(prefix + ".pvd", series);
+          }
+        if (opt.write_csv)
+          {
+            OutputFile out(prefix + "-history.csv");
+            out.stream() << csv.str();
+            out.commit();
+          }
+        write_json("running");
+      }
+    write_json("complete");
   }
 
 
@@ -1192,7 +1388,15 @@ namespace dealvem
   ContactProblem::make_meshes(const unsigned int cycle)
   {
     dealii::TimerOutput::Scope t(data->timer, "mesh");
-    PolygonalMesh<2>          &mesh = results.mesh;
+    make_body_meshes(cycle, results.mesh, data->materials);
+    data->original_vertices = results.mesh.get_vertices();
+  }
+
+
+
+  void
+  ContactProblem::make_body_meshes(const unsigned int cycle, PolygonalMesh<2> &mesh, MaterialLibrary<2> &laws) const
+  {
     // the meshes of the bodies, appended at once (one validation)
     std::vector<PolygonalMesh<2>> made(bodies.size());
     std::vector<const PolygonalMesh<2> *> parts;
@@ -1206,13 +1410,12 @@ namespace dealvem
           made[b].set_material_id(c, b);
         if (b > 0)
           parts.push_back(&made[b]);
-        data->materials.add(b, bodies[b].material);
+        laws.add(b, bodies[b].material);
       }
     mesh = std::move(made[0]);
     if (!parts.empty())
       mesh.append(parts);
-    mesh.name               = "bodies";
-    data->original_vertices = mesh.get_vertices();
+    mesh.name = "bodies";
   }
 
 

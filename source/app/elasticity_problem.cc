@@ -87,13 +87,16 @@ namespace dealvem
 
     prm.enter_subsection("Discretization");
     prm.declare_entry("Order", "2", Integer(1, 2), "Order k of the virtual elements (1 or 2).");
-    prm.declare_entry("Stabilization", "automatic", Selection("automatic|diagonal|trace"),
+    prm.declare_entry("Stabilization", "automatic", Selection("automatic|diagonal|trace|boundary"),
                       "Stabilization of the element stiffness: 'automatic' (trace for k = 1, diagonal "
                       "for k = 2; trace for both at finite strain, where the diagonal rule is too weak), "
                       "'diagonal' (the D-recipe, "
                       "gamma c_k (I-Pi)^T diag(max(K_c,ii, 1e-3 tau)) (I-Pi), c_1 = 1, c_2 = 1/5: every "
-                      "degree of freedom stabilized like its own consistency stiffness) or 'trace' "
-                      "(dofi-dofi, gamma tau (I-Pi)^T (I-Pi), tau = trace(K_c)/n_dofs).");
+                      "degree of freedom stabilized like its own consistency stiffness), 'trace' "
+                      "(dofi-dofi, gamma tau (I-Pi)^T (I-Pi), tau = trace(K_c)/n_dofs) or 'boundary' "
+                      "(gamma tau (I-Pi)^T S (I-Pi), S the tangential derivatives along the edges, each "
+                      "edge weighted by the mean edge length over its own: robust to short edges; the "
+                      "default of finite sliding, whose node insertion makes them).");
     prm.declare_entry("Stabilization factor", "1.0", Double(1e-8),
                       "Factor gamma of the stabilization; 1e-6 <= gamma <= 1e6.");
     prm.leave_subsection();
@@ -269,6 +272,7 @@ namespace dealvem
     gamma  = prm.get_double("Stabilization factor");
     stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
                      prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
+                     prm.get("Stabilization") == "boundary" ? Stabilization::boundary :
                                                               Stabilization::automatic);
     prm.leave_subsection();
     InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
@@ -931,10 +935,11 @@ namespace dealvem
     json.set("discretization.order", double(degree));
     json.set("discretization.gamma", gamma);
     json.set("discretization.stabilization",
-             std::string(stabilization == Stabilization::trace ||
+             std::string(stabilization == Stabilization::boundary ? "boundary" :
+                         stabilization == Stabilization::trace ||
                              (stabilization == Stabilization::automatic && (degree == 1 || finite_strain.enabled)) ?
-                           "trace" :
-                           "diagonal"));
+                                                                    "trace" :
+                                                                    "diagonal"));
     json.set("solver.type", solver_type);
 
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)

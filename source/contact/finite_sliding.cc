@@ -467,7 +467,17 @@ namespace dealvem
                     const double s1 = std::min(hi - margin, old_chain.s[piece + 1]);
                     if (!(s1 > s0))
                       continue;
-                    double s = std::clamp(chain.s[k], s0, s1);
+                    // (the trace of a short sub-edge may fold back on
+                    // itself at a far-off pairing: Gauss-Newton starts at
+                    // the closest of a few samples, not in the local
+                    // minimum at an end of the piece)
+                    double s = std::clamp(chain.s[k], s0, s1), d_start = curve(s).distance(target);
+                    for (unsigned int j = 0; j <= 8; ++j)
+                      if (const double sj = s0 + (s1 - s0) * j / 8., dj = curve(sj).distance(target); dj < d_start)
+                        {
+                          s       = sj;
+                          d_start = dj;
+                        }
                     for (unsigned int iteration = 0; iteration < 30; ++iteration)
                       {
                         const double e = 1e-6 * (s1 - s0);
@@ -511,36 +521,17 @@ namespace dealvem
       }
 
     // Later passes of a step: the material points of the inserted nodes
-    // are relaxed (Aitken's delta-squared method). Repeating the pairing
-    // plainly converges slowly where sticking pairs drag their partners
-    // along (factors up to 0.9 per pass), and flips between two
-    // mirror-image pairings where a partner sits at a kink of a polygonal
-    // side (factor -1). A node is followed from pass to pass by its
-    // partner vertex and its original edge; the factor comes from the
-    // last two changes of all of them.
-    std::map<std::array<unsigned int, 3>, std::pair<double, double>> relaxed; // key -> (s, change)
-    {
-      double rd = 0, dd = 0;
-      for (const auto &[a, b, chain] : chains)
-        for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
-          if (const auto it = partner.find(chain.vertices[k]); it != partner.end() && !first_pass)
-            {
-              const auto old = pairing_history.find({{it->second, a, b}});
-              if (old == pairing_history.end())
-                continue;
-              const double length = original.vertex(a).distance(original.vertex(b));
-              const double r      = (chain.s[k] - old->second.first) * length;
-              if (std::isfinite(old->second.second))
-                {
-                  rd += old->second.second * (r - old->second.second);
-                  dd += (r - old->second.second) * (r - old->second.second);
-                }
-            }
-      if (first_pass)
-        pairing_relaxation = 1;
-      else if (dd > 0)
-        pairing_relaxation = std::clamp(-pairing_relaxation * rd / dd, 0.1, 10.);
-    }
+    // are relaxed, each by its own Aitken factor (the secant method on
+    // the node's parameter): x_{n+1} = x_n + w_n r_n with the plain update
+    // r_n of the pass and w_n = -w_{n-1} r_{n-1} / (r_n - r_{n-1}), clamped
+    // to [0.1, 10]. Repeating the pairing plainly converges slowly where
+    // sticking pairs drag their partners along (factors up to 0.9 per
+    // pass), and flips between two mirror-image pairings where a partner
+    // sits at a kink of a polygonal side (factor -1); one factor for all
+    // nodes cannot serve both (it is driven to the flipping nodes' 1/2 and
+    // slows the others down). A node is followed from pass to pass by its
+    // partner vertex and its original edge.
+    std::map<std::array<unsigned int, 3>, std::array<double, 3>> relaxed; // key -> (s, r, w)
     for (auto &[a, b, chain] : chains)
       {
         const double length = original.vertex(a).distance(original.vertex(b));
@@ -548,17 +539,24 @@ namespace dealvem
           if (const auto it = partner.find(chain.vertices[k]); it != partner.end())
             {
               const std::array<unsigned int, 3> key{{it->second, a, b}};
-              const auto                        old = pairing_history.find(key);
+              const auto                        old    = pairing_history.find(key);
               double                            change = std::numeric_limits<double>::quiet_NaN();
+              double                            w      = 1;
               if (!first_pass && old != pairing_history.end())
                 {
-                  change          = (chain.s[k] - old->second.first) * length;
-                  const double sr = old->second.first + pairing_relaxation * change / length;
+                  const auto &[s_old, r_old, w_old] = old->second;
+                  change                            = (chain.s[k] - s_old) * length;
+                  w                                 = w_old;
+                  // (below 1e-12 of the edge the changes are Newton's
+                  // round-off, and their ratio says nothing)
+                  if (std::isfinite(r_old) && std::abs(change - r_old) > 1e-12 * length)
+                    w = std::clamp(-w_old * r_old / (change - r_old), 0.1, 10.);
+                  const double sr = s_old + w * change / length;
                   // within the neighbours, whose order the insertion fixed
                   if (sr > chain.s[k - 1] && sr < chain.s[k + 1])
                     chain.s[k] = sr;
                 }
-              relaxed[key] = {chain.s[k], change};
+              relaxed[key] = {{chain.s[k], change, w}};
             }
         for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
           {
@@ -664,7 +662,7 @@ namespace dealvem
     contact    = std::move(new_contact);
     interfaces = std::move(new_interfaces);
 
-    assembler = std::make_unique<FiniteStrainAssembler<2>>(*current->dof_handler, laws);
+    assembler = std::make_unique<FiniteStrainAssembler<2>>(*current->dof_handler, laws, 1.0, parameters.stabilization);
     if (loads_function)
       loads_function(*assembler);
     constraints.clear();
@@ -696,10 +694,12 @@ namespace dealvem
   FiniteSliding::evaluate(StepRecord &record) const
   {
     const auto np = contact->n_pairs();
+    const auto n0 = original.n_vertices();
     record.normal_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
     record.friction_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
     record.n_active = record.n_slipping = 0;
-    record.max_slip = record.pairing_offset = 0;
+    record.max_slip = record.pairing_offset = record.merged_offset = 0;
+    record.n_merged                         = 0;
     // at each pair, the shortest current slave sub-edge (for the slip) and
     // the length of the sub-edges it touches (the chord over which its
     // normal turns: the scale of the pairing offset)
@@ -737,7 +737,15 @@ namespace dealvem
             // the difference of the two sides' parametrizations, O(h^3))
             const auto   x   = contact->current_positions(i, solution);
             const double off = std::abs((x[1] - x[0]) * t);
-            if (chord[i] > 0 && !contact->get_pairs()[i].is_midpoint)
+            const auto &pair   = contact->get_pairs()[i];
+            // (two vertices of the original mesh: a merge, Parameters::
+            // insertion's merge_fraction)
+            if (chord[i] > 0 && !pair.is_midpoint && pair.master_entity < n0 && pair.slave_entity < n0)
+              {
+                ++record.n_merged;
+                record.merged_offset = std::max(record.merged_offset, off / chord[i]);
+              }
+            else if (chord[i] > 0 && !pair.is_midpoint)
               {
                 record.pairing_offset = std::max(record.pairing_offset, off / chord[i]);
               }

@@ -92,6 +92,42 @@ namespace dealvem
 
   template <int dim>
   void
+  ElasticityOperator<dim>::boundary_stabilization_form(const VirtualElement<dim> &element,
+                                                       dealii::FullMatrix<double> &S)
+  {
+    const PolygonGeometry<dim> &geometry = element.get_geometry();
+    const unsigned int          k = element.get_degree(), n = element.n_dofs_per_cell(), N = geometry.n_vertices();
+    S.reinit(n, n);
+    double perimeter = 0;
+    for (unsigned int e = 0; e < N; ++e)
+      perimeter += geometry.edge_length(e);
+    const double mean_length = perimeter / N;
+    // the stiffness of d/ds on an edge of unit length: nodes (v0, v1), or
+    // (v0, midpoint, v1) as VirtualElement::edge_nodes() lists them
+    const double linear[2][2]    = {{1., -1.}, {-1., 1.}};
+    const double quadratic[3][3] = {{7. / 3, -8. / 3, 1. / 3}, {-8. / 3, 16. / 3, -8. / 3}, {1. / 3, -8. / 3, 7. / 3}};
+    const double m               = (k == 1 ? 2. : 5.);
+    for (unsigned int e = 0; e < N; ++e)
+      {
+        const std::vector<unsigned int> nodes = element.edge_nodes(e);
+        const double                    w     = std::min(mean_length / geometry.edge_length(e), 1e3) / m;
+        for (unsigned int a = 0; a < nodes.size(); ++a)
+          for (unsigned int b = 0; b < nodes.size(); ++b)
+            {
+              const double v = w * (k == 1 ? linear[a][b] : quadratic[a][b]);
+              for (unsigned int c = 0; c < 2; ++c)
+                S(2 * nodes[a] + c, 2 * nodes[b] + c) += v;
+            }
+      }
+    if (k == 2)
+      for (unsigned int c = 0; c < 2; ++c)
+        S(2 * (2 * N) + c, 2 * (2 * N) + c) = 1.;
+  }
+
+
+
+  template <int dim>
+  void
   ElasticityOperator<dim>::add_stabilization(const VirtualElement<dim>  &element,
                                              dealii::FullMatrix<double> &K,
                                              const double                gamma,
@@ -107,6 +143,19 @@ namespace dealvem
         (stabilization == Stabilization::automatic && element.get_degree() == 1))
       {
         K.add(gamma * tau, element.get_stabilization_form());
+        return;
+      }
+    if (stabilization == Stabilization::boundary)
+      {
+        dealii::FullMatrix<double> S;
+        boundary_stabilization_form(element, S);
+        RowMatrix I_Pi = -view(element.get_projector_dof_basis());
+        for (unsigned int i = 0; i < n; ++i)
+          I_Pi(i, i) += 1.;
+        const RowMatrix Ks = I_Pi.transpose() * view(S) * I_Pi;
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            K(i, j) += gamma * tau * 0.5 * (Ks(i, j) + Ks(j, i));
         return;
       }
     // (I - Pi)^T diag(d) (I - Pi), d_i = c_k max(K_ii, 1e-3 tau)

@@ -78,8 +78,8 @@ bad_case(finite_strain_monitor "Parameter 'Finite strain/Monitor point' = (0.3 0
   "${small_mesh}${ok_bc}${neo}subsection Finite strain\n  set Enabled = true\n  set Monitor point = 0.3, 0.3\nend\n")
 bad_case(finite_strain_monitor_text "Parameter 'Finite strain/Monitor point' = '1': expected two coordinates 'x, y'"
   "${small_mesh}${ok_bc}${neo}subsection Finite strain\n  set Enabled = true\n  set Monitor point = 1\nend\n")
-bad_case(finite_strain_contact "Parameter 'Finite strain/Enabled' is true, but 'Number of bodies' is 2: the program solves contact problems at small strain"
-  "${contact_prm}subsection Material\n  set Law = neo-hooke\nend\n${fs_on}")
+# (finite strain with contact is finite sliding: its bad input is checked in
+# app/finite_sliding_program)
 
 # ---- the size of a run
 bad_case(huge_subdivisions "This run is very large: more than 2e+07 DoFs"

@@ -157,6 +157,18 @@ main()
         Qf -= f_rot;
         const double deviation = Qf.linfty_norm() / f.linfty_norm();
         testing::check_small(deviation, 1e-12, name + ": whole internal force, |f(u') - Q f(u)| / max |f|");
+        // the same with the boundary rule (FiniteSliding's): its form acts
+        // on each component alike, so it commutes with the rotation too
+        FiniteStrainAssembler<2> boundary_rule(dof_handler, testing::one_law_library(dof_handler, *law), 1.0,
+                                               Stabilization::boundary);
+        boundary_rule.freeze_stabilization(u);
+        boundary_rule.assemble(u, 0., f, none, nullptr, nullptr);
+        boundary_rule.freeze_stabilization(u_rot);
+        boundary_rule.assemble(u_rot, 0., f_rot, none, nullptr, nullptr);
+        rotate(f, Qf);
+        Qf -= f_rot;
+        testing::check_small(Qf.linfty_norm() / f.linfty_norm(), 1e-12,
+                             name + ": whole internal force, boundary rule, |f(u') - Q f(u)| / max |f|");
       }
   return testing::finish();
 }

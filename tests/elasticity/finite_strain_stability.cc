@@ -21,6 +21,8 @@
 // - trace rule with the plain small-strain scaling (initial tangent):
 //   indefinite at s = 1.9 (measured -1152): Neo-Hooke stiffens in
 //   compression, the initial scale does not follow.
+// - boundary rule (tangential derivatives on the edges), current scaling:
+//   positive definite at s = 0, 1 and 1.9, like the trace rule.
 // Checked: the signs, with the smallest eigenvalue beyond 20 in absolute
 // value (round-off is about 1e-10 of the largest).
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -76,7 +78,7 @@ smallest_eigenvalue(const VEMDoFHandler<2> &dof_handler,
   dealii::Vector<double>     eigenvalues;
   dealii::FullMatrix<double> eigenvectors;
   A.compute_eigenvalues_symmetric(-1e300, 1e300, 0., eigenvalues, eigenvectors);
-  std::cout << "  s = " << s << ", " << (rule == Stabilization::trace ? "trace" : "diagonal") << " rule, "
+  std::cout << "  s = " << s << ", " << (rule == Stabilization::trace ? "trace" : rule == Stabilization::boundary ? "boundary" : "diagonal") << " rule, "
             << (scaling == StabilizationScaling::current_tangent ? "current" : "initial")
             << "-tangent scaling: smallest eigenvalue " << eigenvalues[0] << ", largest "
             << eigenvalues[eigenvalues.size() - 1] << std::endl;
@@ -93,9 +95,14 @@ main()
   using S  = Stabilization;
   using SS = StabilizationScaling;
 
-  for (const S rule : {S::trace, S::diagonal})
+  for (const S rule : {S::trace, S::diagonal, S::boundary})
     testing::check(smallest_eigenvalue(dof_handler, 0., rule, SS::current_tangent) > 20.,
                    "s = 0: positive definite");
+  // the boundary rule (FiniteSliding's) keeps the trace rule's scale by
+  // the current tangent: positive definite where the trace rule is
+  for (const double s : {1., 1.9})
+    testing::check(smallest_eigenvalue(dof_handler, s, S::boundary, SS::current_tangent) > 20.,
+                   "s = " + std::to_string(s) + ", boundary rule, current tangent: positive definite");
   testing::check(smallest_eigenvalue(dof_handler, 1., S::trace, SS::current_tangent) > 20.,
                  "s = 1, trace rule, current tangent: positive definite");
   testing::check(smallest_eigenvalue(dof_handler, 1.9, S::trace, SS::current_tangent) > 20.,

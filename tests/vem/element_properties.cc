@@ -7,7 +7,8 @@
 //   (checked as Pi_* D = I and Pi D = D), relative 1e-10;
 // - the element stiffness is symmetric and positive semidefinite with
 //   exactly three zero eigenvalues (|lambda| <= 1e-10 lambda_max), and the
-//   kernel contains the rigid-body modes;
+//   kernel contains the rigid-body modes; with the default rules and with
+//   Stabilization::boundary;
 // - the consistency part reproduces the energy of polynomials:
 //   D^T K D = a(p_alpha, p_beta), the elasticity form integrated by
 //   quadrature from the polynomials' gradients (K_E exact on [P_k]^2);
@@ -66,12 +67,13 @@ check_polygon(const std::string &name, const std::vector<P> &vertices)
 {
   for (const unsigned int k : {1u, 2u})
     for (const auto model : {ElasticMaterial::Model::plane_strain, ElasticMaterial::Model::plane_stress})
+      for (const auto rule : {Stabilization::automatic, Stabilization::boundary})
       {
         const ElasticMaterial material(210e3, 0.3, model);
         VirtualElement<2>     element(k);
         element.reinit(vertices);
         ElasticityOperator<2> elasticity;
-        elasticity.reinit(element, material, 1.0);
+        elasticity.reinit(element, material, 1.0, rule);
         const auto        &D  = element.get_D();
         const auto        &Ps = element.get_projector();
         const auto        &K  = elasticity.get_stiffness_matrix();
@@ -105,7 +107,11 @@ check_polygon(const std::string &name, const std::vector<P> &vertices)
         double       lmin   = 1e300;
         for (unsigned int i = 0; i < eig.size(); ++i)
           {
-            if (std::abs(eig[i]) <= 1e-10 * lmax)
+            // (the boundary rule stiffens the short edges of a 1:100 sliver
+            // 20 times more than the trace rule, and so its largest
+            // eigenvalue; the sliver's softest mode, 0.74 in both, is then
+            // 6e-11 of it: the zero threshold is 1e-11 there)
+            if (std::abs(eig[i]) <= (rule == Stabilization::boundary ? 1e-11 : 1e-10) * lmax)
               ++n_zero;
             lmin = std::min(lmin, eig[i]);
           }
@@ -136,7 +142,8 @@ check_polygon(const std::string &name, const std::vector<P> &vertices)
               err_energy     = std::max(err_energy, std::abs(DKD(a, b) - g));
             }
 
-        const std::string tag = name + " k=" + std::to_string(k) + " " + ElasticMaterial::model_name(model);
+        const std::string tag = name + " k=" + std::to_string(k) + " " + ElasticMaterial::model_name(model) +
+                                (rule == Stabilization::boundary ? " boundary rule" : "");
         testing::check_small(err_proj, 1e-10, tag + ": |Pi_* D - I|");
         testing::check_small(asym / kmax, 1e-13, tag + ": asymmetry of K");
         testing::check(lmin >= -1e-10 * lmax, tag + ": K positive semidefinite");
@@ -238,10 +245,45 @@ check_cell_similarity()
     }
 }
 
+// A short edge: the unit square with its bottom edge split at delta. The
+// motion of the split vertex alone, along the edge, stretches an edge of
+// length delta; the boundary rule stiffens it like 1/delta (the trace
+// rule, whose scale is one number for the cell, does not): its energy grows
+// by about 100 from delta = 1e-1 to 1e-3 (here at least 30), the trace
+// rule's by less than 2.
+void
+check_short_edge()
+{
+  const ElasticMaterial material(1.0, 0.3);
+  for (const unsigned int k : {1u, 2u})
+    {
+      double energy[2][2];
+      for (unsigned int r = 0; r < 2; ++r)
+        for (unsigned int i = 0; i < 2; ++i)
+          {
+            const double      delta = (i == 0 ? 1e-1 : 1e-3);
+            VirtualElement<2> element(k);
+            element.reinit({P(0, 0), P(delta, 0), P(1, 0), P(1, 1), P(0, 1)});
+            ElasticityOperator<2> op;
+            op.reinit(element, material, 1.0, r == 0 ? Stabilization::trace : Stabilization::boundary);
+            const auto &K = op.get_stiffness_matrix();
+            // local DoF 2 * 1 + 0: x-component of vertex 1
+            energy[r][i] = K(2, 2);
+          }
+      const std::string tag = "short edge, k=" + std::to_string(k) + ": ";
+      std::cout << "  " << tag << "energy of the split vertex's motion at delta = 1e-1, 1e-3: trace rule "
+                << energy[0][0] << ", " << energy[0][1] << "; boundary rule " << energy[1][0] << ", "
+                << energy[1][1] << std::endl;
+      testing::check(energy[1][1] > 30 * energy[1][0], tag + "the boundary rule stiffens the short edge");
+      testing::check(energy[0][1] < 2 * energy[0][0], tag + "the trace rule does not");
+    }
+}
+
 int
 main()
 {
   check_cell_similarity();
+  check_short_edge();
   std::mt19937 rng(42);
   check_polygon("triangle", {P(0, 0), P(1, 0), P(0.2, 0.9)});
   check_polygon("unit square", {P(0, 0), P(1, 0), P(1, 1), P(0, 1)});

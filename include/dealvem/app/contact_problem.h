@@ -182,6 +182,22 @@ namespace dealvem
       /// (`base_name-interface.csv`; with several load steps also one per
       /// step).
       bool        write_vtu = true, write_json = true, write_pictures = true, write_csv = true;
+      /// Finite strain with finite sliding ('Finite strain/Enabled =
+      /// true'): run() solves the load steps with FiniteSliding (the bodies'
+      /// hyperelastic laws, the pairs made again in the current
+      /// configuration at every step, frictionless, Coulomb by multipliers
+      /// or tied) instead of the small-strain contact solvers.
+      bool finite_strain = false;
+      /// Newton's controls of the finite-strain path ('Finite strain'
+      /// section; the number of load steps is n_load_steps).
+      FiniteStrainSolver<2>::Parameters newton;
+      /// Finite sliding: the pairing tolerance
+      /// (FiniteSliding::Parameters::pairing_tolerance, 'Contact/Pairing
+      /// tolerance').
+      double       pairing_tolerance  = 1e-8;
+      /// Finite sliding: the most pairing passes per step
+      /// ('Contact/Maximum pairing passes').
+      unsigned int max_pairing_passes = 12;
     };
 
     /// The distributed path runs when @p comm has more than one process
@@ -605,6 +621,18 @@ namespace dealvem
     /// earlier run were removed.
     void
     run_cycles();
+
+    /// Options::finite_strain: the load steps with FiniteSliding, their
+    /// report and output files (VTU per step with a .pvd, the step history
+    /// as CSV and JSON).
+    void
+    run_finite_sliding();
+
+    /// The bodies' meshes of refinement cycle @p cycle appended into
+    /// @p mesh, the material id of each body's cells its index, and the
+    /// bodies' laws added to @p laws by that id.
+    void
+    make_body_meshes(const unsigned int cycle, PolygonalMesh<2> &mesh, MaterialLibrary<2> &laws) const;
 
     /// The steps of one cycle, in the order run_cycle() calls them.
     void

@@ -98,10 +98,10 @@ namespace dealvem
    *    (StepRecord::pairing_offset, StepRecord::n_passes). The state each
    *    pass starts from is the last pass's, so the later passes take one
    *    or two Newton updates. The material points of the inserted nodes
-   *    are relaxed from pass to pass by Aitken's $\Delta^2$ method (each
-   *    followed by its partner vertex): where sticking pairs drag their
-   *    partners along, plain repetition gains only a factor 0.5-0.9 per
-   *    pass.
+   *    are relaxed from pass to pass by Aitken's $\Delta^2$ method, each
+   *    with its own factor (followed by its partner vertex): where
+   *    sticking pairs drag their partners along, plain repetition gains
+   *    only a factor 0.5-0.9 per pass.
    *
    * <h3>Frictional history</h3>
    * Coulomb friction is enforced by Lagrange multipliers in its incremental
@@ -155,6 +155,17 @@ namespace dealvem
       /// characteristic stiffness of the laws over the smallest cell
       /// diameter of the original mesh.
       double complementarity_constant = 0;
+      /// The stabilization rule of the virtual elements. Node insertion
+      /// splits edges wherever a partner lands, also within a small
+      /// fraction of an edge of an existing vertex (a slave vertex passing a
+      /// master vertex does so in every sliding step). The trace rule
+      /// stabilizes the relative motion of the two nodes of such a short
+      /// sub-edge like any other motion, so a contact force on one of them
+      /// folds the trace there (measured: a ring pressed by a plate, a
+      /// sub-edge of 6e-4 of its edge stretched to 2.5 times its length, and
+      /// the pairing stalled at 3e-3). The boundary rule stiffens it by the
+      /// ratio of the lengths, as the material would.
+      Stabilization stabilization = Stabilization::boundary;
       /// Make the pairs again at every step (finite sliding); false keeps
       /// the pairs of the reference configuration (small sliding).
       bool reinsert = true;
@@ -209,6 +220,13 @@ namespace dealvem
       /// partners of an active vertex pair over the length of the slave
       /// sub-edges at the pair.
       double pairing_offset = 0;
+      /// Active pairs of two vertices of the original mesh in the last pass
+      /// (merged by the insertion: closer than the merge fraction of
+      /// Parameters::insertion), not counted in pairing_offset.
+      unsigned int n_merged = 0;
+      /// Their largest tangential offset over the slave sub-edges at the
+      /// pair.
+      double merged_offset = 0;
       /// The pairing offset after each pass (the fixed-point history).
       std::vector<double> pairing_offsets;
       /// Vertices inserted into $M_0$ for the last pass of the step.
@@ -377,10 +395,9 @@ namespace dealvem
     dealii::Vector<double>          first_pass_pairing;
     // the relaxation of the pairing passes of a step (Aitken): for each
     // inserted node, keyed by its partner vertex and its original edge,
-    // its parameter on that edge in the last pass and the change of it
-    // (reference length) from the pass before; the last factor
-    std::map<std::array<unsigned int, 3>, std::pair<double, double>> pairing_history;
-    double                                                           pairing_relaxation = 1;
+    // its parameter on that edge in the last pass, the plain update of it
+    // (reference length) in that pass, and its factor
+    std::map<std::array<unsigned int, 3>, std::array<double, 3>> pairing_history;
     double                 last_time = 0, previous_time = 0;
     double                 last_load_factor = 0, previous_load_factor = 0;
     unsigned int           last_step = 0, previous_step = 0, n_converged = 0;

@@ -31,7 +31,20 @@ namespace dealvem
     diagonal,
     /// "dofi-dofi": $K_s = \gamma\,\tau\,(I-\Pi)^T(I-\Pi)$ with one scale
     /// $\tau = \mathrm{tr}(K_c)/n_{dofs}$ for all degrees of freedom.
-    trace
+    trace,
+    /// Boundary rule: $K_s = \gamma\,\tau\,(I-\Pi)^T S_\partial(I-\Pi)$ with
+    /// the tangential-derivative form of the boundary,
+    /// $S_\partial(u, v) = \sum_e \frac{\bar\ell}{m}\int_e \partial_s u\cdot\partial_s v$
+    /// ($\bar\ell$ the mean edge length of the polygon, $m$ the mean
+    /// diagonal of that form on a polygon of equal edges, so that it has
+    /// the size of the trace rule there) plus the identity on the cell
+    /// moments ($k = 2$). An edge of length $\delta$ stiffens the relative
+    /// motion of its nodes by $\bar\ell/\delta$, as the elasticity of the
+    /// material it bounds would: the rule for polygons with short edges (the
+    /// sub-edges node insertion makes), where the trace and diagonal rules
+    /// leave that motion as soft as any other (ElasticityOperator::
+    /// boundary_stabilization_form()).
+    boundary
   };
 
   /**
@@ -177,6 +190,25 @@ namespace dealvem
      */
     static double
     stabilization_scaling(const dealii::FullMatrix<double> &K_c, const double gamma);
+
+    /**
+     * The form $S_\partial$ of Stabilization::boundary on the local DoFs of
+     * the polygon @p element was last reinit()ed on (before the projection
+     * $(I-\Pi)$): on each edge $e$ and for each component, the stiffness
+     * matrix of $\int_e \partial_s u\,\partial_s v$ of the edge's trace
+     * (linear or quadratic in its nodes) times $\bar\ell/m$, with the mean
+     * edge length $\bar\ell$ and $m = 2$ ($k = 1$) or $5$ ($k = 2$), the
+     * mean diagonal of the sum over the edges when all have the same length;
+     * and 1 on the diagonal of the cell moments ($k = 2$). Positive
+     * semidefinite with the constants on the boundary as its kernel (a
+     * constant is also in the kernel of $I-\Pi$), so
+     * $(I-\Pi)^TS_\partial(I-\Pi)$ vanishes on $[P_k]^2$ and is positive on
+     * the kernel of $\Pi$, as a stabilization must be. The edge integral
+     * scales like the $H^{1/2}$ norm of the boundary trace, robust under
+     * short edges (Beirao da Veiga, Lovadina, Russo, M3AS 2017).
+     */
+    static void
+    boundary_stabilization_form(const VirtualElement<dim> &element, dealii::FullMatrix<double> &S);
 
   private:
     /// The form $A$ on the strain modes for the tangent @p C:
