@@ -127,6 +127,12 @@ namespace dealvem
    *   StepRecord::pairing_offset does not count (vertex pairs only).
    * - Tied contact (Normal::tied) makes its pairs once, in the reference
    *   configuration, and keeps them: it does not slide.
+   * - The passes can cycle instead of converging where a discrete state
+   *   changes from one pass to the next: a pair between stick and slip, a
+   *   partner between the two edges at a kink of a polygonal side, a vertex
+   *   of each side nearly coinciding (measured: the slide of an ironing
+   *   die, doc/architecture.md, "Finite sliding"). The step then throws
+   *   with the offset of every pass.
    */
   class FiniteSliding
   {
