@@ -69,22 +69,26 @@
 //    contact pressures and the contact condition holds to 1e-9 at the
 //    contact points. (The material is elastic and the plate frictionless,
 //    so the result does not depend on the path, only on d.)
-//  - The smooth branch and its end. Near d = 0.5 the inner surface at the
-//    side of the ring (the hinge at (0.6, 0)) is compressed to a tangential
-//    stretch below 0.5 (Biot's surface instability of a half-space of this
-//    material in plane strain sets in at 0.509). On fine meshes the smooth,
-//    symmetric solution ends there at a limit point: beyond it no sub-step
-//    converges, or Newton jumps to a folded state in which the inner
-//    surface next to the symmetry line y = 0 passes through that line (in
-//    the full ring: through its mirror image, i.e. a crease with
+//  - The smooth branch and its end. Towards d = 0.5 the inner surface at
+//    the side of the ring (the hinge at (0.6, 0)) is compressed to a
+//    tangential stretch of about 0.54 at d = 0.45 and below 0.5 beyond
+//    (Biot's surface instability of a half-space of this material in plane
+//    strain sets in at a stretch of 0.509). On fine meshes the smooth,
+//    symmetric solution ends there at a limit point (the tangent stays
+//    positive definite up to it; measured up to r = 5): beyond it no
+//    sub-step converges, or Newton jumps to a folded state in which the
+//    inner surface next to the symmetry line y = 0 passes through that line
+//    (in the full ring: through its mirror image, i.e. a crease with
 //    self-contact, which this model does not have) and the force drops by
-//    20-40 %. Measured (defaults): the smooth branch ends at d = 0.497
-//    (r = 3), 0.480 (r = 4), 0.469 (r = 5), moving down with refinement. A
-//    sub-step is therefore rejected, and the path for this mesh ends, when
-//    no sub-step down to 1/64 of the nominal one converges, when a boundary
-//    point has crossed a symmetry line, or when the force has decreased;
-//    the reported positions beyond are marked "not reached" and get no
-//    reference value where the finest mesh has none (nan).
+//    20-40 %. Measured (defaults): the smooth branch ends at d = 0.498
+//    (r = 3), 0.480 (r = 4), 0.469 (r = 5), 0.463 (r = 6), moving down with
+//    refinement (towards about 0.455 if the trend continues), so there is no
+//    reference value at d = 0.5, and d = 0.45 lies close to the end of the
+//    smooth branch. The path of a mesh ends when no sub-step down to 1/16 of
+//    the nominal one converges, when a boundary point has crossed a
+//    symmetry line, or when the force has decreased; the reported positions
+//    beyond are marked "not reached", and there is no reference value (nan)
+//    where the finest mesh has none.
 //  - Checks printed per d: the force as the integral of the pressure,
 //    F = sum_q w_q p_q, and as the vertical reaction on the symmetry edge
 //    y = 0 (the sum of the internal-force residual over the constrained u_y
@@ -288,28 +292,29 @@ namespace RingReference
   // ------------------------------------------------------------ results
   struct LoadRecord
   {
-    double       d                = 0;
-    double       force            = 0; // sum_q w_q p_q
-    double       reaction         = 0; // residual summed over the u_y DoFs on y = 0
-    double       max_penetration  = 0;
-    double       half_width       = 0;
-    double       min_J            = 0;
-    double       inner_top_y      = 0; // deformed y of the inner top point
-    double       inner_min_y      = 0; // smallest deformed y, upper half of the inner arc
-    double       inner_min_x      = 0; // smallest deformed x, lower half of the inner arc
-    unsigned int n_crossing       = 0; // boundary points across a symmetry line
-    double       inner_min_stretch = 0; // smallest tangential stretch of the inner surface
-    int          n_negative       = -1; // negative eigenvalues of the tangent (-1: not computed)
-    bool         valid            = true; // on the smooth branch
-    unsigned int uzawa_iterations = 0;
-    unsigned int newton_total     = 0; // Newton iterations spent in the Uzawa loop
+    double       d                 = 0;
+    double       force             = 0; // sum_q w_q p_q
+    double       reaction          = 0; // residual summed over the u_y DoFs on y = 0
+    double       max_penetration   = 0;
+    double       half_width        = 0;
+    double       min_J             = 0;
+    double       inner_top_y       = 0;    // deformed y of the inner top point
+    double       inner_min_y       = 0;    // smallest deformed y, upper half of the inner arc
+    double       inner_min_x       = 0;    // smallest deformed x, lower half of the inner arc
+    unsigned int n_crossing        = 0;    // boundary points across a symmetry line
+    double       inner_min_stretch = 0;    // smallest tangential stretch of the inner surface
+    int          n_negative        = -1;   // negative eigenvalues of the tangent (-1: not computed)
+    bool         valid             = true; // on the smooth branch
+    unsigned int uzawa_iterations  = 0;
+    unsigned int newton_total      = 0; // Newton iterations spent in the Uzawa loop
   };
 
   struct NewtonFailure : public std::runtime_error
   {
     explicit NewtonFailure(const std::string &what)
       : std::runtime_error(what)
-    {}
+    {
+    }
   };
 
   // The contact data of one face of the outer arc: the multipliers and the
@@ -401,25 +406,25 @@ namespace RingReference
         std::cerr << text << std::endl;
     }
 
-    const Options            options;
-    const unsigned int       refinements;
-    Triangulation<2>         tria;
-    const FESystem<2>        fe;
-    MappingQCache<2>         mapping; // MappingQ(k), its support points computed once
-    DoFHandler<2>            dof_handler;
-    const QGauss<2>          cell_quadrature;
-    const Quadrature<1>      face_quadrature;  // the contact points of a face
-    const QGauss<1>          check_quadrature; // the state checks on the boundary
-    AffineConstraints<double> constraints;
+    const Options                        options;
+    const unsigned int                   refinements;
+    Triangulation<2>                     tria;
+    const FESystem<2>                    fe;
+    MappingQCache<2>                     mapping; // MappingQ(k), its support points computed once
+    DoFHandler<2>                        dof_handler;
+    const QGauss<2>                      cell_quadrature;
+    const Quadrature<1>                  face_quadrature;  // the contact points of a face
+    const QGauss<1>                      check_quadrature; // the state checks on the boundary
+    AffineConstraints<double>            constraints;
     std::vector<types::global_dof_index> support_y_dofs; // u_y on y = 0
-    SparsityPattern          sparsity;
-    SparseMatrix<double>     tangent;
-    Vector<double>           solution, residual;
-    std::vector<ContactFace> contact_faces;
-    SparseDirectUMFPACK      direct; // the factorised tangent of the last Newton iteration
-    bool                     factorization_valid = false;
-    unsigned int             total_newton = 0, total_substeps = 0;
-    double                   branch_end = -1; // the last d of the smooth branch when it was lost
+    SparsityPattern                      sparsity;
+    SparseMatrix<double>                 tangent;
+    Vector<double>                       solution, residual;
+    std::vector<ContactFace>             contact_faces;
+    SparseDirectUMFPACK                  direct; // the factorised tangent of the last Newton iteration
+    bool                                 factorization_valid = false;
+    unsigned int                         total_newton = 0, total_substeps = 0;
+    double                               branch_end = -1; // the last d of the smooth branch when it was lost
   };
 
   RingProblem::RingProblem(const unsigned int refinements, const Options &options)
@@ -451,7 +456,7 @@ namespace RingReference
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary())
           {
-            const Point<2> a = cell->face(f)->vertex(0), b = cell->face(f)->vertex(1);
+            const Point<2>     a = cell->face(f)->vertex(0), b = cell->face(f)->vertex(1);
             types::boundary_id id;
             if (std::abs(a[0]) < 1e-12 && std::abs(b[0]) < 1e-12)
               id = id_x0;
@@ -472,12 +477,12 @@ namespace RingReference
         if (cell->face(f)->at_boundary())
           for (unsigned int v = 0; v < 2; ++v)
             {
-              const Point<2> p  = cell->face(f)->vertex(v);
-              const auto     id = cell->face(f)->boundary_id();
-              const double   err =
-                (id == id_x0 ? std::abs(p[0]) :
-                 id == id_y0 ? std::abs(p[1]) :
-                 id == id_outer ? std::abs(p.norm() - r_outer) : std::abs(p.norm() - r_inner));
+              const Point<2> p   = cell->face(f)->vertex(v);
+              const auto     id  = cell->face(f)->boundary_id();
+              const double   err = (id == id_x0      ? std::abs(p[0])
+                                    : id == id_y0    ? std::abs(p[1])
+                                    : id == id_outer ? std::abs(p.norm() - r_outer)
+                                                     : std::abs(p.norm() - r_inner));
               AssertThrow(err < 1e-12, ExcMessage("a refined boundary vertex is off its side"));
             }
   }
@@ -490,10 +495,10 @@ namespace RingReference
     DoFRenumbering::Cuthill_McKee(dof_handler);
     constraints.clear();
     const FEValuesExtractors::Scalar ux(0), uy(1);
-    VectorTools::interpolate_boundary_values(
-      mapping, dof_handler, id_x0, Functions::ZeroFunction<2>(2), constraints, fe.component_mask(ux));
-    VectorTools::interpolate_boundary_values(
-      mapping, dof_handler, id_y0, Functions::ZeroFunction<2>(2), constraints, fe.component_mask(uy));
+    VectorTools::interpolate_boundary_values(mapping, dof_handler, id_x0, Functions::ZeroFunction<2>(2), constraints,
+                                             fe.component_mask(ux));
+    VectorTools::interpolate_boundary_values(mapping, dof_handler, id_y0, Functions::ZeroFunction<2>(2), constraints,
+                                             fe.component_mask(uy));
     constraints.close();
     const IndexSet support = DoFTools::extract_boundary_dofs(dof_handler, fe.component_mask(uy), {id_y0});
     for (const auto i : support)
@@ -532,11 +537,11 @@ namespace RingReference
   double
   RingProblem::assemble(const Vector<double> &u, const double d, const bool with_tangent)
   {
-    const FEValuesExtractors::Vector displacement(0);
-    const unsigned int               n_i = fe.n_dofs_per_cell();
-    FEValues<2>     values(mapping, fe, cell_quadrature, update_gradients | update_JxW_values);
-    FEFaceValues<2> face_values(mapping, fe, face_quadrature,
-                                update_values | update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector     displacement(0);
+    const unsigned int                   n_i = fe.n_dofs_per_cell();
+    FEValues<2>                          values(mapping, fe, cell_quadrature, update_gradients | update_JxW_values);
+    FEFaceValues<2>                      face_values(mapping, fe, face_quadrature,
+                                                     update_values | update_quadrature_points | update_JxW_values);
     std::vector<Tensor<2, 2>>            grad_u(cell_quadrature.size());
     std::vector<Tensor<1, 2>>            u_face(face_quadrature.size());
     std::vector<Tensor<2, 2>>            grad_phi(n_i);
@@ -599,7 +604,7 @@ namespace RingReference
             const double trial = c.multiplier[q] + c.penalty * gap;
             if (trial <= 0)
               continue;
-            any_active = true;
+            any_active     = true;
             const double w = face_values.JxW(q);
             force += w * trial;
             for (unsigned int i = 0; i < n_i; ++i)
@@ -628,13 +633,13 @@ namespace RingReference
   RingProblem::energy(const Vector<double> &u, const double d, bool &admissible) const
   {
     const FEValuesExtractors::Vector displacement(0);
-    FEValues<2>               values(mapping, fe, cell_quadrature, update_gradients | update_JxW_values);
-    FEFaceValues<2>           face_values(mapping, fe, face_quadrature, update_values | update_quadrature_points |
-                                                                      update_JxW_values);
-    std::vector<Tensor<2, 2>> grad_u(cell_quadrature.size());
-    std::vector<Tensor<1, 2>> u_face(face_quadrature.size());
-    double                    pi = 0;
-    admissible                   = true;
+    FEValues<2>                      values(mapping, fe, cell_quadrature, update_gradients | update_JxW_values);
+    FEFaceValues<2>                  face_values(mapping, fe, face_quadrature,
+                                                 update_values | update_quadrature_points | update_JxW_values);
+    std::vector<Tensor<2, 2>>        grad_u(cell_quadrature.size());
+    std::vector<Tensor<1, 2>>        u_face(face_quadrature.size());
+    double                           pi = 0;
+    admissible                          = true;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         values.reinit(cell);
@@ -676,9 +681,9 @@ namespace RingReference
     bool           use_old       = chord && factorization_valid;
     double         last_norm     = std::numeric_limits<double>::max();
     unsigned int   n_short_steps = 0;
-    Vector<double>     update(dof_handler.n_dofs()), trial(dof_handler.n_dofs()), free_residual;
-    bool               admissible = true;
-    double             pi         = energy(solution, d, admissible);
+    Vector<double> update(dof_handler.n_dofs()), trial(dof_handler.n_dofs()), free_residual;
+    bool           admissible = true;
+    double         pi         = energy(solution, d, admissible);
     if (!admissible)
       throw NewtonFailure("the initial state is inverted");
     double last_update = std::numeric_limits<double>::max();
@@ -698,8 +703,7 @@ namespace RingReference
         {
           std::ostringstream s;
           s << "    Newton " << it << (use_old ? " (chord)" : "") << ": |r| = " << std::scientific
-            << std::setprecision(3) << norm << " (tol " << tolerance << "), force " << std::setprecision(12)
-            << force;
+            << std::setprecision(3) << norm << " (tol " << tolerance << "), force " << std::setprecision(12) << force;
           log(s.str());
         }
         // converged, or the last update was round-off and the residual small
@@ -708,8 +712,8 @@ namespace RingReference
             total_newton += it;
             return it;
           }
-        if (it >= 25)
-          throw NewtonFailure("Newton did not converge in 25 iterations");
+        if (it >= 15)
+          throw NewtonFailure("Newton did not converge in 15 iterations");
         if (n_short_steps >= 4)
           throw NewtonFailure("four steps in a row shortened to 1/16 or less");
 
@@ -771,10 +775,10 @@ namespace RingReference
   RingProblem::contact_state(const double d, const bool update_multipliers)
   {
     const FEValuesExtractors::Vector displacement(0);
-    FEFaceValues<2>           face_values(mapping, fe, face_quadrature, update_values | update_quadrature_points |
-                                                                      update_JxW_values);
-    std::vector<Tensor<1, 2>> u_face(face_quadrature.size());
-    ContactSummary            sum;
+    FEFaceValues<2>                  face_values(mapping, fe, face_quadrature,
+                                                 update_values | update_quadrature_points | update_JxW_values);
+    std::vector<Tensor<1, 2>>        u_face(face_quadrature.size());
+    ContactSummary                   sum;
     for (auto &c : contact_faces)
       {
         face_values.reinit(c.cell, c.face_no);
@@ -807,16 +811,15 @@ namespace RingReference
   RingProblem::geometry_checks(LoadRecord &record) const
   {
     const FEValuesExtractors::Vector displacement(0);
-    FEValues<2>               values(mapping, fe, cell_quadrature, update_gradients);
-    FEFaceValues<2>           face_values(mapping, fe, check_quadrature, update_values | update_gradients |
-                                                                      update_quadrature_points |
-                                                                      update_normal_vectors);
-    std::vector<Tensor<2, 2>> grad_u(cell_quadrature.size()), grad_u_face(check_quadrature.size());
-    std::vector<Tensor<1, 2>> u_face(check_quadrature.size());
-    record.min_J       = std::numeric_limits<double>::max();
+    FEValues<2>                      values(mapping, fe, cell_quadrature, update_gradients);
+    FEFaceValues<2>                  face_values(mapping, fe, check_quadrature,
+                                                 update_values | update_gradients | update_quadrature_points | update_normal_vectors);
+    std::vector<Tensor<2, 2>>        grad_u(cell_quadrature.size()), grad_u_face(check_quadrature.size());
+    std::vector<Tensor<1, 2>>        u_face(check_quadrature.size());
+    record.min_J             = std::numeric_limits<double>::max();
     record.inner_min_stretch = std::numeric_limits<double>::max();
     record.inner_min_x = record.inner_min_y = std::numeric_limits<double>::max();
-    record.n_crossing  = crossings();
+    record.n_crossing                       = crossings();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         values.reinit(cell);
@@ -859,7 +862,7 @@ namespace RingReference
   unsigned int
   RingProblem::negative_eigenvalues() const
   {
-    const unsigned int       n = tangent.m();
+    const unsigned int        n = tangent.m();
     std::vector<unsigned int> first(n);
     std::vector<std::size_t>  start(n + 1, 0);
     for (unsigned int i = 0; i < n; ++i)
@@ -914,8 +917,8 @@ namespace RingReference
     const FEValuesExtractors::Vector displacement(0);
     FEFaceValues<2>           face_values(mapping, fe, check_quadrature, update_values | update_quadrature_points);
     std::vector<Tensor<1, 2>> u_face(check_quadrature.size());
-    unsigned int              n = 0;
-    const double tolerance = 1e-12;
+    unsigned int              n         = 0;
+    const double              tolerance = 1e-12;
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary())
@@ -990,7 +993,7 @@ namespace RingReference
             double force = 0;
             if (converged)
               {
-                force = contact_state(d_new, false).force;
+                force                      = contact_state(d_new, false).force;
                 const unsigned int crossed = crossings();
                 if (options.verbose)
                   {
@@ -1016,7 +1019,7 @@ namespace RingReference
               {
                 restore();
                 h /= 2;
-                if (h < nominal / 64)
+                if (h < nominal / 16)
                   {
                     log("  no sub-step converges: the smooth branch ends");
                     lost = true;
@@ -1112,8 +1115,8 @@ namespace RingReference
   // ------------------------------------------------------- the mesh study
   struct Extrapolation
   {
-    double value = std::numeric_limits<double>::quiet_NaN();
-    double error = std::numeric_limits<double>::quiet_NaN();
+    double value      = std::numeric_limits<double>::quiet_NaN();
+    double error      = std::numeric_limits<double>::quiet_NaN();
     bool   richardson = false;
   };
 
@@ -1211,8 +1214,8 @@ main(int argc, char **argv)
                 << "ring 0.6 < r < 1.0, quarter model; plane strain Neo-Hooke E = " << young << ", nu = " << poisson
                 << " (lambda = " << std::setprecision(10) << lambda_L << ", mu = " << mu_L << ")\n"
                 << "MappingQ(" << options.mapping_degree << "), QGauss(3) cells, contact points "
-                << options.contact_rule << " per face, penalty " << options.penalty_factor
-                << " E/h_face with Uzawa, " << options.substeps << " sub-steps per 0.05 of plate travel\n\n";
+                << options.contact_rule << " per face, penalty " << options.penalty_factor << " E/h_face with Uzawa, "
+                << options.substeps << " sub-steps per 0.05 of plate travel\n\n";
 
       std::vector<unsigned int>            levels;
       std::vector<std::vector<LoadRecord>> results;
@@ -1240,11 +1243,11 @@ main(int argc, char **argv)
                 }
               std::cout << std::setprecision(15) << rec.force << " | " << rec.reaction << " | " << std::scientific
                         << std::setprecision(2) << std::abs(rec.reaction - rec.force) / rec.force << "  | "
-                        << std::setw(5) << rec.uzawa_iterations << " | " << std::setw(6) << rec.newton_total
-                        << " | " << std::setw(11) << rec.max_penetration << " | " << std::fixed
-                        << std::setprecision(6) << rec.half_width << "   | " << std::setprecision(4) << rec.min_J
-                        << " | " << std::setprecision(6) << rec.inner_top_y << "    | " << rec.inner_min_y
-                        << "    | " << rec.inner_min_x << "    | " << std::setw(7) << rec.n_crossing << " | "
+                        << std::setw(5) << rec.uzawa_iterations << " | " << std::setw(6) << rec.newton_total << " | "
+                        << std::setw(11) << rec.max_penetration << " | " << std::fixed << std::setprecision(6)
+                        << rec.half_width << "   | " << std::setprecision(4) << rec.min_J << " | "
+                        << std::setprecision(6) << rec.inner_top_y << "    | " << rec.inner_min_y << "    | "
+                        << rec.inner_min_x << "    | " << std::setw(7) << rec.n_crossing << " | "
                         << std::setprecision(4) << rec.inner_min_stretch << "            | " << std::setw(9)
                         << (rec.n_negative < 0 ? std::string("-") : std::to_string(rec.n_negative)) << " |\n";
             }
@@ -1302,8 +1305,7 @@ main(int argc, char **argv)
           std::vector<double> F;
           for (unsigned int m = 0; m < n_meshes; ++m)
             F.push_back(results[m][k].valid ? results[m][k].force : std::numeric_limits<double>::quiet_NaN());
-          std::cout << "| " << std::fixed << std::setprecision(2) << (k + 1) * report_step << " |"
-                    << std::scientific;
+          std::cout << "| " << std::fixed << std::setprecision(2) << (k + 1) * report_step << " |" << std::scientific;
           for (unsigned int m = 1; m < n_meshes; ++m)
             std::cout << " " << std::setw(14) << std::setprecision(3) << (F[m] - F[m - 1]) / F[m] << " |";
           for (unsigned int m = 2; m < n_meshes; ++m)
@@ -1347,21 +1349,20 @@ main(int argc, char **argv)
           if (rec.force > 0)
             worst_check = std::max(worst_check, std::abs(rec.reaction - rec.force) / rec.force);
       std::cout << "\nlargest relative error estimate (where there is a reference): " << std::scientific
-                << std::setprecision(2) << worst << "; largest |reaction - F| / F over all meshes and d: "
-                << worst_check << std::defaultfloat << "\n\n";
+                << std::setprecision(2) << worst
+                << "; largest |reaction - F| / F over all meshes and d: " << worst_check << std::defaultfloat << "\n\n";
 
       std::cout << "# reference: d F_extrapolated error_estimate\n";
       for (unsigned int k = 0; k < n_reports; ++k)
         std::cout << std::fixed << std::setprecision(2) << (k + 1) * report_step << " " << std::scientific
-                  << std::setprecision(12) << reference[k].value << " " << std::setprecision(3)
-                  << reference[k].error << "\n";
+                  << std::setprecision(12) << reference[k].value << " " << std::setprecision(3) << reference[k].error
+                  << "\n";
       std::cout << std::defaultfloat << std::flush;
     }
   catch (std::exception &exc)
     {
       std::cerr << "\n----------------------------------------------------\n"
-                << "Exception: " << exc.what() << "\n----------------------------------------------------"
-                << std::endl;
+                << "Exception: " << exc.what() << "\n----------------------------------------------------" << std::endl;
       return 1;
     }
   return 0;
