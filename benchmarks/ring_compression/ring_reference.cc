@@ -116,6 +116,12 @@
 //    there are meshes): if every refinement at least halves the error, each
 //    term bounds the error of F_r; the largest is taken because a single
 //    difference can be small by chance (seen on the coarse meshes).
+//  - Measured (defaults; Debian 12, deal.II 9.4.1, Release, one core of a
+//    VM shared with other work): r = 2..5 in about 2.5 minutes (r = 5 about
+//    2 minutes of CPU), r = 6 about 15 minutes. F and the reaction agree to
+//    1e-10 relative. For d <= 0.45 the forces of r = 6 differ from those of
+//    r = 5 by at most 4e-5 relative, and with --contact-points gauss2 the
+//    r = 5 forces lie within 3e-5 of the default ones.
 //
 // Options (all optional):
 //   --min-refinements N       coarsest mesh (default 2: 16 x 4 cells)

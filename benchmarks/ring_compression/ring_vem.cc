@@ -9,7 +9,7 @@
 // nu = 0.3, plane strain, u_x = 0 on x = 0, u_y = 0 on y = 0; the plate
 // [0, 1.2] x [1, 1.1] of m x 3 quads, every node of it moved down by d
 // (rigid), frictionless, d = 0.05 ... 0.45 in nine steps (the reference
-// loses its smooth branch beyond d = 0.47).
+// ends its smooth branch at a limit point near d = 0.46).
 //
 // Usage: benchmark_ring_vem [k r m [swap]]   (default: 2 3 60)
 //   k     the order of the virtual elements (1 or 2)

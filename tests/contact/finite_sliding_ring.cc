@@ -9,13 +9,14 @@
 // x = 0 and u_y = 0 on y = 0; the plate a rectangle [0, 1.2] x [1, 1.1] of
 // 60 x 3 quads whose every node is moved down by d (rigid), frictionless,
 // d = 0.05 ... 0.45 in nine steps (the ring squeezed to 55 % of its
-// diameter; the FE_Q(2) reference loses its smooth branch beyond
-// d = 0.47), k = 2, pairing tolerance 1e-6. The contact zone spreads from
+// diameter; the smooth branch of the FE_Q(2) reference ends at a limit
+// point near d = 0.46, where the inner side buckles), k = 2, pairing
+// tolerance 1e-6. The contact zone spreads from
 // the apex to a half-width of 0.66, so the ring slides over the plate by
 // many of its sub-edges.
 // The reference: deal.II FE_Q(2) finite strain on the exact circle
-// (MappingQ(3), the same law), the plate by an augmented Lagrangian at the
-// quadrature points, 16384 cells (benchmarks/ring_compression: run.sh
+// (isoparametric MappingQ(2), the same law), the plate by an augmented
+// Lagrangian at the face nodes of the outer arc, 16384 cells (benchmarks/ring_compression: run.sh
 // runs it on several meshes and the VEM beside it).
 // Checked: every step converges; the contact conditions hold at every
 // pair (no penetration, closed where pressed, no pull; 1e-10 of the
