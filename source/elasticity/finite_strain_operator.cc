@@ -223,10 +223,8 @@ namespace dealvem
         S.mmult(SI, I_Pi);
         I_Pi.Tmmult(K_s, SI);
         for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j < i; ++j)
+          for (unsigned int j = 0; j <= i; ++j)
             K_s(i, j) = K_s(j, i) = 0.5 * gamma_tau * (K_s(i, j) + K_s(j, i));
-        for (unsigned int i = 0; i < n; ++i)
-          K_s(i, i) *= gamma_tau;
         return;
       }
     for (unsigned int i = 0; i < n; ++i)
