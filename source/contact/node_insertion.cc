@@ -710,7 +710,13 @@ namespace dealvem
         const unsigned int w  = onto.edges[c.projection.edge][c.projection.t <= 0.5 ? 0 : 1];
         const double       d  = c.projection.point.distance(mesh.vertex(w));
         const double       hl = std::min(from.h.at(v), onto.h.at(w));
-        if (d <= f * hl)
+        // (rule 3 refuses a split that would leave a sub-edge shorter than
+        // 1e-3 of the edge length: a vertex that close to a vertex of the
+        // other side is merged with it also when the merge fraction is
+        // smaller, rather than left without a partner)
+        const auto  &ends = onto.edges[c.projection.edge];
+        const double L    = mesh.vertex(ends[0]).distance(mesh.vertex(ends[1]));
+        if (d <= f * hl || d < 1e-3 * std::min(from.h.at(v), L))
           merges.push_back({d, v_is_slave ? w : v, v_is_slave ? v : w});
       };
       for (const auto &c : on_master)

@@ -155,5 +155,35 @@ namespace dealvem
 
 
 
+  template <int dim>
+  double
+  FiniteStrainAssembler<dim>::strain_energy(const dealii::Vector<double> &u) const
+  {
+    AssertThrow(u.size() == dof_handler.n_dofs(),
+                dealii::ExcMessage("FiniteStrainAssembler::strain_energy(): the displacement has " +
+                                   std::to_string(u.size()) + " entries, not n_dofs() = " +
+                                   std::to_string(dof_handler.n_dofs()) + "."));
+    AssertThrow(stabilization_matrices.size() == dof_handler.get_mesh().n_cells(),
+                dealii::ExcMessage("FiniteStrainAssembler::strain_energy(): the stabilization is not frozen for "
+                                   "this mesh; call freeze_stabilization() first."));
+    VEMValues<dim>            vem_values(dof_handler, dealii::update_quadrature_points | dealii::update_JxW_values);
+    FiniteStrainOperator<dim> op;
+    dealii::Vector<double>    local_u, Ksu;
+    double                    energy = 0;
+    for (unsigned int c = 0; c < dof_handler.get_mesh().n_cells(); ++c)
+      {
+        vem_values.reinit(c);
+        op.reinit(vem_values);
+        dof_handler.get_dof_values(c, u, local_u);
+        energy += op.strain_energy(loads.get_law(c), local_u);
+        Ksu.reinit(local_u.size());
+        stabilization_matrices[c].vmult(Ksu, local_u);
+        energy += 0.5 * (local_u * Ksu);
+      }
+    return energy;
+  }
+
+
+
   template class FiniteStrainAssembler<2>;
 } // namespace dealvem

@@ -6,6 +6,7 @@
 
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/finite_strain_operator.h>
+#include <dealvem/elasticity/hyperelastic_material.h>
 #include <dealvem/vem/vem_values.h>
 
 #include <algorithm>
@@ -49,6 +50,28 @@ namespace dealvem
           Fq += local_u[i] * G[q * n_dofs_cell + i];
         F[q] = Fq;
       }
+  }
+
+
+
+  template <int dim>
+  double
+  FiniteStrainOperator<dim>::strain_energy(const ConstitutiveLaw<dim> &law, const dealii::Vector<double> &local_u) const
+  {
+    const auto *hyperelastic = dynamic_cast<const HyperelasticMaterial *>(&law);
+    AssertThrow(hyperelastic != nullptr,
+                dealii::ExcMessage("FiniteStrainOperator::strain_energy(): the law '" + law.get_name() +
+                                   "' of cell " + std::to_string(cell) + " is not a hyperelastic law with an energy."));
+    std::vector<dealii::Tensor<2, dim>> F;
+    deformation_gradients(local_u, F);
+    double energy = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double J = dealii::determinant(F[q]);
+        AssertThrow(J > 0 && std::isfinite(J), ExcInvertedCell(cell, q, J));
+        energy += hyperelastic->strain_energy(F[q]) * JxW[q];
+      }
+    return energy;
   }
 
 

@@ -17,9 +17,11 @@
 #include <dealvem/mesh/polygonal_mesh.h>
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace dealvem
@@ -237,6 +239,10 @@ namespace dealvem
       std::vector<double> pairing_offsets;
       /// Vertices inserted into $M_0$ for the last pass of the step.
       unsigned int n_inserted = 0;
+      /// Vertices of $M_0$ on a straight side moved along it to face a
+      /// vertex of the other side in the last pass (see the class
+      /// documentation, step 2).
+      unsigned int n_moved = 0;
       /// Node pairs of the last pass.
       unsigned int n_pairs = 0;
       /// DoFs of the step's mesh.
@@ -258,6 +264,11 @@ namespace dealvem
       /// The largest |slip| of the step over the shortest slave sub-edge
       /// at its pair (current lengths).
       double max_slip = 0;
+      /// The work of the friction forces over the step, $\sum_i
+      /// |\lambda_{t,i}\, s_i|$ with the tangential multiplier (a force)
+      /// and the slip $s_i$ of the step at each pair (0 without friction):
+      /// the energy the step dissipates.
+      double dissipation = 0;
     };
 
     /**
@@ -338,6 +349,14 @@ namespace dealvem
       return history;
     }
 
+    /// The energy stored in the bodies at the last converged step
+    /// (FiniteStrainAssembler::strain_energy() on the step's mesh; the
+    /// laws must be hyperelastic). With the work of the loads and the
+    /// dissipation of the steps (StepRecord::dissipation) this gives the
+    /// energy balance of a run.
+    double
+    strain_energy() const;
+
   private:
     /// A mesh with its DoF handler (the handler refers to the mesh).
     struct Discretization
@@ -374,6 +393,32 @@ namespace dealvem
 
     /// The original edges of the interfaces: (a, b, cell) of $M_0$.
     std::vector<std::array<unsigned int, 3>> interface_edges;
+    /// The neighbours of each vertex of an interface along its side (one
+    /// or two vertices of $M_0$).
+    std::map<unsigned int, std::vector<unsigned int>> side_neighbours;
+    /// The boundary id of each original interface edge (by its vertices).
+    std::map<std::uint64_t, dealii::types::boundary_id> edge_ids;
+    /// The vertices of $M_0$ inside a straight run of one interface side
+    /// (two collinear edges of one boundary id): their material points may
+    /// move along the side (see prepare_pass()).
+    std::set<unsigned int> movable;
+    /// The original vertices of the master and the slave side of each
+    /// interface.
+    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> interface_sides;
+
+    /// Move each vertex of a straight side that faces a vertex of the other
+    /// side within 0.05 of the local edge length along the sides onto the
+    /// normal of the other side through that vertex, in the positions @p x
+    /// where the pairs are made.
+    void
+    snap_close_vertices(std::vector<dealii::Point<2>> &x);
+    /// The pairs (vertex, vertex of the other side) snap_close_vertices()
+    /// made in a pass of the current step.
+    std::set<std::pair<unsigned int, unsigned int>> step_snaps;
+
+    /// The pairs of two original vertices (master, slave) merged in a pass
+    /// of the current step (they stay merged, see prepare_pass()).
+    std::set<std::pair<unsigned int, unsigned int>> step_merges;
 
     /// The discretization of the current pass and that of the start of the
     /// step (the last converged step's; null before the first step).
@@ -399,11 +444,20 @@ namespace dealvem
     /// contact_origin).
     std::unique_ptr<Discretization> first_pass_disc;
     dealii::Vector<double>          first_pass_pairing;
-    // the relaxation of the pairing passes of a step (Aitken): for each
-    // inserted node, keyed by its partner vertex and its original edge,
-    // its parameter on that edge in the last pass, the plain update of it
-    // (reference length) in that pass, and its factor
-    std::map<std::array<unsigned int, 3>, std::array<double, 3>> pairing_history;
+    /// The configuration where the pairs of the current pass were made (on
+    /// the current discretization).
+    dealii::Vector<double> pairing_base;
+    /// The acceleration of the pairing passes of a step (Anderson): the
+    /// displacements of the interface vertices where the last passes made
+    /// their pairs, and their changes to the converged states.
+    std::vector<std::vector<double>> anderson_x, anderson_r;
+    std::set<unsigned int>           anderson_moved;
+
+    /// The configuration where the next pass of a step makes its pairs:
+    /// the last one moved towards the last converged state by each
+    /// interface vertex's Aitken factor (see the implementation).
+    dealii::Vector<double>
+    relaxed_pairing_state();
     double                 last_time = 0, previous_time = 0;
     double                 last_load_factor = 0, previous_load_factor = 0;
     unsigned int           last_step = 0, previous_step = 0, n_converged = 0;

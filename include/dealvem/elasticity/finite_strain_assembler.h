@@ -141,6 +141,17 @@ namespace dealvem
              dealii::SparseMatrix<double>            *tangent,
              dealii::Vector<double>                  *rhs) const;
 
+    /**
+     * The stored energy at the displacement @p u: the strain energy of
+     * every cell's consistency part (FiniteStrainOperator::strain_energy())
+     * plus $\frac12 u_K^T K_s u_K$ of its frozen stabilization, the
+     * potential of the internal force assemble() uses. Requires
+     * freeze_stabilization() and hyperelastic laws (HyperelasticMaterial);
+     * throws otherwise, or if @p u inverts a cell.
+     */
+    double
+    strain_energy(const dealii::Vector<double> &u) const;
+
   private:
     const VEMDoFHandler<dim>               &dof_handler;
     MaterialLibrary<dim>                    laws;

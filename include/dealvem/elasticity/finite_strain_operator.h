@@ -186,6 +186,14 @@ namespace dealvem
     void
     deformation_gradients(const dealii::Vector<double> &local_u, std::vector<dealii::Tensor<2, dim>> &F) const;
 
+    /// The strain energy of the consistency part, $\sum_q \psi(F_q) w_q$,
+    /// of the hyperelastic law @p law (HyperelasticMaterial; throws for
+    /// another law) at the local displacement @p local_u: the potential of
+    /// compute_consistency()'s internal force. Throws ExcInvertedCell like
+    /// compute_consistency().
+    double
+    strain_energy(const ConstitutiveLaw<dim> &law, const dealii::Vector<double> &local_u) const;
+
     /**
      * The consistency part: the internal force @p r_c and, if
      * @p with_tangent, the tangent @p K_c (symmetric) of the law @p law at

@@ -1,0 +1,463 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+//
+// step-11: ironing, contact with finite sliding.
+//
+// Build (from a dealvem build directory):   make step-11
+// Run:                                      ./examples/step-11 [--study] [--write-doc-picture]
+// What it does: a stiff rounded die (a half disk of radius 1, a polygon of
+// 16 sides, E = 1000) is pressed 0.2 into a soft Neo-Hooke slab (8 x 1,
+// 64 x 8 squares, E = 1, nu = 0.3) and then slid along it by 1, eight
+// element lengths of the slab, the setup of the ironing benchmarks of
+// Yang, Laursen and Meng (2005) and Puso and Laursen (2004) at the scale
+// of this slab. FiniteSliding makes the node pairs again in the current
+// configuration at every step (node insertion where the die now stands,
+// a vertex of the slab moved along its straight top where it faces a
+// corner of the die), so the die slides over the slab's nodes. Two runs:
+// frictionless and Coulomb friction mu = 0.3.
+// Output: the reaction force on the die at every step (ironing-history.csv
+// and the SVG ironing-forces.svg), one VTU file per step with a .pvd
+// (ParaView plays ironing.pvd as a time series; the mesh of each file is
+// that step's, with its inserted nodes), and the table of the checks:
+// - frictionless: the horizontal force averages to zero over the slide
+//   (an elastic slab without friction does not resist steady sliding):
+//   |mean Fx| / mean Fy <= 0.01;
+// - frictionless: the vertical force oscillates by at most 2 % of its
+//   mean as the die passes the slab's nodes;
+// - energy: at the end of the press, the work of the die equals the
+//   stored energy to 2 % (the trapezoidal rule over four steps);
+// - with friction: work of the die = stored energy + friction dissipation
+//   (the balance of every step is in the CSV file); the remainder is the
+//   error of the incremental (backward Euler) friction law, first order
+//   in the step: at most 25 % of the work at 40 steps per unit slide.
+// The program exits with an error if a check fails.
+// --study repeats the friction run at 10, 20, 40 and 80 steps per unit
+// slide (the remainder must decrease) and with the die refined once more;
+// --write-doc-picture writes the SVG into doc/ of the source tree.
+
+// @sect3{Include files}
+//
+// deal.II for the die's mesh (a half disk refined with its circle); dealvem
+// for the meshes, the hyperelastic laws, FiniteSliding (node insertion in
+// the current configuration, the semismooth Newton solver of each step)
+// and the output.
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <dealvem/contact/finite_sliding.h>
+#include <dealvem/elasticity/hyperelastic_material.h>
+#include <dealvem/elasticity/material_library.h>
+#include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/polygonal_mesh.h>
+#include <dealvem/postprocessing/finite_strain_output.h>
+#include <dealvem/postprocessing/svg_plots.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace Step11
+{
+  using namespace dealvem;
+
+  // @sect3{The problem}
+  //
+  // The slab occupies [0, 8] x [0, 1]; its bottom (boundary id 2 of the
+  // structured mesh) is clamped, its top (id 3) is the master side of the
+  // contact. The die is a half disk of radius 1 centred at (1.5, 2), its
+  // flat side up: its curved side (id 10) is the slave side, its flat side
+  // (id 11) follows the prescribed motion: down by the depth during the
+  // press (time 0 to 1), then along x by the slide (time 1 to 2).
+  struct Ironing
+  {
+    unsigned int degree       = 1;
+    unsigned int die_refine   = 2;
+    double       mu           = 0.3;
+    double       depth        = 0.2;
+    double       slide        = 1.0;
+    unsigned int press_steps  = 4;
+    unsigned int slide_steps  = 40;
+    double       E_slab       = 1.0;
+    double       E_die        = 1000.0;
+    double       nu           = 0.3;
+    double       tolerance    = 1e-5;
+    dealii::Point<2> centre   = dealii::Point<2>(1.5, 2.0);
+
+    // the motion of the die's top at time t
+    dealii::Tensor<1, 2>
+    motion(const double t) const
+    {
+      dealii::Tensor<1, 2> d;
+      d[1] = -depth * std::min(t, 1.0);
+      d[0] = slide * std::max(0.0, t - 1.0);
+      return d;
+    }
+  };
+
+  // The state after one step: the time, the die's displacement, the force
+  // of the slab on the die (the contact force on the die's side), the
+  // pairing passes and Newton updates, and the energy: the work of the die
+  // so far (trapezoidal rule), the stored energy, the dissipation so far.
+  struct StepState
+  {
+    double               t = 0;
+    dealii::Tensor<1, 2> d, force;
+    unsigned int         passes = 0, updates = 0, moved = 0, n_dofs = 0;
+    double               offset = 0, work = 0, stored = 0, dissipated = 0;
+  };
+
+  struct Run
+  {
+    Ironing                problem;
+    std::vector<StepState> steps;
+    double                 setup_time = 0, solve_time = 0;
+
+    // the steps of the slide after its first quarter (the transient as
+    // the die starts to move)
+    std::vector<const StepState *>
+    steady() const
+    {
+      std::vector<const StepState *> s;
+      for (const auto &st : steps)
+        if (st.t >= 1.25)
+          s.push_back(&st);
+      return s;
+    }
+    double
+    mean(const unsigned int comp) const
+    {
+      double sum = 0;
+      for (const auto *s : steady())
+        sum += s->force[comp];
+      return sum / steady().size();
+    }
+    double
+    range(const unsigned int comp) const
+    {
+      double lo = 1e300, hi = -1e300;
+      for (const auto *s : steady())
+        {
+          lo = std::min(lo, s->force[comp]);
+          hi = std::max(hi, s->force[comp]);
+        }
+      return hi - lo;
+    }
+    // the energy remainder W - E - D over the work W at the end
+    double
+    remainder() const
+    {
+      const auto &s = steps.back();
+      return (s.work - s.stored - s.dissipated) / s.work;
+    }
+  };
+
+  // @sect3{The meshes}
+  //
+  // One PolygonalMesh holds both bodies: the slab as structured squares and
+  // the die from a deal.II half disk, refined with a SphericalManifold on
+  // its circle so that its boundary vertices lie on the circle. Material
+  // id 0 is the slab, 1 the die; the die's boundary ids are shifted by 10.
+  void
+  make_mesh(const Ironing &p, PolygonalMesh<2> &mesh)
+  {
+    PolygonalMeshGenerators::structured_quads(mesh, dealii::Point<2>(0, 0), dealii::Point<2>(8, 1), 64, 8);
+    dealii::Triangulation<2> tria;
+    dealii::GridGenerator::half_hyper_ball(tria, dealii::Point<2>(), 1.0);
+    dealii::GridTools::rotate(-M_PI / 2, tria);
+    dealii::GridTools::shift(dealii::Tensor<1, 2>(p.centre), tria);
+    tria.reset_all_manifolds();
+    tria.set_all_manifold_ids(dealii::numbers::flat_manifold_id);
+    tria.set_all_manifold_ids_on_boundary(0, 1);
+    const dealii::SphericalManifold<2> circle(p.centre);
+    tria.set_manifold(1, circle);
+    tria.refine_global(p.die_refine);
+    PolygonalMesh<2> die;
+    PolygonalMeshGenerators::from_triangulation(die, tria);
+    for (unsigned int c = 0; c < die.n_cells(); ++c)
+      die.set_material_id(c, 1);
+    for (unsigned int e = 0; e < die.n_edges(); ++e)
+      if (die.edge(e).at_boundary())
+        die.set_edge_boundary_id(e, die.edge(e).boundary_id + 10);
+    mesh.append(die);
+  }
+
+  // @sect3{One run}
+  //
+  // FiniteSliding gets the original mesh, the laws, the interface (the
+  // slab's top as master, the die's circle as slave) and its settings; the
+  // constraints function clamps the slab's bottom and moves the die's top
+  // at the time of each step, on the mesh of that step (its DoFs change
+  // from step to step as nodes are inserted and removed).
+  Run
+  iron(const Ironing &p, const std::string &output_prefix)
+  {
+    PolygonalMesh<2> mesh;
+    make_mesh(p, mesh);
+    const NeoHookeMaterial slab_law(p.E_slab, p.nu), die_law(p.E_die, p.nu);
+    MaterialLibrary<2>     laws;
+    laws.add(0, slab_law);
+    laws.add(1, die_law);
+    FiniteSliding::Parameters parameters;
+    parameters.degree             = p.degree;
+    parameters.pairing_tolerance  = p.tolerance;
+    parameters.max_pairing_passes = 30;
+    FiniteSliding sliding(mesh, laws, {FiniteSliding::InterfaceData{3, 10, p.mu}}, parameters);
+    sliding.set_constraints_function(
+      [&p](const VEMDoFHandler<2> &dofs, const double t, dealii::AffineConstraints<double> &c) {
+        const auto &m = dofs.get_mesh();
+        const auto  d = p.motion(t);
+        for (unsigned int e = 0; e < m.n_edges(); ++e)
+          {
+            const auto &edge = m.edge(e);
+            if (!edge.at_boundary() || (edge.boundary_id != 2 && edge.boundary_id != 11))
+              continue;
+            std::vector<unsigned int> nodes = {dofs.vertex_node(edge.vertices[0]),
+                                               dofs.vertex_node(edge.vertices[1])};
+            if (dofs.get_degree() == 2)
+              nodes.push_back(dofs.edge_node(e));
+            for (const unsigned int node : nodes)
+              for (unsigned int comp = 0; comp < 2; ++comp)
+                {
+                  const auto dof = VEMDoFHandler<2>::node_dof(node, comp);
+                  if (c.is_constrained(dof))
+                    continue;
+                  c.add_line(dof);
+                  c.set_inhomogeneity(dof, edge.boundary_id == 2 ? 0. : d[comp]);
+                }
+          }
+        c.close();
+      });
+
+    Run run;
+    run.problem = p;
+    std::vector<std::pair<double, std::string>> series;
+    StepState                                   last;
+    const unsigned int                          n = p.press_steps + p.slide_steps;
+    for (unsigned int step = 1; step <= n; ++step)
+      {
+        const double t = step <= p.press_steps ? double(step) / p.press_steps :
+                                                 1.0 + double(step - p.press_steps) / p.slide_steps;
+        sliding.solve_step(step, t);
+        const auto &r = sliding.get_history().back();
+
+        // The contact force on the die (the slave side) is the force of the
+        // slab on the die: Fy > 0 resists the press, Fx < 0 the slide. The
+        // die's top balances it, so the prescribed motion does the work of
+        // minus that force.
+        StepState s;
+        s.t     = t;
+        s.d     = p.motion(t);
+        s.force = r.normal_force[0] + r.friction_force[0];
+        s.passes = r.n_passes;
+        for (const auto &newton : r.newton)
+          s.updates += newton.iterations.size() - 1;
+        s.moved      = r.n_moved;
+        s.n_dofs     = r.n_dofs;
+        s.offset     = r.pairing_offset;
+        s.work       = last.work - 0.5 * (s.force + last.force) * (s.d - last.d);
+        s.stored     = sliding.strain_energy();
+        s.dissipated = last.dissipated + r.dissipation;
+        run.setup_time += r.setup_time;
+        run.solve_time += r.solve_time;
+        run.steps.push_back(s);
+        last = s;
+
+        if (!output_prefix.empty())
+          {
+            std::ostringstream name;
+            name << output_prefix << "-" << std::setw(3) << std::setfill('0') << step << ".vtu";
+            write_finite_strain_vtu_file(name.str(), sliding.get_dof_handler(), laws, sliding.get_solution());
+            series.emplace_back(t, name.str());
+          }
+      }
+    if (!output_prefix.empty())
+      write_pvd_record(output_prefix + ".pvd", series);
+    return run;
+  }
+
+  void
+  check(const bool condition, const std::string &message, std::vector<std::string> &failures)
+  {
+    if (!condition)
+      failures.push_back(message);
+  }
+
+  void
+  print_summary(const std::string &name, const Run &run)
+  {
+    const double Fy = run.mean(1);
+    unsigned int passes = 0, updates = 0, max_passes = 0, moved = 0;
+    for (const auto &s : run.steps)
+      {
+        passes += s.passes;
+        updates += s.updates;
+        max_passes = std::max(max_passes, s.passes);
+        moved += (s.moved > 0);
+      }
+    const auto nst = run.steps.size();
+    std::cout << std::fixed << std::setprecision(4) << name << ": " << run.problem.slide_steps
+              << " slide steps; over the slide Fy = " << Fy << " (oscillation " << std::setprecision(2)
+              << 100 * run.range(1) / Fy << " %), Fx/Fy = " << std::setprecision(4) << run.mean(0) / Fy
+              << " (oscillation " << std::setprecision(2) << 100 * run.range(0) / Fy << " % of Fy); "
+              << std::setprecision(1) << double(passes) / nst << " pairing passes and " << double(updates) / nst
+              << " Newton updates per step (at most " << max_passes << "), a slab vertex moved to face a die corner in "
+              << moved << " of " << nst << " steps; energy: W = " << std::setprecision(5) << run.steps.back().work
+              << ", E = " << run.steps.back().stored << ", D = " << run.steps.back().dissipated
+              << ", (W - E - D)/W = " << std::setprecision(4) << run.remainder() << std::endl;
+  }
+
+  // The force history as an SVG: Fx / Fy and Fy over the die's position.
+  void
+  write_svg(const std::vector<const Run *> &runs, const std::vector<std::string> &names, const std::string &file)
+  {
+    std::vector<SVGPlots::Series> series;
+    for (unsigned int i = 0; i < runs.size(); ++i)
+      {
+        SVGPlots::Series fx, fy;
+        fx.name          = names[i] + ": horizontal force Fx / mean Fy";
+        fy.name          = names[i] + ": vertical force Fy / mean Fy";
+        fx.marker_radius = fy.marker_radius = 2;
+        const double Fy  = runs[i]->mean(1);
+        for (const auto &s : runs[i]->steps)
+          if (s.t >= 1.0)
+            {
+              fx.points.emplace_back(s.d[0], s.force[0] / Fy);
+              fy.points.emplace_back(s.d[0], s.force[1] / Fy);
+            }
+        series.push_back(fx);
+        series.push_back(fy);
+      }
+    SVGPlots::write_line_plot(file, series, "slide of the die", "force / mean vertical force",
+                              "Ironing: the force of the slab on the die as it slides (step-11)");
+  }
+} // namespace Step11
+
+
+// @sect3{The main function}
+int
+main(int argc, char **argv)
+{
+  using namespace Step11;
+  try
+    {
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      bool                                     study = false, doc_picture = false;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string a = argv[i];
+          if (a == "--study")
+            study = true;
+          else if (a == "--write-doc-picture")
+            doc_picture = true;
+          else
+            {
+              std::cerr << "usage: step-11 [--study] [--write-doc-picture]" << std::endl;
+              return 2;
+            }
+        }
+      std::vector<std::string> failures;
+
+      // The frictionless run: 20 slide steps (0.4 of a slab element each).
+      Ironing frictionless;
+      frictionless.mu          = 0;
+      frictionless.slide_steps = 20;
+      const Run free_run = iron(frictionless, "");
+      print_summary("frictionless", free_run);
+      const double Fy0 = free_run.mean(1);
+      check(std::abs(free_run.mean(0)) <= 0.01 * Fy0,
+            "frictionless: the mean horizontal force is not below 1 % of the vertical force", failures);
+      check(free_run.range(1) <= 0.02 * Fy0,
+            "frictionless: the vertical force oscillates by more than 2 % of its mean", failures);
+      {
+        const auto &end_of_press = free_run.steps[frictionless.press_steps - 1];
+        check(std::abs(end_of_press.work - end_of_press.stored) <= 0.02 * end_of_press.work,
+              "frictionless: at the end of the press, the work of the die and the stored energy differ by more "
+              "than 2 %",
+              failures);
+      }
+
+      // The run with friction, 40 slide steps, written as VTU files.
+      const Ironing friction;
+      const Run     friction_run = iron(friction, "ironing");
+      print_summary("mu = 0.3", friction_run);
+      check(friction_run.mean(0) < 0 && -friction_run.mean(0) <= friction.mu * friction_run.mean(1),
+            "with friction: the horizontal force does not oppose the slide or exceeds mu times the vertical one",
+            failures);
+      check(friction_run.remainder() >= 0 && friction_run.remainder() <= 0.25,
+            "with friction: work - stored energy - dissipation is not within 25 % of the work", failures);
+      {
+        std::ofstream csv("ironing-history.csv");
+        csv << "mu,step,t,die_x,die_y,Fx,Fy,passes,newton_updates,moved_vertices,pairing_offset,work,stored,"
+               "dissipated,work_minus_stored_minus_dissipated\n";
+        for (const auto *run : {&free_run, &friction_run})
+          for (unsigned int i = 0; i < run->steps.size(); ++i)
+            {
+              const auto &s = run->steps[i];
+              csv << std::setprecision(10) << run->problem.mu << "," << i + 1 << "," << s.t << "," << s.d[0] << ","
+                  << s.d[1] << "," << s.force[0] << "," << s.force[1] << "," << s.passes << "," << s.updates << ","
+                  << s.moved << "," << s.offset << "," << s.work << "," << s.stored << "," << s.dissipated << ","
+                  << s.work - s.stored - s.dissipated << "\n";
+            }
+      }
+      std::cout << "time: pairing and set-up " << std::setprecision(1) << friction_run.setup_time
+                << " s, Newton solves " << friction_run.solve_time << " s (the run with friction)" << std::endl;
+
+      if (study)
+        {
+          std::cout << "\nStudy: mu = 0.3 and the step size\n"
+                    << "  steps per unit slide | die refined | Fx/Fy   | Fy oscillation | (W - E - D)/W\n";
+          std::vector<double> remainders;
+          for (const unsigned int steps : {10u, 20u, 40u, 80u})
+            {
+              Ironing p     = friction;
+              p.slide_steps = steps;
+              const Run r   = iron(p, "");
+              remainders.push_back(r.remainder());
+              std::cout << "  " << std::setw(20) << steps << " | " << std::setw(11) << p.die_refine << " | "
+                        << std::setprecision(4) << r.mean(0) / r.mean(1) << " | " << std::setw(12)
+                        << std::setprecision(2) << 100 * r.range(1) / r.mean(1) << " % | " << std::setprecision(4)
+                        << r.remainder() << std::endl;
+            }
+          for (unsigned int i = 1; i < remainders.size(); ++i)
+            check(remainders[i] < remainders[i - 1], "study: the energy remainder does not decrease with the step",
+                  failures);
+          Ironing p    = friction;
+          p.die_refine = 3;
+          const Run r  = iron(p, "");
+          std::cout << "  " << std::setw(20) << p.slide_steps << " | " << std::setw(11) << p.die_refine << " | "
+                    << std::setprecision(4) << r.mean(0) / r.mean(1) << " | " << std::setw(12) << std::setprecision(2)
+                    << 100 * r.range(1) / r.mean(1) << " % | " << std::setprecision(4) << r.remainder() << std::endl;
+        }
+
+      const std::string picture = doc_picture ?
+                                    (std::filesystem::path(__FILE__).parent_path() / "doc" / "ironing-forces.svg")
+                                      .string() :
+                                    std::string("ironing-forces.svg");
+      write_svg({&free_run, &friction_run}, {"frictionless", "mu = 0.3"}, picture);
+      std::cout << "picture: " << picture << "; ParaView: ironing.pvd; history: ironing-history.csv" << std::endl;
+
+      for (const auto &m : failures)
+        std::cerr << "step-11 check failed: " << m << std::endl;
+      return failures.empty() ? 0 : 1;
+    }
+  catch (std::exception &exc)
+    {
+      std::cerr << std::endl << "Exception: " << exc.what() << std::endl;
+      return 1;
+    }
+}
