@@ -17,8 +17,9 @@
 // a vertex of the slab moved along its straight top where it faces a
 // corner of the die), so the die slides over the slab's nodes. Two runs:
 // frictionless and Coulomb friction mu = 0.3.
-// Output: the reaction force on the die at every step (ironing-history.csv
-// and the SVG ironing-forces.svg), one VTU file per step with a .pvd
+// Output: the force of the slab on the die at every step
+// (ironing-history.csv, and the SVG plots ironing-horizontal.svg and
+// ironing-vertical.svg), one VTU file per step with a .pvd
 // (ParaView plays ironing.pvd as a time series; the mesh of each file is
 // that step's, with its inserted nodes), and the table of the checks:
 // - frictionless: the horizontal force averages to zero over the slide
@@ -321,29 +322,32 @@ namespace Step11
               << ", (W - E - D)/W = " << std::setprecision(4) << run.remainder() << std::endl;
   }
 
-  // The force history as an SVG: Fx / Fy and Fy over the die's position.
+  // The force history as two SVG plots over the die's slide: the
+  // horizontal force and the vertical one, each over the mean vertical
+  // force of its run.
   void
-  write_svg(const std::vector<const Run *> &runs, const std::vector<std::string> &names, const std::string &file)
+  write_svg(const std::vector<const Run *> &runs, const std::vector<std::string> &names, const std::string &prefix)
   {
-    std::vector<SVGPlots::Series> series;
-    for (unsigned int i = 0; i < runs.size(); ++i)
+    for (const unsigned int comp : {0u, 1u})
       {
-        SVGPlots::Series fx, fy;
-        fx.name          = names[i] + ": horizontal force Fx / mean Fy";
-        fy.name          = names[i] + ": vertical force Fy / mean Fy";
-        fx.marker_radius = fy.marker_radius = 2;
-        const double Fy  = runs[i]->mean(1);
-        for (const auto &s : runs[i]->steps)
-          if (s.t >= 1.0)
-            {
-              fx.points.emplace_back(s.d[0], s.force[0] / Fy);
-              fy.points.emplace_back(s.d[0], s.force[1] / Fy);
-            }
-        series.push_back(fx);
-        series.push_back(fy);
+        std::vector<SVGPlots::Series> series;
+        for (unsigned int i = 0; i < runs.size(); ++i)
+          {
+            SVGPlots::Series f;
+            f.name          = names[i];
+            f.marker_radius = 2;
+            const double Fy = runs[i]->mean(1);
+            for (const auto &s : runs[i]->steps)
+              if (s.t >= 1.0)
+                f.points.emplace_back(s.d[0], s.force[comp] / Fy);
+            series.push_back(f);
+          }
+        SVGPlots::write_line_plot(prefix + (comp == 0 ? "-horizontal.svg" : "-vertical.svg"), series,
+                                  "slide of the die",
+                                  comp == 0 ? "Fx / mean Fy" : "Fy / mean Fy",
+                                  comp == 0 ? "Ironing: horizontal force of the slab on the die (step-11)" :
+                                              "Ironing: vertical force of the slab on the die (step-11)");
       }
-    SVGPlots::write_line_plot(file, series, "slide of the die", "force / mean vertical force",
-                              "Ironing: the force of the slab on the die as it slides (step-11)");
   }
 } // namespace Step11
 
@@ -444,12 +448,12 @@ main(int argc, char **argv)
                     << 100 * r.range(1) / r.mean(1) << " % | " << std::setprecision(4) << r.remainder() << std::endl;
         }
 
-      const std::string picture = doc_picture ?
-                                    (std::filesystem::path(__FILE__).parent_path() / "doc" / "ironing-forces.svg")
-                                      .string() :
-                                    std::string("ironing-forces.svg");
+      const std::string picture =
+        doc_picture ? (std::filesystem::path(__FILE__).parent_path() / "doc" / "ironing").string() :
+                      std::string("ironing");
       write_svg({&free_run, &friction_run}, {"frictionless", "mu = 0.3"}, picture);
-      std::cout << "picture: " << picture << "; ParaView: ironing.pvd; history: ironing-history.csv" << std::endl;
+      std::cout << "pictures: " << picture << "-horizontal.svg, " << picture
+                << "-vertical.svg; ParaView: ironing.pvd; history: ironing-history.csv" << std::endl;
 
       for (const auto &m : failures)
         std::cerr << "step-11 check failed: " << m << std::endl;

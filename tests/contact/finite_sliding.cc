@@ -25,7 +25,9 @@
 //     of the largest displacement, every pair with a free node is active
 //     and slips, the Cauchy pressure -lambda_n / w(u) is p and the friction
 //     traction |lambda_t| / w(u) is mu p at every such pair to 1e-8 relative
-//     (the friction force on the block against its slide)
+//     (the friction force on the block against its slide), the
+//     dissipation of every step after the first (StepRecord::dissipation)
+//     the friction force times the slide of the step to 1e-8
 //     (so the force history has no jump when the pairs change), the
 //     partners coincide at convergence (pairing offset <= 1e-10 of the
 //     sub-edges at the pair, the tolerance set here),
@@ -244,7 +246,7 @@ namespace
     });
 
     Result       result;
-    double       worst_u = 0, worst_p = 0, worst_q = 0, worst_offset = 0, min_inserted = 1e9;
+    double       worst_u = 0, worst_p = 0, worst_q = 0, worst_offset = 0, min_inserted = 1e9, worst_d = 0;
     unsigned int max_passes = 0, max_later_passes = 0, min_active = 1000000, min_slipping = 1000000, total_newton = 0;
     bool         all_active = true, against = true;
     for (unsigned int n = 1; n <= setup.n_steps; ++n)
@@ -294,6 +296,16 @@ namespace
             if (setup.mu > 0)
               worst_q = std::max(worst_q, std::abs(std::abs(lambda[np + i]) / w[i] / (setup.mu * p_contact) - 1));
           }
+        // the friction work of the step: every pair slips by the slide of
+        // the step (the deformations are those of step 1 from then on)
+        if (setup.mu > 0 && n >= 2)
+          {
+            double sum = 0;
+            for (unsigned int i = 0; i < np; ++i)
+              if (!contact.is_left_out(i))
+                sum += std::abs(lambda[np + i]);
+            worst_d = std::max(worst_d, std::abs(record.dissipation / (sum * slide_total / setup.n_steps) - 1));
+          }
         worst_offset = std::max(worst_offset, record.pairing_offset);
         max_passes   = std::max(max_passes, record.n_passes);
         if (n >= 3)
@@ -327,6 +339,8 @@ namespace
         testing::check_small(worst_q, 1e-8, what + "friction traction mu p at every pair and step");
         testing::check(min_slipping == min_active, what + "every active pair slips");
         testing::check(against, what + "the friction force on the block opposes its slide");
+        testing::check_small(worst_d, 1e-8,
+                             what + "the dissipation of a step is the friction force times the slide of the step");
       }
     testing::check_small(worst_offset, 1e-10, what + "partners coincide at convergence");
     // from the third step on, the pairs are made where the extrapolation

@@ -465,17 +465,24 @@ main(int argc, char **argv)
   // inserted, the slave vertices move onto the master vertices and every
   // sub-edge is h again. Otherwise the 3 interior vertices of each side go
   // into the other one (8 vertices, 7 sub-edges) and the shortest sub-edge
-  // is delta h >= 0.05 h. Merge fractions 0.05 and 0.1.
-  for (const double fraction : {0.05, 0.1})
+  // is delta h >= 0.05 h. Merge fractions 0.05 and 0.1, and 1e-9 (that of
+  // FiniteSliding): a vertex closer than 1e-3 of an edge to a vertex of the
+  // other side merges then too (delta < 1e-3 (1 - delta)), the shortest
+  // sub-edge a split makes; before, both vertices were left unpaired.
+  for (const double fraction : {0.05, 0.1, 1e-9})
     for (const double delta : {1e-7, 1e-5, 1e-3, 1e-2, 0.03, 0.08, 0.15})
       {
+        // (delta = 1e-3 with the fraction 1e-9 lies on the threshold itself:
+        // either answer is right)
+        if (fraction < 1e-3 && delta == 1e-3)
+          continue;
         NodeInsertion::Settings settings;
         settings.merge_fraction = fraction;
         const double h          = 0.25;
         const auto upper = [&](const double xi, const double eta, const unsigned int i, const unsigned int j) {
           return P(xi + (j == 0 && i > 0 && i < 4 ? delta * h : 0.), 1 + eta);
         };
-        const bool merge = delta <= fraction * (1 - delta);
+        const bool merge = delta <= fraction * (1 - delta) || delta < 1e-3 * (1 - delta);
         Expected   x;
         x.inserted_master   = merge ? 0 : 3;
         x.inserted_slave    = merge ? 0 : 3;

@@ -98,8 +98,11 @@ namespace dealvem
    *    test are listed in Report::unpaired with the reason.
    * 2. <b>Merge, never split short.</b> A vertex whose closest point on the
    *    other side lies within Settings::merge_fraction times $h$ of a vertex
-   *    of that side is paired with that vertex (the closest such pairs
-   *    first); no sub-edge shorter than merge_fraction times $h$ is created.
+   *    of that side, or closer than $10^{-3}$ of an edge length (the
+   *    shortest sub-edge rule 3 makes), is paired with that vertex (the
+   *    closest such pairs first); no sub-edge shorter than merge_fraction
+   *    times $h$ is created. (With a merge fraction below $10^{-3}$ a vertex
+   *    between the two distances would otherwise get no partner at all.)
    *    The other vertices split the edge they project onto; on a side that
    *    approximates a smooth curve (consecutive turning angles of the same
    *    sign and similar curvature) the new vertex is placed on the circle
