@@ -160,6 +160,39 @@ namespace dealvem
       mutable dealii::Tensor<1, 2>                                                result;
     };
 
+    // The parameter in [s0, s1] of the point of @p curve closest to
+    // @p target: Gauss-Newton on |x(s) - target|^2 (the tangent by central
+    // differences over @p width times the interval), started at the closest
+    // of @p start and n_samples + 1 equidistant samples (a curve that folds
+    // back on itself has local minima at the ends of the interval), stopped
+    // when an update is below @p stop.
+    template <typename Curve>
+    double
+    closest_on_curve(const Curve &curve, const double s0, const double s1, const double start,
+                     const dealii::Point<2> &target, const unsigned int n_samples, const double width,
+                     const double stop)
+    {
+      double s = start, d_start = curve(s).distance(target);
+      for (unsigned int j = 0; j <= n_samples; ++j)
+        if (const double sj = s0 + (s1 - s0) * j / n_samples, dj = curve(sj).distance(target); dj < d_start)
+          {
+            s       = sj;
+            d_start = dj;
+          }
+      for (unsigned int iteration = 0; iteration < 30; ++iteration)
+        {
+          const double               e  = width * (s1 - s0);
+          const double               sm = std::max(s0, s - e), sp = std::min(s1, s + e);
+          const dealii::Tensor<1, 2> dx = (curve(sp) - curve(sm)) / (sp - sm);
+          const double next_s = std::clamp(s - ((curve(s) - target) * dx) / dx.norm_square(), s0, s1);
+          const bool   done   = std::abs(next_s - s) < stop;
+          s                   = next_s;
+          if (done)
+            break;
+        }
+      return s;
+    }
+
     dealii::Tensor<1, 2>
     turn_left(const dealii::Tensor<1, 2> &v)
     {
@@ -696,7 +729,10 @@ namespace dealvem
         }
       // (a vertex of a straight side moved in that mesh (step 2): where its
       // original material point is, from the trace)
-      if (pair_disc != nullptr)
+      // (the trace only where the last mesh moved a vertex: most steps none)
+      if (pair_disc != nullptr &&
+          std::any_of(movable.begin(), movable.end(),
+                      [&](const unsigned int v) { return pair_disc->mesh->vertex(v) != original.vertex(v); }))
         {
           const TraceOnSides trace(original, interface_edges, side_neighbours, *pair_disc->mesh,
                                    *pair_disc->dof_handler, u);
@@ -862,25 +898,8 @@ namespace dealvem
                     // itself at a far-off pairing: Gauss-Newton starts at
                     // the closest of a few samples, not in the local
                     // minimum at an end of the piece)
-                    double s = std::clamp(chain.s[k], s0, s1), d_start = curve(s).distance(target);
-                    for (unsigned int j = 0; j <= 8; ++j)
-                      if (const double sj = s0 + (s1 - s0) * j / 8., dj = curve(sj).distance(target); dj < d_start)
-                        {
-                          s       = sj;
-                          d_start = dj;
-                        }
-                    for (unsigned int iteration = 0; iteration < 30; ++iteration)
-                      {
-                        const double e = 1e-6 * (s1 - s0);
-                        const double sm = std::max(s0, s - e), sp = std::min(s1, s + e);
-                        const dealii::Tensor<1, 2> dx   = (curve(sp) - curve(sm)) / (sp - sm);
-                        const double               step = ((curve(s) - target) * dx) / dx.norm_square();
-                        const double               next_s = std::clamp(s - step, s0, s1);
-                        const bool                 done   = std::abs(next_s - s) < 1e-15;
-                        s                                 = next_s;
-                        if (done)
-                          break;
-                      }
+                    const double s =
+                      closest_on_curve(curve, s0, s1, std::clamp(chain.s[k], s0, s1), target, 8, 1e-6, 1e-15);
                     const double d = curve(s).distance(target);
                     if (d < best_d)
                       {
@@ -973,25 +992,8 @@ namespace dealvem
             return dealii::Point<2>(Y + pair_trace->value(Y, v, sigma < 0 ? around[0] : around[1]));
           };
           const dealii::Point<2> target = x_true[p];
-          double                 best = 0, best_d = curve(0).distance(target);
-          for (unsigned int j = 0; j <= 16; ++j)
-            if (const double sj = lo + (hi - lo) * j / 16., dj = curve(sj).distance(target); dj < best_d)
-              {
-                best   = sj;
-                best_d = dj;
-              }
-          for (unsigned int iteration = 0; iteration < 30; ++iteration)
-            {
-              const double               e  = 1e-7 * (hi - lo);
-              const double               sm = std::max(lo, best - e), sp = std::min(hi, best + e);
-              const dealii::Tensor<1, 2> dx = (curve(sp) - curve(sm)) / (sp - sm);
-              const double next_sigma = std::clamp(best - ((curve(best) - target) * dx) / dx.norm_square(), lo, hi);
-              const bool   done       = std::abs(next_sigma - best) < 1e-15 * (hi - lo);
-              best                    = next_sigma;
-              if (done)
-                break;
-            }
-          reference[v] = X + best * T;
+          const double best = closest_on_curve(curve, lo, hi, 0., target, 16, 1e-7, 1e-15 * (hi - lo));
+          reference[v]      = X + best * T;
         }
     record.n_moved = 0;
     for (unsigned int v = 0; v < n0; ++v)
