@@ -29,13 +29,16 @@
 //   mean as the die passes the slab's nodes;
 // - energy: at the end of the press, the work of the die equals the
 //   stored energy to 2 % (the trapezoidal rule over four steps);
+// - with friction: once the die slides steadily, every active pair slips
+//   (Coulomb's law in steady sliding: the friction multiplier of each pair
+//   is mu times its normal one), and the horizontal force opposes the
+//   slide;
 // - with friction: work of the die = stored energy + friction dissipation
-//   (the balance of every step is in the CSV file); the remainder is the
-//   error of the incremental (backward Euler) friction law, first order
-//   in the step: at most 25 % of the work at 40 steps per unit slide.
+//   (the balance of every step is in the CSV file) to 5 % of the work.
 // The program exits with an error if a check fails.
 // --study repeats the friction run at 10, 20, 40 and 80 steps per unit
-// slide (the remainder must decrease) and with the die refined once more;
+// slide (the balance must hold to 5 % at each) and with the die refined
+// once more;
 // --write-doc-picture writes the SVG into doc/ of the source tree.
 
 // @sect3{Include files}
@@ -118,7 +121,7 @@ namespace Step11
   {
     double               t = 0;
     dealii::Tensor<1, 2> d, force;
-    unsigned int         passes = 0, updates = 0, moved = 0, n_dofs = 0;
+    unsigned int         passes = 0, updates = 0, moved = 0, n_dofs = 0, active = 0, slipping = 0;
     double               offset = 0, work = 0, stored = 0, dissipated = 0;
   };
 
@@ -268,6 +271,8 @@ namespace Step11
         for (const auto &newton : r.newton)
           s.updates += newton.iterations.size() - 1;
         s.moved      = r.n_moved;
+        s.active     = r.n_active;
+        s.slipping   = r.n_slipping;
         s.n_dofs     = r.n_dofs;
         s.offset     = r.pairing_offset;
         s.work       = last.work - 0.5 * (s.force + last.force) * (s.d - last.d);
@@ -399,11 +404,21 @@ main(int argc, char **argv)
       const Ironing friction;
       const Run     friction_run = iron(friction, "ironing");
       print_summary("mu = 0.3", friction_run);
-      check(friction_run.mean(0) < 0 && -friction_run.mean(0) <= friction.mu * friction_run.mean(1),
-            "with friction: the horizontal force does not oppose the slide or exceeds mu times the vertical one",
-            failures);
-      check(friction_run.remainder() >= 0 && friction_run.remainder() <= 0.25,
-            "with friction: work - stored energy - dissipation is not within 25 % of the work", failures);
+      // Once the die slides steadily, every point under it slips: Coulomb's
+      // law then fixes the friction multiplier of every active pair to mu
+      // times its normal one (FiniteSliding counts a pair as slipping
+      // there). The horizontal force opposes the slide.
+      {
+        unsigned int sticking = 0;
+        for (const auto *s : friction_run.steady())
+          sticking += s->active - s->slipping;
+        check(sticking == 0,
+              "with friction: " + std::to_string(sticking) + " active pairs stick during the steady slide",
+              failures);
+      }
+      check(friction_run.mean(0) < 0, "with friction: the horizontal force does not oppose the slide", failures);
+      check(std::abs(friction_run.remainder()) <= 0.05,
+            "with friction: work - stored energy - dissipation is not within 5 % of the work", failures);
       {
         std::ofstream csv("ironing-history.csv");
         csv << "mu,step,t,die_x,die_y,Fx,Fy,passes,newton_updates,moved_vertices,pairing_offset,work,stored,"
@@ -437,9 +452,9 @@ main(int argc, char **argv)
                         << std::setprecision(2) << 100 * r.range(1) / r.mean(1) << " % | " << std::setprecision(4)
                         << r.remainder() << std::endl;
             }
-          for (unsigned int i = 1; i < remainders.size(); ++i)
-            check(remainders[i] < remainders[i - 1], "study: the energy remainder does not decrease with the step",
-                  failures);
+          for (unsigned int i = 0; i < remainders.size(); ++i)
+            check(std::abs(remainders[i]) <= 0.05,
+                  "study: work - stored energy - dissipation is not within 5 % of the work", failures);
           Ironing p    = friction;
           p.die_refine = 3;
           const Run r  = iron(p, "");

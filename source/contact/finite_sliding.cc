@@ -480,14 +480,30 @@ namespace dealvem
               if (movable.count(v) == 0)
                 continue;
               const dealii::Tensor<1, 2> t = tangent(v);
-              double                     best = std::numeric_limits<double>::max();
-              unsigned int               best_w = 0;
+              // a pair snapped in an earlier pass of the step stays so
+              // while its vertices remain within half an edge of each other:
+              // the decisions of a step only grow, so they settle after
+              // finitely many passes (a threshold that could also drop a
+              // pair flips near it from pass to pass: the moved material
+              // point faces the vertex, the original one does not)
+              unsigned int kept = dealii::numbers::invalid_unsigned_int;
               for (const unsigned int w : other)
-                if (const double d = x[v].distance(x[w]); d < best)
-                  {
-                    best   = d;
-                    best_w = w;
-                  }
+                if (step_snaps.count({v, w}) > 0)
+                  kept = w;
+              double       best   = std::numeric_limits<double>::max();
+              unsigned int best_w = 0;
+              if (kept != dealii::numbers::invalid_unsigned_int)
+                {
+                  best   = x[v].distance(x[kept]);
+                  best_w = kept;
+                }
+              else
+                for (const unsigned int w : other)
+                  if (const double d = x[v].distance(x[w]); d < best)
+                    {
+                      best   = d;
+                      best_w = w;
+                    }
               if (best == std::numeric_limits<double>::max())
                 continue;
               // (a master vertex moves only where its slave partner cannot)
@@ -496,13 +512,9 @@ namespace dealvem
               const double h     = std::min(local_h(v), local_h(best_w));
               const double along = std::abs((x[best_w] - x[v]) * t);
               const double apart = std::abs(turn_left(t) * (x[best_w] - x[v]));
-              // (a pair made so in an earlier pass of the step is kept
-              // up to 0.25: near 0.05 the decision would flip from pass to
-              // pass, as the moved material point faces the vertex and the
-              // original one does not)
-              const double limit = step_snaps.count({v, best_w}) > 0 ? 0.25 : 0.05;
-              if (along <= limit * h && apart <= 0.5 * h)
-                candidates.push_back({along, v, best_w});
+              const bool   again = kept != dealii::numbers::invalid_unsigned_int;
+              if (along <= (again ? 0.5 : 0.05) * h && apart <= 0.5 * h)
+                candidates.push_back({again ? -1. : along, v, best_w});
             }
         }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate &a, const Candidate &b) {

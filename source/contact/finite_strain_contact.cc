@@ -7,6 +7,8 @@
 #include <dealvem/contact/finite_strain_contact.h>
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -34,6 +36,43 @@ namespace dealvem
       r[0] = c * v[0] - s * v[1];
       r[1] = s * v[0] + c * v[1];
       return r;
+    }
+
+    // The closest point to p on the curve through x0, xm, x1 (the quadratic
+    // with x(-1) = x0, x(0) = xm, x(1) = x1; a straight segment when xm is
+    // its middle), and the curve's tangent there: the best of a few
+    // samples, then Newton on the parameter.
+    std::pair<dealii::Point<2>, dealii::Tensor<1, 2>>
+    closest_on_piece(const dealii::Point<2> &p,
+                     const dealii::Point<2> &x0,
+                     const dealii::Point<2> &xm,
+                     const dealii::Point<2> &x1)
+    {
+      const dealii::Tensor<1, 2> b = 0.5 * (x1 - x0), c = 0.5 * (x1 + x0) - xm; // x(s) = xm + s b + s^2 c
+      const auto                 at = [&](const double s) { return xm + s * b + s * s * c; };
+      double                     best = -1, best_d = std::numeric_limits<double>::max();
+      for (int k = 0; k <= 8; ++k)
+        {
+          const double s = -1 + 0.25 * k, dist = at(s).distance_square(p);
+          if (dist < best_d)
+            {
+              best_d = dist;
+              best   = s;
+            }
+        }
+      double s = best;
+      for (unsigned int it = 0; it < 20; ++it)
+        {
+          const dealii::Tensor<1, 2> r = at(s) - p, dx = b + 2 * s * c;
+          const double               g = r * dx, H = dx * dx + 2 * (r * c);
+          if (!(H > 0))
+            break;
+          const double next = std::clamp(s - g / H, -1., 1.);
+          if (std::abs(next - s) < 1e-14)
+            break;
+          s = next;
+        }
+      return {at(s), b + 2 * s * c};
     }
   } // namespace
 
@@ -82,6 +121,7 @@ namespace dealvem
     // pairs: the two ends of their sub-edge)
     std::vector<std::vector<unsigned int>> neighbours;
     std::vector<NodeInsertion::Interface::NormalSide> side_of_pair;
+    std::vector<unsigned int>                         interface_of_pair;
     for (const auto &interface : interfaces)
       {
         const unsigned int offset = pairs.size();
@@ -90,6 +130,7 @@ namespace dealvem
           {
             pairs.push_back(p);
             side_of_pair.push_back(interface.normal_side);
+            interface_of_pair.push_back(&interface - interfaces.data());
             mu.push_back(interface_mu);
             frictional = frictional || interface_mu > 0;
           }
@@ -178,7 +219,19 @@ namespace dealvem
       }
 
     // the slip origin: a.t in the configuration where the slip starts, t
-    // turned there from the base by the pair's chords
+    // turned there from the base by the pair's chords; the master side's
+    // sub-edges there (end, midpoint, end), by interface
+    std::vector<std::vector<std::array<dealii::Point<2>, 3>>> pieces_at_origin(interfaces.size());
+    if (options.slip_origin != nullptr && options.slip_origin->size() == dof_handler.n_dofs())
+      for (const auto &s : segments)
+        {
+          const auto x0 = position(data[s.first].master_node, *options.slip_origin);
+          const auto x1 = position(data[s.second].master_node, *options.slip_origin);
+          const auto xm = s.midpoint != dealii::numbers::invalid_unsigned_int ?
+                            position(data[s.midpoint].master_node, *options.slip_origin) :
+                            dealii::Point<2>(0.5 * (x0 + x1));
+          pieces_at_origin[interface_of_pair[s.first]].push_back({{x0, xm, x1}});
+        }
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         auto &d = data[i];
@@ -193,32 +246,39 @@ namespace dealvem
                                        std::to_string(dof_handler.n_dofs()) + "."));
         const dealii::Tensor<1, 2> a =
           position(d.slave_node, *options.slip_origin) - position(d.master_node, *options.slip_origin);
-        std::vector<dealii::Tensor<1, 2>> chords_at_origin;
-        const double                      theta = turn(d, *options.slip_origin, &chords_at_origin);
-        // a pair that was open at the origin has no history there: it
+        const double               theta = turn(d, *options.slip_origin, nullptr);
+        // a pair whose slave point was off the master side at the origin
+        // (a contact that begins within the step) has no history there: it
         // sticks, once closed, where its nodes face each other (its slip is
         // a.t itself: the nodes the pairing made opposite each other stay
-        // so). The gap at the origin is taken across the origin's
-        // chords of the normal side (not R(theta) n0: the normal of the
-        // insertion and the chord agree only where the side is straight,
-        // and a small disagreement times the tangential distance of the two
-        // material points at the origin would read as a gap).
-        dealii::Tensor<1, 2> n_origin = rotate(d.n0, theta);
-        dealii::Tensor<1, 2> chord_sum;
-        for (unsigned int c = 0; c < chords_at_origin.size(); ++c)
-          chord_sum += d.chords[c].weight * chords_at_origin[c] / chords_at_origin[c].norm();
-        if (chord_sum.norm() > 0)
+        // so). The gap at the origin is the distance of the slave point to
+        // the master side's curve at the origin, on the side of the turned
+        // normal: not a.n, which on a curved interface reads the chord
+        // between two material points that slid along each other as a gap
+        // (of the slide squared over twice the radius). Within 1e-2 of the
+        // piece's chord the point counts as touching (for k = 2 the two
+        // sides' quadratics meet only at the nodes).
+        // (Beyond the ends of the paired part of the master side, which
+        // is all this class knows of it, the side is continued along its
+        // end tangent: the gap is the normal part of the distance.)
+        const dealii::Tensor<1, 2> n_origin = rotate(d.n0, theta);
+        const dealii::Point<2>     x_slave  = position(d.slave_node, *options.slip_origin);
+        double gap_at_origin = std::numeric_limits<double>::max(), nearest = gap_at_origin, touch = 0;
+        for (const auto &piece : pieces_at_origin[interface_of_pair[i]])
           {
-            dealii::Tensor<1, 2> perpendicular = turn_left(chord_sum / chord_sum.norm());
-            if (perpendicular * n_origin < 0)
-              perpendicular = -perpendicular;
-            n_origin = perpendicular;
+            const auto [q, tangent] = closest_on_piece(x_slave, piece[0], piece[1], piece[2]);
+            const double dist       = q.distance(x_slave);
+            if (dist < nearest && tangent.norm() > 0)
+              {
+                nearest                      = dist;
+                dealii::Tensor<1, 2> normal = turn_left(tangent / tangent.norm());
+                if (normal * n_origin < 0)
+                  normal = -normal;
+                gap_at_origin = (x_slave - q) * normal;
+                touch         = 1e-2 * piece[0].distance(piece[2]);
+              }
           }
-        double length = 0;
-        for (const auto &chord : d.chords)
-          length = std::max(length, chord.reference.norm());
-        const double gap_at_origin = a * n_origin;
-        if (gap_at_origin > 1e-6 * (a.norm() + length))
+        if (gap_at_origin > touch)
           {
             d.slip_origin = 0;
             if (options.contact_origin != nullptr)

@@ -28,6 +28,21 @@
 //     to 1e-8.
 // (d) Newton: the last iterations of the last step converge quadratically
 //     (|r_{i+1}| / |r_i|^2 bounded, relative to F_ref).
+// (f) Where the slip of Coulomb friction starts, on a curved interface:
+//     both blocks bent onto a circle of radius 1.5 (the base configuration,
+//     partners on top of each other); at the slip origin the upper block's
+//     interface nodes lie on the lower block's side (its polygon, k = 1, or
+//     its quadratic pieces, k = 2) shifted along it by delta = 0.15. Every
+//     pair was in contact there, so its slip at the base is the shift:
+//     |s| = delta to 10 % (measured 3 % for k = 1, 4 % for k = 2: the chord
+//     between the two material points and the turned tangent are not the
+//     arc). A pair taken for a new contact has s = 0: the chord between two
+//     points of a curved side, read as a gap, once did that (k = 2 here;
+//     k = 1 across the corners of a polygon, examples/step-11). With the
+//     upper side lifted off the lower one by 0.02 at the origin instead,
+//     every pair is a new contact: s = 0 to 1e-12. The pairs whose slave
+//     point was beyond the end of the lower side at the origin are left
+//     out.
 // (e) Bad input: set_constraints() with constraints on other DoFs, and a
 //     prescribed motion that pushes the fully constrained interface nodes
 //     of the two blocks into each other (both blocks held on their whole
@@ -45,6 +60,8 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <set>
+#include <algorithm>
 
 #include "../finite_strain_common.h"
 #include "../tests.h"
@@ -351,6 +368,113 @@ namespace
     testing::check(held_solver.get_history().size() == 1 && !held_solver.get_history()[0].converged,
                    "the failed step is recorded as not converged");
   }
+  // (f)
+  void
+  slip_origin_on_a_curve(const unsigned int k)
+  {
+    const std::string what = "slip origin, k = " + std::to_string(k) + ": ";
+    PolygonalMesh<2>  mesh;
+    two_blocks(mesh, 4, 12);
+    std::vector<NodeInsertion::Interface> interfaces = {NodeInsertion::insert(mesh, 3, 12, k, {})};
+    VEMDoFHandler<2> dofs(mesh);
+    dofs.distribute_dofs(k);
+    // the body of every node
+    std::vector<unsigned int> body(dofs.n_nodes(), 0);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        for (const unsigned int v : mesh.cell(c).vertices)
+          body[dofs.vertex_node(v)] = mesh.cell(c).material_id;
+        if (k == 2)
+          for (const unsigned int e : mesh.cell(c).edges)
+            body[dofs.edge_node(e)] = mesh.cell(c).material_id;
+      }
+    // the bending: x along the circle (arc length from x = 0.5), y along
+    // its radius; the interface y = 1 onto the circle itself
+    const double R = 1.5;
+    const auto   bend = [&](const double sigma, const double y) {
+      const double angle = (sigma - 0.5) / R;
+      return dealii::Point<2>(0.5 + (R + y - 1) * std::sin(angle), 1 - R + (R + y - 1) * std::cos(angle));
+    };
+    dealii::Vector<double> u_base(dofs.n_dofs());
+    for (unsigned int node = 0; node < dofs.n_nodes(); ++node)
+      {
+        const auto X = dofs.node_location(node);
+        const auto x = bend(X[0], X[1]);
+        for (unsigned int comp = 0; comp < 2; ++comp)
+          u_base[VEMDoFHandler<2>::node_dof(node, comp)] = x[comp] - X[comp];
+      }
+    // the lower side's nodes (x, position), by x: its polygon, or its
+    // quadratic pieces, at the base (the lower block does not move)
+    std::vector<std::pair<double, dealii::Point<2>>> side;
+    for (const auto &pair : interfaces[0].pairs)
+      {
+        const unsigned int node = pair.is_midpoint ? dofs.edge_node(pair.master_entity) :
+                                                     dofs.vertex_node(pair.master_entity);
+        side.emplace_back(dofs.node_location(node)[0], bend(dofs.node_location(node)[0], 1.));
+      }
+    std::sort(side.begin(), side.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
+    const unsigned int stride = k; // k = 2: (end, midpoint, end) pieces
+    const auto         on_side = [&](const double sigma) {
+      unsigned int i = 0;
+      while (i + stride + 1 < side.size() && sigma > side[i + stride].first)
+        i += stride;
+      if (k == 1)
+        {
+          const double t = (sigma - side[i].first) / (side[i + 1].first - side[i].first);
+          return dealii::Point<2>(side[i].second + t * (side[i + 1].second - side[i].second));
+        }
+      // the quadratic through the three nodes, in x
+      const double x0 = side[i].first, x1 = side[i + 1].first, x2 = side[i + 2].first;
+      const double l0 = (sigma - x1) * (sigma - x2) / ((x0 - x1) * (x0 - x2));
+      const double l1 = (sigma - x0) * (sigma - x2) / ((x1 - x0) * (x1 - x2));
+      const double l2 = (sigma - x0) * (sigma - x1) / ((x2 - x0) * (x2 - x1));
+      return dealii::Point<2>(l0 * side[i].second + l1 * side[i + 1].second + l2 * side[i + 2].second);
+    };
+    std::set<unsigned int> slave_nodes;
+    for (const auto &pair : interfaces[0].pairs)
+      slave_nodes.insert(pair.is_midpoint ? dofs.edge_node(pair.slave_entity) : dofs.vertex_node(pair.slave_entity));
+    const double delta = 0.15;
+    for (const double lift : {0., 0.02})
+      {
+        dealii::Vector<double> u_origin = u_base;
+        for (unsigned int node = 0; node < dofs.n_nodes(); ++node)
+          if (body[node] == 1)
+            {
+              const auto X = dofs.node_location(node);
+              // the upper side on the lower one's polygon (or lifted off it
+              // along the radius); the rest of the upper block bent along
+              dealii::Point<2> x = bend(X[0] + delta, X[1]);
+              if (slave_nodes.count(node) > 0)
+                {
+                  x = on_side(X[0] + delta);
+                  x += lift * (bend(X[0] + delta, 2.) - bend(X[0] + delta, 1.));
+                }
+              for (unsigned int comp = 0; comp < 2; ++comp)
+                u_origin[VEMDoFHandler<2>::node_dof(node, comp)] = x[comp] - X[comp];
+            }
+        FiniteStrainContact::Options options;
+        options.friction_coefficient = 0.3;
+        options.base                 = &u_base;
+        options.slip_origin          = &u_origin;
+        FiniteStrainContact contact(dofs, interfaces, ContactSettings::Normal::unilateral, 7000., options);
+        const unsigned int  np = contact.n_pairs();
+        testing::check(contact.n_constraints() == 2 * np, what + "a friction constraint per pair");
+        double worst = 0;
+        for (unsigned int i = 0; i < np; ++i)
+          {
+            // (the pairs that were beyond the end of the lower side at the
+            // origin are left out: where the side is continued is a guess)
+            if (contact.get_pairs()[i].slave_location[0] + delta > 1)
+              continue;
+            const double slip = contact.value(np + i, u_base);
+            worst = std::max(worst, lift == 0 ? std::abs(std::abs(slip) - delta) / delta : std::abs(slip));
+          }
+        if (lift == 0)
+          testing::check_small(worst, 0.1, what + "sliding along the curve: |slip| - delta, relative");
+        else
+          testing::check_small(worst, 1e-12, what + "lifted off at the origin: the slip of the new contacts");
+      }
+  }
 } // namespace
 
 int
@@ -367,6 +491,8 @@ main()
         patch_test(k, model, phi);
   for (const unsigned int k : {1u, 2u})
     confined_two_materials(k);
+  for (const unsigned int k : {1u, 2u})
+    slip_origin_on_a_curve(k);
   bad_input();
   return testing::finish();
 }

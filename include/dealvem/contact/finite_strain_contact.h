@@ -103,9 +103,10 @@ namespace dealvem
    * @f[ s(u) = a\cdot t(u) - a_o\cdot t(u_o), @f]
    * with $a_o$ the vector between the pair's nodes in the configuration
    * $u_o$ where the slip starts (Options::slip_origin, by default the base
-   * configuration, where $t(u_b) = t_0$); a pair whose gap across the
-   * chord of its normal side was open at $u_o$ (above $10^{-6}$ of the
-   * distance of its nodes plus the chord) has no history there: its slip
+   * configuration, where $t(u_b) = t_0$); a pair whose slave point was off
+   * the master side at $u_o$ (its distance to the master side's curve
+   * there, on the side of the normal, above $10^{-2}$ of the nearest
+   * sub-edge) has no history there: its slip
    * is measured from Options::contact_origin, the configuration where the
    * contact is taken to begin, or is $a\cdot t(u)$ itself without one (it
    * sticks, once closed, with its nodes opposite each other). Its multiplier $\lambda_t$ is the friction force
