@@ -47,6 +47,7 @@
 // for the meshes, the hyperelastic laws, FiniteSliding (node insertion in
 // the current configuration, the semismooth Newton solver of each step)
 // and the output.
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -100,6 +101,7 @@ namespace Step11
     double       E_die        = 1000.0;
     double       nu           = 0.3;
     double       tolerance    = 1e-5;
+    unsigned int max_cutbacks = 4;
     dealii::Point<2> centre   = dealii::Point<2>(1.5, 2.0);
 
     // the motion of the die's top at time t
@@ -121,7 +123,7 @@ namespace Step11
   {
     double               t = 0;
     dealii::Tensor<1, 2> d, force;
-    unsigned int         passes = 0, updates = 0, moved = 0, n_dofs = 0, active = 0, slipping = 0;
+    unsigned int         passes = 0, updates = 0, moved = 0, n_dofs = 0, sticking = 0, substeps = 0;
     double               offset = 0, work = 0, stored = 0, dissipated = 0;
   };
 
@@ -220,6 +222,7 @@ namespace Step11
     parameters.degree             = p.degree;
     parameters.pairing_tolerance  = p.tolerance;
     parameters.max_pairing_passes = 30;
+    parameters.max_cutbacks       = p.max_cutbacks;
     FiniteSliding sliding(mesh, laws, {FiniteSliding::InterfaceData{3, 10, p.mu}}, parameters);
     sliding.set_constraints_function(
       [&p](const VEMDoFHandler<2> &dofs, const double t, dealii::AffineConstraints<double> &c) {
@@ -271,8 +274,8 @@ namespace Step11
         for (const auto &newton : r.newton)
           s.updates += newton.iterations.size() - 1;
         s.moved      = r.n_moved;
-        s.active     = r.n_active;
-        s.slipping   = r.n_slipping;
+        s.sticking   = r.n_sticking_in_contact;
+        s.substeps   = r.n_substeps;
         s.n_dofs     = r.n_dofs;
         s.offset     = r.pairing_offset;
         s.work       = last.work - 0.5 * (s.force + last.force) * (s.d - last.d);
@@ -406,12 +409,14 @@ main(int argc, char **argv)
       print_summary("mu = 0.3", friction_run);
       // Once the die slides steadily, every point under it slips: Coulomb's
       // law then fixes the friction multiplier of every active pair to mu
-      // times its normal one (FiniteSliding counts a pair as slipping
-      // there). The horizontal force opposes the slide.
+      // times its normal one. (A pair whose contact begins within a step
+      // counts its slip from where that step's first pass paired it, so it
+      // sticks in that step: StepRecord::n_sticking_in_contact leaves those
+      // out.) The horizontal force opposes the slide.
       {
         unsigned int sticking = 0;
         for (const auto *s : friction_run.steady())
-          sticking += s->active - s->slipping;
+          sticking += s->sticking;
         check(sticking == 0,
               "with friction: " + std::to_string(sticking) + " active pairs stick during the steady slide",
               failures);
@@ -419,9 +424,38 @@ main(int argc, char **argv)
       check(friction_run.mean(0) < 0, "with friction: the horizontal force does not oppose the slide", failures);
       check(std::abs(friction_run.remainder()) <= 0.05,
             "with friction: work - stored energy - dissipation is not within 5 % of the work", failures);
+      // The whole slide in one step: FiniteSliding cuts a step whose
+      // pairing or Newton solve fails into halves (Parameters::
+      // max_cutbacks). Steady sliding with full slip forgets its path, so
+      // the die ends with the force of the 40-step run. Without cutbacks
+      // the step fails (the slab's cells under the die invert in the first
+      // Newton solve, whose pairs are those of the start) and says so.
+      {
+        Ironing one     = friction;
+        one.slide_steps = 1;
+        const Run  r    = iron(one, "");
+        const auto &end = r.steps.back();
+        std::cout << "the slide in one step: " << end.substeps << " sub-steps, " << end.passes
+                  << " pairing passes; force at the end " << end.force << " against " << friction_run.steps.back().force
+                  << " after 40 steps" << std::endl;
+        check(end.substeps > 1, "one-step slide: the step was not cut back", failures);
+        check((end.force - friction_run.steps.back().force).norm() <= 1e-4 * end.force.norm(),
+              "one-step slide: the force at the end differs from the 40-step run's by more than 1e-4", failures);
+        one.max_cutbacks = 0;
+        bool failed      = false;
+        try
+          {
+            iron(one, "");
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            failed = true;
+          }
+        check(failed, "one-step slide without cutbacks: the step did not fail", failures);
+      }
       {
         std::ofstream csv("ironing-history.csv");
-        csv << "mu,step,t,die_x,die_y,Fx,Fy,passes,newton_updates,moved_vertices,pairing_offset,work,stored,"
+        csv << "mu,step,t,die_x,die_y,Fx,Fy,passes,newton_updates,moved_vertices,pairing_offset,substeps,work,stored,"
                "dissipated,work_minus_stored_minus_dissipated\n";
         for (const auto *run : {&free_run, &friction_run})
           for (unsigned int i = 0; i < run->steps.size(); ++i)
@@ -429,7 +463,8 @@ main(int argc, char **argv)
               const auto &s = run->steps[i];
               csv << std::setprecision(10) << run->problem.mu << "," << i + 1 << "," << s.t << "," << s.d[0] << ","
                   << s.d[1] << "," << s.force[0] << "," << s.force[1] << "," << s.passes << "," << s.updates << ","
-                  << s.moved << "," << s.offset << "," << s.work << "," << s.stored << "," << s.dissipated << ","
+                  << s.moved << "," << s.offset << "," << s.substeps << "," << s.work << "," << s.stored << ","
+                  << s.dissipated << ","
                   << s.work - s.stored - s.dissipated << "\n";
             }
       }

@@ -1146,7 +1146,7 @@ namespace dealvem
     const auto n0 = original.n_vertices();
     record.normal_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
     record.friction_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
-    record.n_active = record.n_slipping = 0;
+    record.n_active = record.n_slipping = record.n_new_contacts = record.n_sticking_in_contact = 0;
     record.max_slip = record.pairing_offset = record.merged_offset = record.dissipation = 0;
     record.n_merged                         = 0;
     // at each pair, the shortest current slave sub-edge (for the slip) and
@@ -1178,6 +1178,8 @@ namespace dealvem
         const auto n         = contact->current_normal(i, solution);
         const auto t         = turn_left(n);
         const bool active    = multipliers[i] != 0;
+        if (active && contact->is_new_contact(i))
+          ++record.n_new_contacts;
         if (active)
           {
             record.normal_force[interface] -= multipliers[i] * n;
@@ -1206,6 +1208,8 @@ namespace dealvem
             if (contact->is_frictional() && active && lt != 0 &&
                 std::abs(lt) >= contact->friction_coefficient(i) * std::abs(multipliers[i]) * (1 - 1e-9))
               ++record.n_slipping;
+            else if (contact->is_frictional() && active && !contact->is_new_contact(i))
+              ++record.n_sticking_in_contact;
             if (contact->is_frictional())
               record.dissipation += std::abs(lt * contact->value(np + i, solution));
             if (contact->is_frictional() && h[i] < std::numeric_limits<double>::max())
@@ -1223,7 +1227,71 @@ namespace dealvem
                 dealii::ExcMessage("FiniteSliding: set_constraints_function() must be called before the first step."));
     AssertThrow(std::isfinite(time),
                 dealii::ExcMessage("FiniteSliding: the time of step " + std::to_string(step) + " is not finite."));
+    StepRecord total;
+    total.n_substeps = 0;
+    solve_with_cutbacks(step, last_time, time, 0, total);
+    history.push_back(total);
+  }
+
+
+
+  void
+  FiniteSliding::solve_with_cutbacks(const unsigned int step,
+                                     const double       t_start,
+                                     const double       time,
+                                     const unsigned int depth,
+                                     StepRecord        &total)
+  {
     StepRecord record;
+    try
+      {
+        solve_increment(step, time, record);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        // the state is still that of t_start: the step is solved again as
+        // two halves (the constraints and loads at the middle time), down
+        // to 2^-max_cutbacks of it
+        if (depth >= parameters.max_cutbacks)
+          {
+            if (parameters.max_cutbacks == 0)
+              throw;
+            std::ostringstream info;
+            e.print_info(info);
+            AssertThrow(false, dealii::ExcMessage("FiniteSliding: step " + std::to_string(step) + " failed also in " +
+                                                  std::to_string(1u << depth) + " sub-steps (" +
+                                                  std::to_string(depth) + " cutbacks, Parameters::max_cutbacks), "
+                                                  "in the sub-step from the time " + std::to_string(t_start) +
+                                                  " to " + std::to_string(time) + ": " + info.str()));
+          }
+        const double middle = 0.5 * (t_start + time);
+        solve_with_cutbacks(step, t_start, middle, depth + 1, total);
+        solve_with_cutbacks(step, middle, time, depth + 1, total);
+        return;
+      }
+    // the record of the step: the state of its last sub-step, the work
+    // (passes, Newton, times, dissipation) of all of them
+    const auto passes = total.n_passes, substeps = total.n_substeps;
+    const double setup = total.setup_time, solve = total.solve_time, dissipation = total.dissipation;
+    auto newton  = std::move(total.newton);
+    auto offsets = std::move(total.pairing_offsets);
+    newton.insert(newton.end(), record.newton.begin(), record.newton.end());
+    offsets.insert(offsets.end(), record.pairing_offsets.begin(), record.pairing_offsets.end());
+    total                 = record;
+    total.n_passes        = passes + record.n_passes;
+    total.n_substeps      = substeps + 1;
+    total.setup_time      = setup + record.setup_time;
+    total.solve_time      = solve + record.solve_time;
+    total.dissipation     = dissipation + record.dissipation;
+    total.newton          = std::move(newton);
+    total.pairing_offsets = std::move(offsets);
+  }
+
+
+
+  void
+  FiniteSliding::solve_increment(const unsigned int step, const double time, StepRecord &record)
+  {
     record.step        = step;
     record.time        = time;
     record.load_factor = load_factor_function ? load_factor_function(time) : time;
@@ -1330,7 +1398,6 @@ namespace dealvem
     last_load_factor     = record.load_factor;
     last_step            = step;
     ++n_converged;
-    history.push_back(record);
   }
 
 

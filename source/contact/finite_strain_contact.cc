@@ -172,6 +172,7 @@ namespace dealvem
 
     data.resize(pairs.size());
     fixed.assign(pairs.size(), false);
+    new_contact.assign(pairs.size(), false);
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         auto &d       = data[i];
@@ -280,7 +281,8 @@ namespace dealvem
           }
         if (gap_at_origin > touch)
           {
-            d.slip_origin = 0;
+            new_contact[i] = true;
+            d.slip_origin  = 0;
             if (options.contact_origin != nullptr)
               {
                 const auto &uc = *options.contact_origin;

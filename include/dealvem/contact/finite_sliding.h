@@ -220,6 +220,12 @@ namespace dealvem
       /// step that does not meet the tolerance then throws, naming the
       /// offset.
       unsigned int max_pairing_passes = 12;
+      /// A step whose Newton solve or pairing passes fail is solved again
+      /// from its start as two half steps (the constraints and the loads at
+      /// the middle time), each of them cut again if it fails, down to
+      /// $2^{-\text{max\_cutbacks}}$ of the step; then it throws, naming
+      /// the sub-step and the failure. 0: throw at once.
+      unsigned int max_cutbacks = 4;
 
       /// NodeInsertion::Settings without gap closing and without merges
       /// beyond $10^{-9}$ edge lengths.
@@ -295,6 +301,17 @@ namespace dealvem
       /// and the slip $s_i$ of the step at each pair (0 without friction):
       /// the energy the step dissipates.
       double dissipation = 0;
+      /// The sub-steps the step was solved in (Parameters::max_cutbacks):
+      /// 1 unless it was cut back. The record holds the state of the last
+      /// one and sums the passes, Newton records, pairing offsets, times
+      /// and the dissipation over all of them.
+      unsigned int n_substeps = 1;
+      /// Active pairs whose contact began within the step
+      /// (FiniteStrainContact::is_new_contact(): their slip counts from
+      /// where the step's first pass made its pairs, so they stick in that
+      /// step unless the friction bound is small), and of the other active
+      /// pairs, those that stick.
+      unsigned int n_new_contacts = 0, n_sticking_in_contact = 0;
     };
 
     /**
@@ -321,9 +338,11 @@ namespace dealvem
     set_loads(const LoadsFunction &f, const std::function<double(double)> &load_factor = {});
 
     /// Solve the step @p step at the time @p time from the last converged
-    /// state. Throws (FiniteStrainSolver's message, with the step) if Newton
-    /// fails; the state stays at the last converged step, on the step's
-    /// mesh.
+    /// state. Where Newton or the pairing passes fail, the step is cut
+    /// back into halves (Parameters::max_cutbacks; StepRecord::n_substeps);
+    /// if the smallest sub-step fails too, throws (FiniteStrainSolver's
+    /// message or the pairing offsets, with the step and the sub-step), and
+    /// the state stays at the last converged (sub-)step, on its mesh.
     void
     solve_step(const unsigned int step, const double time);
 
@@ -485,6 +504,18 @@ namespace dealvem
     /// converged states at the interface vertices (see the implementation).
     dealii::Vector<double>
     relaxed_pairing_state();
+    /// One attempt at the step from t_start to time, cut in halves where
+    /// it fails (Parameters::max_cutbacks); adds its sub-steps to total.
+    void
+    solve_with_cutbacks(const unsigned int step,
+                        const double       t_start,
+                        const double       time,
+                        const unsigned int depth,
+                        StepRecord        &total);
+    /// One increment to @p time from the last converged state (pairing
+    /// passes and Newton solves); throws where it fails.
+    void
+    solve_increment(const unsigned int step, const double time, StepRecord &record);
     double                 last_time = 0, previous_time = 0;
     double                 last_load_factor = 0, previous_load_factor = 0;
     unsigned int           last_step = 0, previous_step = 0, n_converged = 0;

@@ -279,6 +279,16 @@ namespace dealvem
       return fixed[i];
     }
 
+    /// Whether pair @p i began its contact after the slip origin
+    /// (Options::slip_origin): its slave point was off the master side
+    /// there, so its slip counts from Options::contact_origin. False
+    /// without a slip origin.
+    bool
+    is_new_contact(const unsigned int i) const
+    {
+      return new_contact[i];
+    }
+
     /// Whether pair @p i is left out (a junction pair or fixed).
     bool
     is_pair_left_out(const unsigned int i) const
@@ -419,6 +429,7 @@ namespace dealvem
     std::vector<ContactSegment>  segments; ///< of all interfaces, pair indices global
     std::vector<PairData>        data;
     std::vector<bool>            fixed;
+    std::vector<bool>            new_contact; ///< see is_new_contact()
     bool                         frictional = false;
     std::vector<double>          mu; ///< friction coefficient of each pair
   };
