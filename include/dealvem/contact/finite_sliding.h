@@ -136,12 +136,25 @@ namespace dealvem
    * that has to move between the meshes is the multipliers, which serve
    * as Newton's first iterate.
    *
+   * 6. <b>Cutbacks.</b> A step whose Newton solve or pairing passes fail
+   *    is solved again from its start as two half steps, each cut again if
+   *    it fails, down to $2^{-\text{max\_cutbacks}}$ of the step
+   *    (Parameters::max_cutbacks, StepRecord::n_substeps). (examples/step-11
+   *    slides the ironing die by 1, eight slab elements, in one step: the
+   *    first Newton solve inverts cells, the halves of 0.25, 0.25 and 0.5
+   *    converge, and the die ends with the force of 40 steps to 1e-4.)
+   *
+   * A pair counts its slip from the start of the step if its slave point
+   * touched the master side there (FiniteStrainContact: the distance to the
+   * master side's curve at the start, within $10^{-2}$ of a sub-edge), and
+   * from where the step's first pass made its pairs otherwise (a contact
+   * that begins within the step; StepRecord::n_new_contacts).
+   *
    * <h3>Limits</h3>
    * - Pairs are made between Newton solves (step 5), not within one; the
-   *   first pass of a step pairs where the step starts, so a step should
-   *   not slide by more than about one sub-edge (StepRecord::max_slip: the
-   *   largest slip of the step over the shortest slave sub-edge at its
-   *   pair).
+   *   first pass of a step pairs where the step is expected to end (the
+   *   extrapolation of the last two steps); a step that slides too far for
+   *   that is cut back (step 6).
    * - The stabilization of each pass is frozen at the state the pass starts
    *   from (FiniteStrainSolver), the end of the last pass.
    * - For $k = 2$ the partners are found on the chords of the current
@@ -153,14 +166,12 @@ namespace dealvem
    *   configuration, and keeps them: it does not slide.
    * - The passes can still cycle where a discrete state changes from one
    *   pass to the next and the sides give no straight run to move a vertex
-   *   along (two polygons facing each other near their corners), or where
-   *   a step slides by more than an edge (the ironing die of
-   *   examples/step-11, slid by 1.07 slab elements per step, cycles in its
-   *   first slide step). The step then throws
-   *   with the offset of every pass.
+   *   along (two polygons facing each other near their corners); the
+   *   smallest sub-step then throws with the offset of every pass.
    * - Coulomb friction in its incremental form is first-order accurate in
-   *   the step: on the ironing die the horizontal force and the energy
-   *   balance converge as the steps get smaller (examples/step-11).
+   *   the step. On the ironing die the friction force is the same within
+   *   2.5 % from 10 to 80 steps per unit slide, and the energy balance
+   *   closes to 3 % (examples/step-11).
    */
   class FiniteSliding
   {
@@ -309,9 +320,11 @@ namespace dealvem
       /// Active pairs whose contact began within the step
       /// (FiniteStrainContact::is_new_contact(): their slip counts from
       /// where the step's first pass made its pairs, so they stick in that
-      /// step unless the friction bound is small), and of the other active
-      /// pairs, those that stick.
-      unsigned int n_new_contacts = 0, n_sticking_in_contact = 0;
+      /// step unless the friction bound is small).
+      unsigned int n_new_contacts = 0;
+      /// Active pairs that were in contact at the start of the step and
+      /// stick (Coulomb friction; 0 in steady sliding).
+      unsigned int n_sticking_in_contact = 0;
     };
 
     /**
