@@ -1258,19 +1258,27 @@ namespace dealvem
               throw;
             std::ostringstream info;
             e.print_info(info);
-            AssertThrow(false, dealii::ExcMessage("FiniteSliding: step " + std::to_string(step) + " failed also in " +
-                                                  std::to_string(1u << depth) + " sub-steps (" +
-                                                  std::to_string(depth) + " cutbacks, Parameters::max_cutbacks), "
-                                                  "in the sub-step from the time " + std::to_string(t_start) +
-                                                  " to " + std::to_string(time) + ": " + info.str()));
+            AssertThrow(false, dealii::ExcMessage("FiniteSliding: step " + std::to_string(step) +
+                                                  ": its sub-step from the time " + std::to_string(t_start) + " to " +
+                                                  std::to_string(time) + " (1/" + std::to_string(1u << depth) +
+                                                  " of the step, after " + std::to_string(depth) +
+                                                  " cutbacks, Parameters::max_cutbacks) failed: " + info.str()));
           }
+        // (the work of the failed attempt counts in the step's record)
+        total.n_passes += record.n_passes;
+        total.setup_time += record.setup_time;
+        total.solve_time += record.solve_time;
+        total.newton.insert(total.newton.end(), record.newton.begin(), record.newton.end());
+        total.pairing_offsets.insert(total.pairing_offsets.end(), record.pairing_offsets.begin(),
+                                     record.pairing_offsets.end());
         const double middle = 0.5 * (t_start + time);
         solve_with_cutbacks(step, t_start, middle, depth + 1, total);
         solve_with_cutbacks(step, middle, time, depth + 1, total);
         return;
       }
     // the record of the step: the state of its last sub-step, the work
-    // (passes, Newton, times, dissipation) of all of them
+    // (passes, Newton, times) of all attempts, the dissipation of the
+    // converged sub-steps
     const auto passes = total.n_passes, substeps = total.n_substeps;
     const double setup = total.setup_time, solve = total.solve_time, dissipation = total.dissipation;
     auto newton  = std::move(total.newton);

@@ -314,8 +314,9 @@ namespace dealvem
       double dissipation = 0;
       /// The sub-steps the step was solved in (Parameters::max_cutbacks):
       /// 1 unless it was cut back. The record holds the state of the last
-      /// one and sums the passes, Newton records, pairing offsets, times
-      /// and the dissipation over all of them.
+      /// one, the dissipation summed over them, and the passes, Newton
+      /// records, pairing offsets and times of every attempt (the failed
+      /// ones too).
       unsigned int n_substeps = 1;
       /// Active pairs whose contact began within the step
       /// (FiniteStrainContact::is_new_contact(): their slip counts from
