@@ -256,6 +256,10 @@ namespace dealvem
                       "Finite strain (finite sliding): at most this many passes (pairing and Newton solve) per "
                       "load step; a step that does not meet 'Pairing tolerance' then stops the program with the "
                       "offset of every pass.");
+    prm.declare_entry("Maximum cutbacks", "4", Integer(0, 20),
+                      "Finite strain (finite sliding): a load step whose Newton solve or pairing passes fail is "
+                      "solved again from its start as two half steps, each cut again if it fails, down to "
+                      "2^-(this) of the step; then the program stops naming the sub-step. 0: stop at once.");
     prm.declare_entry("Maximum active set iterations", "50", Integer(1),
                       "Iteration limit of the active set (per load step; with Coulomb friction, of the "
                       "semismooth Newton iteration over open/stick/slip).");
@@ -600,6 +604,7 @@ namespace dealvem
     opt.detection.merge_fraction            = opt.insertion.merge_fraction;
     opt.pairing_tolerance                   = prm.get_double("Pairing tolerance");
     opt.max_pairing_passes                  = prm.get_integer("Maximum pairing passes");
+    opt.max_cutbacks                        = prm.get_integer("Maximum cutbacks");
     for (const auto &entry : InputParsing::split(prm.get("Friction between bodies"), ';'))
       {
         const std::string what   = "Contact/Friction between bodies entry '" + entry + "'";
@@ -1116,6 +1121,7 @@ namespace dealvem
     parameters.newton             = opt.newton;
     parameters.pairing_tolerance  = opt.pairing_tolerance;
     parameters.max_pairing_passes = opt.max_pairing_passes;
+    parameters.max_cutbacks       = opt.max_cutbacks;
     if (opt.stabilization != Stabilization::automatic)
       parameters.stabilization = opt.stabilization;
     FiniteSliding sliding(mesh, laws, interfaces, parameters);

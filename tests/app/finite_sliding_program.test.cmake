@@ -12,7 +12,9 @@
 #   Coulomb law at every pair); at least three such steps;
 # - bad input: finite sliding with 'Contact/Tangential = penalty' (the
 #   contact patch test of examples/step-2 with a Neo-Hooke law) and with
-#   'Contact/Pairs = auto' stop with a message naming the parameter.
+#   'Contact/Pairs = auto' stop with a message naming the parameter, and
+#   'Contact/Maximum cutbacks = 30' (out of [0, 20]) with deal.II's message
+#   naming the file, the line and the entry.
 include(${TEST_DIR}/program_checks.cmake)
 set(RUN_TIMEOUT 600)
 set(EXAMPLES ${SOURCE_DIR}/examples/parameters)
@@ -83,3 +85,8 @@ file(WRITE ${WORK_DIR}/finite-sliding-auto.prm "${auto_prm}")
 run_dealvem("finite sliding with detected pairs" FALSE
   "Parameter 'Finite strain/Enabled' is true (finite sliding), but 'Contact/Pairs' has 'auto'"
   ${WORK_DIR}/finite-sliding-auto.prm)
+# 'Contact/Maximum cutbacks' (FiniteSliding::Parameters::max_cutbacks) is an
+# integer in [0, 20]: 30 stops the program naming the file, line and entry
+string(REPLACE "subsection Contact" "subsection Contact\n  set Maximum cutbacks = 30" cutbacks_prm "${block_prm}")
+file(WRITE ${WORK_DIR}/finite-sliding-cutbacks.prm "${cutbacks_prm}")
+run_dealvem("finite sliding with 30 cutbacks" FALSE "Maximum cutbacks" ${WORK_DIR}/finite-sliding-cutbacks.prm)

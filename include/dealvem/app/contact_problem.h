@@ -198,6 +198,9 @@ namespace dealvem
       /// Finite sliding: the most pairing passes per step
       /// ('Contact/Maximum pairing passes').
       unsigned int max_pairing_passes = 12;
+      /// Finite sliding: how often a failed step is cut into halves
+      /// ('Contact/Maximum cutbacks', FiniteSliding::Parameters::max_cutbacks).
+      unsigned int max_cutbacks = 4;
     };
 
     /// The distributed path runs when @p comm has more than one process
