@@ -267,6 +267,12 @@ namespace dealvem
         double gap_at_origin = std::numeric_limits<double>::max(), nearest = gap_at_origin, touch = 0;
         for (const auto &piece : pieces_at_origin[interface_of_pair[i]])
           {
+            // (a piece x(s) = xm + s b + s^2 c lies within |b| + |c| of xm:
+            // one farther than the nearest so far is skipped unsearched)
+            const double reach =
+              0.5 * (piece[2].distance(piece[0]) + ((piece[2] - piece[1]) + (piece[0] - piece[1])).norm());
+            if (x_slave.distance(piece[1]) - reach >= nearest)
+              continue;
             const auto [q, tangent] = closest_on_piece(x_slave, piece[0], piece[1], piece[2]);
             const double dist       = q.distance(x_slave);
             if (dist < nearest && tangent.norm() > 0)
