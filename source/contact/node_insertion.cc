@@ -473,6 +473,7 @@ namespace dealvem
       Point        point;
       bool         inside = false; ///< not beyond an end of the side
       bool         facing = false; ///< outward normals opposed
+      double       normal_cosine = 1; ///< cosine of the angle between them
     };
 
     /**
@@ -494,7 +495,8 @@ namespace dealvem
         (best.t == 0 || best.t == 1) ? side.normal.at(side.edges[best.edge][best.t == 0 ? 0 : 1]) :
                                        edge_normal(mesh.vertex(side.edges[best.edge][0]),
                                                    mesh.vertex(side.edges[best.edge][1]));
-      best.facing = (other_normal * own_normal) <= -0.5;
+      best.normal_cosine = other_normal * own_normal;
+      best.facing        = best.normal_cosine <= -0.5;
     }
 
     Projection
@@ -662,7 +664,8 @@ namespace dealvem
                                          number_string(search) + " (Search distance " +
                                          number_string(settings.search_distance) +
                                          " times the interface size " + number_string(interface_size) + ")"});
-          else if (!c.projection.facing)
+          else if (!c.projection.facing &&
+                   !(settings.keep_facing.count(v) > 0 && c.projection.normal_cosine <= 0))
             {
               // far from the other side, a part that turns away (the flank
               // of a cylinder above a block) is simply outside the overlap;

@@ -31,7 +31,8 @@
 // h) real gaps and penetrations are kept: blocks 0.01 and 0.1 apart or
 //    overlapping by 0.01, and slave vertices moved normally by 1e-7 .. 1e-2
 //    edge lengths (closed only below the coordinate precision);
-// i) errors, each naming the interface ids.
+// i) errors, each naming the interface ids;
+// j) the facing test's band for vertices paired before (keep_facing).
 // For k = 1 and 2: weights and segment lengths sum to the interface
 // length, pairs ordered along the slave side, locations where the entities
 // are, the mesh valid.
@@ -697,6 +698,66 @@ main(int argc, char **argv)
     testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 6, 1, bad); },
                           "(master id 3, slave id 6): the merge fraction must lie in (0, 0.5)",
                           "i) merge fraction out of range");
+  }
+
+  // j) the facing test with a band (Settings::keep_facing): a slave side
+  // that lies flat on the master side for x in [0.25, 0.75] and then rises
+  // at 70 degrees, so that the outward normals of its rising part and of
+  // the master side are at 110 degrees. Its first vertex there,
+  // (0.75 + 0.15 cos 70, 1 + 0.15 sin 70), 0.56 master edges above the
+  // master side, fails the facing test (120 degrees) and is reported
+  // unpaired; listed in keep_facing (a vertex paired in an earlier pass of
+  // FiniteSliding) it keeps a partner: its closest point on the master
+  // side. The last vertex, not listed, stays unpaired.
+  {
+    std::cout << "j) the facing test with a band (keep_facing)" << std::endl;
+    const double c = std::cos(70 * M_PI / 180), s = std::sin(70 * M_PI / 180);
+    const auto   bottom = [&](const double xi) {
+      return xi <= 0.5 ? P(0.25 + xi, 1.) : P(0.75 + 0.6 * (xi - 0.5) * c, 1. + 0.6 * (xi - 0.5) * s);
+    };
+    const auto upper = [&](const double xi, const double eta, unsigned int, unsigned int) {
+      return bottom(xi) + T({0., 0.5 * eta});
+    };
+    const Mesh         lower    = block(0, 0, 2, 1, 8, 2, 0, 0);
+    const Mesh         both     = join(lower, mapped_quads(4, 1, upper, 1, 4));
+    const unsigned int rising   = lower.n_vertices() + 3; // (i, j) = (3, 0)
+    const unsigned int last     = lower.n_vertices() + 4;
+    const auto         paired   = [](const NodeInsertion::Interface &itf, const unsigned int v) {
+      for (const auto &p : itf.pairs)
+        if (!p.is_midpoint && p.slave_entity == v)
+          return &p;
+      return static_cast<const ContactNodePair *>(nullptr);
+    };
+    const auto unpaired = [](const NodeInsertion::Interface &itf, const unsigned int v) {
+      for (const auto &u : itf.report.unpaired)
+        if (!u.on_master && u.vertex == v)
+          return u.reason;
+      return std::string();
+    };
+    for (const unsigned int k : {1u, 2u})
+      {
+        const std::string name = "j) k = " + std::to_string(k) + ": ";
+        Mesh              plain = both;
+        const auto        itf   = NodeInsertion::insert(plain, 3, 6, k, NodeInsertion::Settings());
+        testing::check(plain.vertex(rising).distance(bottom(0.75)) < 1e-15, name + "the rising vertex found");
+        testing::check(paired(itf, rising) == nullptr, name + "without keep_facing the rising vertex has no partner");
+        testing::check(unpaired(itf, rising).find("does not face") != std::string::npos,
+                       name + "without keep_facing the rising vertex is reported as not facing");
+        NodeInsertion::Settings band;
+        band.keep_facing = {rising};
+        Mesh       kept  = both;
+        const auto itf2  = NodeInsertion::insert(kept, 3, 6, k, band);
+        const auto *pair = paired(itf2, rising);
+        testing::check(pair != nullptr, name + "with keep_facing the rising vertex has a partner");
+        if (pair != nullptr)
+          testing::check_small(pair->master_location.distance(P(bottom(0.75)[0], 1.)), 1e-14,
+                               name + "its partner is its closest point on the master side");
+        testing::check(paired(itf2, last) == nullptr && !unpaired(itf2, last).empty(),
+                       name + "the last vertex, not listed, stays unpaired");
+        testing::check(itf2.pairs.size() == itf.pairs.size() + (k == 1 ? 1 : 2),
+                       name + "keep_facing adds the one pair and its edge's midpoint pair (k = 2), nothing else");
+        kept.validate();
+      }
   }
 
   return testing::finish();

@@ -171,7 +171,12 @@ namespace dealvem
    * - Coulomb friction in its incremental form is first-order accurate in
    *   the step. On the ironing die the friction force is the same within
    *   2.5 % from 10 to 80 steps per unit slide, and the energy balance
-   *   closes to 3 % (examples/step-11).
+   *   closes to 3 % (examples/step-11); its remainder, the error of
+   *   carrying the state from mesh to mesh, falls with the mesh, not with
+   *   the step.
+   * - The passes can also stall in a slowly decaying 2-cycle where several
+   *   vertices are moved to face corners of the other side at once (the
+   *   ironing of step-11 pressed to 0.3 instead of 0.2).
    */
   class FiniteSliding
   {
@@ -478,6 +483,10 @@ namespace dealvem
     /// The pairs of two original vertices (master, slave) merged in a pass
     /// of the current step (they stay merged, see prepare_pass()).
     std::set<std::pair<unsigned int, unsigned int>> step_merges;
+
+    /// The original vertices that had a partner in a pass of the current
+    /// step (NodeInsertion::Settings::keep_facing of the later passes).
+    std::set<unsigned int> step_paired;
 
     /// The discretization of the current pass and that of the start of the
     /// step (the last converged step's; null before the first step).

@@ -12,6 +12,7 @@
 #include <dealvem/mesh/polygonal_mesh.h>
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -93,7 +94,8 @@ namespace dealvem
    * 1. <b>Partners.</b> Every vertex of either side whose closest point on
    *    the other side lies inside that side (not beyond its ends), within
    *    the search distance, and on a part facing it (outward normals at
-   *    more than 120 degrees) gets exactly one partner on the other side.
+   *    more than 120 degrees; 90 for a vertex in Settings::keep_facing)
+   *    gets exactly one partner on the other side.
    *    Vertices that lie inside the overlap but fail the distance or facing
    *    test are listed in Report::unpaired with the reason.
    * 2. <b>Merge, never split short.</b> A vertex whose closest point on the
@@ -168,6 +170,14 @@ namespace dealvem
       /// the cost does not grow with the number of interfaces times the
       /// size of the mesh.
       bool validate_mesh = true;
+      /// Vertices that had a partner in an earlier insertion into a mesh
+      /// with the same original vertices (FiniteSliding: an earlier
+      /// pairing pass of the same load step). For them the facing test of
+      /// rule 1 accepts outward normals at more than 90 degrees instead of
+      /// 120: a threshold with a band, so that a vertex whose normals sit
+      /// at the threshold does not gain and lose its partner from one pass
+      /// to the next.
+      std::set<unsigned int> keep_facing;
     };
 
     /// The boundary edges of a mesh by boundary id (ascending edge
