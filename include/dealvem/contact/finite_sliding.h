@@ -174,9 +174,9 @@ namespace dealvem
    *   closes to 3 % (examples/step-11); its remainder, the error of
    *   carrying the state from mesh to mesh, falls with the mesh, not with
    *   the step.
-   * - The passes can also stall in a slowly decaying 2-cycle where several
-   *   vertices are moved to face corners of the other side at once (the
-   *   ironing of step-11 pressed to 0.3 instead of 0.2).
+   * - Where several vertices are moved to face corners of the other side
+   *   at once (the ironing of step-11 pressed to 0.3), steps converge only
+   *   after cutbacks.
    */
   class FiniteSliding
   {
@@ -487,6 +487,11 @@ namespace dealvem
     /// The original vertices that had a partner in a pass of the current
     /// step (NodeInsertion::Settings::keep_facing of the later passes).
     std::set<unsigned int> step_paired;
+
+    /// Whether the residual of the pairing passes grew in the current step
+    /// (the vertices moved along their sides then take half updates, see
+    /// relaxed_pairing_state()).
+    bool step_damped = false;
 
     /// The discretization of the current pass and that of the start of the
     /// step (the last converged step's; null before the first step).
