@@ -672,7 +672,7 @@ namespace dealvem
       unsigned int i = 0;
       for (const auto &entry : side_neighbours)
         {
-          if (mesh.vertex(entry.first) == original.vertex(entry.first))
+          if (moved.count(entry.first) == 0)
             for (unsigned int comp = 0; comp < 2; ++comp)
               correction[entry.first][comp] = next[2 * i + comp] - x[2 * i + comp] - r[2 * i + comp];
           else if (step_damped)
