@@ -14,8 +14,17 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build-sanitize}"
 JOBS="${JOBS:-$(nproc)}"
 mkdir -p "$BUILD_DIR"
+# app/downstream installs the Release library of scripts/test.sh (./build, or
+# RELEASE_BUILD_DIR) beside this Debug one when it is there, and checks the
+# consumers of both variants in one prefix
+RELEASE_BUILD_DIR="${RELEASE_BUILD_DIR:-$ROOT/build}"
+release_args=()
+if [ -f "$RELEASE_BUILD_DIR/CMakeCache.txt" ] && grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$RELEASE_BUILD_DIR/CMakeCache.txt" \
+    && ls "$RELEASE_BUILD_DIR"/libdealvem.so >/dev/null 2>&1; then
+  release_args=(-DDEALVEM_RELEASE_LIBRARY_DIR="$RELEASE_BUILD_DIR")
+fi
 cmake -S "$ROOT" -B "$BUILD_DIR" -DDEALVEM_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug \
-  -DDEALVEM_ENABLE_BENCHMARKS=OFF > "$BUILD_DIR/configure.log" 2>&1 || {
+  -DDEALVEM_ENABLE_BENCHMARKS=OFF "${release_args[@]}" > "$BUILD_DIR/configure.log" 2>&1 || {
   cat "$BUILD_DIR/configure.log"; exit 1; }
 cmake --build "$BUILD_DIR" -j "$JOBS"
 if [ -n "${SANITIZE_BUILD_ONLY:-}" ]; then exit 0; fi

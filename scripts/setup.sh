@@ -2,9 +2,17 @@
 # Install the Debian 12 packages dealvem needs (idempotent: does nothing when
 # they are all present). Run as root, or with sudo available.
 set -euo pipefail
-# doxygen and texlive-binaries (bibtex, for @cite): the reference ('doc'
-# target) and its ctest doc/doxygen; no graphviz (doc/Doxyfile.in: HAVE_DOT = NO)
-PACKAGES="libdeal.ii-dev libsuitesparse-dev libeigen3-dev libcgal-dev cmake g++ make ccache numdiff python3 python3-vtk9 gmsh doxygen texlive-binaries"
+# The library and the program: deal.II (with Trilinos, UMFPACK, MPI), CHOLMOD,
+# Eigen, CGAL, the compiler, ccache, and LLVM's linker lld (a third of gold's
+# time on deal.II's long list of libraries).
+PACKAGES="libdeal.ii-dev libsuitesparse-dev libeigen3-dev libcgal-dev cmake g++ make ccache lld"
+# With --tests, also what the test suite uses: numdiff, python3 with VTK (the
+# VTU files read back), gmsh (meshes written by gmsh itself), doxygen and
+# texlive-binaries (bibtex, for @cite: the reference, 'doc' target, and its
+# ctest doc/doxygen; no graphviz: doc/Doxyfile.in has HAVE_DOT = NO).
+if [ "${1:-}" = "--tests" ]; then
+  PACKAGES="$PACKAGES numdiff python3 python3-vtk9 gmsh doxygen texlive-binaries"
+fi
 missing=""
 for p in $PACKAGES; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

@@ -3,7 +3,7 @@
 # labelled "long"; run those with: ctest --test-dir build -L long).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-bash "$ROOT/scripts/setup.sh"
+bash "$ROOT/scripts/setup.sh" --tests
 bash "$ROOT/scripts/build.sh"
 cd "${BUILD_DIR:-$ROOT/build}"
 ctest -LE long --output-on-failure -j "${JOBS:-$(nproc)}" --timeout 900

@@ -3,28 +3,30 @@
 # as a user does:
 #  - against the build tree (dealvem_DIR = the build directory), with the
 #    build's own type;
-#  - against an install tree made here holding both variants, the Release
-#    libdealvem.so (cmake --install of this build) and the Debug
-#    libdealvem.g.so (a library-only Debug build, see below), with the
-#    consumer in Release and in Debug. The Debug consumer is configured
-#    without CMAKE_BUILD_TYPE: deal_ii_initialize_cached_variables() makes it
-#    Debug, as for any deal.II user project.
+#  - against an install tree made here: this build's variant (cmake --install
+#    of this build) and, when the build directory of the other variant is
+#    given, that one beside it in the same prefix; each installed variant
+#    gets a consumer of its build type (Release: -DCMAKE_BUILD_TYPE=Release;
+#    Debug: no CMAKE_BUILD_TYPE, which deal_ii_initialize_cached_variables()
+#    makes Debug, as for any deal.II user project). A consumer of a variant
+#    the prefix lacks must stop at find_package() with the message that
+#    names scripts/install.sh.
 # Each consumer must link exactly one deal.II and one dealvem library, of
 # its build type (ldd), and run to exit code 0; the Debug one also checks
 # that a misuse caught by an Assert() of dealvem throws. The installed
 # targets must carry no compile flags or definitions (INTERFACE_ properties
 # other than the include directory and link libraries).
 #
-# The Debug library: DEBUG_LIBRARY_DIR (a configured Debug build directory
-# of dealvem, e.g. the one scripts/install.sh makes) if given, else a
-# library-only Debug build made in ${WORK_DIR}/debug-library (kept between
-# runs; ccache makes rebuilds cheap). JOBS (default 1) compile jobs.
+# The other variant: DEBUG_LIBRARY_DIR in a Release tree (a built Debug
+# build directory of dealvem, e.g. the one scripts/install.sh makes),
+# RELEASE_LIBRARY_DIR in a Debug tree (scripts/sanitize.sh passes the
+# Release build of scripts/test.sh when there is one, so CI checks both
+# variants side by side). The test builds no library itself: in the default
+# suite it takes seconds, not the 21 minutes a second, Debug library took on
+# one core.
 #
-# In a Debug build tree (the sanitizer build, scripts/sanitize.sh) the build
-# tree is itself the Debug variant: it is installed alone and the Release
-# consumer is skipped (there is no Release library in such a build; the
-# normal Release suite covers it). Under SANITIZE the install-tree consumers
-# get the sanitizer flags, which only the build tree's targets carry.
+# Under SANITIZE the install-tree consumers get the sanitizer flags, which
+# only the build tree's targets carry.
 cmake_policy(VERSION 3.13)   # lists keep empty elements (CMP0007)
 set(_sanitize_args "")
 if(SANITIZE)
@@ -32,10 +34,6 @@ if(SANITIZE)
   set(_flags "-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer")
   set(_sanitize_args "-DCMAKE_CXX_FLAGS=${_flags}" "-DCMAKE_EXE_LINKER_FLAGS=${_flags}")
 endif()
-if(NOT JOBS)
-  set(JOBS 1)
-endif()
-
 function(run_or_fail _what)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
   if(NOT _rc EQUAL 0)
@@ -44,38 +42,47 @@ function(run_or_fail _what)
 endfunction()
 
 # ------------------------------------------------------------ the install tree
+# The prefix gets this build tree's variant and, when a build directory of
+# the other variant is given (DEBUG_LIBRARY_DIR in a Release tree,
+# RELEASE_LIBRARY_DIR in a Debug tree), that one too. Nothing is compiled
+# here but the consumers: the default suite (Release) checks the build tree
+# and the Release install, and that a Debug consumer of a prefix without the
+# Debug library stops at find_package() with the message that says how to
+# install it; CI's sanitizer stage (a Debug tree, given the Release build of
+# the test stage by scripts/sanitize.sh) checks both variants side by side.
+function(check_build_dir _dir _type)
+  if(NOT EXISTS ${_dir}/CMakeCache.txt)
+    message(FATAL_ERROR "FAIL: ${_dir} is not a configured build directory")
+  endif()
+  file(STRINGS ${_dir}/CMakeCache.txt _found REGEX "^CMAKE_BUILD_TYPE:")
+  if(NOT _found MATCHES "=${_type}$")
+    message(FATAL_ERROR "FAIL: ${_dir} is not a ${_type} build (${_found})")
+  endif()
+  file(GLOB _libs ${_dir}/libdealvem*.so*)
+  if(NOT _libs)
+    message(FATAL_ERROR "FAIL: ${_dir} holds no dealvem library; build it first")
+  endif()
+endfunction()
 file(REMOVE_RECURSE ${WORK_DIR}/prefix)
 run_or_fail("install" ${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix)
 if(CMAKE_BUILD_TYPE STREQUAL "Release")
+  set(_installed_variants release)
   if(DEBUG_LIBRARY_DIR)
-    set(_debug_dir ${DEBUG_LIBRARY_DIR})
-    if(NOT EXISTS ${_debug_dir}/CMakeCache.txt)
-      message(FATAL_ERROR "FAIL: DEBUG_LIBRARY_DIR ${_debug_dir} is not a configured build directory")
-    endif()
-    file(STRINGS ${_debug_dir}/CMakeCache.txt _type REGEX "^CMAKE_BUILD_TYPE:")
-    if(NOT _type MATCHES "=Debug$")
-      message(FATAL_ERROR "FAIL: DEBUG_LIBRARY_DIR ${_debug_dir} is not a Debug build (${_type})")
-    endif()
-  else()
-    set(_debug_dir ${WORK_DIR}/debug-library)
-    # the CGAL choice of this build: both variants share dealvem/config.h
-    file(STRINGS ${BINARY_DIR}/CMakeCache.txt _cgal REGEX "^DEALVEM_WITH_CGAL:")
-    string(REGEX REPLACE "^[^=]*=" "" _cgal "${_cgal}")
-    run_or_fail("configure the Debug library" ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${_debug_dir}
-      -DCMAKE_BUILD_TYPE=Debug -DDEALVEM_WITH_CGAL=${_cgal} -DDEALVEM_ENABLE_PROGRAM=OFF
-      -DDEALVEM_ENABLE_TESTS=OFF -DDEALVEM_ENABLE_EXAMPLES=OFF -DDEALVEM_ENABLE_BENCHMARKS=OFF
-      -DDEALVEM_ENABLE_DOC=OFF)
+    check_build_dir(${DEBUG_LIBRARY_DIR} Debug)
+    run_or_fail("install the Debug library" ${CMAKE_COMMAND} --install ${DEBUG_LIBRARY_DIR}
+      --prefix ${WORK_DIR}/prefix)
+    list(APPEND _installed_variants debug)
   endif()
-  string(TIMESTAMP _start "%s")
-  run_or_fail("build the Debug library in ${_debug_dir}" ${CMAKE_COMMAND} --build ${_debug_dir} -j ${JOBS})
-  string(TIMESTAMP _end "%s")
-  math(EXPR _seconds "${_end} - ${_start}")
-  message(STATUS "Debug library (${_debug_dir}) up to date in ${_seconds} s")
-  run_or_fail("install the Debug library" ${CMAKE_COMMAND} --install ${_debug_dir} --prefix ${WORK_DIR}/prefix)
-  set(_installed_variants debug release)
 else()
   set(_installed_variants debug)
+  if(RELEASE_LIBRARY_DIR)
+    check_build_dir(${RELEASE_LIBRARY_DIR} Release)
+    run_or_fail("install the Release library" ${CMAKE_COMMAND} --install ${RELEASE_LIBRARY_DIR}
+      --prefix ${WORK_DIR}/prefix)
+    list(APPEND _installed_variants release)
+  endif()
 endif()
+message(STATUS "installed variants: ${_installed_variants}")
 
 file(GLOB_RECURSE _config ${WORK_DIR}/prefix/*/dealvemConfig.cmake)
 if(NOT _config)
@@ -107,13 +114,38 @@ endforeach()
 # ------------------------------------------------------------ the consumers
 # name, dealvem_DIR, CMAKE_BUILD_TYPE given (empty: none), build type expected
 set(_consumers "build-tree|${BINARY_DIR}|${CMAKE_BUILD_TYPE}|${CMAKE_BUILD_TYPE}")
-list(APPEND _consumers "install-debug|${_install_dir}||Debug")
-list(FIND _installed_variants release _has_release)
-if(_has_release GREATER -1)
-  list(APPEND _consumers "install-release|${_install_dir}|Release|Release")
-else()
-  message(STATUS "SKIP the Release consumer: ${CMAKE_BUILD_TYPE} build tree, no Release library")
-endif()
+foreach(_variant debug release)
+  list(FIND _installed_variants ${_variant} _has)
+  if(_variant STREQUAL "debug")
+    # no CMAKE_BUILD_TYPE: deal_ii_initialize_cached_variables() makes it Debug
+    set(_entry "install-debug|${_install_dir}||Debug")
+  else()
+    set(_entry "install-release|${_install_dir}|Release|Release")
+  endif()
+  if(_has GREATER -1)
+    list(APPEND _consumers "${_entry}")
+  else()
+    # a consumer of the missing variant must stop at find_package() and say
+    # how to install it
+    string(REPLACE "|" ";" _fields "${_entry}")
+    list(GET _fields 0 _name)
+    list(GET _fields 2 _type)
+    set(_args -Ddealvem_DIR=${_install_dir})
+    if(_type)
+      list(APPEND _args -DCMAKE_BUILD_TYPE=${_type})
+    endif()
+    set(_build ${WORK_DIR}/build-${_name})
+    file(REMOVE_RECURSE ${_build})
+    execute_process(COMMAND ${CMAKE_COMMAND} -S ${TEST_DIR}/downstream -B ${_build} ${_args}
+      RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+    string(REGEX REPLACE "[ \n]+" " " _flat "${_out}${_err}")
+    if(_rc EQUAL 0 OR NOT _flat MATCHES "has no ${_variant} library .*scripts/install.sh")
+      message(FATAL_ERROR "FAIL ${_name}: configuring against a prefix without the ${_variant} "
+        "library must stop and name scripts/install.sh (exit ${_rc}):\n${_out}${_err}")
+    endif()
+    message(STATUS "PASS (${_name}: no ${_variant} library installed; find_package stops and says so)")
+  endif()
+endforeach()
 
 foreach(_consumer ${_consumers})
   string(REPLACE "|" ";" _fields "${_consumer}")
