@@ -928,6 +928,7 @@ namespace dealvem
         json.set("finite_strain.residual_tolerance", finite_strain.solver.residual_tolerance);
         json.set("finite_strain.update_tolerance", finite_strain.solver.update_tolerance);
         json.set("finite_strain.line_search", finite_strain.solver.line_search ? "true" : "false");
+        json.set("finite_strain.pressure_load", pressure_load_name(finite_strain.pressure_load));
       }
     json.set("discretization.order", double(degree));
     json.set("discretization.gamma", gamma);
