@@ -36,7 +36,8 @@ namespace dealvem
    *   x, y, xy, e.g. `0 : xy : 0, 0; 3 : y : -0.01*x`
    * - Roller: `id, id, ...` (straight boundary parts, u.n = 0)
    * - Traction: `id : gx, gy; ...`
-   * - Pressure: `id : p; ...` (positive pressure pushes into the body)
+   * - Pressure: `id : p; ...` (positive pressure pushes into the body; at
+   *   finite strain a follower or a dead load, add_finite_strain_loads())
    * - Point constraints: `x, y : component : value; ...` or
    *   `x, y : component : value : body` (the mesh vertex at (x, y), of the
    *   cells with material id `body` if given; component x or y; the value
