@@ -26,6 +26,35 @@
 namespace dealvem
 {
   /**
+   * How a pressure acts at finite strain (FiniteStrainAssembler::add_pressure()).
+   */
+  enum class PressureLoad
+  {
+    /// A dead load: $p$ per unit reference length along the reference
+    /// normal (the nominal traction $-p\,N$); it does not follow the
+    /// deformation.
+    dead,
+    /// A follower load: $p$ per unit current length along the current
+    /// normal ($-p\,n\,da$), as a gas or liquid pressure acts; it turns and
+    /// stretches with the boundary.
+    follower
+  };
+
+  /// "dead" or "follower".
+  std::string
+  pressure_load_name(const PressureLoad kind);
+
+  /**
+   * The PressureLoad named @p value ("dead" or "follower", case and blanks
+   * around ignored); throws an ExcMessage naming @p parameter and the
+   * values it takes otherwise.
+   */
+  PressureLoad
+  parse_pressure_load(const std::string &value, const std::string &parameter);
+
+
+
+  /**
    * Assembles the internal force vector and the consistent tangent matrix
    * of hyperelasticity at finite strain (total Lagrangian) with the
    * virtual element of VEMDoFHandler::get_degree(), cell by cell with
@@ -74,33 +103,6 @@ namespace dealvem
    * freeze_stabilization() from a given state and kept until the next call
    * (see FiniteStrainOperator for the scaling and why it is frozen).
    */
-  /**
-   * How a pressure acts at finite strain (FiniteStrainAssembler::add_pressure()).
-   */
-  enum class PressureLoad
-  {
-    /// A dead load: $p$ per unit reference length along the reference
-    /// normal (the nominal traction $-p\,N$); it does not follow the
-    /// deformation.
-    dead,
-    /// A follower load: $p$ per unit current length along the current
-    /// normal ($-p\,n\,da$), as a gas or liquid pressure acts; it turns and
-    /// stretches with the boundary.
-    follower
-  };
-
-  /// "dead" or "follower".
-  std::string
-  pressure_load_name(const PressureLoad kind);
-
-  /**
-   * The PressureLoad named @p value ("dead" or "follower", case and blanks
-   * around ignored); throws an ExcMessage naming @p parameter and the
-   * values it takes otherwise.
-   */
-  PressureLoad
-  parse_pressure_load(const std::string &value, const std::string &parameter);
-
   template <int dim>
   class FiniteStrainAssembler
   {
