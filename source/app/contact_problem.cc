@@ -277,13 +277,16 @@ namespace dealvem
                       "Coulomb friction measures the slip against the previous step. With more than one "
                       "step every step writes its VTU and CSV files (base name + '-step-NNN') and a "
                       "ParaView time series (base name + '.pvd'). One body with 'Finite strain/Enabled = "
-                      "true': the load steps of the Newton solve, step k applying k/N of the loads and "
-                      "Dirichlet values (expressions without t), each written to base name + '-step-NNN.vtu' "
-                      "and the series base name + '.pvd'.");
+                      "true': the load steps of the Newton solve at the same times t; where no load or "
+                      "Dirichlet expression uses t, step k applies k/N of the loads and Dirichlet values "
+                      "instead; each step is written to base name + '-step-NNN.vtu' and the series base "
+                      "name + '.pvd'. One body at small strain: the problem is linear and static, so it is "
+                      "solved once at t = 'Final time' (a note says so when the number is above 1).");
     prm.declare_entry("Final time", "1", Double(),
-                      "Contact problems: the time t of the last load step (> 0). One body at finite strain: "
-                      "the time of the last step in the .pvd series and the JSON summary (step k at "
-                      "k * 'Final time' / 'Number of steps').");
+                      "The time t of the last load step (> 0), in every problem: step k is at "
+                      "t = k * 'Final time' / 'Number of steps' (the .pvd series and the JSON summary "
+                      "carry these times). A one-body problem at small strain is solved at t = 'Final "
+                      "time', with the exact solution compared there.");
     prm.leave_subsection();
     prm.enter_subsection("Output");
     prm.declare_entry("Write pictures", "true", Bool(),
@@ -426,6 +429,7 @@ namespace dealvem
       finite_strain.parse_parameters(prm);
       opt.finite_strain = finite_strain.enabled;
       opt.newton        = finite_strain.solver;
+      opt.pressure_load = finite_strain.pressure_load;
       AssertThrow(!finite_strain.enabled || MaterialLaws::is_hyperelastic(law),
                   dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': "
                                      "finite strain needs a hyperelastic law ('neo-hooke' or "
@@ -1134,7 +1138,7 @@ namespace dealvem
         constraints.close();
       });
     sliding.set_loads([this](FiniteStrainAssembler<2> &assembler) {
-      bc.add_finite_strain_loads(assembler, "Finite strain/Enabled");
+      bc.add_finite_strain_loads(assembler, "Finite strain/Enabled", opt.pressure_load);
     },
                       [](const double) { return 1.; });
 

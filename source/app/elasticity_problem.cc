@@ -191,28 +191,35 @@ namespace dealvem
     InputParsing::check_section_unused(prm, "Contact",
                                        "'Number of bodies' is 1, and contact needs at least two bodies.");
     finite_strain.parse_parameters(prm);
-    if (finite_strain.enabled)
+    // the load steps, as contact problems read them: step n of N at the
+    // time t = n * Final time / N of the expressions. At finite strain the
+    // Newton solve runs them (solve_finite_strain()); the linear static
+    // problem is solved once, at t = Final time
+    // (a ParameterHandler without the section, declared by
+    // ContactProblem::declare_parameters() as the program does, means one
+    // step to t = 1; finite strain needs it)
+    AssertThrow(!finite_strain.enabled || prm.subsection_path_exists({"Load steps"}),
+                dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the section 'Load steps' "
+                                   "(its number of load steps) is not declared: call "
+                                   "ContactProblem::declare_parameters() on the ParameterHandler too, as "
+                                   "the program does."));
+    n_load_steps = 1;
+    final_time   = 1;
+    if (prm.subsection_path_exists({"Load steps"}))
       {
-        // the load steps of the Newton solve: step n applies n/N of the
-        // loads and Dirichlet values (FiniteStrainSolver), at the time
-        // n * Final time / N of the output series
-        AssertThrow(prm.subsection_path_exists({"Load steps"}),
-                    dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the section 'Load steps' "
-                                       "(its number of load steps) is not declared: call "
-                                       "ContactProblem::declare_parameters() on the ParameterHandler too, as "
-                                       "the program does."));
         prm.enter_subsection("Load steps");
         const long steps = prm.get_integer("Number of steps");
         final_time       = prm.get_double("Final time");
         prm.leave_subsection();
         AssertThrow(steps >= 1 && steps <= 100000,
                     dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(steps) +
-                                       ": it must be at least 1 (and at most 100000); with 'Finite "
-                                       "strain/Enabled = true' it is the number of load steps of the Newton "
-                                       "solve."));
+                                       ": it must be at least 1 (and at most 100000)."));
         n_load_steps = steps;
         InputParsing::check_range(final_time, 0, 1e300, "Load steps/Final time", true, false,
-                                  "It is the time of the last load step in the output series.");
+                                  "It is the time t of the last load step.");
+      }
+    if (finite_strain.enabled)
+      {
         AssertThrow(!distributed,
                     dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the run has " +
                                        std::to_string(n_processes) +
@@ -220,14 +227,18 @@ namespace dealvem
                                        "the program without mpirun)."));
       }
     else
-      InputParsing::check_section_unused(prm, "Finite strain",
-                                         "'Finite strain/Enabled' is false: the Newton controls and the monitor "
-                                         "point are read only at finite strain.");
-    if (!finite_strain.enabled)
-      InputParsing::check_section_unused(prm, "Load steps",
-                                         "'Number of bodies' is 1: the one-body program solves the static "
-                                         "problem at t = 1; load steps are run by contact problems and, with "
-                                         "'Finite strain/Enabled = true', by the finite-strain solve.");
+      {
+        InputParsing::check_section_unused(prm, "Finite strain",
+                                           "'Finite strain/Enabled' is false: the Newton controls, the "
+                                           "pressure load and the monitor point are read only at finite "
+                                           "strain.");
+        if (n_load_steps > 1)
+          pcout << "note: 'Load steps/Number of steps' is " << n_load_steps
+                << ": the one-body problem at small strain is linear and static, and its solution at t = "
+                   "'Final time' does not depend on the steps before; the program solves it once, with every "
+                   "expression at t = "
+                << final_time << "." << std::endl;
+      }
     for (const auto &e : InputParsing::changed_entries(prm, "Output"))
       if (e == "Output/Write pictures" || e == "Output/Write CSV")
         pcout << "warning: the parameter file sets '" << e
@@ -282,28 +293,10 @@ namespace dealvem
     prm.enter_subsection("Exact solution");
     exact_displacement = prm.get("Displacement");
     prm.leave_subsection();
-    // the one-body problem is static (no load steps): an expression in t
-    // would silently be taken at t = 1
-    {
-      std::vector<std::string> timed = bc.time_dependent_entries();
-      for (const auto &e : InputParsing::split(exact_displacement, ','))
-        if (InputParsing::uses_variable(e, "t"))
-          {
-            timed.push_back("Exact solution/Displacement");
-            break;
-          }
-      timed.erase(std::unique(timed.begin(), timed.end()), timed.end());
-      std::string others;
-      for (unsigned int i = 1; i < timed.size(); ++i)
-        others += (i > 1 ? ", '" : " (also '") + timed[i] + "'" + (i + 1 == timed.size() ? ")" : "");
-      AssertThrow(timed.empty(),
-                  dealii::ExcMessage("Parameter '" + (timed.empty() ? std::string() : timed[0]) + "'" + others +
-                                     " uses the time t, but 'Number of bodies' is 1: the one-body program "
-                                     "solves one static problem, without load steps, and would take t as 1. "
-                                     "Write the expression without t (with the value you mean in place of "
-                                     "t). Load steps (section 'Load steps', t = k * Final time / Number of "
-                                     "steps) are run by contact problems ('Number of bodies' at least 2)."));
-    }
+    // an expression in t: at finite strain the steps solve at their times;
+    // the linear problem is solved at t = Final time (and its exact
+    // solution compared there)
+    bc.set_time(final_time);
 
     if (finite_strain.enabled)
       for (const auto &e : InputParsing::changed_entries(prm, "Solver"))
@@ -911,6 +904,9 @@ namespace dealvem
                                                              bc.get_constants(), "Exact solution/Displacement");
     AssertThrow(!exact || exact->n_components == 2,
                 dealii::ExcMessage("Parameter 'Exact solution/Displacement' needs two expressions 'ux, uy'."));
+    // (the solution compared with it is that of t = Final time)
+    if (exact)
+      exact->set_time(final_time);
 
     table = dealii::ConvergenceTable();
     cycle_dofs.clear();
@@ -923,6 +919,7 @@ namespace dealvem
     json.set("material.model", ElasticMaterial::model_name(model));
     json.set("material.law", MaterialLaws::name(law));
     json.set("finite_strain.enabled", finite_strain.enabled ? "true" : "false");
+    json.set("final_time", final_time);
     if (finite_strain.enabled)
       {
         json.set("finite_strain.load_steps", double(n_load_steps));
@@ -931,6 +928,7 @@ namespace dealvem
         json.set("finite_strain.residual_tolerance", finite_strain.solver.residual_tolerance);
         json.set("finite_strain.update_tolerance", finite_strain.solver.update_tolerance);
         json.set("finite_strain.line_search", finite_strain.solver.line_search ? "true" : "false");
+        json.set("finite_strain.pressure_load", pressure_load_name(finite_strain.pressure_load));
       }
     json.set("discretization.order", double(degree));
     json.set("discretization.gamma", gamma);
@@ -1020,71 +1018,6 @@ namespace dealvem
 
   namespace
   {
-    // The Cauchy stress and J = det F of a finite-strain state: per cell the
-    // means over the cell's quadrature (F = I + Pi0 grad u at each point),
-    // per vertex the mean of the cells around it.
-    struct CauchyFields
-    {
-      std::vector<dealii::Tensor<2, 2>> cell_stress;
-      std::vector<double>               cell_J;
-      std::vector<std::pair<std::string, std::vector<double>>> vertex_fields;
-      double                                                   max_norm = 0;
-    };
-
-    CauchyFields
-    cauchy_fields(const VEMDoFHandler<2> &dof_handler, const MaterialLibrary<2> &laws,
-                  const dealii::Vector<double> &u)
-    {
-      const PolygonalMesh<2> &mesh = dof_handler.get_mesh();
-      CauchyFields            out;
-      out.cell_stress.resize(mesh.n_cells());
-      out.cell_J.resize(mesh.n_cells());
-      VEMValues<2> values(dof_handler, dealii::update_quadrature_points | dealii::update_JxW_values);
-      std::vector<dealii::Tensor<2, 2>> gradients;
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        {
-          values.reinit(c);
-          values.get_function_gradient_projections(u, gradients);
-          const ConstitutiveLaw<2> &law = laws.get_law(values.material_id());
-          double                    area = 0;
-          for (unsigned int q = 0; q < values.n_quadrature_points(); ++q)
-            {
-              dealii::Tensor<2, 2> F = gradients[q];
-              F[0][0] += 1;
-              F[1][1] += 1;
-              // sigma = P F^T / J, J = f det F in plane stress (throws for
-              // det F <= 0, which a converged state does not have)
-              double J = 0;
-              out.cell_stress[c] += finite_strain_cauchy_stress(law, F, J) * values.JxW(q);
-              out.cell_J[c] += J * values.JxW(q);
-              area += values.JxW(q);
-            }
-          out.cell_stress[c] /= area;
-          out.cell_J[c] /= area;
-          out.max_norm = std::max(out.max_norm, out.cell_stress[c].norm());
-        }
-      const std::vector<std::string> names = {"cauchy_xx", "cauchy_yy", "cauchy_xy", "det_F"};
-      std::vector<std::vector<double>> fields(4, std::vector<double>(mesh.n_vertices(), 0.));
-      std::vector<unsigned int>        count(mesh.n_vertices(), 0);
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        for (const unsigned int v : mesh.cell(c).vertices)
-          {
-            fields[0][v] += out.cell_stress[c][0][0];
-            fields[1][v] += out.cell_stress[c][1][1];
-            fields[2][v] += out.cell_stress[c][0][1];
-            fields[3][v] += out.cell_J[c];
-            ++count[v];
-          }
-      for (unsigned int i = 0; i < 4; ++i)
-        {
-          for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-            if (count[v] > 0)
-              fields[i][v] /= count[v];
-          out.vertex_fields.emplace_back(names[i], std::move(fields[i]));
-        }
-      return out;
-    }
-
     std::string
     step_suffix(const unsigned int step)
     {
@@ -1104,7 +1037,12 @@ namespace dealvem
     // FiniteStrainAssembler); an explicit choice is passed on
     const Stabilization      rule = (stabilization == Stabilization::automatic ? Stabilization::trace : stabilization);
     FiniteStrainAssembler<2> assembler(dof_handler, laws, gamma, rule);
-    bc.add_finite_strain_loads(assembler, "Finite strain/Enabled");
+    bc.add_finite_strain_loads(assembler, "Finite strain/Enabled", finite_strain.pressure_load);
+    // The load steps: step n solves at t_n = n * Final time / N. Where an
+    // expression uses t, the data of the step are those of t_n, unscaled (as
+    // in contact problems); else the data are fixed and step n applies n/N
+    // of the loads and prescribed displacements (the load factor).
+    const bool timed = bc.uses_time();
     {
       dealii::Vector<double> f_ext;
       assembler.assemble_load_vector(f_ext);
@@ -1113,6 +1051,7 @@ namespace dealvem
     }
     FiniteStrainSolver<2>::Parameters parameters = finite_strain.solver;
     parameters.n_load_steps                     = n_load_steps;
+    parameters.scale_prescribed_motion          = !timed;
     FiniteStrainSolver<2> solver(assembler, constraints, parameters);
 
     // the monitor point: a vertex of the mesh
@@ -1142,12 +1081,15 @@ namespace dealvem
     newton_updates  = 0;
     max_cauchy_norm = 0;
     pcout << "  finite strain: " << laws.get_law(mesh_parameters.material_id).get_name() << ", " << n_load_steps
-          << " load step" << (n_load_steps > 1 ? "s" : "") << std::endl;
+          << " load step" << (n_load_steps > 1 ? "s" : "")
+          << (timed ? " at the times t of the expressions" : " (load factors n/N of the data)")
+          << (bc.has_pressure() ? ", " + pressure_load_name(finite_strain.pressure_load) + " pressure" : "")
+          << std::endl;
     // the JSON record of a step (also of the failed one)
     const auto record_step = [&](const FiniteStrainSolver<2>::StepRecord &r) {
       const std::string k = key + "steps." + std::to_string(r.step) + ".";
       json.set(k + "load_factor", r.load_factor);
-      json.set(k + "time", r.load_factor * final_time);
+      json.set(k + "time", r.step * final_time / n_load_steps);
       json.set(k + "converged", r.converged ? "true" : "false");
       json.set(k + "newton_iterations", double(r.iterations.empty() ? 0 : r.iterations.size() - 1));
       if (!r.iterations.empty())
@@ -1167,10 +1109,20 @@ namespace dealvem
 
     for (unsigned int n = 1; n <= n_load_steps; ++n)
       {
-        const double load_factor = double(n) / n_load_steps;
+        const double load_factor = timed ? 1. : double(n) / n_load_steps;
         const double time        = n * final_time / n_load_steps;
         try
           {
+            if (timed)
+              {
+                // the data of t_n: loads (evaluated by the assembler at
+                // their functions' time) and prescribed displacements
+                bc.set_time(time);
+                dealii::AffineConstraints<double> step_constraints;
+                bc.apply_constraints(dof_handler, step_constraints);
+                step_constraints.close();
+                solver.set_constraints(step_constraints);
+              }
             solver.solve_step(n, load_factor);
           }
         catch (...)
@@ -1201,13 +1153,13 @@ namespace dealvem
         record_step(r);
         newton_updates += r.iterations.size() - 1;
         solution = solver.get_solution();
-        const CauchyFields cauchy = cauchy_fields(dof_handler, laws, solution);
-        max_cauchy_norm           = cauchy.max_norm;
-        json.set(key + "steps." + std::to_string(n) + ".max_cauchy_norm", cauchy.max_norm);
+        const FiniteStrainFields fields = compute_finite_strain_fields(dof_handler, laws, solution);
+        max_cauchy_norm                 = fields.max_cell_cauchy_norm;
+        json.set(key + "steps." + std::to_string(n) + ".max_cauchy_norm", max_cauchy_norm);
         pcout << "  load step " << n << " of " << n_load_steps << " (load factor " << load_factor << ", t = " << time
               << "): " << r.iterations.size() - 1 << " Newton update" << (r.iterations.size() == 2 ? "" : "s")
               << ", residual " << r.iterations.back().residual_norm << " (relative "
-              << r.iterations.back().relative_residual << "), max |Cauchy stress| " << cauchy.max_norm;
+              << r.iterations.back().relative_residual << "), max |Cauchy stress| " << max_cauchy_norm;
         if (monitor != dealii::numbers::invalid_unsigned_int)
           {
             const unsigned int node = dof_handler.vertex_node(monitor);
@@ -1228,8 +1180,7 @@ namespace dealvem
         if (write_vtu)
           {
             const std::string       file = prefix + step_suffix(n) + ".vtu";
-            const StressRecovery<2> linearized(dof_handler, materials, solution);
-            write_vtu_file(file, dof_handler, solution, linearized, cauchy.vertex_fields);
+            write_finite_strain_vtu_file(file, dof_handler, laws, solution);
             series.emplace_back(time, std::filesystem::path(file).filename().string());
             write_pvd_record(prefix + ".pvd", series);
           }

@@ -279,7 +279,10 @@ namespace dealvem
                       "Tractions 'id : gx, gy; ...' (force per length; expressions in x, y, t; t = 1, or the time of the load step).");
     prm.declare_entry("Pressure", "", Anything(),
                       "Normal pressures 'id : p; ...'; positive pressure pushes into the body "
-                      "(expressions in x, y, t; t = 1, or the time of the load step).");
+                      "(expressions in x, y, t; t = 1, or the time of the load step). At finite strain "
+                      "'Finite strain/Pressure load' says whether p follows the deformed boundary "
+                      "(follower, the default; x, y are then the reference coordinates of the point) or "
+                      "is the dead nominal traction -p N.");
     prm.declare_entry("Point constraints", "", Anything(),
                       "Single-point constraints 'x, y : component : value; ...' on the mesh vertex "
                       "at (x, y), component x or y; the value is an expression evaluated at (x, y), "
@@ -533,15 +536,9 @@ namespace dealvem
 
   void
   BoundaryConditionParameters::add_finite_strain_loads(FiniteStrainAssembler<2> &assembler,
-                                                       const std::string        &switch_name) const
+                                                       const std::string        &switch_name,
+                                                       const PressureLoad        pressure_load) const
   {
-    for (const auto &p : pressures)
-      AssertThrow(false, dealii::ExcMessage(
-                           "Parameter '" + p.name + "': a pressure acts on the deformed boundary (a follower "
-                           "load), which the finite-strain solver does not offer, and '" + switch_name +
-                           "' is true. Give the load as a nominal traction (force per unit length of the "
-                           "undeformed boundary, a dead load) in 'Boundary conditions and loads/Traction', or "
-                           "solve at small strain."));
     for (const auto &r : rigid_boundaries)
       AssertThrow(false, dealii::ExcMessage(
                            "Parameter '" + r.name + "': a rigid boundary part is a small-displacement "
@@ -552,6 +549,16 @@ namespace dealvem
       assembler.set_body_force(*body_force);
     for (const auto &t : tractions)
       assembler.add_traction(t.id, *t.function);
+    for (const auto &p : pressures)
+      assembler.add_pressure(p.id, *p.function, pressure_load);
+  }
+
+
+
+  bool
+  BoundaryConditionParameters::uses_time() const
+  {
+    return !time_dependent_entries().empty();
   }
 
 
@@ -712,14 +719,24 @@ namespace dealvem
     prm.enter_subsection("Finite strain");
     prm.declare_entry("Enabled", "false", Bool(),
                       "One body: solve at finite strain (total Lagrangian hyperelasticity, Newton's method "
-                      "with the load steps of 'Load steps/Number of steps': step n of N applies n/N of the "
-                      "loads and of the Dirichlet values) with the hyperelastic 'Material/Law' (not 'linear', "
-                      "which has no finite-strain response). Loads are dead: body force per unit reference "
-                      "area, 'Traction' per unit reference length (nominal); 'Pressure' and 'Rigid boundary' "
-                      "are refused. One MPI process; each Newton update is solved by UMFPACK. Every step "
-                      "writes <base name>-step-NNN.vtu (with the Cauchy stress and J = det F as point "
-                      "fields), the series <base name>.pvd, and the Newton history is printed and kept in "
-                      "the JSON summary. false: small strain. Contact problems are solved at small strain.");
+                      "with the load steps of 'Load steps': step n of N solves at the time t = n * 'Final "
+                      "time' / N of the expressions; where no load or Dirichlet expression uses t, step n "
+                      "applies n/N of the loads and of the Dirichlet values) with the hyperelastic "
+                      "'Material/Law' (not 'linear', which has no finite-strain response). Body force per "
+                      "unit reference area, 'Traction' per unit reference length (nominal, dead); "
+                      "'Pressure' as 'Pressure load' says; 'Rigid boundary' is refused. One MPI process; "
+                      "each Newton update is solved by UMFPACK. Every step writes <base name>-step-NNN.vtu "
+                      "(point and cell fields cauchy_stress (xx, yy, xy), cauchy_stress_zz, "
+                      "cauchy_von_mises, det_F and principal_stretches; no small-strain stress), the series "
+                      "<base name>.pvd, and the Newton history is printed and kept in the JSON summary. "
+                      "false: small strain. With several bodies: finite sliding contact (see 'Contact').");
+    prm.declare_entry("Pressure load", "follower", Anything(),
+                      "How the 'Boundary conditions and loads/Pressure' entries act at finite strain: "
+                      "'follower' (the default: the pressure acts on the deformed boundary along its current "
+                      "normal, force p per unit current length, t = -p n da, as a gas or liquid pressure "
+                      "does; its load turns and stretches with the boundary and Newton uses its tangent) or "
+                      "'dead' (the nominal traction -p N: p per unit reference length along the reference "
+                      "normal, fixed in direction and size). At small strain the two are the same load.");
     prm.declare_entry("Maximum Newton iterations", "30", Integer(1, 1000),
                       "Largest number of Newton updates (linear solves) per load step; a step that does not "
                       "converge within them stops the run (the converged steps' files are kept).");
@@ -751,6 +768,7 @@ namespace dealvem
     solver.update_tolerance   = prm.get_double("Update tolerance");
     solver.line_search        = prm.get_bool("Line search");
     const std::string point   = prm.get("Monitor point");
+    pressure_load             = parse_pressure_load(prm.get("Pressure load"), "Finite strain/Pressure load");
     prm.leave_subsection();
     InputParsing::check_range(solver.residual_tolerance, 0, 1, "Finite strain/Residual tolerance", true, true);
     InputParsing::check_range(solver.update_tolerance, 0, 1, "Finite strain/Update tolerance", true, true);

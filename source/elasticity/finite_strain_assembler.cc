@@ -7,11 +7,42 @@
 #include <dealvem/elasticity/finite_strain_assembler.h>
 #include <dealvem/vem/vem_values.h>
 
+#include <cctype>
 #include <cmath>
 #include <string>
 
 namespace dealvem
 {
+  std::string
+  pressure_load_name(const PressureLoad kind)
+  {
+    return kind == PressureLoad::dead ? "dead" : "follower";
+  }
+
+
+
+  PressureLoad
+  parse_pressure_load(const std::string &value, const std::string &parameter)
+  {
+    std::string v;
+    for (const char c : value)
+      v += char(std::tolower(static_cast<unsigned char>(c)));
+    const auto first = v.find_first_not_of(" \t");
+    const auto last  = v.find_last_not_of(" \t");
+    v                = (first == std::string::npos ? std::string() : v.substr(first, last - first + 1));
+    if (v == "dead")
+      return PressureLoad::dead;
+    if (v == "follower")
+      return PressureLoad::follower;
+    AssertThrow(false, dealii::ExcMessage("Parameter '" + parameter + "' = '" + value +
+                                          "' is not a kind of pressure load: use 'follower' (the pressure acts "
+                                          "on the deformed boundary, along its current normal) or 'dead' (the "
+                                          "nominal traction -p N on the undeformed boundary)."));
+    return PressureLoad::follower;
+  }
+
+
+
   template <int dim>
   FiniteStrainAssembler<dim>::FiniteStrainAssembler(const VEMDoFHandler<dim>   &dof_handler,
                                                     const MaterialLibrary<dim> &laws,
@@ -60,9 +91,75 @@ namespace dealvem
 
   template <int dim>
   void
+  FiniteStrainAssembler<dim>::add_pressure(const dealii::types::boundary_id id,
+                                           const dealii::Function<dim>     &p,
+                                           const PressureLoad               kind)
+  {
+    AssertThrow(p.n_components == 1,
+                dealii::ExcMessage("FiniteStrainAssembler::add_pressure(): a pressure must be a scalar function "
+                                   "(boundary id " + std::to_string(int(id)) + ")."));
+    if (kind == PressureLoad::dead)
+      loads.add_pressure(id, p);
+    else
+      follower_pressures.emplace_back(id, &p);
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainAssembler<dim>::add_follower_loads(const VEMValues<dim>         &vem_values,
+                                                 const dealii::Vector<double> &local_u,
+                                                 const double                  factor,
+                                                 dealii::Vector<double>       &F,
+                                                 dealii::FullMatrix<double>   *K) const
+  {
+    if (follower_pressures.empty())
+      return;
+    dealii::Vector<double>     Fp;
+    dealii::FullMatrix<double> Kp;
+    for (unsigned int e = 0; e < vem_values.n_edges(); ++e)
+      {
+        const dealii::types::boundary_id id = vem_values.edge_boundary_id(e);
+        if (id == dealii::numbers::internal_face_boundary_id)
+          continue;
+        for (const auto &p : follower_pressures)
+          if (p.first == id)
+            {
+              Fp.reinit(F.size());
+              if (K != nullptr)
+                Kp.reinit(F.size(), F.size());
+              vem_values.get_element().add_edge_follower_pressure(e, *p.second, local_u, Fp,
+                                                                  K != nullptr ? &Kp : nullptr);
+              F.add(factor, Fp);
+              if (K != nullptr)
+                K->add(-factor, Kp);
+            }
+      }
+  }
+
+
+
+  template <int dim>
+  void
   FiniteStrainAssembler<dim>::assemble_load_vector(dealii::Vector<double> &f_ext) const
   {
     loads.assemble_load_vector(f_ext);
+    if (follower_pressures.empty())
+      return;
+    // the follower pressures in the reference configuration
+    VEMValues<dim>         vem_values(dof_handler, dealii::update_quadrature_points | dealii::update_JxW_values);
+    dealii::Vector<double> local_u, F;
+    for (unsigned int c = 0; c < dof_handler.get_mesh().n_cells(); ++c)
+      {
+        vem_values.reinit(c);
+        const auto &indices = vem_values.get_dof_indices();
+        local_u.reinit(indices.size());
+        F.reinit(indices.size());
+        add_follower_loads(vem_values, local_u, 1., F, nullptr);
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          f_ext[indices[i]] += F[i];
+      }
   }
 
 
@@ -142,6 +239,9 @@ namespace dealvem
         F *= load_factor;
         F -= r_c;
         F -= Ksu;
+        // the follower pressures at the current edge positions, and their
+        // derivative (K = K_c - load_factor dF_p/du)
+        add_follower_loads(vem_values, local_u, load_factor, F, tangent != nullptr ? &K : nullptr);
         const auto &indices = vem_values.get_dof_indices();
         for (unsigned int i = 0; i < indices.size(); ++i)
           residual[indices[i]] += F[i];

@@ -217,6 +217,10 @@ namespace dealvem
   void
   FiniteStrainSolver<dim>::solve_step(const unsigned int step, const double load_factor)
   {
+    // the loads at the current time of their functions (a caller with
+    // time-dependent data sets it before the step): the reference force of
+    // the convergence test
+    assembler.assemble_load_vector(f_ext);
     if (parameters.extrapolate && n_converged >= 2)
       {
         const auto n_records = history.size();

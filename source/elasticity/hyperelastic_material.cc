@@ -217,6 +217,24 @@ namespace dealvem
 
 
 
+  double
+  HyperelasticMaterial::cauchy_stress_zz(const dealii::Tensor<2, 2> &F) const
+  {
+    const double det_F = checked_determinant(F);
+    if (model_ == ElasticMaterial::Model::plane_stress)
+      {
+        // the stretch f is the root of P_zz = 0; evaluating it checks that
+        // the state exists (and throws as the other functions do if not)
+        (void)stretch(F, det_F);
+        return 0.;
+      }
+    Response3D r;
+    evaluate_3d(F, det_F, 1., Level::stress, r);
+    return r.P_zz / det_F;
+  }
+
+
+
   bool
   HyperelasticMaterial::has_finite_strain_response() const
   {

@@ -923,5 +923,72 @@ namespace dealvem
     add_edge_traction(edge, t, F);
   }
 
+  template <int dim>
+  void
+  VirtualElement<dim>::add_edge_follower_pressure(const unsigned int            edge,
+                                                  const dealii::Function<dim>  &pressure,
+                                                  const dealii::Vector<double> &local_u,
+                                                  dealii::Vector<double>       &F,
+                                                  dealii::FullMatrix<double>   *K) const
+  {
+    static_assert(dim == 2, "add_edge_follower_pressure is implemented in 2D");
+    AssertDimension(pressure.n_components, 1);
+    AssertDimension(F.size(), n_dofs);
+    AssertDimension(local_u.size(), n_dofs);
+    const auto               nodes = edge_nodes(edge);
+    const dealii::Point<dim> a     = geometry->vertex(edge);
+    const dealii::Point<dim> b     = geometry->vertex((edge + 1) % n_vertices);
+    // Q (b - a) = (t_y, -t_x) |b - a|: the outward normal times the length
+    // for counter-clockwise edges; the sign makes it so for either order
+    const dealii::Tensor<1, dim> n0   = geometry->edge_normal(edge);
+    const double                 sign = ((b - a)[1] * n0[0] - (b - a)[0] * n0[1]) >= 0 ? 1. : -1.;
+    // the current node positions x_b, rotated: Q x_b = (x_b[1], -x_b[0])
+    std::vector<dealii::Tensor<1, dim>> Qx(nodes.size());
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        const dealii::Point<dim> X = node_location(nodes[j]);
+        const double             x = X[0] + local_u[2 * nodes[j]], y = X[1] + local_u[2 * nodes[j] + 1];
+        Qx[j][0]                   = y;
+        Qx[j][1]                   = -x;
+      }
+    // M_ab = -sign int p N_a N_b' ds
+    dealii::FullMatrix<double>   M(nodes.size(), nodes.size());
+    const dealii::Quadrature<1> &q = internal::gauss_rule(5);
+    for (unsigned int k = 0; k < q.size(); ++k)
+      {
+        const double             s = q.point(k)[0];
+        const dealii::Point<dim> X = a + s * (b - a);
+        const double             p = pressure.value(X);
+        std::vector<double>      phi, dphi;
+        if (degree == 1)
+          {
+            phi  = {1. - s, s};
+            dphi = {-1., 1.};
+          }
+        else
+          {
+            phi  = {(1. - s) * (1. - 2. * s), 4. * s * (1. - s), s * (2. * s - 1.)};
+            dphi = {4. * s - 3., 4. - 8. * s, 4. * s - 1.};
+          }
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          for (unsigned int j = 0; j < nodes.size(); ++j)
+            M(i, j) -= sign * q.weight(k) * p * phi[i] * dphi[j];
+      }
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      for (unsigned int j = 0; j < nodes.size(); ++j)
+        {
+          for (unsigned int c = 0; c < 2; ++c)
+            F[2 * nodes[i] + c] += M(i, j) * Qx[j][c];
+          if (K != nullptr)
+            {
+              // d(Q x_b)_c / d u_{b,d} = Q_cd, Q = [[0, 1], [-1, 0]]
+              (*K)(2 * nodes[i], 2 * nodes[j] + 1) += M(i, j);
+              (*K)(2 * nodes[i] + 1, 2 * nodes[j]) -= M(i, j);
+            }
+        }
+  }
+
+
+
   template class VirtualElement<2>;
 } // namespace dealvem

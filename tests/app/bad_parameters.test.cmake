@@ -66,10 +66,11 @@ bad_case(finite_strain_zero_steps "Parameter 'Load steps/Number of steps' is 0: 
   "${small_mesh}${ok_bc}${fs_on}${neo}subsection Load steps\n  set Number of steps = 0\nend\n")
 bad_case(finite_strain_final_time "Parameter 'Load steps/Final time' = 0 is out of range"
   "${small_mesh}${ok_bc}${fs_on}${neo}subsection Load steps\n  set Final time = 0\nend\n")
-bad_case(load_steps_small_strain "load steps are run by contact problems and, with 'Finite strain/Enabled = true', by the finite-strain solve"
-  "${small_mesh}${ok_bc}${neo}subsection Load steps\n  set Number of steps = 4\nend\n")
-bad_case(finite_strain_pressure "Parameter 'Boundary conditions and loads/Pressure entry '3 : 1'': a pressure acts on the deformed boundary"
-  "${small_mesh}${fs_on}${neo}subsection Boundary conditions and loads\n  set Dirichlet = 0 : xy : 0, 0\n  set Pressure = 3 : 1\nend\n")
+# (one body at small strain reads 'Load steps' too: t at the final time)
+bad_case(load_steps_small_strain_zero "Parameter 'Load steps/Number of steps' is 0: it must be at least 1"
+  "${small_mesh}${ok_bc}${neo}subsection Load steps\n  set Number of steps = 0\nend\n")
+bad_case(finite_strain_pressure_load "Parameter 'Finite strain/Pressure load' = 'sideways' is not a kind of pressure load: use 'follower'"
+  "${small_mesh}${neo}subsection Finite strain\n  set Enabled = true\n  set Pressure load = sideways\nend\nsubsection Boundary conditions and loads\n  set Dirichlet = 0 : xy : 0, 0\n  set Pressure = 3 : 1\nend\n")
 bad_case(finite_strain_rigid "a rigid boundary part is a small-displacement condition"
   "${small_mesh}${fs_on}${neo}subsection Boundary conditions and loads\n  set Dirichlet = 2 : xy : 0, 0\n  set Rigid boundary = 3 : 0, -1\nend\n")
 bad_case(finite_strain_residual_tolerance "Parameter 'Finite strain/Residual tolerance' = 0 is out of range"

@@ -191,6 +191,9 @@ namespace dealvem
       /// Newton's controls of the finite-strain path ('Finite strain'
       /// section; the number of load steps is n_load_steps).
       FiniteStrainSolver<2>::Parameters newton;
+      /// Finite sliding: how the pressures act ('Finite strain/Pressure
+      /// load').
+      PressureLoad pressure_load = PressureLoad::follower;
       /// Finite sliding: the pairing tolerance
       /// (FiniteSliding::Parameters::pairing_tolerance, 'Contact/Pairing
       /// tolerance').

@@ -65,9 +65,24 @@ namespace dealvem
    * With 'Finite strain/Enabled = true' and a hyperelastic 'Material/Law'
    * (FiniteStrainParameters, MaterialLaws), solve() is replaced by
    * solve_finite_strain(): FiniteStrainAssembler and FiniteStrainSolver
-   * with the 'Load steps/Number of steps' load steps (loads and Dirichlet
-   * values scaled by n/N), one VTU file per step and a .pvd series, the
-   * Newton history on the console and in the JSON summary. Serial only.
+   * with the 'Load steps/Number of steps' load steps, one VTU file per step
+   * (write_finite_strain_vtu_file(): Cauchy stress, its von Mises value,
+   * det F and the principal stretches) and a .pvd series, the Newton
+   * history on the console and in the JSON summary. Serial only. Pressures
+   * act as 'Finite strain/Pressure load' says (PressureLoad: follower by
+   * default, or dead).
+   *
+   * <h3>Load steps and the time t</h3>
+   * The expressions of the boundary conditions, loads and exact solution
+   * may use the time t with the meaning it has in contact problems: load
+   * step n of N ('Load steps/Number of steps') is at $t_n = n\,T/N$, $T$ =
+   * 'Load steps/Final time'. At finite strain, step n solves with the data
+   * of $t_n$ when an expression uses t (unscaled, set_time() of every
+   * function and the Dirichlet values of $t_n$), and with the load factor
+   * n/N of fixed data otherwise. The linear (small-strain) problem is
+   * static: it is solved once, with every expression at $t = T$ (its
+   * solution does not depend on the steps before), and a note says so when
+   * N > 1.
    * A hyperelastic law without the switch is solved at small strain with
    * its linearization (the linear law of the same E and nu).
    */
@@ -174,7 +189,8 @@ namespace dealvem
     MaterialLaws::Law      law = MaterialLaws::Law::linear;
     /// The section 'Finite strain'.
     FiniteStrainParameters finite_strain;
-    /// 'Load steps/Number of steps' and 'Final time' (finite strain only).
+    /// 'Load steps/Number of steps' and 'Final time' (the time t of the
+    /// last step; the linear problem is solved at it).
     unsigned int           n_load_steps = 1;
     double                 final_time   = 1;
     unsigned int           degree = 2;

@@ -36,7 +36,8 @@ namespace dealvem
    *   x, y, xy, e.g. `0 : xy : 0, 0; 3 : y : -0.01*x`
    * - Roller: `id, id, ...` (straight boundary parts, u.n = 0)
    * - Traction: `id : gx, gy; ...`
-   * - Pressure: `id : p; ...` (positive pressure pushes into the body)
+   * - Pressure: `id : p; ...` (positive pressure pushes into the body; at
+   *   finite strain a follower or a dead load, add_finite_strain_loads())
    * - Point constraints: `x, y : component : value; ...` or
    *   `x, y : component : value : body` (the mesh vertex at (x, y), of the
    *   cells with material id `body` if given; component x or y; the value
@@ -48,8 +49,10 @@ namespace dealvem
    * - Body force: `fx, fy` (empty: none)
    *
    * Expressions are muparser expressions in x, y and t with the function
-   * constants; t = 1 unless set_time() says otherwise (contact problems with
-   * load steps, section "Load steps").
+   * constants; t = 1 unless set_time() says otherwise: the problems set
+   * the time of their load steps (section "Load steps", step n of N at
+   * t = n * Final time / N; a one-body problem at small strain is solved at
+   * t = Final time).
    * Every malformed entry gives an error naming the parameter and the entry;
    * so does an entry on a boundary id the mesh does not have
    * (check_boundary_ids()), an expression that is not finite where it is
@@ -171,14 +174,30 @@ namespace dealvem
 
     /**
      * Hand the loads to a finite-strain assembler: the body force (per unit
-     * reference area) and the tractions (nominal, per unit reference
-     * length; dead loads). A pressure follows the deformed boundary and a
-     * rigid boundary part carries a resultant that turns with it: neither
-     * is a dead load, so either one is refused with a message naming its
-     * entry and @p switch_name (the parameter that asked for finite strain).
+     * reference area), the tractions (nominal, per unit reference length;
+     * dead loads) and the pressures as @p pressure_load says (PressureLoad:
+     * a follower load on the deformed boundary, or the dead nominal
+     * traction $-p\,N$; FiniteStrainAssembler::add_pressure()). A rigid
+     * boundary part carries a resultant that turns with it and is refused
+     * with a message naming its entry and @p switch_name (the parameter
+     * that asked for finite strain).
      */
     void
-    add_finite_strain_loads(FiniteStrainAssembler<2> &assembler, const std::string &switch_name) const;
+    add_finite_strain_loads(FiniteStrainAssembler<2> &assembler,
+                            const std::string        &switch_name,
+                            const PressureLoad        pressure_load) const;
+
+    /// Whether a pressure load is set.
+    bool
+    has_pressure() const
+    {
+      return !pressures.empty();
+    }
+
+    /// Whether an expression of the section uses the time t
+    /// (time_dependent_entries() is not empty).
+    bool
+    uses_time() const;
 
     /**
      * Set the time t of every expression of this section (Dirichlet data,
@@ -336,6 +355,10 @@ namespace dealvem
     /// The Newton controls (n_load_steps is set by the problem from 'Load
     /// steps/Number of steps').
     FiniteStrainSolver<2>::Parameters solver;
+
+    /// 'Finite strain/Pressure load': how the pressures act at finite
+    /// strain (default PressureLoad::follower).
+    PressureLoad pressure_load = PressureLoad::follower;
 
     /// Whether 'Monitor point' was given.
     bool has_monitor_point = false;

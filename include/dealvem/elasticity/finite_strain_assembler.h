@@ -17,11 +17,43 @@
 #include <dealvem/elasticity/finite_strain_operator.h>
 #include <dealvem/elasticity/material_library.h>
 #include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/vem_values.h>
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace dealvem
 {
+  /**
+   * How a pressure acts at finite strain (FiniteStrainAssembler::add_pressure()).
+   */
+  enum class PressureLoad
+  {
+    /// A dead load: $p$ per unit reference length along the reference
+    /// normal (the nominal traction $-p\,N$); it does not follow the
+    /// deformation.
+    dead,
+    /// A follower load: $p$ per unit current length along the current
+    /// normal ($-p\,n\,da$), as a gas or liquid pressure acts; it turns and
+    /// stretches with the boundary.
+    follower
+  };
+
+  /// "dead" or "follower".
+  std::string
+  pressure_load_name(const PressureLoad kind);
+
+  /**
+   * The PressureLoad named @p value ("dead" or "follower", case and blanks
+   * around ignored); throws an ExcMessage naming @p parameter and the
+   * values it takes otherwise.
+   */
+  PressureLoad
+  parse_pressure_load(const std::string &value, const std::string &parameter);
+
+
+
   /**
    * Assembles the internal force vector and the consistent tangent matrix
    * of hyperelasticity at finite strain (total Lagrangian) with the
@@ -39,8 +71,28 @@ namespace dealvem
    * laws; ElasticityAssembler::local_load()): the body force
    * $\int_E f_0\cdot\Pi^0\varphi_i$ per unit reference area and the nominal
    * (first Piola-Kirchhoff) traction $T = PN$ per unit reference length
-   * on boundary ids. A pressure that follows the deformed boundary is a
-   * follower load with its own tangent and is not offered here.
+   * on boundary ids.
+   *
+   * <h3>Pressures</h3>
+   * A pressure $p$ (positive pushing into the body) on a boundary id is
+   * one of two loads (add_pressure(), PressureLoad):
+   * - PressureLoad::dead: the nominal traction $T = -p\,N$ per unit
+   *   reference length along the reference normal $N$, a part of
+   *   $f_{ext}$ like the tractions;
+   * - PressureLoad::follower: $t = -p\,n$ per unit current length along
+   *   the current normal $n$, i.e. $T = -p\,JF^{-T}N$ per unit reference
+   *   length (Nanson's formula). Its load vector $f_p(u)$ depends on the
+   *   current edge positions (VirtualElement::add_edge_follower_pressure():
+   *   linear in them, since $n\,da$ is the rotated current tangent $Q\,x'(s)\,ds$),
+   *   so the residual is $r(u) = \lambda(f_{ext} + f_p(u)) - f_{int}(u)$
+   *   and the tangent $K(u) = \partial f_{int}/\partial u -
+   *   \lambda\,\partial f_p/\partial u$, where $\partial f_p/\partial u$
+   *   is a constant matrix per boundary edge (not symmetric in general:
+   *   the direct solver of FiniteStrainSolver takes it as it is). A
+   *   follower pressure has no potential in general; strain_energy() leaves
+   *   it out.
+   * The pressure function is evaluated at reference points (a function of
+   * $X$ and the time, set by the caller).
    *
    * Every law of the library must have a finite-strain response
    * (ConstitutiveLaw::has_finite_strain_response()) and a linear
@@ -81,6 +133,23 @@ namespace dealvem
     void
     add_traction(const dealii::types::boundary_id id, const dealii::Function<dim> &g);
 
+    /// A pressure $p$ (scalar function of the reference position, positive
+    /// pushing into the body) on the boundary edges with id @p id, acting
+    /// as @p kind says (PressureLoad; see the class documentation). The
+    /// function must outlive the assembler.
+    void
+    add_pressure(const dealii::types::boundary_id id,
+                 const dealii::Function<dim>     &p,
+                 const PressureLoad               kind);
+
+    /// Whether a follower pressure was added (the load then depends on the
+    /// displacement).
+    bool
+    has_follower_loads() const
+    {
+      return !follower_pressures.empty();
+    }
+
     /// The DoF handler given to the constructor.
     const VEMDoFHandler<dim> &
     get_dof_handler() const
@@ -103,7 +172,9 @@ namespace dealvem
     }
 
     /// The external load vector $f_{ext}$ at load factor 1 (unconstrained,
-    /// n_dofs() entries).
+    /// n_dofs() entries), evaluated at the current time of the load
+    /// functions; a follower pressure enters with its value in the
+    /// reference configuration ($u = 0$), where it equals the dead one.
     void
     assemble_load_vector(dealii::Vector<double> &f_ext) const;
 
@@ -161,6 +232,18 @@ namespace dealvem
     Stabilization                           stabilization;
     StabilizationScaling                    scaling;
     std::vector<dealii::FullMatrix<double>> stabilization_matrices;
+    /// The follower pressures: boundary id and function.
+    std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> follower_pressures;
+
+    /// Add the follower pressures of the cell of @p vem_values at its
+    /// displacement @p local_u to @p F (times @p factor), and $-$@p factor
+    /// times their derivative to @p K if not null.
+    void
+    add_follower_loads(const VEMValues<dim>         &vem_values,
+                       const dealii::Vector<double> &local_u,
+                       const double                  factor,
+                       dealii::Vector<double>       &F,
+                       dealii::FullMatrix<double>   *K) const;
   };
 } // namespace dealvem
 

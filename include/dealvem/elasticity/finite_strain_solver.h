@@ -286,7 +286,11 @@ namespace dealvem
     run();
 
     /// Solve one load step to the load factor @p load_factor from the
-    /// current solution, recorded as step number @p step. Throws as run().
+    /// current solution, recorded as step number @p step. The external
+    /// load $f_{ext}$ of the convergence test is assembled again at the
+    /// start of the step, so that loads whose functions the caller set to
+    /// the time of the step (Function::set_time()) count at that time.
+    /// Throws as run().
     void
     solve_step(const unsigned int step, const double load_factor);
 

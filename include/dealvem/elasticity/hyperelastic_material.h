@@ -188,6 +188,15 @@ namespace dealvem
     dealii::Tensor<2, 2>
     cauchy_stress(const dealii::Tensor<2, 2> &F) const;
 
+    /// The out-of-plane Cauchy stress $\sigma_{zz} = f P_{zz}/J$ at the
+    /// in-plane deformation gradient @p F, with $J = f\det F$ (the zz
+    /// entry of $J^{-1}P_3F_3^T$): the law's $P_{zz}$ at $f = 1$ in plane
+    /// strain, divided by $\det F$ (for Neo-Hooke $\lambda\ln J/J$), and 0 in
+    /// plane stress (the root of $P_{zz} = 0$ that defines $f$; returned as
+    /// exactly 0). Throws like strain_energy().
+    double
+    cauchy_stress_zz(const dealii::Tensor<2, 2> &F) const;
+
     /// True: the laws implement P(F) and dP/dF.
     bool
     has_finite_strain_response() const override;

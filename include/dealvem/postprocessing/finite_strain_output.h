@@ -11,6 +11,7 @@
 #include <dealvem/elasticity/material_library.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,29 +31,113 @@ namespace dealvem
   finite_strain_cauchy_stress(const ConstitutiveLaw<2> &law, const dealii::Tensor<2, 2> &F, double &J);
 
   /**
+   * What the finite-strain output shows at one material point (or averaged
+   * over a cell or around a vertex, see FiniteStrainFields): the state of a
+   * law at an in-plane deformation gradient $F$.
+   */
+  struct FiniteStrainPointState
+  {
+    /// The in-plane Cauchy stress $\sigma_{xx}, \sigma_{yy}, \sigma_{xy}$
+    /// (finite_strain_cauchy_stress()).
+    std::array<double, 3> cauchy_stress = {{0., 0., 0.}};
+    /// The out-of-plane Cauchy stress $\sigma_{zz}$: the law's in plane
+    /// strain (HyperelasticMaterial::cauchy_stress_zz(); for Neo-Hooke
+    /// $\lambda\ln J/J$), zero in plane stress and for a law that is not a
+    /// HyperelasticMaterial.
+    double cauchy_stress_zz = 0;
+    /// The von Mises stress of $(\sigma_{xx}, \sigma_{yy}, \sigma_{zz},
+    /// \sigma_{xy})$ (von_mises_stress(): $\sqrt{\frac12((\sigma_{xx}-
+    /// \sigma_{yy})^2 + (\sigma_{yy}-\sigma_{zz})^2 + (\sigma_{zz}-
+    /// \sigma_{xx})^2) + 3\sigma_{xy}^2}$).
+    double von_mises = 0;
+    /// The volume ratio $J$: $\det F$ in plane strain, $f\det F$ in plane
+    /// stress.
+    double det_F = 1;
+    /// The principal stretches: the two eigenvalues $\lambda_1 \ge
+    /// \lambda_2$ of the in-plane $U = \sqrt{F^TF}$, and the thickness
+    /// stretch $\lambda_3 = f$ (1 in plane strain).
+    std::array<double, 3> principal_stretches = {{1., 1., 1.}};
+  };
+
+  /**
+   * The state of @p law at the in-plane deformation gradient @p F: Cauchy
+   * stress (in-plane and $\sigma_{zz}$), its von Mises value, $J$ and the
+   * principal stretches (FiniteStrainPointState). The stretches of $U$ are
+   * $\lambda_{1,2}^2 = \frac12\mathrm{tr}\,C \pm
+   * \sqrt{\frac14(C_{11}-C_{22})^2 + C_{12}^2}$ with $C = F^TF$.
+   * Throws like finite_strain_cauchy_stress().
+   */
+  FiniteStrainPointState
+  finite_strain_point_state(const ConstitutiveLaw<2> &law, const dealii::Tensor<2, 2> &F);
+
+  /**
+   * The finite-strain output fields of a state, per cell and per vertex of
+   * the mesh (what write_finite_strain_vtu_file() writes):
+   * - a cell's value of $\sigma$, $\sigma_{zz}$, $J$ and the principal
+   *   stretches is the mean of the point values (finite_strain_point_state())
+   *   over the cell's quadrature points, weighted by their reference
+   *   weights ($F = I + \Pi^0_{k-1}\nabla u$ there, as
+   *   FiniteStrainOperator takes it); its von Mises stress is that of the
+   *   cell's mean stress;
+   * - a vertex's value of $\sigma$, $\sigma_{zz}$, $J$ and the stretches is
+   *   the mean of the values of the cells around it, weighted by their
+   *   reference areas (a vertex belongs to one body: the bodies of a mesh
+   *   do not share vertices); its von Mises stress is that of the vertex's
+   *   mean stress.
+   *
+   * For $k = 1$, $F$ is constant on a cell and the cell values are the
+   * point values. The vertex values are a smoothing for plots: at a
+   * boundary they lag the boundary value by about half a cell's change.
+   */
+  struct FiniteStrainFields
+  {
+    /// Per cell.
+    std::vector<FiniteStrainPointState> cells;
+    /// Per mesh vertex.
+    std::vector<FiniteStrainPointState> vertices;
+    /// The largest Frobenius norm of a cell's in-plane Cauchy stress.
+    double max_cell_cauchy_norm = 0;
+  };
+
+  /**
+   * Compute the FiniteStrainFields of the displacement @p u (global vector
+   * of @p dof_handler), with the law of each cell from @p laws (by
+   * material id). Throws an ExcMessage naming the cell if a law has no
+   * finite-strain response, if $\det F \le 0$ at a quadrature point, or if
+   * a value is not finite.
+   */
+  template <int dim>
+  FiniteStrainFields
+  compute_finite_strain_fields(const VEMDoFHandler<dim>     &dof_handler,
+                               const MaterialLibrary<dim>   &laws,
+                               const dealii::Vector<double> &u);
+
+  /**
    * Write a finite-strain state as a VTK XML unstructured grid (.vtu,
    * ASCII) for ParaView: the polygons (VTK_POLYGON cells) at their
-   * reference positions with
-   * - point data: "displacement" (3 components, z = 0; the vertex DoFs of
-   *   @p solution), so that "Warp By Vector" with factor 1 shows the
-   *   deformed body;
-   * - cell data: "cauchy_stress" (xx, yy, xy of the in-plane Cauchy stress
-   *   $\sigma = J^{-1}PF^T$, averaged over the cell's quadrature points with
-   *   their reference weights; finite_strain_cauchy_stress()), "det_F"
-   *   (the mean of $J$ over the cell: its area ratio in plane strain, its
-   *   volume ratio $f\det F$ in plane stress), "body_id" (material id) and
-   *   "cell_id".
+   * reference positions with the fields of compute_finite_strain_fields(),
+   * under the same names as point data (averaged to the vertices) and as
+   * cell data:
+   * - "cauchy_stress" (3 components: xx, yy, xy of the in-plane Cauchy
+   *   stress $\sigma = J^{-1}PF^T$), "cauchy_stress_zz" (the out-of-plane
+   *   $\sigma_{zz}$: the law's in plane strain, 0 in plane stress),
+   *   "cauchy_von_mises" (the von Mises stress of these four components),
+   *   "det_F" (the volume ratio $J$: $\det F$ in plane strain, $f\det F$
+   *   in plane stress) and "principal_stretches" (3 components: the
+   *   in-plane stretches $\lambda_1 \ge \lambda_2$ and the thickness
+   *   stretch $f$, 1 in plane strain);
+   * - point data also "displacement" (3 components, z = 0; the vertex
+   *   DoFs of @p solution), so that "Warp By Vector" with factor 1 shows
+   *   the deformed body;
+   * - cell data also "body_id" (material id) and "cell_id".
    *
-   * $F = I + \Pi^0_{k-1}\nabla u$ at the quadrature points of each cell
-   * (VEMValues::get_function_gradient_projections()), and $P(F)$ from the
-   * cell's law in @p laws (ConstitutiveLaw::first_piola_kirchhoff_stress()),
-   * as FiniteStrainOperator computes them. This is the output for
-   * FiniteStrainSolver: write_vtu_file() writes the stress of a law's
-   * small-strain response, which is not the stress at finite strain.
+   * The file has no small-strain "stress" or "von_mises" fields: the
+   * stress of a law's small-strain response (write_vtu_file()) is not the
+   * stress at finite strain. $P(F)$ comes from the cell's law in @p laws
+   * (ConstitutiveLaw::first_piola_kirchhoff_stress()).
    *
-   * Throws an ExcMessage naming the cell if a law has no finite-strain
-   * response, if $\det F \le 0$ at a quadrature point, or if a value
-   * written would not be finite; the file is then not created (OutputFile).
+   * Throws as compute_finite_strain_fields(), or if a displacement is not
+   * finite; the file is then not created (OutputFile).
    */
   template <int dim>
   void

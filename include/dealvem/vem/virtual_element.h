@@ -432,6 +432,44 @@ namespace dealvem
                       const dealii::Function<dim> &pressure,
                       dealii::Vector<double>      &F) const;
 
+    /**
+     * The load of a pressure $p$ (scalar function of the reference
+     * position, positive pushing into the body) that follows the deformed
+     * edge @p edge: $F_i = -\int_{e_t} p\,n\cdot\varphi_i\,da$ on the
+     * current edge $e_t$, with @p local_u the displacement DoFs of the cell,
+     * and its derivative $K_{ij} = \partial F_i/\partial u_j$ in @p K
+     * (n_dofs x n_dofs; only the rows and columns of the edge's nodes are
+     * touched, by addition).
+     *
+     * The current edge is the trace $x(s) = \sum_b N_b(s)\,x_b$, $s \in
+     * [0, 1]$, of the 1D Lagrange polynomials $N_b$ of degree k on the
+     * edge's nodes (edge_nodes(): both vertices, and for k = 2 the
+     * midpoint) at their current positions $x_b = X_b + u_b$. The current
+     * outward normal times the length element is the tangent rotated by
+     * 90 degrees, $n\,da = \pm Q\,x'(s)\,ds$ with $Q = \begin{pmatrix} 0 & 1
+     * \\ -1 & 0\end{pmatrix}$ (the sign that makes it the outward normal
+     * edge_normal() for $u = 0$), so
+     * @f[
+     *   F_{2a+c} = \mp\sum_b \Big(\int_0^1 p(X(s))\,N_a(s)\,N_b'(s)\,ds\Big)
+     *              (Q\,x_b)_c,
+     *   \qquad
+     *   K_{2a+c,\,2b+d} = \mp\int_0^1 p(X(s))\,N_a(s)\,N_b'(s)\,ds\;Q_{cd}:
+     * @f]
+     * the load is linear in the current node positions and its tangent is a
+     * constant matrix per edge (for a pressure given at reference points).
+     * $N_aN_b'$ has degree $2k-1$; the 5-point Gauss rule used (exact to
+     * degree 9) integrates it exactly for a pressure polynomial of degree
+     * up to $10-2k$ along the edge. This is $-p\,J F^{-T}N\,dA$ of the
+     * reference edge for the trace of the displacement, the Nanson
+     * formula on the edge itself.
+     */
+    void
+    add_edge_follower_pressure(const unsigned int            edge,
+                               const dealii::Function<dim>  &pressure,
+                               const dealii::Vector<double> &local_u,
+                               dealii::Vector<double>       &F,
+                               dealii::FullMatrix<double>   *K) const;
+
     /// Local node indices (into the interleaved numbering, node j has DoFs
     /// 2j, 2j+1) lying on local edge @p edge: 2 for k = 1, 3 for k = 2
     /// (start vertex, midpoint, end vertex).
