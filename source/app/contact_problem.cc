@@ -467,16 +467,21 @@ namespace dealvem
         body.mesh.parse_parameters(prm, prefix + "Mesh");
         prm.leave_subsection();
         body.mesh.load_physical_names(prm_directory);
+        // a name that means two ids (two bodies from one file with an
+        // offset) cannot be used; numbers can
         for (const auto &[key, id] : body.mesh.physical_names.boundary_ids)
           {
+            if (names.unusable.count(key))
+              continue;
             const auto it = names.boundary_ids.emplace(key, id);
-            AssertThrow(it.second || it.first->second == id,
-                        dealii::ExcMessage("The physical name '" + key + "' is boundary id " +
-                                           std::to_string(it.first->second) + " in the mesh file '" +
-                                           name_file[key] + "' and boundary id " + std::to_string(id) +
-                                           " in '" + body.mesh.file_name + "' (" + prefix +
-                                           "Mesh, after its 'Boundary id offset'): a name must mean one id. "
-                                           "Rename one of the physical curves or use numbers."));
+            if (!it.second && it.first->second != id)
+              {
+                names.unusable[key] = "it is boundary id " + std::to_string(it.first->second) + " in '" +
+                                      name_file[key] + "' and " + std::to_string(id) + " in '" +
+                                      body.mesh.file_name + "' (" + prefix +
+                                      "Mesh, with its 'Boundary id offset'); give the id by number";
+                names.boundary_ids.erase(it.first);
+              }
             name_file.emplace(key, body.mesh.file_name);
           }
         prm.enter_subsection("Material");

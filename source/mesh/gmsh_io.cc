@@ -1164,6 +1164,8 @@ namespace dealvem
               first = false;
             }
         }
+      for (const auto &[n, why] : unusable)
+        s += (s.empty() ? "" : "; ") + std::string("'") + n + "' cannot be used: " + why;
       return s.empty() ? std::string("(the file has no physical names)") : s;
     }
 

@@ -3,7 +3,8 @@
 # their physical names (tests/app/gmsh/mixed-block.prm). Uniform tension
 # must be exact on the file mesh and its native refinements; a name the
 # file does not have and a material id it does not have are refused with
-# the names and ids of the file.
+# the names and ids of the file. A contact patch test names its pair by a
+# physical name (tests/app/gmsh/stacked.prm).
 include(${TEST_DIR}/program_checks.cmake)
 
 file(REMOVE_RECURSE ${WORK_DIR}/output)
@@ -71,3 +72,24 @@ run_dealvem("material id mismatch" FALSE
   "has material id 1 ('block'), but the parameter file defines a material for id 0 only ('Mesh/Material id'). The material ids of the mesh are 1 ('block')."
   ${WORK_DIR}/bad_id.prm)
 message(STATUS "PASS material id mismatch")
+
+# contact: the gmsh body's 'bottom' curve named in 'Contact/Pairs' (its id
+# 7 + the offset 10); uniform pressure gives sigma_yy = -10 in both bodies
+run_dealvem("contact pair by name" TRUE "sigma_yy in [-10, -10]" ${TEST_DIR}/gmsh/stacked.prm)
+string(REGEX MATCH "sigma_xy in \\[([^,]*), ([^]]*)\\]" xy "${LAST_OUTPUT}")
+foreach(v "${CMAKE_MATCH_1}" "${CMAKE_MATCH_2}")
+  is_roundoff("${v}" ok)
+  if(NOT ok)
+    message(FATAL_ERROR "FAIL contact pair by name: sigma_xy ${v}, expected 0 (uniform compression)")
+  endif()
+endforeach()
+
+# two bodies from one file with an offset: the names mean two ids and
+# cannot be used (numbers can); the message says why
+file(READ ${TEST_DIR}/gmsh/stacked.prm prm)
+string(REPLACE "structured quads" "gridin file\n  set File name = ${TEST_DIR}/gmsh/mixed-block.msh" prm2 "${prm}")
+string(REPLACE "File name          = mixed-block.msh" "File name = ${TEST_DIR}/gmsh/mixed-block.msh" prm2 "${prm2}")
+file(WRITE ${WORK_DIR}/same_file.prm "${prm2}")
+run_dealvem("ambiguous name" FALSE
+  "'bottom' cannot be used: it is boundary id 7 in '${TEST_DIR}/gmsh/mixed-block.msh' and 17 in"
+  ${WORK_DIR}/same_file.prm)

@@ -19,8 +19,10 @@ namespace dealvem
    * The mesh source of one body, as a parameter-file section:
    * a generator (structured quads or triangles, perturbed quads,
    * centroidal Voronoi, the non-convex family) on a rectangle, a polygon
-   * mesh file (legacy VTK, see MeshIO), or any file deal.II's GridIn reads
-   * (gmsh .msh with physical groups as boundary ids, UCD, ...).
+   * mesh file (legacy VTK, see MeshIO), a gmsh .msh file (MeshIO::read_msh:
+   * physical curves as boundary ids, physical surfaces as material ids, both
+   * nameable in the parameter file by their physical names), or any other
+   * file deal.II's GridIn reads (UCD, ...).
    */
   struct MeshParameters
   {

@@ -74,6 +74,10 @@ namespace dealvem
       std::map<std::string, dealii::types::boundary_id> boundary_ids;
       /// Name -> material id (physical surfaces).
       std::map<std::string, dealii::types::material_id> material_ids;
+      /// Names that cannot be used, with the reason (the parameter program
+      /// merges the names of several files: a name that means different
+      /// ids in two of them is listed here instead).
+      std::map<std::string, std::string> unusable;
 
       /// All names with their ids, for messages: "boundaries (dimension
       /// 1): 'clamped' = 1, ...; surfaces (dimension 2): ...".
