@@ -93,3 +93,10 @@ file(WRITE ${WORK_DIR}/same_file.prm "${prm2}")
 run_dealvem("ambiguous name" FALSE
   "'bottom' cannot be used: it is boundary id 7 in '${TEST_DIR}/gmsh/mixed-block.msh' and 17 in"
   ${WORK_DIR}/same_file.prm)
+
+# a boundary id no edge carries: the ids of the mesh with their names
+string(REPLACE "5 : 10, 0; 7" "9 : 10, 0; 7" prm_bad "${prm_numbers}")
+file(WRITE ${WORK_DIR}/bad_boundary.prm "${prm_bad}")
+run_dealvem("boundary id mismatch" FALSE
+  "has boundary id 9; the boundary ids of the mesh are 0, 3 ('clamped'), 5 ('loaded'), 7 ('bottom'). Name one of these ids (or its physical name)"
+  ${WORK_DIR}/bad_boundary.prm)
