@@ -242,6 +242,45 @@ main()
     write("huge41.msh", huge);
     fails("huge41.msh", "the number of nodes is 1099511627776, but the file has only", "a binary node count 2^40");
   }
+  // every prefix of the binary files, and every byte of them set to 0xff:
+  // read or refused with a deal.II exception, never a crash, a
+  // std::bad_alloc or another exception
+  {
+    unsigned int n_read = 0, n_refused = 0, n_other = 0;
+    for (const std::string f : {"mixed_block_msh22_bin.msh", "mixed_block_msh41_bin.msh"})
+      {
+        const std::string text = read(data(f));
+        const auto        try_read = [&](const std::string &bytes) {
+          write("mutated.msh", bytes);
+          try
+            {
+              PolygonalMesh<2> m;
+              MeshIO::read_msh(m, "mutated.msh");
+              ++n_read;
+            }
+          catch (const dealii::ExceptionBase &)
+            {
+              ++n_refused;
+            }
+          catch (...)
+            {
+              ++n_other;
+            }
+        };
+        for (std::size_t n = 0; n < text.size(); ++n)
+          try_read(text.substr(0, n));
+        for (std::size_t i = 0; i < text.size(); ++i)
+          {
+            std::string t = text;
+            t[i]          = char(0xff);
+            try_read(t);
+          }
+      }
+    std::cout << "mutated files: " << n_read << " read, " << n_refused << " refused, " << n_other
+              << " other exceptions" << std::endl;
+    testing::check(n_other == 0 && n_refused > 0, "cut and corrupted files are refused cleanly");
+  }
+
   // count_entities reads the counts of binary files
   for (const std::string f : {"mixed_block_msh22_bin.msh", "mixed_block_msh41_bin.msh", "mixed_block_msh41.msh"})
     {
