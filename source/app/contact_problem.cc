@@ -455,6 +455,10 @@ namespace dealvem
                    "(the linear law of the same E and nu) for every body."
                 << std::endl;
     std::string exact0;
+    // the physical names of the bodies' gmsh files: boundary ids by name
+    // (with each body's boundary id offset) for the conditions and pairs
+    MeshIO::PhysicalNames names;
+    std::map<std::string, std::string> name_file;
     for (unsigned int b = 0; b < n; ++b)
       {
         // body section b: the top-level sections for b = 0, 'Body b' else
@@ -466,6 +470,24 @@ namespace dealvem
         prm.enter_subsection("Mesh");
         body.mesh.parse_parameters(prm, prefix + "Mesh");
         prm.leave_subsection();
+        body.mesh.load_physical_names(prm_directory);
+        // a name that means two ids (two bodies from one file with an
+        // offset) cannot be used; numbers can
+        for (const auto &[key, id] : body.mesh.physical_names.boundary_ids)
+          {
+            if (names.unusable.count(key))
+              continue;
+            const auto it = names.boundary_ids.emplace(key, id);
+            if (!it.second && it.first->second != id)
+              {
+                names.unusable[key] = "it is boundary id " + std::to_string(it.first->second) + " in '" +
+                                      name_file[key] + "' and " + std::to_string(id) + " in '" +
+                                      body.mesh.file_name + "' (" + prefix +
+                                      "Mesh, with its 'Boundary id offset'); give the id by number";
+                names.boundary_ids.erase(it.first);
+              }
+            name_file.emplace(key, body.mesh.file_name);
+          }
         prm.enter_subsection("Material");
         const double      E     = prm.get_double("Young's modulus");
         const double      nu    = prm.get_double("Poisson's ratio");
@@ -497,7 +519,9 @@ namespace dealvem
             AssertThrow(fields.size() == 3 || fields.size() == 4,
                         dealii::ExcMessage("Parameter '" + what +
                                            "': expected 'material id : E : nu' or 'material id : E : nu : name'."));
-            const unsigned int id   = InputParsing::parse_unsigned(fields[0], what);
+            const unsigned int id   = InputParsing::parse_id_or_name(
+              fields[0], what, body.mesh.physical_names.material_ids, "material id",
+              body.mesh.physical_names.list() + " (file '" + body.mesh.file_name + "')");
             const double       E_id = InputParsing::parse_double(fields[1], what);
             const double       nu_id = InputParsing::parse_double(fields[2], what);
             InputParsing::check_range(E_id, ElasticMaterial::min_youngs_modulus,
@@ -535,9 +559,20 @@ namespace dealvem
         const auto ids = assembly.get_material_ids();
         for (const auto &law : part_laws)
           AssertThrow(std::binary_search(ids.begin(), ids.end(), law.first),
-                      dealii::ExcMessage("Parameter '" + prefix + "Material/Part materials' gives material id " +
-                                         std::to_string(law.first) + ", which no cell of the mesh file '" +
-                                         body.mesh.file_name + "' has."));
+                      dealii::ExcMessage([&] {
+                        std::string have;
+                        for (const auto id : ids)
+                          {
+                            have += (have.empty() ? "" : ", ") + std::to_string(id);
+                            for (const auto &[nm, i] : body.mesh.physical_names.material_ids)
+                              if (i == id)
+                                have += " ('" + nm + "')";
+                          }
+                        return "Parameter '" + prefix + "Material/Part materials' gives material id " +
+                               std::to_string(law.first) + ", which no cell of the mesh file '" +
+                               body.mesh.file_name + "' has; the material ids of the file are " + have +
+                               ". Give the parts by these ids or by their physical names.";
+                      }()));
         const auto added = add_parts(assembly, *body.material, part_laws, 0);
         for (unsigned int i = 0; i < added.size(); ++i)
           {
@@ -559,6 +594,7 @@ namespace dealvem
                      prm.get("Stabilization") == "boundary" ? Stabilization::boundary :
                                                                   Stabilization::automatic);
     prm.leave_subsection();
+    bc.set_physical_names(names);
     bc.parse_parameters(prm);
 
     prm.enter_subsection("Contact");
@@ -585,8 +621,10 @@ namespace dealvem
             InputParsing::check_range(mu, 0, 1e6, name + " (friction coefficient)", false, false,
                                       "The Coulomb friction coefficient is a number >= 0.");
           }
-        const unsigned int a = InputParsing::parse_unsigned(fields[0], name);
-        const unsigned int s = InputParsing::parse_unsigned(fields[1], name);
+        const unsigned int a =
+          InputParsing::parse_id_or_name(fields[0], name, names.boundary_ids, "boundary id", names.list());
+        const unsigned int s =
+          InputParsing::parse_id_or_name(fields[1], name, names.boundary_ids, "boundary id", names.list());
         AssertThrow(a < 255 && s < 255 && a != s,
                     dealii::ExcMessage("Parameter '" + name + "': two different boundary ids below 255 expected."));
         add_contact_pair(a, s, mu, "Parameter '" + name + "'");

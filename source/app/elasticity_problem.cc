@@ -247,6 +247,9 @@ namespace dealvem
     prm.enter_subsection("Mesh");
     mesh_parameters.parse_parameters(prm, "Mesh");
     prm.leave_subsection();
+    // the physical names of a gmsh file name ids in the other sections
+    mesh_parameters.load_physical_names(dir);
+    bc.set_physical_names(mesh_parameters.physical_names);
     AssertThrow(!mesh_parameters.parts_as_bodies,
                 dealii::ExcMessage("Parameter 'Mesh/Parts as bodies' is true: the parts of the mesh file are "
                                    "bodies in contact, which ContactProblem solves (the program does so)."));
@@ -356,11 +359,33 @@ namespace dealvem
     mesh.clear();
     mesh_parameters.create_mesh(mesh, cycle, prm_directory);
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      AssertThrow(materials.count(mesh.cell(c).material_id),
-                  dealii::ExcMessage("Cell " + std::to_string(c) + " of mesh '" + mesh.name +
-                                     "' has material id " + std::to_string(mesh.cell(c).material_id) +
-                                     " but the parameter file defines a material for id " +
-                                     std::to_string(mesh_parameters.material_id) + " only."));
+      if (materials.count(mesh.cell(c).material_id) == 0)
+        {
+          // the ids the mesh has (with their physical names) and the one
+          // the parameter file expects, and how to make them agree
+          const auto named = [&](const unsigned int id) {
+            std::string s = std::to_string(id);
+            for (const auto &[n, i] : mesh_parameters.physical_names.material_ids)
+              if (i == id)
+                s += " ('" + n + "')";
+            return s;
+          };
+          std::string have;
+          for (const auto id : mesh.get_material_ids())
+            have += (have.empty() ? "" : ", ") + named(id);
+          const bool file = mesh_parameters.type.find("file") != std::string::npos;
+          AssertThrow(false,
+                      dealii::ExcMessage(
+                        "Cell " + std::to_string(c) + " of mesh '" + mesh.name + "' has material id " +
+                        named(mesh.cell(c).material_id) + ", but the parameter file defines a material for id " +
+                        named(mesh_parameters.material_id) + " only ('Mesh/Material id'). The material ids of the " +
+                        "mesh are " + have + "." +
+                        (file ? " Set 'Mesh/Material id' to the id (or the physical name) of the mesh's cells; "
+                                "a one-body problem has one material id, so a file with several must be read "
+                                "as a contact problem with 'Mesh/Parts as bodies = true', or its physical "
+                                "surfaces merged into one." :
+                                "")));
+        }
     bc.check_boundary_ids(mesh);
     if (distributed && n_processes > 1)
       {

@@ -8,6 +8,7 @@
 #include <dealvem/mesh/mesh_io.h>
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace dealvem
@@ -47,8 +48,10 @@ namespace dealvem
                       "Seed of the random generators (same seed, same mesh).");
     prm.declare_entry("File name", "", Anything(),
                       "Mesh file for 'vtk file' and 'gridin file' (relative to the parameter file).");
-    prm.declare_entry("Material id", "0", Integer(0, 254),
-                      "Material (body) id given to every cell of a generated mesh.");
+    prm.declare_entry("Material id", "0", Anything(),
+                      "Material (body) id given to every cell of a generated mesh; for a mesh file, the "
+                      "material id its cells have (one-body problems), as a number or as the name of a "
+                      "gmsh physical surface.");
     prm.declare_entry("Boundary id offset", "0", Integer(0, 200),
                       "Added to every boundary id of the mesh (generators use 0 left, 1 right, "
                       "2 bottom, 3 top), so that the bodies of a contact problem have distinct ids.");
@@ -107,7 +110,25 @@ namespace dealvem
     nonconvex_depth  = prm.get_double("Non-convex depth");
     seed             = prm.get_integer("Seed");
     file_name        = prm.get("File name");
-    material_id      = prm.get_integer("Material id");
+    material_name    = InputParsing::trim(prm.get("Material id"));
+    material_id      = 0;
+    if (!material_name.empty() && material_name.find_first_not_of("0123456789") == std::string::npos)
+      {
+        material_id = InputParsing::parse_unsigned(material_name, section + "/Material id");
+        AssertThrow(material_id <= 254, dealii::ExcMessage("Parameter '" + section + "/Material id' is " +
+                                                           material_name + ": material ids of the parameter file "
+                                                           "are 0..254."));
+        material_name.clear();
+      }
+    else
+      AssertThrow(!material_name.empty() && type == "gridin file",
+                  dealii::ExcMessage("Parameter '" + section + "/Material id' is '" + material_name +
+                                     "': a number 0..254 is expected" +
+                                     (type == "gridin file" ? std::string(".") :
+                                                              std::string(" (a name of a physical surface is read "
+                                                                          "from a gmsh file only, Type = gridin "
+                                                                          "file)."))));
+    this->section = section;
     boundary_id_offset = prm.get_integer("Boundary id offset");
     parts_as_bodies    = prm.get_bool("Parts as bodies");
     AssertThrow(!parts_as_bodies || type.find("file") != std::string::npos,
@@ -190,6 +211,36 @@ namespace dealvem
       }
     if (shift.norm() > 0)
       mesh.shift(shift);
+  }
+
+
+
+  void
+  MeshParameters::load_physical_names(const std::string &base_directory)
+  {
+    physical_names = MeshIO::PhysicalNames();
+    std::string path = file_name;
+    const auto  at   = path.find("{cycle}");
+    if (at != std::string::npos)
+      path.replace(at, 7, "0");
+    if (!path.empty() && path[0] != '/' && !base_directory.empty())
+      path = base_directory + "/" + path;
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (type == "gridin file" && (ext == ".msh" || ext.empty()) && std::filesystem::is_regular_file(path))
+      physical_names = MeshIO::read_msh_physical_names(path);
+    // the boundary ids as the mesh will have them
+    for (auto &[n, id] : physical_names.boundary_ids)
+      {
+        AssertThrow(id + boundary_id_offset <= InputParsing::max_boundary_id,
+                    dealii::ExcMessage("Parameter '" + section + "/Boundary id offset': the physical curve '" + n +
+                                       "' of '" + file_name + "' would get the id " +
+                                       std::to_string(id + boundary_id_offset) + ", out of range (0..254)."));
+        id = dealii::types::boundary_id(id + boundary_id_offset);
+      }
+    if (!material_name.empty())
+      material_id = InputParsing::parse_id_or_name(material_name, section + "/Material id",
+                                                   physical_names.material_ids, "material id",
+                                                   physical_names.list() + " (file '" + file_name + "')");
   }
 
 

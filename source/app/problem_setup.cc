@@ -23,10 +23,12 @@ namespace dealvem
   {
     const std::string section = "Boundary conditions and loads";
 
+    // a boundary id, as a number or a physical name of the mesh file(s)
     dealii::types::boundary_id
-    parse_id(const std::string &s, const std::string &parameter)
+    parse_id(const std::string &s, const std::string &parameter, const MeshIO::PhysicalNames &names)
     {
-      const unsigned int id = InputParsing::parse_unsigned(s, parameter);
+      const unsigned int id =
+        InputParsing::parse_id_or_name(s, parameter, names.boundary_ids, "boundary id", names.list());
       AssertThrow(id <= InputParsing::max_boundary_id,
                   dealii::ExcMessage("Parameter '" + parameter + "': boundary id " + s +
                                      " is out of range (0..254)."));
@@ -322,7 +324,7 @@ namespace dealvem
                     dealii::ExcMessage("Parameter '" + name + "': expected 'id : components : expressions'."));
         Dirichlet d;
         d.name = name;
-        d.id   = parse_id(fields[0], name);
+        d.id   = parse_id(fields[0], name, physical_names);
         AssertThrow(fields[1] == "x" || fields[1] == "y" || fields[1] == "xy",
                     dealii::ExcMessage("Parameter '" + name + "': components must be x, y or xy, got '" +
                                        fields[1] + "'."));
@@ -339,7 +341,7 @@ namespace dealvem
     for (const auto &s : InputParsing::split(prm.get("Roller"), ','))
       {
         const std::string name = section + "/Roller entry '" + s + "'";
-        add_roller(parse_id(s, name), name);
+        add_roller(parse_id(s, name, physical_names), name);
       }
     for (const bool is_pressure : {false, true})
       for (const auto &entry : InputParsing::split(prm.get(is_pressure ? "Pressure" : "Traction"), ';'))
@@ -350,7 +352,7 @@ namespace dealvem
           AssertThrow(fields.size() == 2,
                       dealii::ExcMessage("Parameter '" + name + "': expected 'id : " +
                                          (is_pressure ? "p" : "gx, gy") + "'."));
-          const auto id    = parse_id(fields[0], name);
+          const auto id    = parse_id(fields[0], name, physical_names);
           const auto exprs = InputParsing::split(fields[1], ',');
           AssertThrow(exprs.size() == (is_pressure ? 1u : 2u),
                       dealii::ExcMessage("Parameter '" + name + "': expected " +
@@ -379,7 +381,9 @@ namespace dealvem
         dealii::types::material_id body = dealii::numbers::invalid_material_id;
         if (fields.size() == 4)
           {
-            const unsigned int b = InputParsing::parse_unsigned(fields[3], name + " (body)");
+            const unsigned int b = InputParsing::parse_id_or_name(fields[3], name + " (body)",
+                                                                  physical_names.material_ids, "material id",
+                                                                  physical_names.list());
             AssertThrow(b < dealii::numbers::invalid_material_id,
                         dealii::ExcMessage("Parameter '" + name + "': body " + fields[3] +
                                            " is out of range (0..254)."));
@@ -393,7 +397,7 @@ namespace dealvem
         const auto        fields = InputParsing::split(entry, ':', true);
         AssertThrow(fields.size() == 2 || fields.size() == 3,
                     dealii::ExcMessage("Parameter '" + name + "': expected 'id : Fx, Fy' or 'id : Fx, Fy : M'."));
-        const auto id    = parse_id(fields[0], name);
+        const auto id    = parse_id(fields[0], name, physical_names);
         const auto exprs = InputParsing::split(fields[1], ',');
         AssertThrow(exprs.size() == 2,
                     dealii::ExcMessage("Parameter '" + name + "': expected two expressions Fx, Fy."));
@@ -426,15 +430,26 @@ namespace dealvem
   BoundaryConditionParameters::check_boundary_ids(const PolygonalMesh<2> &mesh) const
   {
     const auto  ids = mesh.get_boundary_ids();
+    // the ids of the mesh, each with its physical names
+    const auto named = [&](const dealii::types::boundary_id id) {
+      std::string s = std::to_string(int(id));
+      for (const auto &[n, i] : physical_names.boundary_ids)
+        if (i == id)
+          s += " ('" + n + "')";
+      return s;
+    };
     std::string have;
     for (const auto id : ids)
-      have += (have.empty() ? "" : ", ") + std::to_string(int(id));
+      have += (have.empty() ? "" : ", ") + named(id);
     auto check = [&](const dealii::types::boundary_id id, const std::string &name) {
       AssertThrow(std::find(ids.begin(), ids.end(), id) != ids.end(),
                   dealii::ExcMessage("Parameter '" + name + "': no boundary edge of mesh '" + mesh.name +
-                                     "' has boundary id " + std::to_string(int(id)) +
-                                     "; the boundary ids of the mesh are " +
-                                     (have.empty() ? std::string("(none)") : have) + "."));
+                                     "' has boundary id " + named(id) + "; the boundary ids of the mesh are " +
+                                     (have.empty() ? std::string("(none)") : have) +
+                                     ". Name one of these ids (or its physical name) in the entry, or give the "
+                                     "edges the id in the mesh (for a gmsh file: a physical curve with this "
+                                     "tag; for the generated rectangles: 0 left, 1 right, 2 bottom, 3 top, plus "
+                                     "'Mesh/Boundary id offset')."));
     };
     for (const auto &d : dirichlet)
       check(d.id, d.name);

@@ -574,12 +574,22 @@ namespace dealvem
       const std::string vertex_key = vtk ? "POINTS" : "$Nodes", cell_key = vtk ? "CELLS" : "$Elements";
       const std::uintmax_t min_vertex_bytes = vtk ? 3 * bytes_per_number : 8;
       int               version = 22;
+      bool              binary  = false;
       std::string       text;
       std::size_t       line = 0;
       // the count that follows @p key on its line (VTK) or on the next
       // line (gmsh; format 4: the second number)
       const auto read_count = [&](const std::string &rest, unsigned long long &n) {
         std::string numbers = rest;
+        if (!vtk && binary && version >= 40)
+          {
+            // binary 4.1: four 8-byte counts, the second the one wanted
+            std::uint64_t v[4];
+            if (!in.read(reinterpret_cast<char *>(v), sizeof(v)))
+              return false;
+            n = v[1];
+            return true;
+          }
         if (!vtk)
           {
             if (!std::getline(in, numbers))
@@ -613,6 +623,17 @@ namespace dealvem
             {
               version      = (key.compare(0, 1, "4") == 0) ? 40 : 22;
               after_format = false;
+              std::string file_type;
+              s >> file_type;
+              if (file_type == "1")
+                {
+                  // binary: the endianness marker, the integer 1, and a
+                  // newline; another marker: the reader will say why
+                  std::int32_t marker = 0;
+                  if (!in.read(reinterpret_cast<char *>(&marker), sizeof(marker)) || marker != 1)
+                    return counts;
+                  binary = true;
+                }
             }
           else if (key == vertex_key && counts.line == 0)
             {

@@ -8,8 +8,8 @@
 // - legacy VTK: absurd, negative and non-integer counts (rejected before
 //   anything is allocated), a lost CELL_DATA section, indices out of range,
 //   huge coordinates, ids out of range;
-// - gmsh .msh before deal.II's GridIn: a wrong version in the header, the
-//   binary flag, physical ids out of range, absurd node counts, truncated
+// - gmsh .msh (MeshIO::read_msh): a wrong version in the header, the
+//   binary flag without an endianness marker, physical ids out of range, absurd node counts, truncated
 //   sections, a node at 1e308, unknown node tags;
 // - the bucket grid of the mesh validation with huge or flat extents;
 // - the valid data files still read.
@@ -172,15 +172,18 @@ main()
             "not_an_edge.vtk:12: line cell 1 from point 0 to point 2 is not an edge of any polygon",
             "a line cell that is no edge");
 
-  // gmsh: checked before deal.II's GridIn sees the file
+  // gmsh: the native reader's checks
   gmsh_fails("version.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n" + msh_nodes + msh_elements,
              "version.msh:5: expected 'numEntityBlocks numNodes minNodeTag maxNodeTag' after $Nodes, as format 4.1 "
              "in $MeshFormat says (4 numbers on the line), found '6'",
              "header 4.1 on 2.2 content");
   gmsh_fails("version3.msh", "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n" + msh_nodes + msh_elements,
              "version3.msh:2: unsupported gmsh format version '3.0'", "version 3.0");
+  // binary files are read (tests/mesh/gmsh_reader.cc); an ASCII body under
+  // the binary flag has no endianness marker
   gmsh_fails("binary.msh", "$MeshFormat\n2.2 1 8\n$EndMeshFormat\n" + msh_nodes + msh_elements,
-             "binary.msh:2: binary gmsh files (file-type 1) are not supported", "binary flag");
+             "binary.msh:3: expected the endianness marker of a binary file (the integer 1 in 4 bytes)",
+             "binary flag without a marker");
   gmsh_fails("physical.msh",
              msh_format + msh_nodes + "$Elements\n2\n1 3 2 4294967295 1 1 2 5 4\n2 3 2 7 1 2 3 6 5\n$EndElements\n",
              "physical.msh:15: the physical tag of element 1 of 2 is '4294967295', but it becomes a material id, "

@@ -34,7 +34,7 @@ set(msh_nodes "$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 0 1 0\n5 1 1 0\n6 2 1 0\n
 set(msh_elements "$Elements\n2\n1 3 2 7 1 1 2 5 4\n2 3 2 7 1 2 3 6 5\n$EndElements\n")
 bad_mesh(gmsh_version "gridin file" version.msh "version.msh:5: expected 'numEntityBlocks numNodes minNodeTag maxNodeTag' after $Nodes"
          "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n${msh_nodes}${msh_elements}")
-bad_mesh(gmsh_binary "gridin file" binary.msh "binary.msh:2: binary gmsh files (file-type 1) are not supported"
+bad_mesh(gmsh_binary "gridin file" binary.msh "binary.msh:3: expected the endianness marker of a binary file"
          "$MeshFormat\n2.2 1 8\n$EndMeshFormat\n${msh_nodes}${msh_elements}")
 bad_mesh(gmsh_nodes "gridin file" nodes.msh "nodes.msh:5: the number of nodes is 100000000000, but the file has only"
          "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n100000000000\n1 0 0 0\n$EndNodes\n${msh_elements}")

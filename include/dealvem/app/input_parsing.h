@@ -56,6 +56,33 @@ namespace dealvem
     unsigned int
     parse_unsigned(const std::string &s, const std::string &parameter);
 
+    /**
+     * Parse an id given as a number or as a physical name of the mesh file
+     * (gmsh $PhysicalNames, see MeshIO::PhysicalNames): @p names maps the
+     * names to ids, @p what says which kind of id ("boundary id",
+     * "material id") and @p known lists every name of the file for the
+     * message. A name that is not in @p names is an error listing them;
+     * numbers are returned as they are (the caller checks their range).
+     */
+    template <typename Id>
+    unsigned int
+    parse_id_or_name(const std::string               &s,
+                     const std::string               &parameter,
+                     const std::map<std::string, Id> &names,
+                     const std::string               &what,
+                     const std::string               &known)
+    {
+      const std::string t = trim(s);
+      if (!t.empty() && t.find_first_not_of("0123456789") == std::string::npos)
+        return parse_unsigned(t, parameter);
+      const auto it = names.find(t);
+      AssertThrow(it != names.end(),
+                  dealii::ExcMessage("Parameter '" + parameter + "': '" + t + "' is neither a " + what +
+                                     " (a non-negative integer) nor a physical name of the mesh file(s) for a " +
+                                     what + ". The physical names are: " + known + "."));
+      return it->second;
+    }
+
     /// Parse a real number; throws naming @p parameter otherwise.
     double
     parse_double(const std::string &s, const std::string &parameter);

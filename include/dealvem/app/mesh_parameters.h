@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <dealvem/mesh/mesh_io.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 
 #include <string>
@@ -18,8 +19,10 @@ namespace dealvem
    * The mesh source of one body, as a parameter-file section:
    * a generator (structured quads or triangles, perturbed quads,
    * centroidal Voronoi, the non-convex family) on a rectangle, a polygon
-   * mesh file (legacy VTK, see MeshIO), or any file deal.II's GridIn reads
-   * (gmsh .msh with physical groups as boundary ids, UCD, ...).
+   * mesh file (legacy VTK, see MeshIO), a gmsh .msh file (MeshIO::read_msh:
+   * physical curves as boundary ids, physical surfaces as material ids, both
+   * nameable in the parameter file by their physical names), or any other
+   * file deal.II's GridIn reads (UCD, ...).
    */
   struct MeshParameters
   {
@@ -49,6 +52,15 @@ namespace dealvem
     /// 'Material id' given to the cells of a generated mesh (a file keeps
     /// its own).
     unsigned int     material_id = 0;
+    /// 'Material id' given as the name of a physical surface (resolved by
+    /// load_physical_names()); empty for a number.
+    std::string      material_name;
+    /// The physical names of the mesh file (a gmsh file; empty otherwise),
+    /// boundary ids with the boundary id offset added: set by
+    /// load_physical_names().
+    MeshIO::PhysicalNames physical_names;
+    /// The section name given to parse_parameters(), for messages.
+    std::string      section = "Mesh";
     /// 'Boundary id offset' added to every boundary id.
     unsigned int     boundary_id_offset = 0;
     /// 'Parts as bodies': every material id of a mesh file is a body of
@@ -89,6 +101,13 @@ namespace dealvem
     shift_boundary_ids(PolygonalMesh<2>  &mesh,
                        const unsigned int offset,
                        const std::string &what = "Boundary id offset");
+
+    /// Read the physical names of the mesh file (gmsh files; relative
+    /// names relative to @p base_directory; with '{cycle}' the file of cycle
+    /// 0) into physical_names and resolve a 'Material id' given by name.
+    /// A missing file leaves the names empty (create_mesh() reports it).
+    void
+    load_physical_names(const std::string &base_directory);
 
     /// A one-line description, e.g. "voronoi, 64 cells, 20 Lloyd iterations".
     std::string

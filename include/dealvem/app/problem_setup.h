@@ -17,6 +17,7 @@
 #include <dealvem/elasticity/finite_strain_assembler.h>
 #include <dealvem/elasticity/finite_strain_solver.h>
 #include <dealvem/elasticity/material.h>
+#include <dealvem/mesh/mesh_io.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
@@ -76,9 +77,20 @@ namespace dealvem
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
-    /// Read the section (replacing everything set before).
+    /// Read the section (replacing everything set before). Boundary ids
+    /// may be given by the physical names of set_physical_names().
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /// The physical names of the mesh file(s) (MeshIO::read_msh_physical_names()),
+    /// by which the entries may name boundary ids ('Dirichlet = clamped :
+    /// xy : 0, 0') and bodies (the body of a point constraint); call before
+    /// parse_parameters(). check_boundary_ids() shows them in its messages.
+    void
+    set_physical_names(const MeshIO::PhysicalNames &names)
+    {
+      physical_names = names;
+    }
 
     /// Remove every condition and load (and the function constants).
     void
@@ -223,6 +235,9 @@ namespace dealvem
     used_boundary_ids() const;
 
   private:
+    /// Physical names of the mesh files (set_physical_names()).
+    MeshIO::PhysicalNames physical_names;
+
     struct Dirichlet
     {
       std::string                                   name;

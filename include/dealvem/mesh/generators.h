@@ -185,11 +185,14 @@ namespace dealvem
                   const double                                           h,
                   const double                                           layers = 2.);
 
-    /// Read a mesh file with deal.II's GridIn (format from the extension:
-    /// .msh, .inp, .ucd, .vtk of deal.II's own kind, ...), refine the
-    /// triangulation @p n_refinements times (Triangulation::refine_global:
-    /// new vertices on the straight edges, since a file carries no
-    /// manifold) and convert it.
+    /// Read a mesh file (format from the extension). A gmsh .msh file is
+    /// read by MeshIO::read_msh() (formats 2.2 and 4.1, ASCII and binary,
+    /// any mix of triangles and quadrangles, refined natively @p
+    /// n_refinements times). The other formats (.inp, .ucd, .vtk of
+    /// deal.II's own kind, ...) go through deal.II's GridIn: the
+    /// triangulation is refined @p n_refinements times
+    /// (Triangulation::refine_global: new vertices on the straight edges,
+    /// since a file carries no manifold) and converted.
     template <int dim>
     void
     from_gridin_file(PolygonalMesh<dim> &mesh,

@@ -8,6 +8,7 @@
 #include <dealvem/mesh/polygonal_mesh.h>
 
 #include <iosfwd>
+#include <map>
 #include <string>
 
 namespace dealvem
@@ -61,6 +62,84 @@ namespace dealvem
     void
     write_vtk(const PolygonalMesh<dim> &mesh, std::ostream &out);
 
+    /**
+     * The physical names of a gmsh file ($PhysicalNames): the name of each
+     * physical curve (dimension 1), which is a boundary id, and of each
+     * physical surface (dimension 2), which is a material id. Names of
+     * points and volumes are not kept.
+     */
+    struct PhysicalNames
+    {
+      /// Name -> boundary id (physical curves).
+      std::map<std::string, dealii::types::boundary_id> boundary_ids;
+      /// Name -> material id (physical surfaces).
+      std::map<std::string, dealii::types::material_id> material_ids;
+      /// Names that cannot be used, with the reason (the parameter program
+      /// merges the names of several files: a name that means different
+      /// ids in two of them is listed here instead).
+      std::map<std::string, std::string> unusable;
+
+      /// All names with their ids, for messages: "boundaries (dimension
+      /// 1): 'clamped' = 1, ...; surfaces (dimension 2): ...".
+      std::string
+      list() const;
+    };
+
+    /**
+     * Read a gmsh .msh file into @p mesh, without deal.II: formats 2.2 and
+     * 4.1, ASCII and binary (file-type 1: the endianness marker must be the
+     * integer 1 in the byte order of this machine; MSH 2.2 element blocks
+     * with their header type/count/number of tags, MSH 4.1 entity blocks
+     * with 8-byte tags), data size 8. Returns the physical names.
+     *
+     * What the file gives:
+     * - every two-dimensional element is a polygon, whatever the mix:
+     *   triangles (type 2) and quadrangles (type 3), and their higher-order
+     *   variants (types 9, 10, 16, 20-25, 36-61) by their corner nodes (the
+     *   first three or four; the other nodes are dropped and the sides are
+     *   straight). Cells must be counter-clockwise, as gmsh writes them for
+     *   a surface with the normal +z; a clockwise cell is refused, not
+     *   reversed, with the file, line and element, like read_vtk();
+     * - the physical surface of a cell is its material id (0 to
+     *   PolygonalMeshGenerators::max_material_id); a cell without a
+     *   physical group (gmsh saves those when the file has no physical
+     *   groups at all, or with Mesh.SaveAll) gets material id 0;
+     * - a line element (types 1, 8, 26-28, 62-66) on a physical curve gives
+     *   its edge the physical tag as boundary id (0 to 254); it must be the
+     *   side of exactly one cell. Lines without a physical group and points
+     *   (type 15) are skipped;
+     * - the other sections ($Periodic, $NodeData, ...) are skipped.
+     *
+     * Nothing in the file is trusted: every count is checked against the
+     * size of the file before anything is allocated for it; node tags must
+     * be unique and known; coordinates finite and at most 1e100 in
+     * magnitude; cells must have area, no side of length zero, no bow tie,
+     * must not be given twice; an edge has at most two cells, and two cells
+     * of different physical surfaces share no edge unless
+     * @p separate_material_ids (then each material id gets vertices of its
+     * own, as PolygonalMeshGenerators::from_triangulation() does). Errors
+     * name the file and the line (for binary data: the line and the byte)
+     * and are thrown with AssertThrow, in Release too.
+     *
+     * @p n_refinements refines the mesh natively, without deal.II, the way
+     * Triangulation::refine_global() would: each triangle into four by its
+     * edge midpoints, each quadrangle into four by its edge midpoints and
+     * its centre (new vertices on the straight sides: a file carries no
+     * manifold); a boundary edge gives its id to both halves.
+     */
+    template <int dim>
+    PhysicalNames
+    read_msh(PolygonalMesh<dim> &mesh,
+             const std::string  &filename,
+             const unsigned int  n_refinements         = 0,
+             const bool          separate_material_ids = false);
+
+    /// The physical names of a gmsh file only (the head of the file up to
+    /// $EndPhysicalNames is read and checked); empty maps for a file
+    /// without $PhysicalNames.
+    PhysicalNames
+    read_msh_physical_names(const std::string &filename);
+
     /// The size of a mesh file as its header says, see count_entities().
     struct FileCounts
     {
@@ -79,7 +158,8 @@ namespace dealvem
 
     /**
      * Read only the counts of a legacy VTK file (@p format "vtk") or a gmsh
-     * .msh file (@p format "msh", versions 2.2 and 4.x): the POINTS and
+     * .msh file (@p format "msh", versions 2.2 and 4.1, ASCII or binary):
+     * the POINTS and
      * CELLS counts or the counts after $Nodes and $Elements. The lines in
      * between are skipped, not parsed, and nothing is stored, so that a
      * program can estimate the size of a run before it reads a large
