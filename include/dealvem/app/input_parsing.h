@@ -58,7 +58,7 @@ namespace dealvem
 
     /**
      * Parse an id given as a number or as a physical name of the mesh file
-     * (gmsh $PhysicalNames, see MeshIO::PhysicalNames): @p names maps the
+     * (gmsh \$PhysicalNames, see MeshIO::PhysicalNames): @p names maps the
      * names to ids, @p what says which kind of id ("boundary id",
      * "material id") and @p known lists every name of the file for the
      * message. A name that is not in @p names is an error listing them;

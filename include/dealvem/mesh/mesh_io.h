@@ -58,12 +58,13 @@ namespace dealvem
     void
     write_vtk(const PolygonalMesh<dim> &mesh, const std::string &filename);
 
+    /// The same, written to a stream.
     template <int dim>
     void
     write_vtk(const PolygonalMesh<dim> &mesh, std::ostream &out);
 
     /**
-     * The physical names of a gmsh file ($PhysicalNames): the name of each
+     * The physical names of a gmsh file (\$PhysicalNames): the name of each
      * physical curve (dimension 1), which is a boundary id, and of each
      * physical surface (dimension 2), which is a material id. Names of
      * points and volumes are not kept.
@@ -108,7 +109,7 @@ namespace dealvem
      *   its edge the physical tag as boundary id (0 to 254); it must be the
      *   side of exactly one cell. Lines without a physical group and points
      *   (type 15) are skipped;
-     * - the other sections ($Periodic, $NodeData, ...) are skipped.
+     * - the other sections (\$Periodic, \$NodeData, ...) are skipped.
      *
      * Nothing in the file is trusted: every count is checked against the
      * size of the file before anything is allocated for it; node tags must
@@ -135,8 +136,8 @@ namespace dealvem
              const bool          separate_material_ids = false);
 
     /// The physical names of a gmsh file only (the head of the file up to
-    /// $EndPhysicalNames is read and checked); empty maps for a file
-    /// without $PhysicalNames.
+    /// \$EndPhysicalNames is read and checked); empty maps for a file
+    /// without \$PhysicalNames.
     PhysicalNames
     read_msh_physical_names(const std::string &filename);
 
@@ -145,7 +146,7 @@ namespace dealvem
     {
       /// Points (VTK) or nodes (gmsh) declared in the header.
       unsigned long long n_vertices = 0;
-      /// Cells declared (VTK: CELLS, gmsh: $Elements; both include the
+      /// Cells declared (VTK: CELLS, gmsh: \$Elements; both include the
       /// boundary line cells); 0 if the count was not found.
       unsigned long long n_cells = 0;
       /// Whether the vertex count was found and is plausible (at most what
@@ -160,7 +161,7 @@ namespace dealvem
      * Read only the counts of a legacy VTK file (@p format "vtk") or a gmsh
      * .msh file (@p format "msh", versions 2.2 and 4.1, ASCII or binary):
      * the POINTS and
-     * CELLS counts or the counts after $Nodes and $Elements. The lines in
+     * CELLS counts or the counts after \$Nodes and \$Elements. The lines in
      * between are skipped, not parsed, and nothing is stored, so that a
      * program can estimate the size of a run before it reads a large
      * file. Throws only if the file cannot be opened.
