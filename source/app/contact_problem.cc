@@ -46,6 +46,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -325,12 +326,18 @@ namespace dealvem
   ContactProblem::body_sections(const std::string &filename)
   {
     // a plain scan of the lines (ParameterHandler parses the file later and
-    // reports its errors): "subsection Body b", "set Number of bodies = n"
-    // and "include file", recursively
+    // reports its errors): "subsection Body b" at the top level, "set Number
+    // of bodies = n" and "include file", recursively. Each body b >= 1 of
+    // 'Number of bodies' is described by its own section 'Body b', given
+    // once: a section written twice (a copy whose number was not changed)
+    // would merge into one body and leave another without a section, that
+    // is the default mesh, and a missing section would do the same.
     unsigned int                 needed = default_body_sections;
     unsigned int                 largest = 0;
     std::vector<std::string>     files{filename};
     std::set<std::string>        seen;
+    std::map<unsigned long, std::vector<std::string>> sections; // body -> "file:line" of each section
+    long                         n_set = -1;                    // the last 'Number of bodies' given
     while (!files.empty() && seen.size() < 100)
       {
         const std::string file = files.back();
@@ -339,28 +346,44 @@ namespace dealvem
           continue;
         std::ifstream in(file);
         std::string   line;
+        std::size_t   line_number = 0;
+        int           depth       = 0;
         while (std::getline(in, line))
           {
+            ++line_number;
             std::istringstream words(line.substr(0, line.find('#')));
             std::string        w0, w1, w2;
             words >> w0 >> w1;
-            if (w0 == "subsection" && w1 == "Body" && (words >> w2))
+            if (w0 == "subsection")
               {
-                unsigned long b = 0;
-                if (InputParsing::trim(w2).find_first_not_of("0123456789") == std::string::npos &&
-                    w2.size() <= 6)
-                  b = std::stoul(w2);
-                needed  = std::max<unsigned int>(needed, b + 1);
-                largest = std::max<unsigned int>(largest, b);
+                if (depth == 0 && w1 == "Body" && (words >> w2))
+                  {
+                    unsigned long b = 0;
+                    std::string   rest;
+                    if (InputParsing::trim(w2).find_first_not_of("0123456789") == std::string::npos &&
+                        w2.size() <= 6 && !(words >> rest))
+                      {
+                        b = std::stoul(w2);
+                        sections[b].push_back(file + ":" + std::to_string(line_number));
+                      }
+                    needed  = std::max<unsigned int>(needed, b + 1);
+                    largest = std::max<unsigned int>(largest, b);
+                  }
+                ++depth;
               }
-            else if (w0 == "set" && w1 == "Number")
+            else if (w0 == "end")
+              depth = std::max(depth - 1, 0);
+            else if (w0 == "set" && w1 == "Number" && depth == 0)
               {
                 const auto eq = line.find('=');
                 if (line.find("Number of bodies") != std::string::npos && eq != std::string::npos)
                   {
                     const std::string v = InputParsing::trim(line.substr(eq + 1, line.find('#') - eq - 1));
                     if (!v.empty() && v.size() <= 6 && v.find_first_not_of("0123456789") == std::string::npos)
-                      needed = std::max<unsigned int>(needed, std::stoul(v));
+                      {
+                        needed = std::max<unsigned int>(needed, std::stoul(v));
+                        n_set  = static_cast<long>(std::stoul(v));
+                      }
                   }
               }
             else if (w0 == "include" && !w1.empty())
@@ -377,6 +400,21 @@ namespace dealvem
                                    std::to_string(max_body_sections) +
                                    " bodies by sections. Read an assembly of more bodies from one mesh file, a "
                                    "body per material id ('Mesh/Parts as bodies = true')."));
+    for (const auto &[b, where] : sections)
+      AssertThrow(where.size() == 1,
+                  dealii::ExcMessage("Parameter file '" + filename + "': section 'Body " + std::to_string(b) +
+                                     "' is given " + std::to_string(where.size()) + " times (" + where[0] +
+                                     " and " + where[1] +
+                                     "). Each body has one section; was one of them meant for another body?"));
+    if (n_set >= 2 && n_set <= static_cast<long>(max_body_sections))
+      for (long b = 1; b < n_set; ++b)
+        AssertThrow(sections.count(b) > 0,
+                    dealii::ExcMessage("Parameter file '" + filename + "': 'Number of bodies' is " +
+                                       std::to_string(n_set) + ", but there is no section 'Body " +
+                                       std::to_string(b) + "' (body 0 is described by the top-level sections, body " +
+                                       "b >= 1 by 'subsection Body b'). Without it body " + std::to_string(b) +
+                                       " would silently be the default mesh; add the section, or lower "
+                                       "'Number of bodies'."));
     return needed;
   }
 
@@ -433,7 +471,7 @@ namespace dealvem
       AssertThrow(!finite_strain.enabled || MaterialLaws::is_hyperelastic(law),
                   dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': "
                                      "finite strain needs a hyperelastic law ('neo-hooke' or "
-                                     "'saint-venant-kirchhoff')."));
+                                     "'saint venant-kirchhoff')."));
       AssertThrow(!finite_strain.enabled || !finite_strain.has_monitor_point,
                   dealii::ExcMessage("Parameter 'Finite strain/Monitor point' is set, but contact problems do "
                                      "not use it: the history of the contact forces is written to "

@@ -225,7 +225,11 @@ namespace dealvem
      * "subsection Body b", at least 'Number of bodies' and at least
      * default_body_sections. Call it before declare_parameters() to read a
      * file with any number of bodies (up to max_body_sections: more is an
-     * error naming the file).
+     * error naming the file). It also checks that every body b >= 1 of
+     * 'Number of bodies' has its section 'Body b' at the top level, and
+     * only one (a section given twice, or missing, would leave a body
+     * described by the defaults): an error names the file, the section
+     * and the lines.
      */
     static unsigned int
     body_sections(const std::string &filename);
