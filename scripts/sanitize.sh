@@ -18,7 +18,7 @@ mkdir -p "$BUILD_DIR"
 # RELEASE_BUILD_DIR) beside this Debug one when it is there, and checks the
 # consumers of both variants in one prefix
 RELEASE_BUILD_DIR="${RELEASE_BUILD_DIR:-$ROOT/build}"
-release_args=()
+release_args=(-DDEALVEM_RELEASE_LIBRARY_DIR=)   # none: this variant alone (clears an earlier choice)
 if [ -f "$RELEASE_BUILD_DIR/CMakeCache.txt" ] && grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$RELEASE_BUILD_DIR/CMakeCache.txt" \
     && ls "$RELEASE_BUILD_DIR"/libdealvem.so >/dev/null 2>&1; then
   release_args=(-DDEALVEM_RELEASE_LIBRARY_DIR="$RELEASE_BUILD_DIR")
