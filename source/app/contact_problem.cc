@@ -1190,6 +1190,36 @@ namespace dealvem
     MaterialLibrary<2> laws;
     make_body_meshes(0, mesh, laws);
     bc.check_boundary_ids(mesh);
+    // the pairs join two bodies: checked here, before the first step, as
+    // node insertion checks them at small strain (a step would take the
+    // error for a failed sub-step and cut it back)
+    {
+      std::map<dealii::types::boundary_id, std::set<unsigned int>> bodies_of_id;
+      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+        if (mesh.edge(e).at_boundary())
+          bodies_of_id[mesh.edge(e).boundary_id].insert(mesh.cell(mesh.edge(e).cells[0]).material_id);
+      for (const auto &[master_id, slave_id] : contact_pairs)
+        {
+          const std::string name = "Parameter 'Contact/Pairs' entry '" + std::to_string(int(master_id)) + " : " +
+                                   std::to_string(int(slave_id)) + "': ";
+          for (const auto id : {master_id, slave_id})
+            {
+              const auto it = bodies_of_id.find(id);
+              AssertThrow(it != bodies_of_id.end(),
+                          dealii::ExcMessage(name + "no boundary edge has the boundary id " +
+                                             std::to_string(int(id)) + "."));
+              AssertThrow(it->second.size() == 1,
+                          dealii::ExcMessage(name + "the boundary edges with id " + std::to_string(int(id)) +
+                                             " belong to more than one body; each side of a contact interface "
+                                             "must lie on one body."));
+            }
+          const unsigned int a = *bodies_of_id[master_id].begin(), b = *bodies_of_id[slave_id].begin();
+          AssertThrow(a != b,
+                      dealii::ExcMessage(name + "both boundary ids belong to the same body (" +
+                                         (a < bodies.size() ? bodies[a].name : "material id " + std::to_string(a)) +
+                                         "); a contact interface joins two different bodies."));
+        }
+    }
     std::vector<FiniteSliding::InterfaceData> interfaces;
     for (unsigned int i = 0; i < contact_pairs.size(); ++i)
       interfaces.push_back({contact_pairs[i].first, contact_pairs[i].second,
