@@ -18,27 +18,6 @@
 include(${TEST_DIR}/program_checks.cmake)
 file(REMOVE_RECURSE ${WORK_DIR}/output)
 
-function(check_json_roundoff json what)
-  string(JSON value GET "${json}" ${ARGN})
-  is_roundoff("${value}" small)
-  if(NOT small)
-    message(FATAL_ERROR "FAIL ${what}: ${ARGN} = ${value}, expected below 1e-10")
-  endif()
-  message(STATUS "PASS ${what}: ${ARGN} = ${value}")
-endfunction()
-
-# |value - expected| <= 1e-10 |expected|, signs compared too
-function(check_value value expected what)
-  string(REGEX MATCH "^-" sv "${value}")
-  string(REGEX MATCH "^-" se "${expected}")
-  if(NOT "${sv}" STREQUAL "${se}")
-    message(FATAL_ERROR "FAIL ${what}: ${value}, expected ${expected}")
-  endif()
-  string(REGEX REPLACE "^-" "" v "${value}")
-  string(REGEX REPLACE "^-" "" e "${expected}")
-  check_relative(${e} ${v} 10 "${what}")
-endfunction()
-
 # --- small strain: traction -5 t at t = 2 against the traction -10
 set(linear "subsection Mesh
   set Type         = structured quads

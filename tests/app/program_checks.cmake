@@ -113,3 +113,27 @@ function(check_relative a b digits what)
   endif()
   message(STATUS "PASS ${what}: ${a} and ${b} agree to 1e-${digits} relative")
 endfunction()
+
+# check_json_roundoff(json what key...): the JSON value at the keys is
+# round-off (is_roundoff: below 1e-10)
+function(check_json_roundoff json what)
+  string(JSON value GET "${json}" ${ARGN})
+  is_roundoff("${value}" small)
+  if(NOT small)
+    message(FATAL_ERROR "FAIL ${what}: ${ARGN} = ${value}, expected below 1e-10")
+  endif()
+  message(STATUS "PASS ${what}: ${ARGN} = ${value}")
+endfunction()
+
+# check_value(value expected what): |value - expected| <= 1e-10 |expected|,
+# the signs compared too
+function(check_value value expected what)
+  string(REGEX MATCH "^-" sv "${value}")
+  string(REGEX MATCH "^-" se "${expected}")
+  if(NOT "${sv}" STREQUAL "${se}")
+    message(FATAL_ERROR "FAIL ${what}: ${value}, expected ${expected}")
+  endif()
+  string(REGEX REPLACE "^-" "" v "${value}")
+  string(REGEX REPLACE "^-" "" e "${expected}")
+  check_relative(${e} ${v} 10 "${what}")
+endfunction()
