@@ -9,6 +9,7 @@
 #include <dealvem/contact/finite_sliding.h>
 #include <dealvem/contact/finite_strain_contact.h>
 #include <dealvem/elasticity/finite_strain_assembler.h>
+#include <dealvem/mesh/connected_pieces.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <algorithm>
@@ -72,24 +73,43 @@ namespace dealvem
       return chain;
     }
 
-    // the trace of the field @p u (DoF handler @p dofs of @p mesh) on the
-    // chain at the parameter s, component comp
-    double
-    trace_value(const Chain &chain, const VEMDoFHandler<2> &dofs, const dealii::Vector<double> &u, const double s,
-                const unsigned int comp)
+    // The trace of the field @p u (DoF handler @p dofs) on the chain at the
+    // chain parameter s: its value, its derivative with respect to the
+    // local coordinate of the piece, the piece and that coordinate t.
+    struct TracePoint
     {
+      dealii::Tensor<1, 2> value, derivative;
+      unsigned int         piece = 0;
+      double               t     = 0;
+    };
+
+    TracePoint
+    trace_at(const Chain &chain, const VEMDoFHandler<2> &dofs, const dealii::Vector<double> &u, const double s)
+    {
+      TracePoint   p;
       unsigned int i = 0;
       while (i + 2 < chain.vertices.size() && s > chain.s[i + 1])
         ++i;
       const double len = chain.s[i + 1] - chain.s[i];
       const double t   = len > 0 ? (s - chain.s[i]) / len : 0.;
-      const double u0  = u[VEMDoFHandler<2>::node_dof(dofs.vertex_node(chain.vertices[i]), comp)];
-      const double u1  = u[VEMDoFHandler<2>::node_dof(dofs.vertex_node(chain.vertices[i + 1]), comp)];
-      if (dofs.get_degree() == 1)
-        return (1 - t) * u0 + t * u1;
-      const double um = u[VEMDoFHandler<2>::node_dof(dofs.edge_node(chain.edges[i]), comp)];
-      // quadratic through (0, u0), (1/2, um), (1, u1)
-      return u0 * (1 - t) * (1 - 2 * t) + um * 4 * t * (1 - t) + u1 * t * (2 * t - 1);
+      p.piece          = i;
+      p.t              = t;
+      for (unsigned int comp = 0; comp < 2; ++comp)
+        {
+          const double u0 = u[VEMDoFHandler<2>::node_dof(dofs.vertex_node(chain.vertices[i]), comp)];
+          const double u1 = u[VEMDoFHandler<2>::node_dof(dofs.vertex_node(chain.vertices[i + 1]), comp)];
+          if (dofs.get_degree() == 1)
+            {
+              p.value[comp]      = (1 - t) * u0 + t * u1;
+              p.derivative[comp] = u1 - u0;
+              continue;
+            }
+          const double um = u[VEMDoFHandler<2>::node_dof(dofs.edge_node(chain.edges[i]), comp)];
+          // quadratic through (0, u0), (1/2, um), (1, u1)
+          p.value[comp]      = u0 * (1 - t) * (1 - 2 * t) + um * 4 * t * (1 - t) + u1 * t * (2 * t - 1);
+          p.derivative[comp] = u0 * (4 * t - 3) + um * (4 - 8 * t) + u1 * (4 * t - 1);
+        }
+      return p;
     }
 
     std::uint64_t
@@ -111,6 +131,7 @@ namespace dealvem
                    const PolygonalMesh<2> &mesh, const VEMDoFHandler<2> &dofs, const dealii::Vector<double> &u)
         : original(original)
         , neighbours(neighbours)
+        , mesh(mesh)
         , dofs(dofs)
         , u(u)
       {
@@ -133,8 +154,28 @@ namespace dealvem
           const double               tolerance = 1e-12;
           if (strict && (s < chain.s.front() - tolerance || s > chain.s.back() + tolerance))
             return false;
-          for (unsigned int comp = 0; comp < 2; ++comp)
-            result[comp] = trace_value(chain, dofs, u, s, comp);
+          const TracePoint p = trace_at(chain, dofs, u, s);
+          result             = p.value;
+          // X off the sub-edge of this mesh that it projects onto (a node
+          // of a curved side placed on the side's arc, see
+          // FiniteSliding::reference_point()): the offset d from the
+          // sub-edge turns with the sub-edge, so that the node's current
+          // position is the sub-edge's current point plus R d. Rigid
+          // motions are then carried exactly (the trace of a linear field
+          // is exact on the straight sub-edge); otherwise the error is the
+          // strain times |d|, a fraction of the sag of the sub-edge.
+          const dealii::Point<2>     &Pa = mesh.vertex(chain.vertices[p.piece]);
+          const dealii::Point<2>     &Pb = mesh.vertex(chain.vertices[p.piece + 1]);
+          const dealii::Tensor<1, 2>  T0 = Pb - Pa;
+          const dealii::Tensor<1, 2>  offset = X - (Pa + p.t * T0);
+          if (offset.norm() > 1e-14 * T0.norm())
+            {
+              const dealii::Tensor<1, 2> T     = T0 + p.derivative;
+              const double               theta = std::atan2(T0[0] * T[1] - T0[1] * T[0], T0 * T);
+              const double               c = std::cos(theta), sn = std::sin(theta);
+              result[0] += (c - 1) * offset[0] - sn * offset[1];
+              result[1] += sn * offset[0] + (c - 1) * offset[1];
+            }
           return true;
         };
         const auto own = chains.find(edge_key(a, b));
@@ -154,6 +195,7 @@ namespace dealvem
     private:
       const PolygonalMesh<2>                                                      &original;
       const std::map<unsigned int, std::vector<unsigned int>>                     &neighbours;
+      const PolygonalMesh<2>                                                      &mesh;
       const VEMDoFHandler<2>                                                      &dofs;
       const dealii::Vector<double>                                                &u;
       std::map<std::uint64_t, std::pair<std::array<unsigned int, 2>, Chain>>     chains;
@@ -211,6 +253,7 @@ namespace dealvem
     NodeInsertion::Settings s;
     s.merge_fraction            = 1e-9;
     s.close_discretisation_gaps = false;
+    s.allow_no_pairs            = true;
     return s;
   }
 
@@ -287,6 +330,11 @@ namespace dealvem
       }
     for (const auto &i : interface_data)
       interface_sides.push_back({by_id[i.master_id], by_id[i.slave_id]});
+    // the arcs of the curved parts, as node insertion sees them in the
+    // reference configuration
+    for (const auto id : ids)
+      for (const auto &[e, kappa] : NodeInsertion::edge_curvatures(original, id))
+        arc_kappa[edge_key(original.edge(e).vertices[0], original.edge(e).vertices[1])] = kappa;
     if (parameters.complementarity_constant == 0)
       parameters.complementarity_constant =
         this->laws.min_characteristic_stiffness() / original.cell_diameter_range().first;
@@ -294,6 +342,32 @@ namespace dealvem
     parameters.newton.check_fixed_pairs       = !parameters.reinsert;
     if (parameters.normal == ContactSettings::Normal::tied)
       parameters.reinsert = false;
+  }
+
+
+
+  dealii::Point<2>
+  FiniteSliding::reference_point(const unsigned int a, const unsigned int b, const double s) const
+  {
+    const dealii::Point<2>    &Xa = original.vertex(a), &Xb = original.vertex(b);
+    const dealii::Tensor<1, 2> d  = Xb - Xa;
+    const dealii::Point<2>     chord = Xa + s * d;
+    const auto                 it    = arc_kappa.find(edge_key(a, b));
+    if (it == arc_kappa.end() || it->second == 0)
+      return chord;
+    // the circle of curvature kappa through Xa and Xb, on the outward side
+    // of the chord for a convex part ((a, b) in the order of the edge's
+    // vertices, which runs along the loop of its cell: the body lies to the
+    // left of a -> b)
+    const double L = d.norm(), R = 1. / std::abs(it->second);
+    const double xi = (s - 0.5) * L;
+    if (!(2 * R > L) || !(R > std::abs(xi)))
+      return chord;
+    const double         sag = std::sqrt(R * R - xi * xi) - std::sqrt(R * R - 0.25 * L * L);
+    dealii::Tensor<1, 2> outward;
+    outward[0] = d[1] / L;
+    outward[1] = -d[0] / L;
+    return chord + (it->second > 0 ? sag : -sag) * outward;
   }
 
 
@@ -709,6 +783,84 @@ namespace dealvem
 
 
 
+  dealii::Vector<double>
+  FiniteSliding::extrapolate(const Discretization &disc, const dealii::Vector<double> &u1,
+                             const dealii::Vector<double> &u0, const double s) const
+  {
+    // Each edge-connected piece moves from x0 = X + u0 to x1 = X + u1 by a
+    // rigid motion (the least-squares fit over its nodes: the rotation
+    // theta about the centroid c, and the move of the centroid) and a
+    // remainder r. The prediction turns the piece on by s theta about its
+    // centroid, moves the centroid on by s times its move, and adds s r:
+    // exact for rigid motions, translations and, without rotation, the
+    // linear extrapolation. (A rotation extrapolated linearly is off along
+    // the arc by about (s theta)^2 R / 2: a bore turned by 30 degrees a
+    // step put its nodes 0.27 radii off the circle.)
+    const auto             &dofs = *disc.dof_handler;
+    const auto             &mesh = *disc.mesh;
+    const ConnectedPieces   pieces(mesh);
+    const unsigned int      n_nodes = dofs.n_nodes();
+    std::vector<unsigned int> piece_of_node(n_nodes, 0);
+    std::vector<unsigned int> nodes;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        dofs.get_node_indices(c, nodes);
+        for (const unsigned int node : nodes)
+          piece_of_node[node] = pieces.piece_of_cell(c);
+      }
+    const auto position = [&](const dealii::Vector<double> &u, const unsigned int node) {
+      dealii::Point<2> x = dofs.node_location(node);
+      for (unsigned int comp = 0; comp < 2; ++comp)
+        x[comp] += u[VEMDoFHandler<2>::node_dof(node, comp)];
+      return x;
+    };
+    const unsigned int            np = pieces.n_pieces();
+    std::vector<dealii::Point<2>> c0(np), c1(np);
+    std::vector<unsigned int>     count(np, 0);
+    for (unsigned int node = 0; node < n_nodes; ++node)
+      {
+        const unsigned int p = piece_of_node[node];
+        c0[p] += position(u0, node);
+        c1[p] += position(u1, node);
+        ++count[p];
+      }
+    std::vector<double> dot(np, 0.), cross(np, 0.);
+    for (unsigned int p = 0; p < np; ++p)
+      if (count[p] > 0)
+        {
+          c0[p] /= count[p];
+          c1[p] /= count[p];
+        }
+    for (unsigned int node = 0; node < n_nodes; ++node)
+      {
+        const unsigned int         p = piece_of_node[node];
+        const dealii::Tensor<1, 2> a = position(u0, node) - c0[p], b = position(u1, node) - c1[p];
+        dot[p] += a * b;
+        cross[p] += a[0] * b[1] - a[1] * b[0];
+      }
+    const auto rotate = [](const double angle, const dealii::Tensor<1, 2> &v) {
+      dealii::Tensor<1, 2> r;
+      r[0] = std::cos(angle) * v[0] - std::sin(angle) * v[1];
+      r[1] = std::sin(angle) * v[0] + std::cos(angle) * v[1];
+      return r;
+    };
+    dealii::Vector<double> u(u1.size());
+    for (unsigned int node = 0; node < n_nodes; ++node)
+      {
+        const unsigned int p     = piece_of_node[node];
+        const double       theta = (dot[p] != 0 || cross[p] != 0) ? std::atan2(cross[p], dot[p]) : 0.;
+        const dealii::Point<2>     x0 = position(u0, node), x1 = position(u1, node);
+        const dealii::Tensor<1, 2> remainder = (x1 - c1[p]) - rotate(theta, x0 - c0[p]);
+        const dealii::Point<2>     x2 =
+          c1[p] + s * (c1[p] - c0[p]) + rotate(s * theta, x1 - c1[p]) + s * remainder;
+        for (unsigned int comp = 0; comp < 2; ++comp)
+          u[VEMDoFHandler<2>::node_dof(node, comp)] = x2[comp] - dofs.node_location(node)[comp];
+      }
+    return u;
+  }
+
+
+
   void
   FiniteSliding::prepare_pass(const double time, const double load_factor, const unsigned int step,
                               const bool first_pass, StepRecord &record)
@@ -745,17 +897,17 @@ namespace dealvem
       }
     else if (pairing_base.size() == solution.size())
       u_pair = relaxed_pairing_state();
-    const bool extrapolate = first_pass && n_converged >= 2 && start_previous_solution.size() == u_pair.size() &&
+    const bool with_extrapolation = first_pass && n_converged >= 2 && start_previous_solution.size() == u_pair.size() &&
                              last_time != previous_time;
     // whether the pairs are made where the step is expected to end (an
     // extrapolation or the end of a pass), not where it starts
     bool predicted = !first_pass;
-    if (extrapolate)
+    if (with_extrapolation)
       {
         const double s = (time - last_time) / (last_time - previous_time);
         if (std::isfinite(s) && s > 0 && s <= 4)
           {
-            u_pair.sadd(1. + s, -s, start_previous_solution);
+            u_pair    = extrapolate(*start, start_solution, start_previous_solution, s);
             predicted = true;
           }
       }
@@ -927,9 +1079,8 @@ namespace dealvem
           {
             const Chain old_chain = make_chain(*pair_disc->mesh, a, b, cell, pair_disc->mesh->get_vertices(),
                                                &original.vertex(a), &original.vertex(b));
-            const dealii::Tensor<1, 2> dX    = original.vertex(b) - original.vertex(a);
-            const auto                 curve = [&, a = a, b = b](const double s) {
-              const dealii::Point<2> X = original.vertex(a) + s * dX;
+            const auto curve = [&, a = a, b = b](const double s) {
+              const dealii::Point<2> X = reference_point(a, b, s);
               return dealii::Point<2>(X + pair_trace->value(X, a, b));
             };
             std::vector<double> corrected(chain.vertices.size(), -1.);
@@ -995,7 +1146,7 @@ namespace dealvem
       for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
         {
           const unsigned int v = chain.vertices[k];
-          reference[v]         = original.vertex(a) + chain.s[k] * (original.vertex(b) - original.vertex(a));
+          reference[v]         = reference_point(a, b, chain.s[k]);
           placed[v]            = true;
         }
 
@@ -1249,6 +1400,20 @@ namespace dealvem
               {
                 record.pairing_offset = std::max(record.pairing_offset, off / chord[i]);
               }
+          }
+        else if (chord[i] > 0 && !contact->get_pairs()[i].is_midpoint)
+          {
+            // An open pair: its partners need only be opposite each other
+            // within its gap. One whose partners slid apart by more than the
+            // gap may no longer see the other side where it is (a bore
+            // turned by a large step, paired where a linear prediction put
+            // it, came out with every pair open and the bodies overlapping):
+            // it counts in the pairing offset, and the step makes its pairs
+            // again.
+            const auto   x   = contact->current_positions(i, solution);
+            const double off = std::abs((x[1] - x[0]) * t);
+            const double gap = contact->value(i, solution);
+            record.pairing_offset = std::max(record.pairing_offset, std::max(0., off - std::max(gap, 0.)) / chord[i]);
           }
         if (two)
           {

@@ -149,7 +149,8 @@ namespace dealvem
             segments.push_back(s);
           }
       }
-    AssertThrow(!pairs.empty(), dealii::ExcMessage("FiniteStrainContact: the interfaces have no node pairs."));
+    // (no pairs at all is a valid state: every interface is open, as where a
+    // body slid off its partner in FiniteSliding)
 
     const auto node_of = [&](const unsigned int i, const bool master) {
       const auto        &p      = pairs[i];
@@ -233,6 +234,44 @@ namespace dealvem
                             dealii::Point<2>(0.5 * (x0 + x1));
           pieces_at_origin[interface_of_pair[s.first]].push_back({{x0, xm, x1}});
         }
+    // The chord deviation of each piece where the master side follows a
+    // smooth curve: a slave point that lay on the curve at the origin is
+    // off the chord of a piece by up to l^2 kappa / 8 (l the piece's
+    // length), more than the 1e-2 l of a touch once l kappa > 0.08 (a ring
+    // of 40 edges). kappa from the turns to the neighbouring pieces (the
+    // angle between two chords over their mean length); turns above 30
+    // degrees are corners, not curvature.
+    std::vector<std::vector<double>> kappa_at_origin(interfaces.size());
+    for (unsigned int k = 0; k < pieces_at_origin.size(); ++k)
+      {
+        const auto &list = pieces_at_origin[k];
+        kappa_at_origin[k].assign(list.size(), 0.);
+        for (unsigned int j = 0; j < list.size(); ++j)
+          {
+            const dealii::Tensor<1, 2> dj = list[j][2] - list[j][0];
+            const double               lj = dj.norm();
+            double                     kappa = 0;
+            for (const int step : {-1, 1})
+              {
+                const int m = int(j) + step;
+                if (m < 0 || m >= int(list.size()) || lj == 0)
+                  continue;
+                // (neighbours along the side share an end)
+                if (!(step < 0 ? list[m][2].distance(list[j][0]) <= 1e-12 * lj :
+                                 list[m][0].distance(list[j][2]) <= 1e-12 * lj))
+                  continue;
+                const dealii::Tensor<1, 2> dm = list[m][2] - list[m][0];
+                const double               lm = dm.norm();
+                if (lm == 0)
+                  continue;
+                const double sine = std::abs(dj[0] * dm[1] - dj[1] * dm[0]) / (lj * lm);
+                if ((dj * dm) <= 0 || sine > 0.5)
+                  continue;
+                kappa = std::max(kappa, 2 * std::asin(sine) / (lj + lm));
+              }
+            kappa_at_origin[k][j] = kappa;
+          }
+      }
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         auto &d = data[i];
@@ -265,8 +304,10 @@ namespace dealvem
         const dealii::Tensor<1, 2> n_origin = rotate(d.n0, theta);
         const dealii::Point<2>     x_slave  = position(d.slave_node, *options.slip_origin);
         double gap_at_origin = std::numeric_limits<double>::max(), nearest = gap_at_origin, touch = 0;
-        for (const auto &piece : pieces_at_origin[interface_of_pair[i]])
+        const auto &origin_pieces = pieces_at_origin[interface_of_pair[i]];
+        for (unsigned int j = 0; j < origin_pieces.size(); ++j)
           {
+            const auto &piece = origin_pieces[j];
             // (a piece x(s) = xm + s b + s^2 c lies within |b| + |c| of xm:
             // one farther than the nearest so far is skipped unsearched)
             const double reach =
@@ -282,7 +323,17 @@ namespace dealvem
                 if (normal * n_origin < 0)
                   normal = -normal;
                 gap_at_origin = (x_slave - q) * normal;
-                touch         = 1e-2 * piece[0].distance(piece[2]);
+                // (1.5 times the chord deviation: the curvature of the
+                // chords is an estimate; a midpoint node of k = 2 lies on
+                // its own sub-edge's chord, off the curve by that chord's
+                // deviation too)
+                const double kappa  = kappa_at_origin[interface_of_pair[i]][j];
+                const double l      = piece[0].distance(piece[2]);
+                double       l_own  = 0;
+                if (pairs[i].is_midpoint && neighbours[i].size() == 2)
+                  l_own = position(data[neighbours[i][0]].slave_node, *options.slip_origin)
+                            .distance(position(data[neighbours[i][1]].slave_node, *options.slip_origin));
+                touch = 1e-2 * l + 1.5 * (l * l + l_own * l_own) * kappa / 8;
               }
           }
         if (gap_at_origin > touch)

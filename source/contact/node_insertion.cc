@@ -1356,6 +1356,18 @@ namespace dealvem
 
 
 
+  std::map<unsigned int, double>
+  NodeInsertion::edge_curvatures(const PolygonalMesh<2> &mesh, const dealii::types::boundary_id id)
+  {
+    const Side                     side = collect_side(mesh, id);
+    std::map<unsigned int, double> result;
+    for (unsigned int i = 0; i < side.edges.size(); ++i)
+      result[side.edge_indices[i]] = side.edge_kappa[i];
+    return result;
+  }
+
+
+
   NodeInsertion::Interface
   NodeInsertion::insert(PolygonalMesh<2>                &mesh,
                         const dealii::types::boundary_id master_id,
@@ -1447,6 +1459,12 @@ namespace dealvem
                                               std::string(e.what())));
       }
 
+    if (master_partner.empty() && settings.allow_no_pairs)
+      {
+        result.master_edges = master.edge_indices;
+        result.slave_edges  = slave.edge_indices;
+        return result;
+      }
     AssertThrow(!master_partner.empty(),
                 dealii::ExcMessage(name + "the boundary parts do not face or overlap each other within the "
                                           "search distance (" +

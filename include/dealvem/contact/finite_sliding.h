@@ -274,7 +274,9 @@ namespace dealvem
       unsigned int n_passes = 0;
       /// After the last pass: the largest tangential distance of the
       /// partners of an active vertex pair over the length of the slave
-      /// sub-edges at the pair.
+      /// sub-edges at the pair; for an open pair, the part of that distance
+      /// beyond its gap (partners that slid apart by more than their gap
+      /// may no longer see the other side where it is).
       double pairing_offset = 0;
       /// Active pairs of two vertices of the original mesh in the last pass
       /// (merged by the insertion: closer than the merge fraction of
@@ -438,6 +440,15 @@ namespace dealvem
     prepare_pass(const double time, const double load_factor, const unsigned int step, const bool first_pass,
                  StepRecord &record);
 
+    /// The state expected at the step's end from the last two converged
+    /// states @p u1 and @p u0 (on @p disc) and the ratio @p s of the new
+    /// step's length to the last one's: per piece of the mesh, its rigid
+    /// motion (rotation about its centroid and translation) continued as a
+    /// rigid motion, the rest linearly.
+    dealii::Vector<double>
+    extrapolate(const Discretization &disc, const dealii::Vector<double> &u1, const dealii::Vector<double> &u0,
+                const double s) const;
+
     /// The values of the states @p u (on @p from) at the nodes of @p to.
     dealii::Vector<double>
     transfer(const Discretization &from, const dealii::Vector<double> &u, const Discretization &to) const;
@@ -462,6 +473,18 @@ namespace dealvem
     std::map<unsigned int, std::vector<unsigned int>> side_neighbours;
     /// The boundary id of each original interface edge (by its vertices).
     std::map<std::uint64_t, dealii::types::boundary_id> edge_ids;
+    /// The signed curvature (convex > 0) of the arc each original interface
+    /// edge is taken to follow in the reference configuration
+    /// (NodeInsertion::edge_curvatures(): 0 on straight parts and at
+    /// corners), by its vertices.
+    std::map<std::uint64_t, double> arc_kappa;
+
+    /// The point of the reference curve of the original interface edge
+    /// (@p a, @p b) (its arc, or its chord where it is straight) whose foot
+    /// on the chord has the chord parameter @p s; (a, b) in the order of
+    /// the edge's vertices (interface_edges).
+    dealii::Point<2>
+    reference_point(const unsigned int a, const unsigned int b, const double s) const;
     /// The vertices of $M_0$ inside a straight run of one interface side
     /// (two collinear edges of one boundary id): their material points may
     /// move along the side (see prepare_pass()).

@@ -106,7 +106,9 @@ namespace dealvem
    * configuration, where $t(u_b) = t_0$); a pair whose slave point was off
    * the master side at $u_o$ (its distance to the master side's curve
    * there, on the side of the normal, above $10^{-2}$ of the nearest
-   * sub-edge) has no history there: its slip
+   * sub-edge plus 1.5 times its chord deviation where the master side
+   * curves: a point on a curved side lies off the chords of the other
+   * side's sub-edges by up to $l^2\kappa/8$) has no history there: its slip
    * is measured from Options::contact_origin, the configuration where the
    * contact is taken to begin, or is $a\cdot t(u)$ itself without one (it
    * sticks, once closed, with its nodes opposite each other). Its multiplier $\lambda_t$ is the friction force

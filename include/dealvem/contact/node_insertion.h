@@ -178,6 +178,11 @@ namespace dealvem
       /// at the threshold does not gain and lose its partner from one pass
       /// to the next.
       std::set<unsigned int> keep_facing;
+      /// Two parts that do not face each other anywhere make an interface
+      /// without pairs instead of an error (FiniteSliding: a body that
+      /// slid off its partner, or that has not reached it yet, is simply
+      /// not in contact there).
+      bool allow_no_pairs = false;
     };
 
     /// The boundary edges of a mesh by boundary id (ascending edge
@@ -289,6 +294,21 @@ namespace dealvem
            const Settings                  &settings,
            const unsigned int               index = 0,
            BoundaryEdges                   *edges = nullptr);
+
+    /**
+     * The curve that rule 2 takes the boundary part @p id of @p mesh to
+     * follow: for each edge of the part (by edge index; a boundary edge's
+     * vertices run along its cell's loop, so the body lies to the left of
+     * the edge), the signed curvature (convex > 0) of the circle arc
+     * through the edge's two ends onto which a new vertex goes, 0 where the
+     * part is straight, turns at a corner, or where the vertex curvatures
+     * at the two ends disagree (circles through each vertex and its two
+     * neighbours, kept where the neighbours agree; the smaller of the two).
+     * FiniteSliding takes the same arcs as the shape of the interface in
+     * the reference configuration.
+     */
+    static std::map<unsigned int, double>
+    edge_curvatures(const PolygonalMesh<2> &mesh, const dealii::types::boundary_id id);
 
     /**
      * Recompute locations, normals, initial gaps and weights of the pairs
