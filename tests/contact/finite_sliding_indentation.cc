@@ -23,7 +23,11 @@
 // gap = 0 to 1e-10 where the pressure is positive; lengths relative to
 // the die radius), the Coulomb cone |lambda_t| <= mu |lambda_n| (to 1e-9),
 // the contact force on the die grows from step to step and pushes it up,
-// and k = 1 and k = 2 give the same force to 2 % (measured 0.5 %).
+// and k = 1 and k = 2 give the same force to 3 % (measured 2.7, 2.0 and
+// 1.0 % at the three depths: the first step has three pairs in contact;
+// 0.1-0.5 % while the die's inserted nodes lay on its chords, before
+// issue 36 put them on its arcs: both orders then shared the chords'
+// error, about 5e-3 of sag against a depth of 0.05).
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
@@ -174,11 +178,11 @@ main()
   const auto f1 = indent(1, 4);
   const auto f2 = indent(2, 3);
   // two discretizations of one problem: the die forces agree to a few
-  // tenths of a percent (measured 0.1, 0.4, 0.5 %)
+  // percent (measured 2.7, 2.0, 1.0 %, falling as the contact zone grows)
   double worst = 0;
   for (unsigned int n = 0; n < std::min(f1.size(), f2.size()); ++n)
     worst = std::max(worst, std::abs(f1[n] - f2[n]) / f2[n]);
   testing::check(f1.size() >= 3 && f2.size() >= 3, "both runs reach the depth 0.15");
-  testing::check_small(worst, 0.02, "k = 1 and k = 2 give the same die force (relative difference)");
+  testing::check_small(worst, 0.03, "k = 1 and k = 2 give the same die force (relative difference)");
   return testing::finish();
 }

@@ -21,10 +21,14 @@
 // Checked: every step converges; the contact conditions hold at every
 // pair (no penetration, closed where pressed, no pull; 1e-10 of the
 // radius); the plate force (per unit thickness, quarter model) is within
-// 1 % of the reference at every d (measured 0.45 % at d = 0.05, where the
-// contact zone is two sub-edges wide, and below 0.25 % from d = 0.1 on);
+// 1 % of the reference at every d (measured 0.04 % at d = 0.05, where the
+// contact zone is two sub-edges wide, 0.07-0.17 % from d = 0.1 to 0.4 and
+// 0.32 % at 0.45; before the inserted nodes of the ring went onto its arcs
+// (issue 36), 0.45 % at d = 0.05);
 // the force grows with d; and the same problem with master and slave
-// swapped gives the same forces to 1e-4 (no master bias).
+// swapped gives the same forces to 2e-4 (no master bias; measured 1.05e-4
+// at d = 0.45: with the ring as master the plate's vertices go onto the
+// ring's arcs, with the plate as master the ring's stay on its chords).
 // Faults this test found: with the trace stabilization the relative motion
 // of the two nodes of a short sub-edge (a partner that lands next to a
 // vertex) was as soft as any other, so the trace folded there and the
@@ -198,6 +202,6 @@ main()
   double     bias = f.size() == g.size() ? 0 : 1;
   for (unsigned int n = 0; n < std::min(f.size(), g.size()); ++n)
     bias = std::max(bias, std::abs(g[n] / f[n] - 1));
-  testing::check_small(bias, 1e-4, "master and slave swapped: the same forces (largest relative difference)");
+  testing::check_small(bias, 2e-4, "master and slave swapped: the same forces (largest relative difference)");
   return testing::finish();
 }
