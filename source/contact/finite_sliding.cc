@@ -9,6 +9,7 @@
 #include <dealvem/contact/finite_sliding.h>
 #include <dealvem/contact/finite_strain_contact.h>
 #include <dealvem/elasticity/finite_strain_assembler.h>
+#include <dealvem/elasticity/piece_support.h>
 #include <dealvem/mesh/connected_pieces.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
@@ -26,6 +27,15 @@ namespace dealvem
 {
   namespace
   {
+    // An error of the input found before a step is solved (a body without
+    // support): cutting the step back cannot help, so it ends the run at
+    // once.
+    class ExcStepInput : public dealii::ExcMessage
+    {
+    public:
+      using dealii::ExcMessage::ExcMessage;
+    };
+
     // The nodes of an original interface edge (a, b) of M_0 in a mesh made
     // from M_0 by splitting edges: the vertices from a to b along the loop
     // of the edge's cell, their parameters s on the chord (in that mesh's
@@ -1461,6 +1471,10 @@ namespace dealvem
       {
         solve_increment(step, time, record);
       }
+    catch (const ExcStepInput &)
+      {
+        throw;
+      }
     catch (const dealii::ExceptionBase &e)
       {
         // the state is still that of t_start: the step is solved again as
@@ -1538,6 +1552,8 @@ namespace dealvem
     for (unsigned int pass = 1;; ++pass)
       {
         prepare_pass(time, record.load_factor, step, pass == 1, record);
+        if (pass == 1)
+          check_support(step, time);
         const auto clock = std::chrono::steady_clock::now();
         try
           {
@@ -1620,6 +1636,68 @@ namespace dealvem
     last_load_factor     = record.load_factor;
     last_step            = step;
     ++n_converged;
+  }
+
+
+
+  void
+  FiniteSliding::check_support(const unsigned int step, const double time) const
+  {
+    // the rows by which the displacement constraints and the pairs closed
+    // at the start of the step restrict the rigid-body modes of the pieces
+    // (as RigidBodySupport does at small strain)
+    const PieceSupport             pieces(*current->dof_handler);
+    std::vector<PieceSupport::Row> rows;
+    PieceSupport::Form             form;
+    for (const auto &line : constraints.get_lines())
+      {
+        if (line.index >= current->dof_handler->n_dofs())
+          continue;
+        form.assign(1, {line.index, 1.});
+        for (const auto &e : line.entries)
+          form.emplace_back(e.first, -e.second);
+        pieces.add_rows(form, rows);
+      }
+    const unsigned int np     = contact->n_pairs();
+    const double       length = original.extent();
+    // (tied contact and Coulomb friction, which sticks unless the load
+    // overcomes it, hold the tangential direction too)
+    const bool tangential = contact->n_constraints() == 2 * np;
+    FiniteStrainConstraints::Linearization linearization;
+    for (unsigned int i = 0; i < np; ++i)
+      {
+        if (contact->is_left_out(i))
+          continue;
+        const bool closed = contact->is_bilateral() || (i < multipliers.size() && multipliers[i] != 0) ||
+                            contact->value(i, solution) <= 1e-9 * length;
+        if (!closed)
+          continue;
+        for (const unsigned int j : {i, np + i})
+          {
+            if (j >= np && !tangential)
+              continue;
+            contact->linearize(j, solution, linearization, false);
+            form.clear();
+            for (unsigned int k = 0; k < linearization.dofs.size(); ++k)
+              form.emplace_back(linearization.dofs[k], linearization.gradient[k]);
+            pieces.add_rows(form, rows);
+          }
+      }
+    std::vector<const PieceSupport::Row *> pointers;
+    for (const auto &row : rows)
+      pointers.push_back(&row);
+    const auto motions = pieces.free_motions(pointers);
+    if (motions.empty())
+      return;
+    AssertThrow(false,
+                ExcStepInput("FiniteSliding: step " + std::to_string(step) + " (time " + std::to_string(time) +
+                             "): the rigid-body motion " + pieces.describe(motions, true) +
+                             " is held neither by the displacement constraints nor by a contact pair that is "
+                             "closed where the step starts" +
+                             (tangential ? std::string() :
+                                           std::string(" (frictionless contact holds no tangential motion)")) +
+                             ": Newton's matrix would be singular. A body held by contact alone must touch its "
+                             "partner where the step starts; hold it by displacement constraints otherwise."));
   }
 
 

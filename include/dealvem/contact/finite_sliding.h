@@ -449,6 +449,15 @@ namespace dealvem
     extrapolate(const Discretization &disc, const dealii::Vector<double> &u1, const dealii::Vector<double> &u0,
                 const double s) const;
 
+    /// Before the first Newton solve of a step: throw, naming the motion,
+    /// where a rigid-body motion of a piece of the bodies is held neither
+    /// by the displacement constraints nor by a contact pair closed where
+    /// the step starts (a multiplier from the last step, or no gap), as
+    /// RigidBodySupport checks at small strain. Cutting the step back does
+    /// not help, so the error ends solve_step() at once.
+    void
+    check_support(const unsigned int step, const double time) const;
+
     /// The values of the states @p u (on @p from) at the nodes of @p to.
     dealii::Vector<double>
     transfer(const Discretization &from, const dealii::Vector<double> &u, const Discretization &to) const;
