@@ -29,8 +29,8 @@ namespace dealvem
    * @f[ P = -\rho_s\Big(e_s - \sum_j a_{sj}\,e_j\Big), @f]
    * the force the constraint adds so that $\rho + P$ vanishes on the
    * condensed equations (ForceBalance uses the same rule). A plain
-   * Dirichlet line gives $-\rho_s$ on its own DoF, i.e. $f_{int} - f_{ext}
-   * - e$ there; a roller line $u_x = a\,u_y$ gives a force normal to the
+   * Dirichlet line gives $-\rho_s$ on its own DoF, which is
+   * $f_{int} - f_{ext} - e$ there; a roller line $u_x = a\,u_y$ gives a force normal to the
    * roller on both components of its node. A DoF is one component of a
    * node (DoF $2m + c$ is component $c$ of node $m$), whatever the order
    * $k$: the reaction at a vertex or an edge midpoint of $k = 2$ is the
