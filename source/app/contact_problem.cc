@@ -13,6 +13,7 @@
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/contact/active_set_solver.h>
 #include <dealvem/contact/finite_sliding.h>
+#include <dealvem/contact/finite_strain_contact.h>
 #include <dealvem/contact/contact_pressure.h>
 #include <dealvem/contact/distributed_contact_solver.h>
 #include <dealvem/contact/friction_solver.h>
@@ -60,14 +61,17 @@ namespace dealvem
     {
       OutputFile    csv_file(filename);
       std::ostream &csv = csv_file.stream();
-      csv << "interface,x,y,midpoint,active,weight,gap,pressure,lumped_pressure,multiplier,"
+      csv << "interface,pair,x,y,normal_x,normal_y,midpoint,active,weight,gap,pressure,lumped_pressure,multiplier,"
              "tangential_traction,slip,status,slip_increment,shear\n";
       csv << std::setprecision(15);
+      // (pair: the index of the node pair within its interface)
+      std::map<unsigned int, unsigned int> n_written;
       for (const auto &r : pairs)
-        csv << r.interface << "," << r.location[0] << "," << r.location[1] << "," << r.midpoint << ","
-            << r.active << "," << r.weight << "," << r.gap << "," << r.pressure << "," << r.lumped_pressure
-            << "," << r.multiplier << "," << r.tangential_traction << "," << r.slip << "," << r.status << ","
-            << r.slip_increment << "," << r.shear << "\n";
+        csv << r.interface << "," << n_written[r.interface]++ << "," << r.location[0] << "," << r.location[1] << ","
+            << r.normal[0] << "," << r.normal[1] << "," << r.midpoint << "," << r.active << "," << r.weight << ","
+            << r.gap << "," << r.pressure << "," << r.lumped_pressure << "," << r.multiplier << ","
+            << r.tangential_traction << "," << r.slip << "," << r.status << "," << r.slip_increment << ","
+            << r.shear << "\n";
       csv_file.commit();
     }
 
@@ -79,17 +83,182 @@ namespace dealvem
       OutputFile    csv_file(filename);
       std::ostream &csv = csv_file.stream();
       csv << "interface,master_body,slave_body,master_id,slave_id,detected,length,normal_force,"
-             "tangential_force,force_x,force_y,centre_x,centre_y,open,stick,slip,friction_coefficient\n";
+             "tangential_force,force_x,force_y,moment,centre_x,centre_y,open,stick,slip,friction_coefficient\n";
       csv << std::setprecision(15);
       for (unsigned int k = 0; k < interfaces.size(); ++k)
         {
           const auto &r = interfaces[k];
           csv << k << "," << r.master_body << "," << r.slave_body << "," << r.master_id << "," << r.slave_id << ","
               << r.detected << "," << r.length << "," << r.normal_force << "," << r.tangential_force << ","
-              << r.force[0] << "," << r.force[1] << "," << r.centre_of_pressure[0] << ","
+              << r.force[0] << "," << r.force[1] << "," << r.moment << "," << r.centre_of_pressure[0] << ","
               << r.centre_of_pressure[1] << "," << r.n_open << "," << r.n_stick << "," << r.n_slip << ","
               << r.friction_coefficient << "\n";
         }
+      csv_file.commit();
+    }
+
+    // The reactions of the supports, one line per support and load step.
+    void
+    write_reactions_csv(const std::string &filename, const std::vector<ContactProblem::StepResult> &steps)
+    {
+      OutputFile    csv_file(filename);
+      std::ostream &csv = csv_file.stream();
+      csv << "step,time,support,boundary_id,force_x,force_y,moment\n";
+      csv << std::setprecision(15);
+      for (const auto &sr : steps)
+        for (const auto &r : sr.reactions)
+          csv << sr.step << "," << sr.time << "," << r.key << ","
+              << (r.boundary_id == dealii::numbers::invalid_boundary_id ? -1 : int(r.boundary_id)) << ","
+              << r.force[0] << "," << r.force[1] << "," << r.moment << "\n";
+      csv_file.commit();
+    }
+
+    // One line per support on the terminal: its reaction and moment about
+    // @p point (the first @p max ones, then their number).
+    void
+    print_reactions(const std::vector<SupportReactions::Reaction> &reactions, const dealii::Point<2> &point,
+                    const std::string &indent, const unsigned int max = 12)
+    {
+      for (unsigned int k = 0; k < reactions.size() && k < max; ++k)
+        std::cout << indent << "reaction on " << reactions[k].name << ": force (" << reactions[k].force[0] << ", "
+                  << reactions[k].force[1] << "), moment " << reactions[k].moment << " about (" << point[0]
+                  << ", " << point[1] << ")" << std::endl;
+      if (reactions.size() > max)
+        std::cout << indent << "... " << reactions.size() - max << " more supports (-reactions.csv)" << std::endl;
+    }
+
+    // Finite sliding: one node pair at the end of a step, in the current
+    // configuration.
+    struct SlidingPair
+    {
+      unsigned int         interface = 0, pair = 0;
+      dealii::Point<2>     x;      // the slave node
+      dealii::Tensor<1, 2> normal; // the current normal n (t = (-n_y, n_x))
+      double               weight = 0, gap = 0, pressure = 0, tangential_traction = 0;
+      std::string          status;
+    };
+
+    // Finite sliding: what a user reads after a step.
+    struct SlidingStepOutputs
+    {
+      std::vector<SlidingPair>                pairs;
+      std::vector<dealii::Tensor<1, 2>>       force;  // on the slave side, per interface
+      std::vector<double>                     moment; // of those forces about the moment point
+      std::vector<SupportReactions::Reaction> reactions;
+      dealii::Tensor<1, 2>                    load; // the applied loads and their moment
+      double                                  load_moment = 0;
+    };
+
+    // The pairs, interface resultants, support reactions and applied loads
+    // of the last converged step of @p sliding at the time @p time, the
+    // moments about @p point, all in the current configuration.
+    SlidingStepOutputs
+    finite_sliding_step_outputs(const FiniteSliding          &sliding,
+                                const unsigned int           n_interfaces,
+                                const double                 time,
+                                BoundaryConditionParameters &bc,
+                                const dealii::Point<2>      &point)
+    {
+      SlidingStepOutputs out;
+      out.force.assign(n_interfaces, dealii::Tensor<1, 2>());
+      out.moment.assign(n_interfaces, 0.);
+      const FiniteStrainContact    &contact = sliding.get_contact();
+      const dealii::Vector<double> &u       = sliding.get_solution();
+      const dealii::Vector<double> &lambda  = sliding.get_multipliers();
+      const unsigned int            np      = contact.n_pairs();
+      // a tangential multiplier per pair: tied contact or Coulomb friction
+      const bool                    two     = (contact.n_constraints() == 2 * np);
+      const std::vector<double>     w       = contact.current_weights(u);
+      std::vector<unsigned int>     n_in_interface(n_interfaces, 0);
+      for (unsigned int i = 0; i < np; ++i)
+        {
+          const auto  &pair = contact.get_pairs()[i];
+          SlidingPair  row;
+          row.interface = pair.interface;
+          row.pair      = n_in_interface[pair.interface]++;
+          const auto x  = contact.current_positions(i, u);
+          row.x         = x[1];
+          row.normal    = contact.current_normal(i, u);
+          row.weight    = w[i];
+          row.gap       = (x[1] - x[0]) * row.normal;
+          if (contact.is_pair_left_out(i))
+            {
+              // no multiplier: both nodes prescribed (the force is in the
+              // reactions), or a pair repeating two others where three
+              // bodies meet
+              row.status = (contact.is_fixed(i) ? "fixed" : "junction");
+              out.pairs.push_back(row);
+              continue;
+            }
+          dealii::Tensor<1, 2> t;
+          t[0]            = -row.normal[1];
+          t[1]            = row.normal[0];
+          const double ln = lambda[i], lt = (two ? lambda[np + i] : 0.);
+          // the slave node receives -lambda_n n - lambda_t t
+          const dealii::Tensor<1, 2> f = -ln * row.normal - lt * t;
+          if (w[i] > 0)
+            {
+              row.pressure            = -ln / w[i];
+              row.tangential_traction = -lt / w[i];
+            }
+          out.force[pair.interface] += f;
+          out.moment[pair.interface] += SupportReactions::moment(row.x, f, point);
+          const double mu = contact.friction_coefficient(i);
+          if (contact.is_bilateral())
+            row.status = "closed";
+          else if (ln == 0)
+            row.status = "open";
+          else if (contact.is_frictional() && mu > 0)
+            // slipping at the Coulomb bound (as FiniteSliding counts it)
+            row.status = (lt != 0 && std::abs(lt) >= mu * std::abs(ln) * (1 - 1e-9) ? "slip" : "stick");
+          else
+            row.status = "closed";
+          out.pairs.push_back(row);
+        }
+
+      // the reactions: the unbalanced force external + contact - internal
+      // at the constrained DoFs, summed per support (the supports of the
+      // step's mesh, from the same entries as its constraints)
+      bc.set_time(time);
+      const auto                             &dofs = sliding.get_dof_handler();
+      dealii::AffineConstraints<double>       lines;
+      std::vector<SupportReactions::Support> supports;
+      bc.apply_constraints(dofs, lines, &supports);
+      const auto             forces = sliding.nodal_forces();
+      dealii::Vector<double> unbalanced(forces.external);
+      unbalanced += forces.contact;
+      unbalanced -= forces.internal;
+      std::vector<dealii::Point<2>> positions(dofs.n_nodes());
+      for (unsigned int m = 0; m < positions.size(); ++m)
+        {
+          positions[m] = dofs.node_location(m);
+          for (unsigned int c = 0; c < 2; ++c)
+            if (2 * m + c < u.size())
+              positions[m][c] += u[2 * m + c];
+        }
+      out.reactions = SupportReactions::compute(supports, sliding.get_constraints(), unbalanced, positions, point);
+      for (unsigned int i = 0; i < forces.external.size(); ++i)
+        {
+          dealii::Tensor<1, 2> f;
+          f[i % 2] = forces.external[i];
+          out.load += f;
+          out.load_moment += SupportReactions::moment(positions[i / 2], f, point);
+        }
+      return out;
+    }
+
+    // Finite sliding: the node pairs of a step as CSV.
+    void
+    write_finite_sliding_pairs(const std::string &filename, const std::vector<SlidingPair> &pairs)
+    {
+      OutputFile    csv_file(filename);
+      std::ostream &csv = csv_file.stream();
+      csv << "interface,pair,x,y,normal_x,normal_y,weight,gap,pressure,tangential_traction,status\n";
+      csv << std::setprecision(15);
+      for (const auto &r : pairs)
+        csv << r.interface << "," << r.pair << "," << r.x[0] << "," << r.x[1] << "," << r.normal[0] << ","
+            << r.normal[1] << "," << r.weight << "," << r.gap << "," << r.pressure << "," << r.tangential_traction
+            << "," << r.status << "\n";
       csv_file.commit();
     }
 
@@ -295,6 +464,23 @@ namespace dealvem
                       "sigma_yy, inserted nodes marked) and of the contact pressure.");
     prm.declare_entry("Write CSV", "true", Bool(),
                       "Contact problems: write the interface results as CSV.");
+    prm.declare_entry("Moment point", "0, 0", Anything(),
+                      "Contact problems: the point 'x, y' (two finite numbers) the moments are taken about, "
+                      "counter-clockwise positive: the moment of each interface's contact forces on its slave "
+                      "body (sum over the node pairs of (x - x0) x f, x the slave node) and of each support's "
+                      "reaction on the bodies (sum over its constrained nodes of (x - x0) x R). A support is a "
+                      "boundary id with Dirichlet data or a roller, or a point constraint; its reaction is the "
+                      "internal force minus the applied loads and the contact forces at the DoFs it constrains. "
+                      "Small strain: the positions of the undeformed configuration; the moments go to "
+                      "<base name>-resultants.csv (column moment), <base name>-reactions.csv (step, time, support, "
+                      "boundary_id, force_x, force_y, moment) and the JSON summary (interfaces.i.moment, "
+                      "reactions.<support>.force_x, force_y, moment; with load steps also per step). Finite "
+                      "sliding: the current positions x = X + u; per step to <base name>-history.csv (columns "
+                      "force_x_i, force_y_i, moment_i per interface, reaction_x_<support>, reaction_y_<support>, "
+                      "reaction_moment_<support> per support, load_x, load_y, load_moment of the applied loads), "
+                      "<base name>-step-NNN-interface.csv (the node pairs) and the JSON summary "
+                      "(steps.N.interfaces.i, steps.N.reactions.<support>, steps.N.loads). The supports are named "
+                      "boundary_<id> and point_<k> (k: the index of the entry in 'Point constraints').");
     prm.leave_subsection();
   }
 
@@ -761,6 +947,15 @@ namespace dealvem
     opt.write_json     = prm.get_bool("Write JSON");
     opt.write_pictures = prm.get_bool("Write pictures");
     opt.write_csv      = prm.get_bool("Write CSV");
+    {
+      const std::string name  = "Output/Moment point";
+      const auto        parts = InputParsing::split(prm.get("Moment point"), ',');
+      AssertThrow(parts.size() == 2, dealii::ExcMessage("Parameter '" + name + "': expected 'x, y', got '" +
+                                                        prm.get("Moment point") + "'."));
+      // (parse_double refuses what is not a finite number, naming the entry)
+      for (unsigned int c = 0; c < 2; ++c)
+        opt.moment_point[c] = InputParsing::parse_double(parts[c], name);
+    }
     prm.leave_subsection();
 
     check_setup();
@@ -1263,11 +1458,11 @@ namespace dealvem
           json.write(prefix + ".json");
         }
     };
+    json.set("moment_point.x", opt.moment_point[0]);
+    json.set("moment_point.y", opt.moment_point[1]);
+    // the history CSV; its header is written with the first step, which
+    // names the supports
     std::ostringstream csv;
-    csv << "step,time,passes,newton_updates,pairing_offset,dofs,pairs,active,slipping";
-    for (unsigned int i = 0; i < interfaces.size(); ++i)
-      csv << ",normal_x_" << i << ",normal_y_" << i << ",friction_x_" << i << ",friction_y_" << i;
-    csv << "\n";
     std::cout << "Finite strain with finite sliding: " << bodies.size() << " bodies, " << interfaces.size()
               << " interface" << (interfaces.size() == 1 ? "" : "s") << ", k = " << opt.degree << ", "
               << opt.n_load_steps << " load step" << (opt.n_load_steps == 1 ? "" : "s") << std::endl;
@@ -1300,6 +1495,24 @@ namespace dealvem
           std::cout << "; interface " << i << ": normal force (" << r.normal_force[i] << "), friction force ("
                     << r.friction_force[i] << ")";
         std::cout << std::endl;
+        const auto outputs = finite_sliding_step_outputs(sliding, interfaces.size(), time, bc, opt.moment_point);
+        for (unsigned int i = 0; i < interfaces.size(); ++i)
+          std::cout << "    interface " << i << ": force on the slave side (" << outputs.force[i][0] << ", "
+                    << outputs.force[i][1] << "), moment " << outputs.moment[i] << " about ("
+                    << opt.moment_point[0] << ", " << opt.moment_point[1] << ")" << std::endl;
+        print_reactions(outputs.reactions, opt.moment_point, "    ");
+        if (n == 1)
+          {
+            csv << "step,time,passes,newton_updates,pairing_offset,dofs,pairs,active,slipping";
+            for (unsigned int i = 0; i < interfaces.size(); ++i)
+              csv << ",normal_x_" << i << ",normal_y_" << i << ",friction_x_" << i << ",friction_y_" << i;
+            for (unsigned int i = 0; i < interfaces.size(); ++i)
+              csv << ",force_x_" << i << ",force_y_" << i << ",moment_" << i;
+            for (const auto &reaction : outputs.reactions)
+              csv << ",reaction_x_" << reaction.key << ",reaction_y_" << reaction.key << ",reaction_moment_"
+                  << reaction.key;
+            csv << ",load_x,load_y,load_moment\n";
+          }
         csv << n << ',' << internal::number_string(time) << ',' << r.n_passes << ',' << updates << ','
             << internal::number_string(r.pairing_offset) << ',' << r.n_dofs << ',' << r.n_pairs << ',' << r.n_active << ','
             << r.n_slipping;
@@ -1308,6 +1521,7 @@ namespace dealvem
         json.set(key + "passes", double(r.n_passes));
         json.set(key + "newton_updates", double(updates));
         json.set(key + "pairing_offset", r.pairing_offset);
+        json.set(key + "pairs", double(r.n_pairs));
         json.set(key + "active_pairs", double(r.n_active));
         json.set(key + "slipping_pairs", double(r.n_slipping));
         for (unsigned int i = 0; i < interfaces.size(); ++i)
@@ -1324,8 +1538,36 @@ namespace dealvem
             // (mu where every active pair of the interface slips)
             if (r.normal_force[i].norm() > 0)
               json.set(k + "friction_to_normal", r.friction_force[i].norm() / r.normal_force[i].norm());
+            json.set(k + "force_x", outputs.force[i][0]);
+            json.set(k + "force_y", outputs.force[i][1]);
+            json.set(k + "moment", outputs.moment[i]);
           }
-        csv << "\n";
+        // (the forces and moments with 15 digits: balances are read from
+        // them)
+        const auto full = [](const double v) {
+          std::ostringstream s;
+          s << std::setprecision(15) << v;
+          return s.str();
+        };
+        for (unsigned int i = 0; i < interfaces.size(); ++i)
+          csv << ',' << full(outputs.force[i][0]) << ',' << full(outputs.force[i][1]) << ','
+              << full(outputs.moment[i]);
+        for (const auto &reaction : outputs.reactions)
+          {
+            csv << ',' << full(reaction.force[0]) << ',' << full(reaction.force[1]) << ','
+                << full(reaction.moment);
+            const std::string k = key + "reactions." + reaction.key + ".";
+            json.set(k + "force_x", reaction.force[0]);
+            json.set(k + "force_y", reaction.force[1]);
+            json.set(k + "moment", reaction.moment);
+          }
+        csv << ',' << full(outputs.load[0]) << ',' << full(outputs.load[1]) << ',' << full(outputs.load_moment)
+            << "\n";
+        json.set(key + "loads.force_x", outputs.load[0]);
+        json.set(key + "loads.force_y", outputs.load[1]);
+        json.set(key + "loads.moment", outputs.load_moment);
+        if (opt.write_csv)
+          write_finite_sliding_pairs(step_prefix(prefix, n) + "-interface.csv", outputs.pairs);
         json.set("converged_steps", double(n));
         if (opt.write_vtu)
           {
@@ -1435,6 +1677,8 @@ namespace dealvem
     double                                                complementarity = 0;
     std::unique_ptr<ContactAssembler<2>>                  contact;
     dealii::AffineConstraints<double>                     constraints;
+    /// The supports of the constraints (their reactions per step).
+    std::vector<SupportReactions::Support>                supports;
     std::unique_ptr<RigidBodySupport>                     support;
     // the distributed path: partition, the elasticity part of the step,
     // and the solver (also held as `solver`)
@@ -1757,7 +2001,7 @@ namespace dealvem
     dealii::TimerOutput::Scope t(d.timer, "assembly");
     bc.set_time(time);
     d.constraints.clear();
-    bc.apply_constraints(d.dof_handler, d.constraints);
+    bc.apply_constraints(d.dof_handler, d.constraints, &d.supports);
     d.constraints.close();
     d.assembler = std::make_unique<ElasticityAssembler<2>>(d.dof_handler, d.materials, opt.stabilization_factor, opt.stabilization);
     ElasticityAssembler<2> &assembler = *d.assembler;
@@ -1959,6 +2203,7 @@ namespace dealvem
         r.slip            = slips[i];
         r.tangent         = p.tangent;
         r.shear           = recovered_shear[i];
+        r.normal          = p.normal;
         r.tangential_traction = (as.active[i] ? tangential_force[i] / p.weight : 0.);
         if (friction)
           {
@@ -2006,6 +2251,7 @@ namespace dealvem
           ir.normal_force += N;
           ir.tangential_force += T;
           ir.force += N * p.normal + T * p.tangent;
+          ir.moment += SupportReactions::moment(r.location, N * p.normal + T * p.tangent, opt.moment_point);
           weighted_location[k] += N * r.location;
           moment_weight[k] += N;
           mean_location[k] += p.weight * r.location;
@@ -2120,6 +2366,7 @@ namespace dealvem
               }
           }
         std::cout << std::endl;
+        print_reactions(step_result.reactions, opt.moment_point, "    ");
       }
     if (opt.n_load_steps > 1)
       output_step(step);
@@ -2170,14 +2417,25 @@ namespace dealvem
     const bool   direct    = (d.solver->get_type() == SaddlePointSolver::Type::umfpack ||
                          d.solver->get_type() == SaddlePointSolver::Type::klu);
     const double tolerance = direct ? 0. : opt.solver_tolerance;
-    const auto   balance =
+    dealii::Vector<double> unbalanced;
+    const auto             balance =
       (d.partition ? ForceBalance::compute(*d.assembler, d.constraints, u, contact_forces, tolerance,
-                                           &d.partition->locally_owned_cells(), mpi_communicator, couplings) :
+                                           &d.partition->locally_owned_cells(), mpi_communicator, couplings,
+                                           &unbalanced) :
                      ForceBalance::compute(*d.assembler, d.constraints, u, contact_forces, tolerance, nullptr,
-                                           MPI_COMM_SELF, couplings));
+                                           MPI_COMM_SELF, couplings, &unbalanced));
     ForceBalance::check(balance, where.str());
     for (const auto &b : balance)
       step_result.balance.push_back({b.body, b.imbalance, b.residual, b.tolerance, b.condition});
+    // the reaction of every support (small strain: about the nodes'
+    // positions in the undeformed configuration)
+    {
+      std::vector<dealii::Point<2>> positions(d.dof_handler.n_nodes());
+      for (unsigned int m = 0; m < positions.size(); ++m)
+        positions[m] = d.dof_handler.node_location(m);
+      step_result.reactions =
+        SupportReactions::compute(d.supports, d.constraints, unbalanced, positions, opt.moment_point);
+    }
 
     // an active pair of unilateral contact in tension contradicts the
     // converged active set (and friction's open/stick/slip states)
@@ -2214,6 +2472,7 @@ namespace dealvem
       {
         write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
         write_resultants_csv(step_prefix(d.prefix, step) + "-resultants.csv", results.interface_results);
+        write_reactions_csv(d.prefix + "-reactions.csv", results.steps);
       }
     if (opt.write_vtu)
       {
@@ -2320,8 +2579,10 @@ namespace dealvem
       {
         write_interface_csv(data->prefix + "-interface.csv", results.pairs);
         write_resultants_csv(data->prefix + "-resultants.csv", results.interface_results);
+        write_reactions_csv(data->prefix + "-reactions.csv", results.steps);
         std::cout << "  interface results: " << data->prefix << "-interface.csv (node pairs), " << data->prefix
-                  << "-resultants.csv (force per interface)" << std::endl;
+                  << "-resultants.csv (force per interface), " << data->prefix
+                  << "-reactions.csv (force and moment per support)" << std::endl;
       }
     if (opt.write_vtu)
       {
@@ -2490,6 +2751,9 @@ namespace dealvem
     }
     std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
               << ", " << results.total_contact_force[1] << ")" << std::endl;
+    // (with load steps the progress line of each step lists them)
+    if (!results.steps.empty() && opt.n_load_steps == 1 && d.friction_solver == nullptr)
+      print_reactions(results.steps.back().reactions, opt.moment_point, "  ");
 
   }
 
@@ -2644,6 +2908,20 @@ namespace dealvem
             json.set(k + "dissipated_energy", sr.dissipated_energy);
             json.set(k + "force_x", sr.total_contact_force[0]);
             json.set(k + "force_y", sr.total_contact_force[1]);
+            for (unsigned int i = 0; i < sr.interfaces.size(); ++i)
+              {
+                const std::string ki = k + "interfaces." + std::to_string(i) + ".";
+                json.set(ki + "force_x", sr.interfaces[i].force[0]);
+                json.set(ki + "force_y", sr.interfaces[i].force[1]);
+                json.set(ki + "moment", sr.interfaces[i].moment);
+              }
+            for (const auto &r : sr.reactions)
+              {
+                const std::string kr = k + "reactions." + r.key + ".";
+                json.set(kr + "force_x", r.force[0]);
+                json.set(kr + "force_y", r.force[1]);
+                json.set(kr + "moment", r.moment);
+              }
           }
       }
     {
@@ -2685,6 +2963,7 @@ namespace dealvem
         json.set(key + "tangential_force", r.tangential_force);
         json.set(key + "force_x", r.force[0]);
         json.set(key + "force_y", r.force[1]);
+        json.set(key + "moment", r.moment);
         json.set(key + "centre_x", r.centre_of_pressure[0]);
         json.set(key + "centre_y", r.centre_of_pressure[1]);
         json.set(key + "open", double(r.n_open));
@@ -2692,6 +2971,19 @@ namespace dealvem
         json.set(key + "slip", double(r.n_slip));
         json.set(key + "friction_coefficient", r.friction_coefficient);
       }
+    // the supports' reactions of the last step, and the point of the moments
+    json.set("moment_point.x", opt.moment_point[0]);
+    json.set("moment_point.y", opt.moment_point[1]);
+    if (!results.steps.empty())
+      for (const auto &r : results.steps.back().reactions)
+        {
+          const std::string key = "reactions." + r.key + ".";
+          json.set(key + "boundary_id",
+                   r.boundary_id == dealii::numbers::invalid_boundary_id ? -1. : double(r.boundary_id));
+          json.set(key + "force_x", r.force[0]);
+          json.set(key + "force_y", r.force[1]);
+          json.set(key + "moment", r.moment);
+        }
     for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
       json.set("timings." + s.first, s.second);
     json.write(prefix + ".json");

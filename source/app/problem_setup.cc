@@ -466,39 +466,64 @@ namespace dealvem
 
 
   void
-  BoundaryConditionParameters::apply_constraints(const VEMDoFHandler<2>            &dof_handler,
-                                                 dealii::AffineConstraints<double> &constraints) const
+  BoundaryConditionParameters::apply_constraints(const VEMDoFHandler<2>                 &dof_handler,
+                                                 dealii::AffineConstraints<double>      &constraints,
+                                                 std::vector<SupportReactions::Support> *supports) const
   {
     check_boundary_ids(dof_handler.get_mesh());
     // who wrote each line, for the messages of later, colliding entries
     BoundaryConditions::ConstraintOrigins origins;
-    auto record = [&](const std::string &name) {
-      for (const auto &line : constraints.get_lines())
-        origins.emplace(line.index, name); // keeps the first writer
+    // the supports (reported if supports is not null): one per boundary id
+    // with Dirichlet data or a roller, one per point constraint
+    std::map<dealii::types::boundary_id, unsigned int> support_of_id;
+    if (supports != nullptr)
+      supports->clear();
+    const auto support_index = [&](const std::string &name, const std::string &key,
+                                   const dealii::types::boundary_id id) {
+      if (id != dealii::numbers::invalid_boundary_id && support_of_id.count(id) > 0)
+        return support_of_id[id];
+      supports->push_back({name, key, id, {}});
+      if (id != dealii::numbers::invalid_boundary_id)
+        support_of_id[id] = supports->size() - 1;
+      return static_cast<unsigned int>(supports->size() - 1);
     };
-    record("a constraint set before the boundary conditions");
+    // the lines not recorded yet go to @p name, and to the support with
+    // index @p support (none: invalid_unsigned_int)
+    const unsigned int none   = dealii::numbers::invalid_unsigned_int;
+    auto               record = [&](const std::string &name, const unsigned int support) {
+      for (const auto &line : constraints.get_lines())
+        if (origins.emplace(line.index, name).second && support != none) // keeps the first writer
+          (*supports)[support].lines.push_back(line.index);
+    };
+    record("a constraint set before the boundary conditions", none);
     for (const auto &d : dirichlet)
       {
         BoundaryConditions::interpolate_boundary_values(dof_handler, {d.id}, *d.function, d.mask,
                                                         constraints);
-        record(d.name);
+        record(d.name, supports != nullptr ? support_index("boundary " + std::to_string(int(d.id)),
+                                                                "boundary_" + std::to_string(int(d.id)), d.id) : none);
       }
     for (const auto &r : rollers)
       {
         BoundaryConditions::add_roller(dof_handler, r.id, constraints);
-        record(r.name);
+        record(r.name, supports != nullptr ? support_index("boundary " + std::to_string(int(r.id)),
+                                                                "boundary_" + std::to_string(int(r.id)), r.id) : none);
       }
-    for (const auto &p : points)
+    for (unsigned int k = 0; k < points.size(); ++k)
       {
+        const auto &p = points[k];
         BoundaryConditions::add_point_constraint(dof_handler, p.point, p.component,
                                                  p.value->value(p.point), constraints, 1e-6, p.body,
                                                  p.name, &origins);
-        record(p.name);
+        std::ostringstream name;
+        name << "point " << k << " (" << p.point[0] << ", " << p.point[1] << ")";
+        record(p.name, supports != nullptr ? support_index(name.str(), "point_" + std::to_string(k),
+                                                                dealii::numbers::invalid_boundary_id) : none);
       }
     for (const auto &r : rigid_boundaries)
       {
         BoundaryConditions::add_rigid_boundary(dof_handler, r.id, constraints, r.name, &origins);
-        record(r.name);
+        record(r.name, none); // passes the load on within the body: no support
       }
     // prescribed displacements far beyond the size of the mesh leave the
     // small-displacement model and make the solvers fail for reasons that

@@ -31,7 +31,8 @@ namespace dealvem
     {
       static const std::regex pattern(
         "(-cycle[0-9]+)?(-step-[0-9]+)?"
-        "(\\.vtu|\\.pvtu|\\.[0-9]+\\.vtu|\\.pvd|\\.json|-interface\\.csv|-resultants\\.csv|-stress\\.svg|"
+        "(\\.vtu|\\.pvtu|\\.[0-9]+\\.vtu|\\.pvd|\\.json|-interface\\.csv|-resultants\\.csv|-reactions\\.csv|"
+        "-history\\.csv|-stress\\.svg|"
         "-pressure\\.svg|-assembly\\.svg)");
       return pattern;
     }

@@ -1709,4 +1709,43 @@ namespace dealvem
     for (unsigned int i = 1; i <= n_steps; ++i)
       solve_step(first + i - 1, t0 + (t1 - t0) * i / n_steps);
   }
+
+
+
+  FiniteSliding::NodalForces
+  FiniteSliding::nodal_forces() const
+  {
+    AssertThrow(assembler != nullptr && contact != nullptr && n_converged > 0 && !last_failed,
+                dealii::ExcMessage("FiniteSliding::nodal_forces(): no step has converged yet."));
+    const unsigned int n = current->dof_handler->n_dofs();
+    NodalForces        forces;
+    // the residual lambda f_ext - f_int(u) at the load factors 0 and the
+    // step's gives both parts
+    dealii::Vector<double> residual(n);
+    assembler->assemble(solution, 0., residual, constraints, nullptr, nullptr);
+    forces.internal = residual;
+    forces.internal *= -1.;
+    assembler->assemble(solution, last_load_factor, residual, constraints, nullptr, nullptr);
+    forces.external = residual;
+    forces.external += forces.internal;
+    forces.contact.reinit(n);
+    FiniteStrainConstraints::Linearization lin;
+    for (unsigned int j = 0; j < contact->n_constraints(); ++j)
+      if (!contact->is_left_out(j) && multipliers[j] != 0)
+        {
+          contact->linearize(j, solution, lin, false);
+          for (unsigned int k = 0; k < lin.dofs.size(); ++k)
+            if (lin.dofs[k] < n)
+              forces.contact[lin.dofs[k]] -= multipliers[j] * lin.gradient[k];
+        }
+    return forces;
+  }
+
+
+
+  const dealii::AffineConstraints<double> &
+  FiniteSliding::get_constraints() const
+  {
+    return constraints;
+  }
 } // namespace dealvem

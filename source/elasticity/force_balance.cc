@@ -24,7 +24,8 @@ namespace dealvem
                         const std::vector<unsigned int>         *cells,
                         const MPI_Comm                           comm,
                         const std::vector<std::pair<dealii::types::global_dof_index,
-                                                    dealii::types::global_dof_index>> &couplings)
+                                                    dealii::types::global_dof_index>> &couplings,
+                        dealii::Vector<double>                                           *unbalanced)
   {
     const auto        &dof_handler = assembler.get_dof_handler();
     const auto        &mesh        = dof_handler.get_mesh();
@@ -85,6 +86,8 @@ namespace dealvem
     dealii::Vector<double> rho(n), P(n);
     for (unsigned int i = 0; i < n; ++i)
       rho[i] = f[i] + e[i] - Ku[i];
+    if (unbalanced != nullptr)
+      *unbalanced = rho;
     for (const auto &line : constraints.get_lines())
       if (line.index < n)
         {

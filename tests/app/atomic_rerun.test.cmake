@@ -85,8 +85,8 @@ file(WRITE ${WORK_DIR}/output/run-notes.txt "not a file of the program\n")
 set(SHEAR 0.5)
 string(CONFIGURE "${friction}" prm @ONLY)
 run_dealvem(good TRUE "${prm}")
-set(all_files run.vtu run-interface.csv run-resultants.csv run-stress.svg run-pressure.svg run-assembly.svg
-  run.json run.pvd)
+set(all_files run.vtu run-interface.csv run-resultants.csv run-reactions.csv run-stress.svg run-pressure.svg
+  run-assembly.svg run.json run.pvd)
 foreach(s 001 002 003 004)
   list(APPEND all_files run-step-${s}.vtu run-step-${s}-interface.csv run-step-${s}-resultants.csv)
 endforeach()
@@ -102,16 +102,16 @@ message(STATUS "PASS good run: ${all_files}")
 set(SHEAR 1.2)
 string(CONFIGURE "${friction}" prm @ONLY)
 run_dealvem(failing FALSE "${prm}")
-expect_text("${output}" "Output: removed the 20 file(s) of an earlier run with the output prefix 'output/run'"
+expect_text("${output}" "Output: removed the 21 file(s) of an earlier run with the output prefix 'output/run'"
             "the output of the failing rerun")
-expect_text("${output}" "The run did not complete: the 8 file(s) it wrote are incomplete as a set"
+expect_text("${output}" "The run did not complete: the 9 file(s) it wrote are incomplete as a set"
             "the output of the failing rerun")
 foreach(f run-step-001.vtu run-step-002-interface.csv run.pvd run.json)
   expect_text("${output}" "output/${f}" "the list of the failing rerun's files")
 endforeach()
 expect_files(TRUE run-step-001.vtu run-step-001-interface.csv run-step-002.vtu run-step-002-interface.csv
-             run-step-001-resultants.csv run-step-002-resultants.csv run.pvd run.json run.files other.json
-             run-notes.txt)
+             run-step-001-resultants.csv run-step-002-resultants.csv run-reactions.csv run.pvd run.json run.files
+             other.json run-notes.txt)
 expect_files(FALSE run-step-003.vtu run-step-003-interface.csv run-step-004.vtu run-step-004-interface.csv
              run.vtu run-interface.csv run-resultants.csv run-stress.svg run-pressure.svg run-assembly.svg)
 file(READ ${WORK_DIR}/output/run.files manifest)
@@ -142,7 +142,7 @@ subsection Output
 end
 ")
 expect_files(TRUE run.vtu run.json other.json run-notes.txt)
-expect_files(FALSE run-step-001.vtu run-step-002-interface.csv run.pvd)
+expect_files(FALSE run-step-001.vtu run-step-002-interface.csv run-reactions.csv run.pvd)
 file(READ ${WORK_DIR}/output/run.json json)
 string(JSON status GET "${json}" status)
 if(NOT status STREQUAL "complete")

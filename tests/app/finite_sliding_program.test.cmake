@@ -10,6 +10,9 @@
 #   step where all active pairs slip (measured: steps 3, 4 and 5) the
 #   friction force is mu times the normal force to 1e-10 relative (the
 #   Coulomb law at every pair); at least three such steps;
+# - the outputs of a turning or sliding part at every step (the balance of
+#   the support reactions, the interface resultant and its moment against
+#   the reaction on the block, the node pairs' CSV: see below);
 # - bad input: finite sliding with 'Contact/Tangential = penalty' (the
 #   contact patch test of examples/step-2 with a Neo-Hooke law) and with
 #   'Contact/Pairs = auto' stop with a message naming the parameter, and
@@ -65,6 +68,97 @@ if(all_slip LESS 3)
   message(FATAL_ERROR "FAIL finite sliding: only ${all_slip} steps where every active pair slips (measured 3)")
 endif()
 message(STATUS "PASS finite sliding: 12 steps, each with its VTU file in ${base}.pvd and a CSV line; F_t = mu F_n in ${all_slip} steps")
+
+# --- the outputs a user of a sliding part reads, at every step: the base is
+# held on boundary 2, the block is moved by its top (boundary 13) and loaded
+# by nothing else, so
+# - the reactions on 2 and 13 and the applied loads (none) balance in force
+#   and in moment (about the moment point (0, 0), current positions);
+# - the contact force on the block (the slave side) balances the reaction on
+#   13 alone, in force and moment;
+# - the node pairs' CSV has a row per pair whose force w (p n + tau t)
+#   (weight, pressure, tangential traction, current normal n, t = (-n_y, n_x))
+#   sums to the interface resultant, open rows carry nothing, and every
+#   slipping row has |tau| = mu p (Coulomb)
+foreach(s RANGE 1 12)
+  string(JSON load_x GET "${json}" steps ${s} loads force_x)
+  string(JSON load_y GET "${json}" steps ${s} loads force_y)
+  string(JSON load_m GET "${json}" steps ${s} loads moment)
+  foreach(q force_x force_y moment)
+    string(JSON base_${q} GET "${json}" steps ${s} reactions boundary_2 ${q})
+    string(JSON top_${q} GET "${json}" steps ${s} reactions boundary_13 ${q})
+    string(JSON slave_${q} GET "${json}" steps ${s} interfaces 0 ${q})
+  endforeach()
+  check_balance("finite sliding, step ${s}: reactions + loads, x" 8 ${top_force_y} ${base_force_x} ${top_force_x} ${load_x})
+  check_balance("finite sliding, step ${s}: reactions + loads, y" 8 ${top_force_y} ${base_force_y} ${top_force_y} ${load_y})
+  check_balance("finite sliding, step ${s}: reactions + loads, moment" 8 ${top_moment} ${base_moment} ${top_moment} ${load_m})
+  foreach(q force_x force_y moment)
+    check_balance("finite sliding, step ${s}: contact on the block + reaction on its top, ${q}" 8 ${top_${q}}
+      ${slave_${q}} ${top_${q}})
+  endforeach()
+
+  string(LENGTH "00${s}" len)
+  math(EXPR cut "${len} - 3")
+  string(SUBSTRING "00${s}" ${cut} 3 nnn)
+  file(STRINGS ${WORK_DIR}/output/${base}-step-${nnn}-interface.csv rows)
+  list(GET rows 0 header)
+  if(NOT header STREQUAL "interface,pair,x,y,normal_x,normal_y,weight,gap,pressure,tangential_traction,status")
+    message(FATAL_ERROR "FAIL finite sliding: ${base}-step-${nnn}-interface.csv has the header '${header}'")
+  endif()
+  list(REMOVE_AT rows 0)
+  list(LENGTH rows n_rows)
+  string(JSON n_pairs GET "${json}" steps ${s} pairs)
+  if(NOT n_rows EQUAL n_pairs)
+    message(FATAL_ERROR "FAIL finite sliding, step ${s}: ${n_rows} rows in the pairs' CSV, ${n_pairs} pairs")
+  endif()
+  set(sum_x "")
+  set(sum_y "")
+  set(n_slip 0)
+  set(QUIET_CHECKS TRUE)
+  foreach(row ${rows})
+    string(REPLACE "," ";" f "${row}")
+    list(GET f 4 nx)
+    list(GET f 5 ny)
+    list(GET f 6 w)
+    list(GET f 8 p)
+    list(GET f 9 tau)
+    list(GET f 10 status)
+    if(status STREQUAL "open")
+      if(NOT p EQUAL 0 OR NOT tau EQUAL 0)
+        message(FATAL_ERROR "FAIL finite sliding, step ${s}: an open pair with pressure ${p}, traction ${tau}")
+      endif()
+      continue()
+    endif()
+    if(NOT status MATCHES "^(stick|slip)$" OR NOT p GREATER 0)
+      message(FATAL_ERROR "FAIL finite sliding, step ${s}: a pair '${status}' with pressure ${p}")
+    endif()
+    if(status STREQUAL "slip")
+      decimal_product(0.3 ${p} mu_p)
+      string(REGEX REPLACE "^-" "" abs_tau "${tau}")
+      check_relative(${abs_tau} ${mu_p} 8 "finite sliding, step ${s}: a slipping pair's |tau| = mu p")
+      math(EXPR n_slip "${n_slip} + 1")
+    endif()
+    decimal_product(${w} ${p} wp)
+    decimal_product(${w} ${tau} wt)
+    decimal_product(${wp} ${nx} wp_nx)
+    decimal_product(${wp} ${ny} wp_ny)
+    decimal_product(${wt} ${ny} wt_ny)
+    decimal_product(${wt} ${nx} wt_nx)
+    negated(${wt_ny} minus_wt_ny)
+    list(APPEND sum_x ${wp_nx} ${minus_wt_ny})
+    list(APPEND sum_y ${wp_ny} ${wt_nx})
+  endforeach()
+  unset(QUIET_CHECKS)
+  negated(${slave_force_x} minus_fx)
+  negated(${slave_force_y} minus_fy)
+  # (the products keep nine digits: 1e-7)
+  check_balance("finite sliding, step ${s}: the pairs' forces sum to the resultant, x" 7 ${slave_force_y}
+    ${sum_x} ${minus_fx})
+  check_balance("finite sliding, step ${s}: the pairs' forces sum to the resultant, y" 7 ${slave_force_y}
+    ${sum_y} ${minus_fy})
+  message(STATUS "PASS finite sliding, step ${s}: ${n_rows} rows, |tau| = mu p at the ${n_slip} slipping pairs")
+endforeach()
+message(STATUS "PASS finite sliding: reactions, loads and interface resultants in balance at every step; the pairs' CSV sums to the resultants")
 
 # --- bad input
 file(READ ${SOURCE_DIR}/examples/step-2/patch-test.prm contact_prm)

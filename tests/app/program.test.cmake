@@ -3,7 +3,10 @@
 # - --print-parameters lists the sections;
 # - a good single-body file (tests/app/cantilever.prm: uniform tension, so
 #   the errors must be at round-off) and the contact patch test of
-#   examples/step-2 run and write their files;
+#   examples/step-2 run and write their files; the patch test's interface
+#   resultant, support reactions and moments (about two points) are those of
+#   the load, and its node pairs' CSV has the pressure p at every pair;
+#   a moment point that is not two finite numbers is refused;
 # - a rigid top plate loaded by its resultant (tests/app/rigid-top.prm,
 #   k = 2 and k = 1): uniform compression, errors at round-off;
 # - bad input exits non-zero with a message naming the problem.
@@ -68,6 +71,67 @@ foreach(v ${pmin} ${pmax})
   endif()
 endforeach()
 message(STATUS "PASS contact JSON: contact pressure in [${pmin}, ${pmax}] = 10 to 1e-10")
+
+# what a user of a pressed part reads (the patch test: p = 10 on the top
+# [0, 1] of the upper block, the slave side): the interface passes the load
+# p * 1 = 10 to the lower block, the bottom (boundary 2) carries it and the
+# point constraint nothing, at the line of action x = 0.5: about the default
+# moment point (0, 0) both moments are 10 * 0.5 = 5 (to 1e-10), about
+# (0.5, 7) on the line of symmetry zero (to 1e-10 of 10 * 7); every node
+# pair has the pressure 10 (to 1e-10) and is closed
+foreach(q "interfaces 0" "reactions boundary_2")
+  separate_arguments(keys UNIX_COMMAND "${q}")
+  string(JSON fy GET "${json}" ${keys} force_y)
+  string(JSON m GET "${json}" ${keys} moment)
+  check_value(${fy} 10 "contact patch test: ${q} force_y")
+  check_value(${m} 5 "contact patch test: ${q} moment about (0, 0)")
+  check_json_roundoff("${json}" "contact patch test" ${keys} force_x)
+endforeach()
+check_json_roundoff("${json}" "contact patch test" reactions point_0 force_x)
+file(STRINGS ${WORK_DIR}/output/patch-test-interface.csv rows)
+list(GET rows 0 header)
+string(REPLACE "," ";" header "${header}")
+list(FIND header "pressure" p_col)
+list(FIND header "status" status_col)
+list(FIND header "normal_y" ny_col)
+list(REMOVE_AT rows 0)
+list(LENGTH rows n_rows)
+string(JSON n_pairs GET "${json}" contact node_pairs)
+if(p_col EQUAL -1 OR status_col EQUAL -1 OR ny_col EQUAL -1 OR NOT n_rows EQUAL n_pairs)
+  message(FATAL_ERROR "FAIL contact patch test CSV: ${n_rows} rows for ${n_pairs} pairs, header '${header}'")
+endif()
+foreach(row ${rows})
+  string(REPLACE "," ";" f "${row}")
+  list(GET f ${p_col} p)
+  list(GET f ${status_col} status)
+  list(GET f ${ny_col} ny)
+  if(p LESS 9.999999999 OR p GREATER 10.000000001 OR NOT status STREQUAL "closed" OR NOT ny EQUAL 1)
+    message(FATAL_ERROR "FAIL contact patch test CSV: a pair with pressure ${p}, status ${status}, normal_y ${ny}")
+  endif()
+endforeach()
+message(STATUS "PASS contact patch test CSV: ${n_rows} pairs closed with the pressure 10 to 1e-10")
+file(READ ${SOURCE_DIR}/examples/step-2/patch-test.prm contact_prm)
+string(REGEX REPLACE "(set Base name[^\n]*)" "\\1-moment\n  set Moment point = 0.5, 7" moment_prm "${contact_prm}")
+file(WRITE ${WORK_DIR}/patch-test-moment.prm "${moment_prm}")
+run_dealvem("contact patch test, moments about (0.5, 7)" TRUE "reaction on boundary 2: force (0, 10)"
+  ${WORK_DIR}/patch-test-moment.prm)
+file(READ ${WORK_DIR}/output/patch-test-moment.json json)
+# (round-off of the force 10 at the distance 7: within 1e-10 of 70)
+string(JSON m_interface GET "${json}" interfaces 0 moment)
+string(JSON m_bottom GET "${json}" reactions boundary_2 moment)
+check_balance("contact patch test: the interface's moment about (0.5, 7)" 10 70 ${m_interface})
+check_balance("contact patch test: the bottom's moment about (0.5, 7)" 10 70 ${m_bottom})
+file(STRINGS ${WORK_DIR}/output/patch-test-moment-reactions.csv rows)
+if(NOT rows MATCHES "^step,time,support,boundary_id,force_x,force_y,moment;1,1,boundary_2,2,0,10(\\.0*[0-9]*)?,[-0-9.e]+;1,1,point_0,-1,")
+  message(FATAL_ERROR "FAIL contact patch test: patch-test-moment-reactions.csv is\n${rows}")
+endif()
+# a moment point that is not two finite numbers is refused, naming the entry
+foreach(bad "1, inf" "0.5")
+  string(REGEX REPLACE "(set Base name[^\n]*)" "\\1-bad\n  set Moment point = ${bad}" bad_prm "${contact_prm}")
+  file(WRITE ${WORK_DIR}/patch-test-bad-moment.prm "${bad_prm}")
+  run_dealvem("bad input: moment point '${bad}'" FALSE "Parameter 'Output/Moment point'"
+    ${WORK_DIR}/patch-test-bad-moment.prm)
+endforeach()
 
 # the contact patch test with nu = 0 and the top of the upper body a rigid
 # plate under the resultant (0, -p) instead of the pressure p: the same

@@ -19,6 +19,7 @@
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/material.h>
+#include <dealvem/elasticity/support_reactions.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/postprocessing/error_norms.h>
 
@@ -182,6 +183,11 @@ namespace dealvem
       /// (`base_name-interface.csv`; with several load steps also one per
       /// step).
       bool        write_vtu = true, write_json = true, write_pictures = true, write_csv = true;
+      /// The point the moments of the interface resultants
+      /// (InterfaceResult::moment) and of the support reactions
+      /// (StepResult::reactions) are taken about ('Output/Moment point'),
+      /// counter-clockwise positive.
+      dealii::Point<2> moment_point;
       /// Finite strain with finite sliding ('Finite strain/Enabled =
       /// true'): run() solves the load steps with FiniteSliding (the bodies'
       /// hyperelastic laws, the pairs made again in the current
@@ -440,6 +446,9 @@ namespace dealvem
       /// applied to the tangential nodal forces); tangential_traction is the
       /// raw force per tributary length.
       double           shear = 0;
+      /// Normal n of the pair (the force $-\lambda$ on the slave node acts
+      /// along it; tangent = (-n_y, n_x)).
+      dealii::Tensor<1, 2> normal;
     };
 
     /**
@@ -463,6 +472,10 @@ namespace dealvem
       double                     tangential_force = 0;
       /// Resultant force vector on the slave body.
       dealii::Tensor<1, 2>       force;
+      /// Moment of the nodal forces on the slave body about
+      /// Options::moment_point, $\sum_i (x_i - x_0)\times f_i$ with the
+      /// slave node's position $x_i$ (counter-clockwise positive).
+      double                     moment = 0;
       /// Centre of the normal forces (the midpoint of the interface when
       /// nothing is transmitted).
       dealii::Point<2>           centre_of_pressure;
@@ -526,6 +539,10 @@ namespace dealvem
       };
       /// One entry per body.
       std::vector<Balance> balance;
+      /// The reaction (force and moment about Options::moment_point) of
+      /// every support: each boundary id with Dirichlet data or a roller,
+      /// each point constraint (SupportReactions).
+      std::vector<SupportReactions::Reaction> reactions;
     };
 
     /// Everything a test or a user program wants to look at after run().
@@ -634,7 +651,10 @@ namespace dealvem
 
     /// Options::finite_strain: the load steps with FiniteSliding, their
     /// report and output files (VTU per step with a .pvd, the step history
-    /// as CSV and JSON).
+    /// as CSV and JSON, the node pairs of each step as CSV); per step the
+    /// resultant and moment of every interface, the reaction and moment of
+    /// every support (SupportReactions, from FiniteSliding::nodal_forces())
+    /// and the applied loads, in the current configuration.
     void
     run_finite_sliding();
 

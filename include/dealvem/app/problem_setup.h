@@ -17,6 +17,7 @@
 #include <dealvem/elasticity/finite_strain_assembler.h>
 #include <dealvem/elasticity/finite_strain_solver.h>
 #include <dealvem/elasticity/material.h>
+#include <dealvem/elasticity/support_reactions.h>
 #include <dealvem/mesh/mesh_io.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/vem/vem_dof_handler.h>
@@ -174,10 +175,18 @@ namespace dealvem
     /// boundary that collides with an earlier constraint stops with a
     /// message naming both entries; so does a prescribed displacement larger
     /// than max_displacement_ratio times the size of the mesh, naming its
-    /// entry.
+    /// entry. If @p supports is not null, it gets the supports whose
+    /// reactions SupportReactions computes: one per boundary id with
+    /// Dirichlet data or a roller ("boundary 3", the lines of all entries on
+    /// that id), then one per point constraint ("point 0 (0, 0)"), each
+    /// with the lines it wrote first; a support that wrote no line (its
+    /// DoFs were constrained by an earlier entry) is listed without lines.
+    /// The lines of rigid boundaries pass the load on within the body and
+    /// are no support.
     void
-    apply_constraints(const VEMDoFHandler<2> &dof_handler,
-                      dealii::AffineConstraints<double> &constraints) const;
+    apply_constraints(const VEMDoFHandler<2>                        &dof_handler,
+                      dealii::AffineConstraints<double>             &constraints,
+                      std::vector<SupportReactions::Support>        *supports = nullptr) const;
 
     /// Hand the loads to an assembler (the functions live in this object);
     /// the resultants of rigid boundaries become nodal loads.

@@ -16,7 +16,8 @@ namespace dealvem
    *
    * A run writes its files as "<folder>/<base name>" followed by one of the
    * program's own suffixes (matches()): `.vtu`, `.pvtu`, `.<process>.vtu`,
-   * `.pvd`, `.json`, `-interface.csv`, `-resultants.csv`, `-stress.svg`,
+   * `.pvd`, `.json`, `-interface.csv`, `-resultants.csv`, `-reactions.csv`,
+   * `-history.csv`, `-stress.svg`,
    * `-pressure.svg`, `-assembly.svg`,
    * optionally after `-cycle<c>` and `-step-<n>`. A rerun with fewer load
    * steps, cycles or output options would leave some files of the earlier

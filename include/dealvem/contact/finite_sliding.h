@@ -423,6 +423,39 @@ namespace dealvem
     double
     strain_energy() const;
 
+    /// The nodal forces of the last converged step, each with n_dofs()
+    /// entries of get_dof_handler() (per unit thickness, unconstrained).
+    struct NodalForces
+    {
+      /// The internal force $f_{int}(u)$ of the bodies.
+      dealii::Vector<double> internal;
+      /// The applied loads at the step's load factor $\lambda$:
+      /// $\lambda(f_{ext} + f_p(u))$, with the follower pressures $f_p$ at
+      /// the converged state.
+      dealii::Vector<double> external;
+      /// The contact forces $-\sum_j \lambda_j\,\partial g_j/\partial u$
+      /// of the multipliers $\lambda_j$ (get_multipliers()): the force each
+      /// node receives from its pairs, normal and friction, with the terms of
+      /// the turning normals on the neighbours of a pair.
+      dealii::Vector<double> contact;
+    };
+
+    /**
+     * The nodal forces of the last converged step: at every free DoF
+     * external + contact - internal vanishes to Newton's tolerance; at a
+     * constrained DoF it is minus the reaction of the support there (see
+     * SupportReactions). Throws if no step has converged (or the last one
+     * failed). The loads are evaluated at the time their functions were
+     * last given; set it to the time of the step before calling.
+     */
+    NodalForces
+    nodal_forces() const;
+
+    /// The displacement constraints of the last step on get_dof_handler()
+    /// (those the constraints function gave at its time).
+    const dealii::AffineConstraints<double> &
+    get_constraints() const;
+
   private:
     /// A mesh with its DoF handler (the handler refers to the mesh).
     struct Discretization

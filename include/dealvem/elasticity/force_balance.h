@@ -144,6 +144,9 @@ namespace dealvem
      * nodes of a contact pair, per component): a contact force is fixed by
      * the equations of both bodies, so its rounding carries the larger
      * $|K||u|$ of the two nodes, and each side's $Q_b$ gets the other's.
+     * If @p unbalanced is not null, it gets the unbalanced nodal force
+     * $\rho = f + e - Ku$ (n_dofs entries, summed over the processes), from
+     * which SupportReactions takes the reaction of each support.
      */
     static std::vector<Body>
     compute(const ElasticityAssembler<2>            &assembler,
@@ -154,7 +157,8 @@ namespace dealvem
             const std::vector<unsigned int>         *cells = nullptr,
             const MPI_Comm                           comm  = MPI_COMM_SELF,
             const std::vector<std::pair<dealii::types::global_dof_index, dealii::types::global_dof_index>>
-              &couplings = {});
+                                   &couplings  = {},
+            dealii::Vector<double> *unbalanced = nullptr);
 
     /// The largest relative imbalance and residual over the bodies.
     static std::pair<double, double>
