@@ -741,8 +741,14 @@ namespace dealvem
     // tangential rule, the friction coefficient, the pairing controls, the
     // cutbacks and the search distance; the settings of the small-strain
     // contact loop and of node insertion in the reference configuration
-    // are refused by name
-    if (opt.finite_strain)
+    // are refused by name (after the contact rule: a rule that finite
+    // sliding does not take is named first, by run_finite_sliding())
+    const bool sliding_rule =
+      cs.normal == ContactSettings::Normal::tied ?
+        cs.tangential == ContactSettings::Tangential::multipliers :
+        (cs.tangential == ContactSettings::Tangential::frictionless ||
+         cs.tangential == ContactSettings::Tangential::coulomb);
+    if (opt.finite_strain && sliding_rule)
       {
         static const std::map<std::string, std::string> unread = {
           {"Contact/Merge fraction", "node insertion at finite strain merges only nodes within 1e-9 of an edge"},
