@@ -2,11 +2,15 @@
 """A small mutation fuzzer for the program `dealvem` (standard library only).
 
 Seeds: the example parameter file examples/step-2/patch-test.prm, the
-parameter files tests/app/*.prm (among them the friction, load-step and
-rigid-boundary inputs friction-rigid-steps.prm and coulomb-penalty-steps.prm),
-the friction, load-step, penalty, rigid-boundary, verification and per-piece
-support cases of the bad-input corpus tests/bad_input/*.prm (inputs one mistake
-away from valid ones; the mesh files they name are copied beside each case) and
+finite-strain, finite-sliding and assembly examples of examples/parameters
+(made smaller: fewer cells and load steps, k = 1, so that a case stays within
+its time limit under the sanitizers), the parameter files tests/app/*.prm
+(among them the friction, load-step and rigid-boundary inputs
+friction-rigid-steps.prm and coulomb-penalty-steps.prm), the friction,
+load-step, penalty, rigid-boundary, verification, per-piece support and
+finite-strain cases of the bad-input corpus tests/bad_input/*.prm (inputs one
+mistake away from valid ones; the mesh files they name are copied beside each
+case) and
 the mesh files tests/mesh/data/* and tests/bad_input/*piece*, *hinge* (each mesh
 read through a fixed parameter file).
 Every case applies one to three
@@ -93,9 +97,35 @@ VALUES = ["", "0", "-1", "nan", "1e308", "x", "1/0", ":", ";", ",", "0, 0", "0 :
 NUMBER = re.compile(r"(?<![A-Za-z_])[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 
 
+# the examples of the newer paths, each with the replacements that make it
+# small (a seed's mutations then reach finite strain, finite sliding and
+# assemblies of many bodies at the cost of a small run)
+SMALL_EXAMPLES = [
+    ("finite-strain-cook.prm", [("Subdivisions   = 16, 16", "Subdivisions   = 4, 4"),
+                                ("Order = 2", "Order = 1"), ("Number of steps = 10", "Number of steps = 2")]),
+    ("finite-strain-rotation.prm", [("Number of cells = 64", "Number of cells = 12"),
+                                    ("Order = 2", "Order = 1"), ("Number of steps = 6", "Number of steps = 2")]),
+    ("finite-sliding-block.prm", [("Subdivisions        = 12, 4", "Subdivisions        = 6, 2"),
+                                  ("Subdivisions       = 5, 5", "Subdivisions       = 3, 3"),
+                                  ("Order = 2", "Order = 1"), ("Number of steps = 12", "Number of steps = 3"),
+                                  ("Final time      = 1.3", "Final time      = 0.5")]),
+    ("assembly-tower.prm", []),
+    ("assembly-wall.prm", []),
+]
+
+
 def seeds():
     """(name, kind, text) of every seed; kind is 'prm' or a mesh suffix."""
     out = []
+    for name, replacements in SMALL_EXAMPLES:
+        path = os.path.join(ROOT, "examples", "parameters", name)
+        with open(path, encoding="utf-8", errors="replace") as fh:
+            text = fh.read()
+        for a, b in replacements:
+            if a not in text:
+                raise SystemExit("fuzz.py: %s no longer contains %r; update SMALL_EXAMPLES" % (path, a))
+            text = text.replace(a, b)
+        out.append((os.path.relpath(path, ROOT), "prm", text))
     files = [os.path.join(ROOT, "examples", "step-2", "patch-test.prm")]
     app = os.path.join(ROOT, "tests", "app")
     files += sorted(os.path.join(app, f) for f in os.listdir(app) if f.endswith(".prm"))
@@ -106,9 +136,11 @@ def seeds():
         if f.endswith(".prm"):
             with open(os.path.join(bad, f), encoding="utf-8", errors="replace") as fh:
                 text = fh.read()
-            # ... and the verification and per-piece support inputs (their
-            # mesh files are copied beside each case, see write_case())
-            if re.search(r"coulomb|Load steps|Rigid boundary|Penalty|Verification|piece|hinge", text):
+            # ... and the verification, per-piece support and finite-strain
+            # inputs (their mesh files are copied beside each case, see
+            # write_case())
+            if re.search(r"coulomb|Load steps|Rigid boundary|Penalty|Verification|piece|hinge|"
+                         r"Finite strain", text):
                 files.append(os.path.join(bad, f))
     for f in files:
         with open(f, encoding="utf-8", errors="replace") as fh:

@@ -771,6 +771,7 @@ namespace dealvem
           {
             body.mesh.material_id = bodies.size();
             body.name             = "body " + std::to_string(bodies.size());
+            body.modulus_parameter = prefix + "Material/Young's modulus";
             bodies.push_back(std::move(body));
             continue;
           }
@@ -801,6 +802,8 @@ namespace dealvem
         for (unsigned int i = 0; i < added.size(); ++i)
           {
             bodies[added[i]].exact = body.exact;
+            bodies[added[i]].modulus_parameter =
+              prefix + (part_laws.count(ids[i]) ? "Material/Part materials" : "Material/Young's modulus");
             const auto name        = part_names.find(ids[i]);
             bodies[added[i]].material_name = (name != part_names.end() ? name->second : body.material_name);
             bodies[added[i]].name  = "body " + std::to_string(added[i]) + " (material id " +
@@ -920,6 +923,51 @@ namespace dealvem
         if (e == "Contact/Penalty" || e == "Contact/Penalty factor")
           std::cout << "warning: the parameter file sets '" << e << "', but 'Contact/Tangential' is '"
                     << tangential_name << "', which uses no stick penalty; the setting has no effect." << std::endl;
+    // finite sliding (run_finite_sliding()) reads the pairs, the normal and
+    // tangential rule, the friction coefficient, the pairing controls, the
+    // cutbacks and the search distance; the settings of the small-strain
+    // contact loop and of node insertion in the reference configuration
+    // are refused by name (after the contact rule: a rule that finite
+    // sliding does not take is named first, by run_finite_sliding())
+    const bool sliding_rule =
+      cs.normal == ContactSettings::Normal::tied ?
+        cs.tangential == ContactSettings::Tangential::multipliers :
+        (cs.tangential == ContactSettings::Tangential::frictionless ||
+         cs.tangential == ContactSettings::Tangential::coulomb);
+    if (opt.finite_strain && sliding_rule)
+      {
+        static const std::map<std::string, std::string> unread = {
+          {"Contact/Merge fraction", "node insertion at finite strain merges only nodes within 1e-9 of an edge"},
+          {"Contact/Coordinate precision", "finite sliding keeps every gap (no gap closing)"},
+          {"Contact/Close discretisation gaps", "finite sliding keeps every gap (no gap closing)"},
+          {"Contact/Detection distance", "finite sliding takes explicit pairs, no contact detection"},
+          {"Contact/Detection angle", "finite sliding takes explicit pairs, no contact detection"},
+          {"Contact/Maximum active set iterations",
+           "the contact conditions are part of the Newton iteration ('Finite strain/Maximum Newton iterations')"},
+          {"Contact/Active set acceleration",
+           "the contact conditions are part of the Newton iteration ('Finite strain/Maximum Newton iterations')"},
+          {"Contact/Penalty", "finite sliding has no stick penalty (friction by Lagrange multipliers)"},
+          {"Contact/Penalty factor", "finite sliding has no stick penalty (friction by Lagrange multipliers)"},
+          {"Discretization/Stabilization factor", "finite sliding scales the stabilization by the tangent, with "
+                                                  "the factor 1"},
+        };
+        std::vector<std::string> set = InputParsing::changed_entries(prm, "Contact");
+        for (const auto &e : InputParsing::changed_entries(prm, "Discretization"))
+          set.push_back(e);
+        for (const auto &e : InputParsing::changed_entries(prm, "Solver"))
+          set.push_back(e);
+        for (const auto &e : set)
+          {
+            const auto it = unread.find(e);
+            const bool solver = e.compare(0, 7, "Solver/") == 0;
+            AssertThrow(it == unread.end() && !solver,
+                        dealii::ExcMessage(
+                          "Parameter '" + e + "' is set, but 'Finite strain/Enabled' is true (finite sliding), which "
+                          "does not read it: " +
+                          (solver ? std::string("every Newton update is solved by UMFPACK") : it->second) +
+                          ". Remove the entry, or set 'Finite strain/Enabled = false' (small strain)."));
+          }
+      }
 
     prm.enter_subsection("Load steps");
     {
@@ -1415,6 +1463,33 @@ namespace dealvem
                                          "); a contact interface joins two different bodies."));
         }
     }
+    // settings that finite sliding does not read: refused by name
+    for (const auto &b : bodies)
+      refuse(InputParsing::trim(b.exact).empty(),
+             "an exact solution is given for " + b.name + " ('" + b.exact +
+               "', 'Exact solution/Displacement'): finite sliding computes no errors against one. Remove the "
+               "entry, or solve at small strain.");
+    // the scales of moduli, sizes and loads, before Newton squares them
+    // (the loads at the final time, on the reference configuration)
+    {
+      VEMDoFHandler<2> dofs;
+      dofs.reinit(mesh);
+      dofs.distribute_dofs(opt.degree);
+      FiniteStrainAssembler<2> assembler(dofs, laws);
+      bc.set_time(opt.final_time);
+      bc.add_finite_strain_loads(assembler, "Finite strain/Enabled", opt.pressure_load);
+      std::vector<ScaleCheck::Body> scale_bodies;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        scale_bodies.push_back({dealii::types::material_id(b), bodies[b].name,
+                                bodies[b].modulus_parameter.empty() ? "Young's modulus of " + bodies[b].name :
+                                                                      bodies[b].modulus_parameter,
+                                bodies[b].material->characteristic_stiffness()});
+      std::ostringstream when;
+      when << "at t = " << opt.final_time;
+      dealii::Vector<double> f;
+      assembler.assemble_load_vector(f);
+      ScaleCheck::check(dofs, f, scale_bodies, when.str(), true);
+    }
     std::vector<FiniteSliding::InterfaceData> interfaces;
     for (unsigned int i = 0; i < contact_pairs.size(); ++i)
       interfaces.push_back({contact_pairs[i].first, contact_pairs[i].second,
@@ -1427,6 +1502,9 @@ namespace dealvem
     parameters.pairing_tolerance  = opt.pairing_tolerance;
     parameters.max_pairing_passes = opt.max_pairing_passes;
     parameters.max_cutbacks       = opt.max_cutbacks;
+    // node insertion in the current configuration: the search distance of
+    // the parameter file (the other insertion rules are finite sliding's own)
+    parameters.insertion.search_distance = opt.insertion.search_distance;
     if (opt.stabilization != Stabilization::automatic)
       parameters.stabilization = opt.stabilization;
     FiniteSliding sliding(mesh, laws, interfaces, parameters);
@@ -2043,6 +2121,19 @@ namespace dealvem
           }
         results.applied_load_per_body[node_body[i / 2]][i % 2] += loads[i];
       }
+    // loads out of scale with the stiffness of a body: named before the
+    // solver overflows on them
+    {
+      std::vector<ScaleCheck::Body> scale_bodies;
+      for (unsigned int b = 0; b < bodies.size(); ++b)
+        scale_bodies.push_back({dealii::types::material_id(b), bodies[b].name,
+                                bodies[b].modulus_parameter.empty() ? "Young's modulus of " + bodies[b].name :
+                                                                      bodies[b].modulus_parameter,
+                                bodies[b].material->characteristic_stiffness()});
+      std::ostringstream when;
+      when << "at t = " << time;
+      ScaleCheck::check(d.dof_handler, loads, scale_bodies, when.str(), false);
+    }
   }
 
 

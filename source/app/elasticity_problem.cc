@@ -441,6 +441,7 @@ namespace dealvem
     assembler.assemble(constraints, system_matrix, system_rhs);
     for (unsigned int i = 0; i < system_rhs.size(); ++i)
       check_load_entry(i, system_rhs[i]);
+    check_load_scale(assembler);
   }
 
 
@@ -560,6 +561,24 @@ namespace dealvem
     assembler.assemble(constraints, partition.locally_owned_cells(), distributed_matrix, distributed_rhs);
     for (const auto i : distributed_rhs.locally_owned_elements())
       check_load_entry(i, distributed_rhs(i));
+    // (the whole load vector on every process: the mesh is replicated)
+    check_load_scale(assembler);
+  }
+
+
+
+  // Loads out of scale with the stiffness: named before the solver
+  // overflows on them (ScaleCheck).
+  void
+  ElasticityProblem::check_load_scale(const ElasticityAssembler<2> &assembler) const
+  {
+    dealii::Vector<double> f;
+    assembler.assemble_load_vector(f);
+    std::ostringstream when;
+    when << "at t = " << final_time;
+    ScaleCheck::check(dof_handler, f,
+                      {{mesh_parameters.material_id, "the body", "Material/Young's modulus", youngs_modulus}},
+                      when.str(), false);
   }
 
 
@@ -1073,6 +1092,17 @@ namespace dealvem
       assembler.assemble_load_vector(f_ext);
       for (unsigned int i = 0; i < f_ext.size(); ++i)
         check_load_entry(i, f_ext[i]);
+    }
+    // the scales of modulus, size and loads, before Newton squares them
+    // (the loads at the time the functions are set to: the final time)
+    {
+      std::ostringstream when;
+      when << "at t = " << final_time;
+      dealii::Vector<double> f_ext;
+      assembler.assemble_load_vector(f_ext);
+      ScaleCheck::check(dof_handler, f_ext,
+                        {{mesh_parameters.material_id, "the body", "Material/Young's modulus", youngs_modulus}},
+                        when.str(), true);
     }
     FiniteStrainSolver<2>::Parameters parameters = finite_strain.solver;
     parameters.n_load_steps                     = n_load_steps;

@@ -833,4 +833,91 @@ namespace dealvem
     prm.leave_subsection();
     AssertThrow(!on, dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but " + reason));
   }
+  void
+  ScaleCheck::check(const VEMDoFHandler<2>       &dof_handler,
+                    const dealii::Vector<double> &f,
+                    const std::vector<Body>      &bodies,
+                    const std::string            &when,
+                    const bool                    finite_strain)
+  {
+    const auto &mesh = dof_handler.get_mesh();
+    // per body: the bounding box of its cells and the sum of the
+    // magnitudes of the nodal loads on its DoFs
+    std::map<dealii::types::material_id, unsigned int> index;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      index[bodies[b].material_id] = b;
+    std::vector<dealii::Point<2>> lo(bodies.size()), hi(bodies.size());
+    std::vector<bool>             seen(bodies.size(), false);
+    std::vector<int>              dof_body(dof_handler.n_dofs(), -1);
+    std::vector<dealii::types::global_dof_index> dofs;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const auto it = index.find(mesh.cell(c).material_id);
+        if (it == index.end())
+          continue;
+        const unsigned int b = it->second;
+        for (const auto v : mesh.cell(c).vertices)
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              const double x = mesh.vertex(v)[d];
+              lo[b][d]       = seen[b] ? std::min(lo[b][d], x) : x;
+              hi[b][d]       = seen[b] ? std::max(hi[b][d], x) : x;
+              if (d == 1)
+                seen[b] = true;
+            }
+        dof_handler.get_dof_indices(c, dofs);
+        for (const auto i : dofs)
+          dof_body[i] = b;
+      }
+    std::vector<double> load(bodies.size(), 0.);
+    for (unsigned int i = 0; i < f.size(); ++i)
+      if (dof_body[i] >= 0)
+        load[dof_body[i]] += std::abs(f[i]);
+
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        if (!seen[b])
+          continue;
+        const auto        &body  = bodies[b];
+        const double       E     = body.youngs_modulus;
+        const double       size  = lo[b].distance(hi[b]);
+        const double       force = E * size;
+        std::ostringstream msg;
+        msg << "Parameter '" << body.modulus_parameter << "' = " << E << ": at finite strain the forces of "
+            << body.name << " are of the order of its Young's modulus times its size (" << size << "), " << force
+            << ", and its stresses of the order of E; Newton's residual norms and the Cauchy stress norms square "
+               "them, which "
+            << (std::min(E, force) < min_force_scale ? "underflows" : "overflows")
+            << " double precision. The finite-strain paths need E and E times the size of every body between "
+            << min_force_scale << " and " << max_force_scale
+            << ". Choose units that bring them nearer to 1 (scaling the moduli and the loads by one factor "
+               "leaves the strains as they are).";
+        AssertThrow(!finite_strain || (E >= min_force_scale && E <= max_force_scale && force >= min_force_scale &&
+                                       force <= max_force_scale),
+                    dealii::ExcMessage(msg.str()));
+        AssertThrow(std::isfinite(load[b]),
+                    dealii::ExcMessage("The loads on " + body.name + " overflow double precision when integrated " +
+                                       when + " (the sum of the magnitudes of its nodal loads is " +
+                                       std::to_string(load[b]) +
+                                       "). Check 'Boundary conditions and loads' (Body force, Traction, Pressure) "
+                                       "for values far from the units of the problem."));
+        const double ratio = load[b] / force;
+        if (ratio > BoundaryConditionParameters::max_displacement_ratio)
+          {
+            std::ostringstream m;
+            m << "The loads on " << body.name << " " << when << " (the sum of the magnitudes of its nodal loads, "
+              << load[b] << ") are " << ratio << " times its Young's modulus times its size: they would move it by "
+              << "more than " << BoundaryConditionParameters::max_displacement_ratio << " times the size of "
+              << (bodies.size() == 1 ? std::string("the mesh") : body.name) << " (" << size << "): "
+              << (finite_strain ? "out of scale for any strain" : "far outside the small-displacement model")
+              << ", and the solve would overflow or fail for that reason. Check 'Boundary conditions and loads' "
+                 "(Body force, Traction, Pressure, Rigid boundary) against '"
+              << body.modulus_parameter << "' = " << E << " (the units of the two).";
+            AssertThrow(false, dealii::ExcMessage(m.str()));
+          }
+      }
+  }
+
+
+
 } // namespace dealvem

@@ -8,6 +8,7 @@
 
 #include <dealvem/elasticity/finite_strain_constraints.h>
 #include <dealvem/elasticity/finite_strain_solver.h>
+#include <dealvem/elasticity/hyperelastic_material.h>
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +42,43 @@ namespace dealvem
       while (!text.empty() && text.back() == ' ')
         text.pop_back();
       return text;
+    }
+
+    // Evaluate a state; if it lies outside the domain of the element or
+    // the law (a cell inverted, det F <= 0 at a material point, no
+    // plane-stress state of the law), return the reason instead of
+    // throwing. Other failures go on.
+    template <typename Evaluation>
+    bool
+    evaluate_in_domain(const Evaluation &evaluation, std::string &reason)
+    {
+      try
+        {
+          evaluation();
+          return true;
+        }
+      catch (const ExcInvertedCell &e)
+        {
+          reason = exception_text(e);
+        }
+      catch (const ExcNonPositiveJacobian &e)
+        {
+          reason = exception_text(e);
+        }
+      catch (const ExcNoPlaneStressState &e)
+        {
+          reason = exception_text(e);
+        }
+      return false;
+    }
+
+    bool
+    all_finite(const dealii::Vector<double> &v)
+    {
+      for (const double x : v)
+        if (!std::isfinite(x))
+          return false;
+      return true;
     }
   } // namespace
 
@@ -356,17 +394,19 @@ namespace dealvem
           {
             u_trial = solution;
             u_trial.sadd(1. + s, -s, previous_solution);
-            try
+            // (outside the domain, or not finite: start from the last
+            // converged state)
+            std::string reason;
+            if (all_finite(u_trial) &&
+                evaluate_in_domain(
+                  [&] { assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr); },
+                  reason) &&
+                all_finite(r_trial))
               {
-                assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr);
                 u = u_trial;
                 if (m > 0 && previous_multipliers.size() == m)
                   lambda.sadd(1. + s, -s, previous_multipliers);
                 record.extrapolated = true;
-              }
-            catch (const ExcInvertedCell &)
-              {
-                // start from the last converged state
               }
           }
       }
@@ -397,14 +437,20 @@ namespace dealvem
           }
         const bool moves_prescribed = mismatch > 1e-13 * std::max(prescribed, u.linfty_norm());
 
-        try
-          {
-            assembler.assemble(u, load_factor, r, update_constraints, &tangent, &rhs);
-          }
-        catch (const ExcInvertedCell &e)
-          {
-            fail("the iterate inverts a cell: " + exception_text(e));
-          }
+        {
+          // (the iterate is the last converged state or an accepted trial,
+          // both evaluated before; the tangent may still fail)
+          std::string reason;
+          if (!evaluate_in_domain([&] { assembler.assemble(u, load_factor, r, update_constraints, &tangent, &rhs); },
+                                  reason))
+            fail("the iterate of Newton iteration " + std::to_string(it) + " lies outside the domain of the law: " +
+                 reason);
+          if (!all_finite(r) || !all_finite(rhs))
+            fail("the internal forces of Newton iteration " + std::to_string(it) +
+                 " are not finite (|r| = " + number(r.l2_norm()) +
+                 "): the stresses overflow double precision. The loads, prescribed displacements or Young's "
+                 "moduli are out of scale with each other or with the size of the mesh.");
+        }
         // the force scale at this iterate: the load or the internal forces
         // (reactions included), whichever is larger
         tmp = f_ext;
@@ -527,7 +573,8 @@ namespace dealvem
             record.iterations.push_back(iteration);
             fail("no convergence in " + std::to_string(parameters.max_iterations) + " Newton iterations" +
                  (inversion.empty() ? std::string() :
-                                      " (the line search met inverted cells, the last: " + inversion + ")"));
+                                      " (the line search met states outside the domain of the law, the "
+                                      "last: " + inversion + ")"));
           }
 
         // the Newton direction (and the new multipliers)
@@ -536,6 +583,14 @@ namespace dealvem
         x.reinit(n + m);
         direct.vmult(x, rhs);
         update_constraints.distribute(x);
+        if (!all_finite(x))
+          {
+            record.iterations.push_back(iteration);
+            fail("the Newton update of iteration " + std::to_string(it) +
+                 " is not finite (the linear solve of the tangent gave |du| = " + number(x.l2_norm()) +
+                 "): the tangent is singular or its entries are out of the range of double precision "
+                 "(Young's moduli, loads and mesh size far apart in scale).");
+          }
         du.reinit(n);
         for (unsigned int i = 0; i < n; ++i)
           du[i] = x[i];
@@ -543,9 +598,11 @@ namespace dealvem
         for (unsigned int j = 0; j < m; ++j)
           lambda_new[j] = (active[j] != inactive) ? x[n + j] : 0.;
 
-        // backtracking: halve alpha while the trial inverts a cell or (for
-        // an update that keeps the prescribed DoFs) does not decrease the
-        // merit (the free residual, with contact also phi) enough
+        // backtracking: halve alpha while the trial leaves the domain of the
+        // element or the law (an inverted cell, det F <= 0, no plane-stress
+        // state), gives a non-finite residual, or (for an update that keeps
+        // the prescribed DoFs) does not decrease the merit (the free
+        // residual, with contact also phi) enough
         double      alpha       = 1;
         bool        accepted    = false;
         std::string last_failure;
@@ -563,14 +620,14 @@ namespace dealvem
         for (unsigned int h = 0; h <= parameters.max_line_search_halvings; ++h, alpha *= 0.5)
           {
             double trial_merit = 0;
-            try
+            if (!evaluate_in_domain([&] { trial_merit = try_step(alpha); }, last_failure))
               {
-                trial_merit = try_step(alpha);
+                inversion = last_failure;
+                continue;
               }
-            catch (const ExcInvertedCell &e)
+            if (!std::isfinite(trial_merit))
               {
-                last_failure = exception_text(e);
-                inversion    = last_failure;
+                last_failure = "the residual of the trial state is not finite";
                 continue;
               }
             if (!parameters.line_search || moves_prescribed || trial_merit <= (1. - 1e-4 * alpha) * merit)
@@ -585,23 +642,20 @@ namespace dealvem
             // no decrease found (e.g. a residual at round-off): take the full
             // step if it inverts nothing
             alpha = 1;
-            try
-              {
-                try_step(1.);
-                accepted = true;
-              }
-            catch (const ExcInvertedCell &e)
-              {
-                last_failure = exception_text(e);
-                inversion    = last_failure;
-              }
+            double trial_merit = 0;
+            if (!evaluate_in_domain([&] { trial_merit = try_step(1.); }, last_failure))
+              inversion = last_failure;
+            else if (std::isfinite(trial_merit))
+              accepted = true;
           }
         if (!accepted)
           {
             iteration.update_norm = du.l2_norm();
             record.iterations.push_back(iteration);
             fail("every step length of the line search, down to 2^-" +
-                 std::to_string(parameters.max_line_search_halvings) + ", inverts a cell: " + last_failure);
+                 std::to_string(parameters.max_line_search_halvings) +
+                 ", leaves the domain of the element or the law or gives a non-finite residual; the last: " +
+                 last_failure);
           }
         last_update           = alpha * du.l2_norm();
         iteration.update_norm = last_update;

@@ -8,6 +8,7 @@
 #include <dealvem/elasticity/force_balance.h>
 #include <dealvem/vem/vem_values.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -36,14 +37,19 @@ namespace dealvem
                           dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
     const bool first    = !parallel || dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
-    // f, K u and |K||u| of the cells of this process, then summed
+    // f, K u and |K||u| of the cells of this process, then summed; the
+    // range of the stiffnesses of the laws
     dealii::Vector<double> f(n), Ku(n), Ku_abs(n);
+    double                 stiffness_min = std::numeric_limits<double>::infinity(), stiffness_max = 0;
     {
       VEMValues<2> vem_values(dof_handler);
       ElasticityOperator<2>  elasticity;
       dealii::Vector<double> F;
       const auto             add_cell = [&](const unsigned int c) {
         vem_values.reinit(c);
+        const double stiffness = assembler.get_law(c).characteristic_stiffness();
+        stiffness_min          = std::min(stiffness_min, stiffness);
+        stiffness_max          = std::max(stiffness_max, stiffness);
         elasticity.reinit(vem_values.get_element(), assembler.get_law(c), assembler.get_gamma(),
                           assembler.get_stabilization());
         assembler.local_load(vem_values, F);
@@ -73,10 +79,15 @@ namespace dealvem
       if (first)
         assembler.add_residual({}, u, true, f);
       if (parallel)
-        for (auto *v : {&f, &Ku, &Ku_abs})
-          dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(v->begin(), n), comm,
-                                      dealii::ArrayView<double>(v->begin(), n));
+        {
+          for (auto *v : {&f, &Ku, &Ku_abs})
+            dealii::Utilities::MPI::sum(dealii::ArrayView<const double>(v->begin(), n), comm,
+                                        dealii::ArrayView<double>(v->begin(), n));
+          stiffness_min = dealii::Utilities::MPI::min(stiffness_min, comm);
+          stiffness_max = dealii::Utilities::MPI::max(stiffness_max, comm);
+        }
     }
+    const bool moderate_stiffness_ratio = stiffness_max <= max_stiffness_ratio * stiffness_min;
     dealii::Vector<double> e(n);
     if (contact_forces.size() == n)
       e = contact_forces;
@@ -142,7 +153,7 @@ namespace dealvem
       external_norm += (f[i] + e[i] + P[i]) * (f[i] + e[i] + P[i]);
     external_norm = std::sqrt(external_norm);
 
-    std::vector<double> residual(bodies.size(), 0.), magnitude(bodies.size(), 0.);
+    std::vector<double> residual(bodies.size(), 0.), magnitude(bodies.size(), 0.), loads(bodies.size(), 0.);
     for (unsigned int i = 0; i < n; ++i)
       {
         auto              &b    = bodies[node_body[i / 2]];
@@ -157,6 +168,7 @@ namespace dealvem
         b.reaction_moment += arm * P[i];
         b.contact_moment += arm * e[i];
         b.forces += std::abs(f[i]) + std::abs(e[i]) + std::abs(P[i]);
+        loads[node_body[i / 2]] += std::abs(f[i]);
         magnitude[node_body[i / 2]] += Ku_abs[i] + std::abs(f[i]) + std::abs(e[i]) + std::abs(P[i]);
         residual[node_body[i / 2]] += std::abs(rho[i] + P[i]);
       }
@@ -173,16 +185,31 @@ namespace dealvem
         auto        &b     = bodies[k];
         const auto   F     = b.applied + b.reaction + b.contact;
         const double M     = b.applied_moment + b.reaction_moment + b.contact_moment;
-        const double scale = std::max(b.forces, std::numeric_limits<double>::min());
+        // zero forces: no applied load, and the reactions and contact
+        // forces no larger than the rounding of the body's magnitudes (the
+        // exact forces are zero; the computed ones are the rounding of K u
+        // for a rigid u, and of the partner's)
+        b.zero_forces      = loads[k] == 0 && moderate_stiffness_ratio && magnitude[k] > 0 &&
+                        b.forces <= zero_force_factor * eps * magnitude[k];
+        const double scale = b.zero_forces ? zero_force_factor * eps * magnitude[k] :
+                                             std::max(b.forces, std::numeric_limits<double>::min());
         b.imbalance        = (std::abs(F[0]) + std::abs(F[1]) + std::abs(M) / std::max(b.size, 1e-300)) / scale;
         b.residual         = residual[k] / scale;
-        b.condition        = magnitude[k] / scale;
+        b.condition        = b.zero_forces ? 0. : magnitude[k] / scale;
         b.tolerance        = (rounding_factor * eps * magnitude[k] +
                        iterative_factor * solver_tolerance * std::sqrt(double(n)) * external_norm) /
                       scale;
+        // zero forces within the rounding: the balance holds as exactly as
+        // the arithmetic allows, and there is no force to relate it to
+        if (b.zero_forces && b.imbalance <= b.tolerance && b.residual <= b.tolerance)
+          b.imbalance = b.residual = 0;
         // a body on which nothing acts: nothing to balance
         if (b.forces == 0)
-          b.imbalance = b.residual = 0;
+          {
+            b.imbalance = b.residual = 0;
+            if (magnitude[k] == 0)
+              b.condition = 0;
+          }
       }
     return bodies;
   }

@@ -8,6 +8,8 @@
 # - a contact problem (tests/app/mpi-contact.prm) with np = 1 (serial) and
 #   np = 2 (distributed, contact pairs cut by the partition): the same
 #   active sets, and pressures and contact force to 1e-10 relative.
+# - a block moved rigidly onto its base (no force acts) passes the
+#   verification with np = 2.
 execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE)
 set(mpi_flags --oversubscribe)
 if(uid STREQUAL "0")
@@ -106,3 +108,14 @@ foreach(key pressure_min pressure_max total_force_y)
   check_relative(${a} ${b} 10 "contact ${key}, np = 1 against np = 2")
 endforeach()
 message(STATUS "PASS contact with np = 1 and np = 2 agree")
+
+# a block moved rigidly onto its base (tests/app/rigid-move-tied.prm, issue
+# 37 class 5): no force acts, and the distributed verification (its sums
+# over the processes) must find the bodies in equilibrium, as the serial one
+# does (tests/app/scales_and_domain)
+run_case(rigid_np2 2 TRUE output-rigid ${TEST_DIR}/rigid-move-tied.prm)
+string(FIND "${LAST_OUTPUT}" "verification: every body in equilibrium" pos)
+if(pos EQUAL -1)
+  message(FATAL_ERROR "FAIL rigid move np2: no verification line\n${LAST_OUTPUT}")
+endif()
+message(STATUS "PASS rigid move np2: verified")

@@ -708,6 +708,9 @@ namespace dealvem
       /// The material name for friction by pairs of materials (may be
       /// empty).
       std::string                             material_name;
+      /// The parameter that gives the body's Young's modulus (empty for a
+      /// body added in code).
+      std::string                             modulus_parameter;
     };
     std::vector<Body>          bodies;
     BoundaryConditionParameters bc;

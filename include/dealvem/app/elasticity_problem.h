@@ -159,6 +159,10 @@ namespace dealvem
     make_mesh(const unsigned int cycle);
     void
     setup_system();
+    /// Throw if the loads are out of scale with the stiffness
+    /// (ScaleCheck::check(), small strain), naming both.
+    void
+    check_load_scale(const ElasticityAssembler<2> &assembler) const;
     /// Throw, naming the loads, if entry @p i of the load vector is not
     /// finite.
     void

@@ -392,6 +392,57 @@ namespace dealvem
   };
 
 
+  /**
+   * The scales of a problem checked before its solve: the loads against the
+   * stiffness of the bodies (all paths), and at finite strain also the range
+   * of the moduli.
+   */
+  namespace ScaleCheck
+  {
+    /// A body, as the checks name it.
+    struct Body
+    {
+      /// The material id of its cells.
+      dealii::types::material_id material_id = 0;
+      /// Its name in messages ("body 1", "the body").
+      std::string name;
+      /// The parameter that gives its Young's modulus.
+      std::string modulus_parameter;
+      /// Its Young's modulus.
+      double youngs_modulus = 1;
+    };
+
+    /// The range of $E$ and of $E$ times the size of a body that the
+    /// finite-strain paths accept: Newton's residual norms and the Cauchy
+    /// stress norms square forces and stresses of these orders, and the
+    /// squares must stay within double precision with room for sums.
+    constexpr double min_force_scale = 1e-100;
+    /// See min_force_scale.
+    constexpr double max_force_scale = 1e100;
+
+    /**
+     * Throw, naming the body, its modulus parameter and 'Boundary conditions
+     * and loads', if the load vector @p f (unconstrained, on the DoFs of
+     * @p dof_handler; @p when says at which time, "at t = 1") is not finite
+     * on a body's DoFs, or if the sum of the magnitudes of its entries on a
+     * body exceeds BoundaryConditionParameters::max_displacement_ratio
+     * times the body's Young's modulus times its size (the diagonal of the
+     * bounding box of its cells): the body would move by more than that
+     * many times its size, beyond any model, and the solve would overflow
+     * or fail for reasons that name neither. With @p finite_strain, first
+     * throw if a body's modulus, or its modulus times its size, lies
+     * outside [min_force_scale, max_force_scale]. A problem scaled as a
+     * whole (the moduli and the loads by one factor) keeps its strains and
+     * passes or fails alike.
+     */
+    void
+    check(const VEMDoFHandler<2>       &dof_handler,
+          const dealii::Vector<double> &f,
+          const std::vector<Body>      &bodies,
+          const std::string            &when,
+          const bool                    finite_strain);
+  } // namespace ScaleCheck
+
 } // namespace dealvem
 
 #endif

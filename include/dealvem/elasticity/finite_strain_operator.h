@@ -13,6 +13,7 @@
 #include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/elasticity_operator.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,8 @@ namespace dealvem
 
   /**
    * A finite-strain element computation met a quadrature point with
-   * $J = \det F \le 0$: the message names the cell, the point and $J$.
+   * $J = \det F \le 0$ (or a non-finite $J$: a displacement that overflows):
+   * the message names the cell, the point and $J$.
    * FiniteStrainSolver catches it in its line search (a trial state that
    * inverts a cell is rejected) and reports it with the load step when the
    * step cannot avoid it.
@@ -32,8 +34,11 @@ namespace dealvem
                  unsigned int,
                  unsigned int,
                  double,
-                 << "cell " << arg1 << " is inverted or collapsed at its quadrature point " << arg2
-                 << ": det F = J = " << arg3 << " <= 0.");
+                 << "cell " << arg1
+                 << (std::isfinite(arg3) ? " is inverted or collapsed at its quadrature point " :
+                                           " has a non-finite deformation gradient at its quadrature point ")
+                 << arg2 << ": det F = J = " << arg3
+                 << (std::isfinite(arg3) ? " <= 0." : " (the displacement is beyond double precision)."));
 
   /**
    * How the stabilization of the finite-strain element is scaled

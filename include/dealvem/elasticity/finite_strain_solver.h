@@ -46,8 +46,17 @@ namespace dealvem
    * the homogeneous constraints, i.e. without the reactions):
    * $\alpha = 1, 1/2, 1/4, \ldots$ (at most Parameters::max_line_search_halvings
    * halvings) until $\|r(u+\alpha\delta u)\| \le (1 - 10^{-4}\alpha)\|r(u)\|$
-   * and no cell is inverted. An update that moves prescribed DoFs (the
-   * first of a step) is taken in full unless it inverts a cell: its
+   * and the trial state lies in the domain of the element and the law: no
+   * cell inverted (ExcInvertedCell), $\det F > 0$ at every material point
+   * (ExcNonPositiveJacobian), a plane-stress state of the law
+   * (ExcNoPlaneStressState), a finite residual. Such a trial is only an
+   * iterate, not the answer: it is halved like one without decrease, and
+   * only a step that no step length brings back into the domain fails,
+   * naming the step and the last reason. A Newton update or an internal
+   * force that is not finite stops the step with its own message (the
+   * iteration and the quantity), not as an inverted cell. An update that
+   * moves prescribed DoFs (the first of a step) is taken in full unless it
+   * leaves the domain: its
    * residual norm need not decrease, since the free residual at the old
    * state does not see the new boundary values; when it is shortened, the
    * next update carries the rest of the prescribed motion.
@@ -81,7 +90,7 @@ namespace dealvem
    * multipliers alike), $s$ the ratio of the new increment of the load
    * factor to the last one (of the step numbers when the load factor stays,
    * as with set_constraints() and solve_step(n, 1.)), unless that state
-   * inverts a cell; then from $u_n$. Along a smooth load path the
+   * lies outside the domain of the law; then from $u_n$. Along a smooth load path the
    * extrapolated state is off by $O(\Delta\lambda^2)$ instead of
    * $O(\Delta\lambda)$: Newton needs fewer iterations, and the active set of
    * contact, judged at the first iterate, flips less. If the step does not

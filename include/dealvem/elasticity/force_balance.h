@@ -59,6 +59,20 @@ namespace dealvem
    * of the body are not resolved by double precision at all (a stiff body
    * riding on one 1e9 times softer: its strain drowns in its rigid
    * displacement), and the body is refused as unverifiable.
+   *
+   * Zero forces are exact: a body that carries no applied load and whose
+   * contact forces and reactions together stay below
+   * zero_force_factor $\varepsilon Q_b$ is in equilibrium with no force at
+   * all (a body moved rigidly by its Dirichlet data, or resting untouched
+   * on another: the exact forces are zero, and the computed ones are the
+   * rounding of $K u$ for a rigid $u$, which is not a force). Its figures are
+   * taken relative to zero_force_factor $\varepsilon Q_b$ instead of
+   * $A_b$ (and reported as 0 where they meet the tolerance), its condition
+   * is 0 (nothing to resolve) and Body::zero_forces is set. This holds only where the Young's moduli of the problem lie within
+   * max_stiffness_ratio of each other: beyond, forces that a prescribed
+   * motion imposes on a soft body through a stiff one can drown in the stiff
+   * body's rounding and be indistinguishable from zero, and the body is
+   * refused as unverifiable as before.
    */
   class ForceBalance
   {
@@ -108,6 +122,11 @@ namespace dealvem
       /// @var double tolerance
       /// Relative tolerance $\tau_b$ that imbalance and residual must meet.
       double imbalance = 0, residual = 0, tolerance = 0;
+      /// No applied load acts on the body and its contact forces and
+      /// reactions are zero to the rounding of its magnitudes (see the class
+      /// documentation): the relative figures are taken relative to that
+      /// rounding, and the condition is 0.
+      bool zero_forces = false;
 
       /// The relative accuracy the arithmetic attains for the forces of
       /// the body: eps times the condition.
@@ -131,6 +150,14 @@ namespace dealvem
     /// this (eps times the condition $Q_b/A_b$) cannot be verified and is
     /// refused: its contact forces and reactions carry errors of that size.
     static constexpr double max_attainable = 1e-6;
+    /// A body without applied loads whose forces sum to at most this times
+    /// $\varepsilon Q_b$ carries no force (Body::zero_forces).
+    static constexpr double zero_force_factor = 10;
+    /// Zero forces are recognised only where the largest Young's modulus
+    /// (ConstitutiveLaw::characteristic_stiffness()) of the problem is at
+    /// most this times the smallest: the stiffness ratio that the
+    /// verification resolves.
+    static constexpr double max_stiffness_ratio = 1e6;
 
     /**
      * The balance of every body. @p u: the solution with the constraints
