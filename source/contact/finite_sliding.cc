@@ -1014,9 +1014,13 @@ namespace dealvem
         {
           std::ostringstream info;
           e.print_info(info);
-          AssertThrow(false, dealii::ExcMessage("FiniteSliding: pairing the interfaces in the current "
-                                                "configuration of step " +
-                                                std::to_string(step) + " failed: " + info.str()));
+          const std::string message = "FiniteSliding: pairing the interfaces in the current configuration of step " +
+                                      std::to_string(step) + " failed: " + info.str();
+          // (where the step starts, the pairing is the same for every
+          // sub-step: cutting the step back cannot help)
+          if (first_pass && !predicted)
+            AssertThrow(false, ExcStepInput(message));
+          AssertThrow(false, dealii::ExcMessage(message));
         }
     };
     try

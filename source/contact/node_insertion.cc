@@ -657,13 +657,20 @@ namespace dealvem
                                        project(mesh, onto, mesh.vertex(v), vn.second, f);
           if (!c.projection.inside)
             continue; // outside the overlap of the two parts
+          // (behind the other side: inside its body, locally)
+          const bool behind =
+            c.projection.edge != invalid &&
+            (mesh.vertex(v) - c.projection.point) *
+                edge_normal(mesh.vertex(onto.edges[c.projection.edge][0]), mesh.vertex(onto.edges[c.projection.edge][1])) <
+              0;
           if (c.projection.distance > search)
             report.unpaired.push_back({from_master, v, mesh.vertex(v),
                                        "its distance " + number_string(c.projection.distance) +
                                          " to the other side exceeds the search distance " +
                                          number_string(search) + " (Search distance " +
                                          number_string(settings.search_distance) +
-                                         " times the interface size " + number_string(interface_size) + ")"});
+                                         " times the interface size " + number_string(interface_size) + ")",
+                                       behind});
           else if (!c.projection.facing &&
                    !(settings.keep_facing.count(v) > 0 && c.projection.normal_cosine <= 0))
             {
@@ -673,7 +680,8 @@ namespace dealvem
               if (c.projection.distance <= 2 * from.h.at(v))
                 report.unpaired.push_back({from_master, v, mesh.vertex(v),
                                            "the other side does not face it there (outward normals at less "
-                                           "than 120 degrees)"});
+                                           "than 120 degrees)",
+                                           behind});
               continue;
             }
           else
@@ -1459,7 +1467,13 @@ namespace dealvem
                                               std::string(e.what())));
       }
 
-    if (master_partner.empty() && settings.allow_no_pairs)
+    // (an interface without pairs is open only where no vertex lies in the
+    // overlap of the two parts behind the other side: one that does, but
+    // failed the distance or facing test, is a penetration the pairs would
+    // miss)
+    if (master_partner.empty() && settings.allow_no_pairs &&
+        std::none_of(report.unpaired.begin(), report.unpaired.end(),
+                     [](const UnpairedNode &u) { return u.behind; }))
       {
         result.master_edges = master.edge_indices;
         result.slave_edges  = slave.edge_indices;

@@ -181,7 +181,10 @@ namespace dealvem
       /// Two parts that do not face each other anywhere make an interface
       /// without pairs instead of an error (FiniteSliding: a body that
       /// slid off its partner, or that has not reached it yet, is simply
-      /// not in contact there).
+      /// not in contact there), unless a vertex lies in their overlap behind
+      /// the other side but failed the distance or facing test
+      /// (Report::unpaired, UnpairedNode::behind: a penetration beyond the
+      /// search distance would go unseen).
       bool allow_no_pairs = false;
     };
 
@@ -201,6 +204,8 @@ namespace dealvem
       unsigned int     vertex;    ///< its vertex index in the mesh
       dealii::Point<2> location;  ///< its position
       std::string      reason;    ///< why it has no partner (for the messages)
+      /// it lies behind the other side (inside the other body, locally)
+      bool             behind = false;
     };
 
     /// A gap that the rule could not tell from a discretisation gap.
