@@ -39,6 +39,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include "../tests.h"
@@ -293,9 +294,30 @@ namespace
 } // namespace
 
 int
-main()
+main(int argc, char **argv)
 {
   const double delta = 2e-3;
+  if (argc > 1 && std::string(argv[1]) == "--study")
+    {
+      // the ring-on-shaft study (ctest label "long"): k = 2, the shaft the
+      // master, mu = 0.3, the ring turned by 90 degrees in steps of 5, 15
+      // and 30 degrees; per step the pressure spread, the torque against
+      // mu N R (Lame's N) and the pairing passes
+      const double p = lame_pressure(1.0, 0.3, 0.5, 1.0, 1.5, delta);
+      for (const double step : {5., 15., 30.})
+        {
+          const auto r = turn(2, true, 0.3, step, delta, p);
+          std::cout << "steps of " << step << " degrees: | theta | passes | pressure spread | torque / (mu N R) |"
+                    << std::endl;
+          for (unsigned int n = 1; n < r.torque.size(); ++n)
+            std::cout << "| " << n * step << " | " << r.passes[n] << " | " << r.spread[n] << " | "
+                      << std::abs(r.torque[n]) / (0.3 * 2 * pi * p) << " |" << std::endl;
+          testing::check(r.converged && r.n_not_slipping == 0,
+                         "study, steps of " + std::to_string(int(step)) + " degrees: every step converges, every "
+                                                                           "pair slips");
+        }
+      return testing::finish();
+    }
   // (the interface at R = 1; the ring's bore at 1 - delta)
   const double p = lame_pressure(1.0, 0.3, 0.5, 1.0, 1.5, delta), mu = 0.3;
   std::cout << "Lame pressure " << p << std::endl;

@@ -45,9 +45,11 @@ namespace dealvem
    *
    * 1. <b>Pairs in the current configuration.</b> The vertices of $M_0$ are
    *    moved to their current positions $x = X + u(X)$ (a copy $C$; in the
-   *    first pass of a step, $u$ is the linear extrapolation in time of
-   *    the last two steps, where the step is expected to end, or the last
-   *    step's state $u_{n-1}$ when there is no such extrapolation),
+   *    first pass of a step, $u$ is the extrapolation in time of the last
+   *    two steps, where the step is expected to end: per piece of the
+   *    bodies its rigid motion continued as a rigid motion, the rest
+   *    linearly (extrapolate()); or the last step's state $u_{n-1}$ when
+   *    there is no such extrapolation),
    *    and NodeInsertion::insert() pairs the interface nodes of $C$ by
    *    projection, splitting the edges of $C$ where a partner lands. No
    *    gap is closed and no vertex moved (Parameters::insertion has
@@ -87,6 +89,21 @@ namespace dealvem
    *    which it was merged. $M_n$ is $M_0$ with these vertices, so the
    *    nodes inserted at earlier steps that no longer face a partner are
    *    gone.
+   *    <b>Curved sides.</b> Where a side follows a smooth curve, node
+   *    insertion puts a new vertex on the circle through the neighbouring
+   *    vertices (NodeInsertion, rule 2), and its material point is the
+   *    point of the same arc in the reference configuration
+   *    (NodeInsertion::edge_curvatures() of $M_0$; reference_point()), not
+   *    of the chord: both sides then lie on their curves at every pair, and
+   *    the sag of the polygons (up to $L^2\kappa/8$, as large as a fit's
+   *    interference on a ring of 40 edges) is never taken for a gap. The
+   *    displacement of a node off the sub-edge it splits is the sub-edge's
+   *    trace plus the node's offset turned with the sub-edge, which
+   *    carries rigid motions exactly. (Measured on a ring turned on its
+   *    shaft by 90 degrees, k = 2: every pair active, the pressure within
+   *    0.7 % of Lame's at every step, the friction torque 0.998
+   *    $\mu N R$; with the chords, 22 % of the pairs carried the load and
+   *    the pressures ranged from 0.3 to 2.3 times Lame's.)
    * 3. <b>The state on the new mesh.</b> The displacement $u_{n-1}$ is
    *    carried over node by node: the vertices off the interfaces and the
    *    cell moments of $M_0$ keep their values; a node on an interface
@@ -116,7 +133,12 @@ namespace dealvem
    *    convergence: the largest tangential distance of partners over the
    *    length of the slave sub-edges at the pair (the chord over which its
    *    normal turns) is below Parameters::pairing_tolerance
-   *    (StepRecord::pairing_offset, StepRecord::n_passes). The state each
+   *    (StepRecord::pairing_offset, StepRecord::n_passes; an open pair
+   *    counts with the part of that distance beyond its gap, so that a
+   *    pairing that lost the contact, every pair open and the bodies
+   *    overlapping where no pair looks, is made again; an interface whose
+   *    parts no longer face each other, a body slid off its partner, has
+   *    no pairs: it is open, and closes again where they meet). The state each
    *    pass starts from is the last pass's, so the later passes take one
    *    or two Newton updates. The passes are a fixed-point iteration on
    *    the positions of the interface vertices where the pairs are made;
