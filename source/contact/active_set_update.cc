@@ -237,13 +237,21 @@ namespace dealvem
     // the plain proposal; the scale of the test quantities, to ignore
     // round-off sized values
     std::vector<bool> next(n_pairs);
-    double            scale = 0;
+    double            scale = 0, length = 0;
     for (unsigned int i = 0; i < n_pairs; ++i)
-      scale = std::max({scale, std::abs(multipliers[i]) / pairs[i].weight, c * std::abs(gaps[i])});
+      {
+        scale  = std::max({scale, std::abs(multipliers[i]) / pairs[i].weight, c * std::abs(gaps[i])});
+        length = std::max(length, pairs[i].weight);
+      }
+    // (an absolute floor too: the pressure of a gap of 1e-12 of the
+    // longest tributary length, the closed-gap tolerance of
+    // initial_state(); where every value is round-off the relative test
+    // alone follows the noise until the set cycles)
+    const double threshold = std::max(1e-10 * scale, 1e-12 * c * length);
     for (unsigned int i = 0; i < n_pairs; ++i)
       {
         const double mu = -multipliers[i];
-        next[i]         = (mu / pairs[i].weight - c * gaps[i] > 1e-10 * scale) && !pairs[i].junction;
+        next[i]         = (mu / pairs[i].weight - c * gaps[i] > threshold) && !pairs[i].junction;
       }
     if (next == state.active)
       {

@@ -143,6 +143,16 @@ run_dealvem("block moved rigidly onto its base (tied)" TRUE "verification: every
   ${TEST_DIR}/rigid-move-tied.prm)
 file(READ ${WORK_DIR}/output/rigid-move-tied.json json)
 check_json_roundoff("${json}" "rigid move, tied: total contact force" contact total_force_y)
+# the same with unilateral frictionless contact: every pair touches without
+# force, and the active set must not follow the round-off until it cycles
+file(READ ${TEST_DIR}/rigid-move-tied.prm _tied)
+string(REPLACE "set Normal = tied" "set Normal = unilateral\n  set Tangential = frictionless" _unilateral "${_tied}")
+string(REPLACE "rigid-move-tied" "rigid-move-unilateral" _unilateral "${_unilateral}")
+file(WRITE ${WORK_DIR}/rigid-move-unilateral.prm "${_unilateral}")
+run_dealvem("block moved rigidly onto its base (unilateral)" TRUE "verification: every body in equilibrium"
+  ${WORK_DIR}/rigid-move-unilateral.prm)
+file(READ ${WORK_DIR}/output/rigid-move-unilateral.json json)
+check_json_roundoff("${json}" "rigid move, unilateral: total contact force" contact total_force_y)
 file(WRITE ${WORK_DIR}/translated.prm "subsection Mesh
   set Type            = voronoi
   set Number of cells = 20

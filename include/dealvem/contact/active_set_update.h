@@ -39,7 +39,13 @@ namespace dealvem
    * $\mathcal A = \{i : p_i - c\,g_i > 0\}$ (evaluated at the last iterate)
    * and $\lambda_i = 0$ elsewhere (Hintermüller, Ito and Kunisch, SIAM J.
    * Optim. 13, 2002; Hüeber and Wohlmuth, 2005). Values below $10^{-10}$
-   * of the largest $|p_i|$, $c|g_i|$ count as zero. The iteration has
+   * of the largest $|p_i|$, $c|g_i|$, and below $10^{-12}\,c\,w_{max}$
+   * (the pressure of a gap of $10^{-12}$ of the longest tributary length,
+   * the gap initial_state() counts as closed), count as zero: where every
+   * force and gap is round-off (a body moved rigidly onto its partner by
+   * its constraints, touching without force) the set no longer follows
+   * the noise from iteration to iteration until it cycles; the pairs open
+   * and stay open. The iteration has
    * converged when the proposed set equals the set just solved with; the
    * solution then satisfies $C = 0$ (residual()).
    *
