@@ -902,6 +902,22 @@ namespace dealvem
                                        "). Check 'Boundary conditions and loads' (Body force, Traction, Pressure) "
                                        "for values far from the units of the problem."));
         const double ratio = load[b] / force;
+        // at finite strain, a load that Newton's round-off floor (1e-12 E
+        // times the size) cannot tell from none: the body would stay where
+        // it is, a wrong answer without a word
+        if (finite_strain && ratio > 0 && ratio < min_load_ratio)
+          {
+            std::ostringstream m;
+            m << "The loads on " << body.name << " " << when << " (the sum of the magnitudes of its nodal loads, "
+              << load[b] << ") are " << ratio << " times its Young's modulus times its size (" << size
+              << "): below " << min_load_ratio
+              << ", where the finite-strain Newton solve cannot tell them from round-off (its residual floor is "
+                 "1e-12 times E times the size), so the body would not move. Check 'Boundary conditions and "
+                 "loads' (Body force, Traction, Pressure) against '"
+              << body.modulus_parameter << "' = " << E
+              << " (the units of the two), or solve at small strain, where the response is linear in the load.";
+            AssertThrow(false, dealii::ExcMessage(m.str()));
+          }
         if (ratio > BoundaryConditionParameters::max_displacement_ratio)
           {
             std::ostringstream m;

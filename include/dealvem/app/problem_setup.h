@@ -419,6 +419,10 @@ namespace dealvem
     constexpr double min_force_scale = 1e-100;
     /// See min_force_scale.
     constexpr double max_force_scale = 1e100;
+    /// At finite strain, nonzero loads on a body below this times its
+    /// Young's modulus times its size are refused: Newton's residual floor
+    /// (1e-12 E times the size) would take them for none.
+    constexpr double min_load_ratio = 1e-10;
 
     /**
      * Throw, naming the body, its modulus parameter and 'Boundary conditions
@@ -431,7 +435,8 @@ namespace dealvem
      * many times its size, beyond any model, and the solve would overflow
      * or fail for reasons that name neither. With @p finite_strain, first
      * throw if a body's modulus, or its modulus times its size, lies
-     * outside [min_force_scale, max_force_scale]. A problem scaled as a
+     * outside [min_force_scale, max_force_scale], and throw if its nonzero
+     * loads lie below min_load_ratio times its modulus times its size. A problem scaled as a
      * whole (the moduli and the loads by one factor) keeps its strains and
      * passes or fails alike.
      */
