@@ -222,7 +222,8 @@ namespace dealvem
                 dealii::ExcMessage("FiniteStrainSolver::set_state(): " + std::to_string(lambda.size()) +
                                    " multipliers given, the contact has " + std::to_string(m) +
                                    " constraints (set_contact() first)."));
-    AssertThrow(std::isfinite(u.l2_norm()) && std::isfinite(lambda.l2_norm()) && std::isfinite(load_factor),
+    AssertThrow(std::isfinite(u.l2_norm()) && (lambda.size() == 0 || std::isfinite(lambda.l2_norm())) &&
+                  std::isfinite(load_factor),
                 dealii::ExcMessage("FiniteStrainSolver::set_state(): the state is not finite."));
     solution            = u;
     multipliers         = lambda;
