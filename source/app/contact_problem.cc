@@ -1541,6 +1541,11 @@ namespace dealvem
     // the history CSV; its header is written with the first step, which
     // names the supports
     std::ostringstream csv;
+    if (opt.write_pictures)
+      std::cout << "note: finite sliding writes no SVG pictures ('Output/Write pictures' applies to the "
+                   "small-strain path); the bodies of every step are in the VTU files, the forces in the history "
+                   "CSV"
+                << std::endl;
     std::cout << "Finite strain with finite sliding: " << bodies.size() << " bodies, " << interfaces.size()
               << " interface" << (interfaces.size() == 1 ? "" : "s") << ", k = " << opt.degree << ", "
               << opt.n_load_steps << " load step" << (opt.n_load_steps == 1 ? "" : "s") << std::endl;

@@ -380,6 +380,31 @@ namespace dealvem
 
     const double      f_ext_norm  = f_ext.l2_norm();
     double            last_update = std::numeric_limits<double>::infinity();
+
+    // Data below Newton's round-off floor: loads and prescribed motions that
+    // the default floor (1e-12 E_min L) cannot tell from none, on a state
+    // that is itself that small, would end the step at its first iterate
+    // with the bodies where they were (exit 0, a wrong answer). They are
+    // named instead.
+    if (parameters.absolute_residual_tolerance < 0 && length_scale > 0)
+      {
+        const double stiffness = assembler.get_material_library().min_characteristic_stiffness() * length_scale;
+        const double load      = std::abs(load_factor) * f_ext_norm / stiffness;
+        const double motion    = prescribed / length_scale;
+        const double state     = solution.linfty_norm() / length_scale;
+        const double data      = std::max(load, motion);
+        AssertThrow(!(data > 0 && std::max(data, state) < 1e-10),
+                    dealii::ExcMessage(
+                      "FiniteStrainSolver: load step " + std::to_string(step) + " (load factor " +
+                      number(load_factor) + "): its loads (" + number(load) +
+                      " of the smallest Young's modulus times the size of the mesh) and prescribed displacements (" +
+                      number(motion) +
+                      " of the size) are all below 1e-10, and so is the state it starts from: Newton's residual "
+                      "floor (1e-12 times that modulus times the size) cannot tell them from none, and the step "
+                      "would end where it started. Choose units in which the displacements and the loads are "
+                      "nearer to the size of the mesh and to its modulus times its size, or solve at small strain, "
+                      "where the response is linear in the data."));
+      }
     std::string       inversion; // the last inverted cell met in the step
 
     // the first iterate: the extrapolation of the last two converged steps
