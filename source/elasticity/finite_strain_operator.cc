@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace dealvem
@@ -187,6 +188,50 @@ namespace dealvem
       const dealii::FullMatrix<double> &D = element.get_D();
       dealii::FullMatrix<double>        Gc(n_p, n_p), Pi_c(n_p, n), DPi(n, n);
       Bc.mmult(Gc, D);
+      // (a cell far too thin for the scaled monomials makes G^c singular to
+      // round-off: deal.II's gauss_jordan() checks its pivots only in Debug
+      // builds, so the smallest pivot of partial-pivot elimination is
+      // checked here, with deal.II's threshold, and the cell named)
+      {
+        dealii::FullMatrix<double> lu(Gc);
+        double                     typical = 0;
+        for (unsigned int i = 0; i < n_p; ++i)
+          typical = std::max(typical, std::abs(lu(i, i)));
+        bool regular = std::isfinite(typical) && typical > 0;
+        for (unsigned int j = 0; j < n_p && regular; ++j)
+          {
+            unsigned int pivot = j;
+            for (unsigned int i = j + 1; i < n_p; ++i)
+              if (std::abs(lu(i, j)) > std::abs(lu(pivot, j)))
+                pivot = i;
+            if (!(std::abs(lu(pivot, j)) > 1e-15 * typical))
+              regular = false;
+            else
+              {
+                if (pivot != j)
+                  for (unsigned int c = 0; c < n_p; ++c)
+                    std::swap(lu(j, c), lu(pivot, c));
+                for (unsigned int i = j + 1; i < n_p; ++i)
+                  {
+                    const double f = lu(i, j) / lu(j, j);
+                    for (unsigned int c = j; c < n_p; ++c)
+                      lu(i, c) -= f * lu(j, c);
+                  }
+              }
+          }
+        AssertThrow(regular,
+                    dealii::ExcMessage("FiniteStrainOperator: the polygon with centroid " +
+                                       [&] {
+                                         std::ostringstream p;
+                                         p << "(" << x_c << ")";
+                                         return p.str();
+                                       }() +
+                                       ", diameter " + std::to_string(h) + " and area " +
+                                       std::to_string(geometry.area()) +
+                                       " is too thin for the virtual element's projector (its matrix is singular "
+                                       "to round-off): refine the mesh across its long side, or check the "
+                                       "mesh's coordinates."));
+      }
       Gc.gauss_jordan();
       Gc.mmult(Pi_c, Bc);
       D.mmult(DPi, Pi_c);
