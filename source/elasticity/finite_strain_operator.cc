@@ -204,7 +204,7 @@ namespace dealvem
             for (unsigned int i = j + 1; i < n_p; ++i)
               if (std::abs(lu(i, j)) > std::abs(lu(pivot, j)))
                 pivot = i;
-            if (!(std::abs(lu(pivot, j)) > 1e-15 * typical))
+            if (!(std::abs(lu(pivot, j)) > 1e-16 * typical))
               regular = false;
             else
               {
