@@ -174,8 +174,9 @@ namespace dealvem
         {
           const auto  &pair = contact.get_pairs()[i];
           SlidingPair  row;
-          row.interface = pair.interface;
-          row.pair      = n_in_interface[pair.interface]++;
+          const unsigned int k = sliding.reported_interface(pair.interface);
+          row.interface = k;
+          row.pair      = n_in_interface[k]++;
           const auto x  = contact.current_positions(i, u);
           row.x         = x[1];
           row.normal    = contact.current_normal(i, u);
@@ -201,8 +202,11 @@ namespace dealvem
               row.pressure            = -ln / w[i];
               row.tangential_traction = -lt / w[i];
             }
-          out.force[pair.interface] += f;
-          out.moment[pair.interface] += SupportReactions::moment(row.x, f, point);
+          // (on body_b of a detected pair of bodies, whichever side is the
+          // slave: at an active pair the two nodes coincide)
+          const double sign = sliding.reported_sign(pair.interface);
+          out.force[k] += sign * f;
+          out.moment[k] += sign * SupportReactions::moment(row.x, f, point);
           const double mu = contact.friction_coefficient(i);
           if (contact.is_bilateral())
             row.status = "closed";
@@ -364,7 +368,10 @@ namespace dealvem
                       "angle', apart by at most 'Detection distance' times the edge length), except "
                       "those whose ids carry boundary conditions or explicit pairs; the coarser side "
                       "is the master. The list is printed; <base name>-resultants.csv gives each interface's bodies, "
-                      "ids, length and contact force.");
+                      "ids, length and contact force. With finite sliding ('Finite strain/Enabled = true') "
+                      "the detection runs in the current configuration at every pairing pass, so contacts "
+                      "that open and close anywhere on the free boundary are found, and the results sum "
+                      "the detected interfaces of each pair of bodies.");
     prm.declare_entry("Detection distance", "0.5", Double(0, 10),
                       "Pairs = auto: largest distance (gap or overlap) between facing boundary edges, "
                       "relative to the longer of the two edges.");
@@ -940,8 +947,6 @@ namespace dealvem
           {"Contact/Merge fraction", "node insertion at finite strain merges only nodes within 1e-9 of an edge"},
           {"Contact/Coordinate precision", "finite sliding keeps every gap (no gap closing)"},
           {"Contact/Close discretisation gaps", "finite sliding keeps every gap (no gap closing)"},
-          {"Contact/Detection distance", "finite sliding takes explicit pairs, no contact detection"},
-          {"Contact/Detection angle", "finite sliding takes explicit pairs, no contact detection"},
           {"Contact/Maximum active set iterations",
            "the contact conditions are part of the Newton iteration ('Finite strain/Maximum Newton iterations')"},
           {"Contact/Active set acceleration",
@@ -1411,11 +1416,8 @@ namespace dealvem
                                "UMFPACK).");
     refuse(n_cycles == 1, "'Convergence study/Refinement cycles' is " + std::to_string(n_cycles) +
                             ": finite sliding solves one mesh.");
-    refuse(!opt.detect_pairs, "'Contact/Pairs' has 'auto': give the interfaces as 'master id : slave id'.");
-    refuse(!contact_pairs.empty(), "'Contact/Pairs' is empty: give the interfaces as 'master id : slave id'.");
-    refuse(body_friction.empty() && material_friction.empty(),
-           "'Contact/Friction between bodies' or 'Friction between materials' is set: give the friction "
-           "coefficient per pair ('master id : slave id : mu') or by 'Contact/Friction coefficient'.");
+    refuse(!contact_pairs.empty() || opt.detect_pairs,
+           "'Contact/Pairs' is empty: give the interfaces as 'master id : slave id', or 'auto'.");
     const bool tied = cs.normal == ContactSettings::Normal::tied;
     refuse(tied ? cs.tangential == ContactSettings::Tangential::multipliers :
                   (cs.tangential == ContactSettings::Tangential::frictionless ||
@@ -1490,12 +1492,46 @@ namespace dealvem
       assembler.assemble_load_vector(f);
       ScaleCheck::check(dofs, f, scale_bodies, when.str(), true);
     }
+    // the friction coefficient between two bodies: 'Friction between
+    // bodies', then 'between materials', then 'Friction coefficient'
+    const auto body_mu = [this, &cs](const unsigned int a, const unsigned int b) {
+      if (!cs.is_coulomb())
+        return 0.;
+      const double mu = (a < bodies.size() && b < bodies.size()) ? friction_between(a, b) : -1.;
+      return mu >= 0 ? mu : cs.friction_coefficient;
+    };
     std::vector<FiniteSliding::InterfaceData> interfaces;
-    for (unsigned int i = 0; i < contact_pairs.size(); ++i)
-      interfaces.push_back({contact_pairs[i].first, contact_pairs[i].second,
-                            cs.is_coulomb() ? (pair_friction[i] >= 0 ? pair_friction[i] : cs.friction_coefficient) :
-                                              0.});
+    {
+      std::map<dealii::types::boundary_id, unsigned int> body_of_id;
+      for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+        if (mesh.edge(e).at_boundary())
+          body_of_id.emplace(mesh.edge(e).boundary_id, mesh.cell(mesh.edge(e).cells[0]).material_id);
+      for (unsigned int i = 0; i < contact_pairs.size(); ++i)
+        interfaces.push_back({contact_pairs[i].first, contact_pairs[i].second,
+                              !cs.is_coulomb()        ? 0. :
+                              pair_friction[i] >= 0 ? pair_friction[i] :
+                                                      body_mu(body_of_id.at(contact_pairs[i].first),
+                                                              body_of_id.at(contact_pairs[i].second))});
+    }
     FiniteSliding::Parameters parameters;
+    if (opt.detect_pairs)
+      {
+        // the free boundary of the bodies: every boundary id without a
+        // boundary condition or a named pair
+        auto &d    = parameters.detection;
+        d.enabled  = true;
+        d.settings = opt.detection;
+        d.friction = body_mu;
+        std::set<dealii::types::boundary_id> excluded = bc.used_boundary_ids();
+        for (const auto &p : contact_pairs)
+          excluded.insert({p.first, p.second});
+        for (const auto id : mesh.get_boundary_ids())
+          if (excluded.count(id) == 0)
+            d.candidate_ids.insert(id);
+        AssertThrow(!d.candidate_ids.empty(),
+                    dealii::ExcMessage("Contact/Pairs = auto: every boundary edge carries a boundary condition "
+                                       "or a named pair, so no part of the bodies can come into contact."));
+      }
     parameters.degree             = opt.degree;
     parameters.normal             = cs.normal;
     parameters.newton             = opt.newton;
@@ -1546,9 +1582,33 @@ namespace dealvem
                    "small-strain path); the bodies of every step are in the VTU files, the forces in the history "
                    "CSV"
                 << std::endl;
+    // the interfaces of the results: the named pairs, then (Pairs = auto)
+    // every pair of bodies, whose detected interfaces are summed
+    const auto        &reported   = sliding.get_reported_interfaces();
+    const unsigned int n_reported = reported.size();
     std::cout << "Finite strain with finite sliding: " << bodies.size() << " bodies, " << interfaces.size()
-              << " interface" << (interfaces.size() == 1 ? "" : "s") << ", k = " << opt.degree << ", "
-              << opt.n_load_steps << " load step" << (opt.n_load_steps == 1 ? "" : "s") << std::endl;
+              << " named interface" << (interfaces.size() == 1 ? "" : "s")
+              << (opt.detect_pairs ? ", the others detected in the current configuration at every pairing pass" : "")
+              << ", k = " << opt.degree << ", " << opt.n_load_steps << " load step"
+              << (opt.n_load_steps == 1 ? "" : "s") << std::endl;
+    for (unsigned int i = 0; i < n_reported; ++i)
+      {
+        const auto &r = reported[i];
+        const auto  name = [&](const unsigned int b) {
+          return b < bodies.size() ? bodies[b].name : "material id " + std::to_string(b);
+        };
+        std::cout << "  interface " << i << ": "
+                  << (r.detected ? "between " + name(r.body_a) + " and " + name(r.body_b) + " (detected)" :
+                                   "boundary ids " + std::to_string(int(r.master_id)) + " : " +
+                                     std::to_string(int(r.slave_id)))
+                  << std::endl;
+        json.set("interfaces." + std::to_string(i) + ".detected", r.detected ? 1. : 0.);
+        if (r.detected)
+          {
+            json.set("interfaces." + std::to_string(i) + ".body_a", double(r.body_a));
+            json.set("interfaces." + std::to_string(i) + ".body_b", double(r.body_b));
+          }
+      }
     for (unsigned int n = 1; n <= opt.n_load_steps; ++n)
       {
         const double time = opt.final_time * n / opt.n_load_steps;
@@ -1574,12 +1634,14 @@ namespace dealvem
         std::cout << "  step " << n << " (t = " << time << "): " << r.n_passes << " pairing pass"
                   << (r.n_passes == 1 ? "" : "es") << ", " << updates << " Newton updates, " << r.n_active
                   << " active pairs (" << r.n_slipping << " slipping), offset " << r.pairing_offset;
-        for (unsigned int i = 0; i < interfaces.size(); ++i)
+        if (opt.detect_pairs)
+          std::cout << ", " << r.n_detected << " interface" << (r.n_detected == 1 ? "" : "s") << " detected";
+        for (unsigned int i = 0; i < n_reported; ++i)
           std::cout << "; interface " << i << ": normal force (" << r.normal_force[i] << "), friction force ("
                     << r.friction_force[i] << ")";
         std::cout << std::endl;
-        const auto outputs = finite_sliding_step_outputs(sliding, interfaces.size(), time, bc, opt.moment_point);
-        for (unsigned int i = 0; i < interfaces.size(); ++i)
+        const auto outputs = finite_sliding_step_outputs(sliding, n_reported, time, bc, opt.moment_point);
+        for (unsigned int i = 0; i < n_reported; ++i)
           std::cout << "    interface " << i << ": force on the slave side (" << outputs.force[i][0] << ", "
                     << outputs.force[i][1] << "), moment " << outputs.moment[i] << " about ("
                     << opt.moment_point[0] << ", " << opt.moment_point[1] << ")" << std::endl;
@@ -1587,9 +1649,9 @@ namespace dealvem
         if (n == 1)
           {
             csv << "step,time,passes,newton_updates,pairing_offset,dofs,pairs,active,slipping";
-            for (unsigned int i = 0; i < interfaces.size(); ++i)
+            for (unsigned int i = 0; i < n_reported; ++i)
               csv << ",normal_x_" << i << ",normal_y_" << i << ",friction_x_" << i << ",friction_y_" << i;
-            for (unsigned int i = 0; i < interfaces.size(); ++i)
+            for (unsigned int i = 0; i < n_reported; ++i)
               csv << ",force_x_" << i << ",force_y_" << i << ",moment_" << i;
             for (const auto &reaction : outputs.reactions)
               csv << ",reaction_x_" << reaction.key << ",reaction_y_" << reaction.key << ",reaction_moment_"
@@ -1605,9 +1667,11 @@ namespace dealvem
         json.set(key + "newton_updates", double(updates));
         json.set(key + "pairing_offset", r.pairing_offset);
         json.set(key + "pairs", double(r.n_pairs));
+        if (opt.detect_pairs)
+          json.set(key + "detected_interfaces", double(r.n_detected));
         json.set(key + "active_pairs", double(r.n_active));
         json.set(key + "slipping_pairs", double(r.n_slipping));
-        for (unsigned int i = 0; i < interfaces.size(); ++i)
+        for (unsigned int i = 0; i < n_reported; ++i)
           {
             for (unsigned int d = 0; d < 2; ++d)
               csv << ',' << internal::number_string(r.normal_force[i][d]);
@@ -1632,7 +1696,7 @@ namespace dealvem
           s << std::setprecision(15) << v;
           return s.str();
         };
-        for (unsigned int i = 0; i < interfaces.size(); ++i)
+        for (unsigned int i = 0; i < n_reported; ++i)
           csv << ',' << full(outputs.force[i][0]) << ',' << full(outputs.force[i][1]) << ','
               << full(outputs.moment[i]);
         for (const auto &reaction : outputs.reactions)

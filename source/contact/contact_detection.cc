@@ -224,6 +224,7 @@ namespace dealvem
       Result result;
 
       // rule 2: an edge facing several bodies is split where their ranges meet
+      if (settings.split_edges)
       {
         const Facing facing = find_facing(mesh, excluded_ids, settings);
         for (const unsigned int e : facing.candidates)

@@ -286,7 +286,8 @@ namespace dealvem
     , interface_data(interfaces_in)
     , parameters(parameters_in)
   {
-    AssertThrow(!interface_data.empty(), dealii::ExcMessage("FiniteSliding: no contact interface given."));
+    AssertThrow(!interface_data.empty() || parameters.detection.enabled,
+                dealii::ExcMessage("FiniteSliding: no contact interface given, and no detection."));
     AssertThrow(parameters.degree == 1 || parameters.degree == 2,
                 dealii::ExcMessage("FiniteSliding: the degree must be 1 or 2, not " +
                                    std::to_string(parameters.degree) + "."));
@@ -310,6 +311,26 @@ namespace dealvem
                                        " has friction, but the contact is tied."));
         ids.insert(interface_data[i].master_id);
         ids.insert(interface_data[i].slave_id);
+        reported.push_back({false, interface_data[i].master_id, interface_data[i].slave_id, 0, 0});
+      }
+    if (parameters.detection.enabled)
+      {
+        const auto &d = parameters.detection;
+        for (const auto id : d.candidate_ids)
+          AssertThrow(ids.count(id) == 0,
+                      dealii::ExcMessage("FiniteSliding: the boundary id " + std::to_string(int(id)) +
+                                         " is a side of a given interface and a candidate of the detection."));
+        // the bodies with candidate edges, and every pair of them
+        std::set<unsigned int> bodies;
+        for (unsigned int e = 0; e < original.n_edges(); ++e)
+          if (original.edge(e).at_boundary() && d.candidate_ids.count(original.edge(e).boundary_id) > 0)
+            bodies.insert(original.cell(original.edge(e).cells[0]).material_id);
+        for (auto a = bodies.begin(); a != bodies.end(); ++a)
+          for (auto b = std::next(a); b != bodies.end(); ++b)
+            reported.push_back({true, 0, 0, *a, *b});
+        AssertThrow(original.n_edges() == 0 || ContactDetection::first_free_id(original) < 65535,
+                    dealii::ExcMessage("FiniteSliding: no boundary id is left for detected interfaces."));
+        ids.insert(d.candidate_ids.begin(), d.candidate_ids.end());
       }
     for (unsigned int e = 0; e < original.n_edges(); ++e)
       {
@@ -339,7 +360,7 @@ namespace dealvem
           movable.insert(v);
       }
     for (const auto &i : interface_data)
-      interface_sides.push_back({by_id[i.master_id], by_id[i.slave_id]});
+      given_sides.push_back({by_id[i.master_id], by_id[i.slave_id]});
     // the arcs of the curved parts, as node insertion sees them in the
     // reference configuration
     for (const auto id : ids)
@@ -352,6 +373,177 @@ namespace dealvem
     parameters.newton.check_fixed_pairs       = !parameters.reinsert;
     if (parameters.normal == ContactSettings::Normal::tied)
       parameters.reinsert = false;
+  }
+
+
+
+  std::vector<FiniteSliding::PassInterface>
+  FiniteSliding::pass_interfaces_at(
+    const std::vector<dealii::Point<2>>                                            &x,
+    std::vector<dealii::types::boundary_id>                                        &edge_ids_there,
+    std::vector<bool>                                                              &detected_there,
+    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> &sides) const
+  {
+    std::vector<PassInterface> pass;
+    for (unsigned int i = 0; i < interface_data.size(); ++i)
+      pass.push_back({interface_data[i].master_id, interface_data[i].slave_id,
+                      interface_data[i].friction_coefficient, i});
+    sides = given_sides;
+    edge_ids_there.resize(original.n_edges());
+    detected_there.assign(original.n_edges(), false);
+    for (unsigned int e = 0; e < original.n_edges(); ++e)
+      edge_ids_there[e] = original.edge(e).boundary_id;
+    const auto &d = parameters.detection;
+    if (!d.enabled)
+      return pass;
+    // the detection on a copy of M_0 at x: its edges keep their numbers
+    // (no split), so their new ids apply to every copy of M_0
+    PolygonalMesh<2> there(original);
+    for (unsigned int v = 0; v < original.n_vertices(); ++v)
+      there.move_vertex(v, x[v]);
+    std::set<dealii::types::boundary_id> excluded;
+    for (const auto id : original.get_boundary_ids())
+      if (d.candidate_ids.count(id) == 0)
+        excluded.insert(id);
+    ContactDetection::Settings settings = d.settings;
+    settings.split_edges                = false;
+    const auto found = ContactDetection::detect(there, excluded, ContactDetection::first_free_id(original), settings);
+    for (unsigned int e = 0; e < there.n_edges(); ++e)
+      if (there.edge(e).at_boundary() && there.edge(e).boundary_id != original.edge(e).boundary_id)
+        {
+          edge_ids_there[e] = there.edge(e).boundary_id;
+          detected_there[e] = true;
+        }
+    // Each detected side grows along the candidate boundary of its body
+    // to the next corner (a turn above the detection's corner angle), as a
+    // side named by hand ends at the corners of a face: node insertion then
+    // sees the same side whether the facing part is large or small, and the
+    // vertex where a contact zone ends has both its edges on the side (its
+    // normal and curvature from both). Two sides growing into each other
+    // stop where they meet (an edge reached by both stays unlabelled).
+    {
+      std::map<unsigned int, std::vector<unsigned int>> at_vertex; // candidate boundary edges at a vertex
+      for (unsigned int e = 0; e < there.n_edges(); ++e)
+        if (there.edge(e).at_boundary() && d.candidate_ids.count(original.edge(e).boundary_id) > 0)
+          for (const unsigned int v : there.edge(e).vertices)
+            at_vertex[v].push_back(e);
+      const auto normal = [&](const unsigned int e) {
+        const auto          &ev = there.edge(e).vertices;
+        dealii::Tensor<1, 2> t  = x[ev[1]] - x[ev[0]];
+        dealii::Tensor<1, 2> n;
+        n[0]           = t[1];
+        n[1]           = -t[0];
+        const double l = n.norm();
+        return l > 0 ? n / l : n;
+      };
+      const double           cos_corner = std::cos(settings.corner_angle * M_PI / 180.);
+      const auto             labelled   = [&](const unsigned int e) {
+        return edge_ids_there[e] != original.edge(e).boundary_id;
+      };
+      std::vector<bool> blocked(original.n_edges(), false);
+      std::vector<unsigned int> front;
+      for (unsigned int e = 0; e < original.n_edges(); ++e)
+        if (original.edge(e).at_boundary() && labelled(e))
+          front.push_back(e);
+      while (!front.empty())
+        {
+          std::map<unsigned int, std::set<dealii::types::boundary_id>> offered;
+          for (const unsigned int e : front)
+            for (const unsigned int v : there.edge(e).vertices)
+              {
+                const auto it = at_vertex.find(v);
+                if (it == at_vertex.end() || it->second.size() != 2)
+                  continue;
+                const unsigned int f = it->second[0] == e ? it->second[1] : it->second[0];
+                if (!labelled(f) && !blocked[f] && normal(e) * normal(f) >= cos_corner)
+                  offered[f].insert(edge_ids_there[e]);
+              }
+          front.clear();
+          for (const auto &[f, ids] : offered)
+            if (ids.size() == 1)
+              {
+                edge_ids_there[f] = *ids.begin();
+                front.push_back(f);
+              }
+            else
+              blocked[f] = true;
+        }
+    }
+    std::map<dealii::types::boundary_id, std::set<unsigned int>> side_vertices;
+    for (unsigned int e = 0; e < original.n_edges(); ++e)
+      if (original.edge(e).at_boundary() && edge_ids_there[e] != original.edge(e).boundary_id)
+        for (const unsigned int v : original.edge(e).vertices)
+          side_vertices[edge_ids_there[e]].insert(v);
+    const unsigned int n_given = interface_data.size();
+    for (const auto &itf : found.interfaces)
+      {
+        const unsigned int a = std::min(itf.master_body, itf.slave_body), b = std::max(itf.master_body, itf.slave_body);
+        unsigned int       k = n_given;
+        while (k < reported.size() && !(reported[k].body_a == a && reported[k].body_b == b))
+          ++k;
+        Assert(k < reported.size(), dealii::ExcInternalError());
+        const double mu = d.friction ? d.friction(a, b) : 0.;
+        AssertThrow(std::isfinite(mu) && mu >= 0 && (mu == 0 || parameters.normal == ContactSettings::Normal::unilateral),
+                    dealii::ExcMessage("FiniteSliding: the friction coefficient between the bodies " +
+                                       std::to_string(a) + " and " + std::to_string(b) + " is " +
+                                       internal::number_string(mu) +
+                                       "; it must be finite, not negative, and 0 with tied contact."));
+        pass.push_back({itf.master_id, itf.slave_id, mu, k, itf.master_body, itf.slave_body});
+        const auto &m = side_vertices[itf.master_id], &sl = side_vertices[itf.slave_id];
+        sides.push_back({std::vector<unsigned int>(m.begin(), m.end()), std::vector<unsigned int>(sl.begin(), sl.end())});
+      }
+    return pass;
+  }
+
+
+
+  unsigned int
+  FiniteSliding::uncovered_edges() const
+  {
+    const auto &d = parameters.detection;
+    if (!d.enabled || current == nullptr || pass_partner.size() != original.n_edges())
+      return 0;
+    // the original vertices at the converged state (a vertex moved along
+    // its straight side in the step's mesh stays on that side)
+    const unsigned int n0 = original.n_vertices();
+    PolygonalMesh<2>   there(original);
+    for (unsigned int v = 0; v < n0; ++v)
+      {
+        dealii::Point<2> x = current->mesh->vertex(v);
+        for (unsigned int comp = 0; comp < 2; ++comp)
+          x[comp] += solution[VEMDoFHandler<2>::node_dof(current->dof_handler->vertex_node(v), comp)];
+        there.move_vertex(v, x);
+      }
+    std::set<dealii::types::boundary_id> excluded;
+    for (const auto id : original.get_boundary_ids())
+      if (d.candidate_ids.count(id) == 0)
+        excluded.insert(id);
+    // (half the distance of the pairing passes: a band, so that a part at
+    // the threshold is not taken in and left out by turns)
+    ContactDetection::Settings settings = d.settings;
+    settings.split_edges                = false;
+    settings.distance *= 0.5;
+    const auto found = ContactDetection::detect(there, excluded, ContactDetection::first_free_id(original), settings);
+    std::map<dealii::types::boundary_id, unsigned int> partner_of_id;
+    for (const auto &itf : found.interfaces)
+      {
+        partner_of_id[itf.master_id] = itf.slave_body;
+        partner_of_id[itf.slave_id]  = itf.master_body;
+      }
+    unsigned int n = 0;
+    for (unsigned int e = 0; e < there.n_edges(); ++e)
+      if (there.edge(e).at_boundary())
+        {
+          // (an edge the detection of the pass gave to another body faced
+          // both: it faces the one it overlaps most, and the two
+          // detections may weigh that differently; an edge a side grew
+          // over faces the body of that side, or a new one)
+          const auto it = partner_of_id.find(there.edge(e).boundary_id);
+          if (it != partner_of_id.end() && pass_partner[e] != it->second &&
+              (pass_partner[e] == dealii::numbers::invalid_unsigned_int || !pass_detected[e]))
+            ++n;
+        }
+    return n;
   }
 
 
@@ -511,7 +703,8 @@ namespace dealvem
     // the nodes on the interface edges: the old trace at their material
     // points (the vertices of M_0 too: one moved along a straight side in
     // either mesh has a new material point)
-    const TraceOnSides old_trace(original, interface_edges, side_neighbours, old_mesh, old_dofs, u_old);
+    const auto         neighbours = neighbours_along_sides();
+    const TraceOnSides old_trace(original, interface_edges, neighbours, old_mesh, old_dofs, u_old);
     for (const auto &[a, b, cell] : interface_edges)
       {
         const Chain new_chain = make_chain(new_mesh, a, b, cell, new_mesh.get_vertices());
@@ -533,18 +726,55 @@ namespace dealvem
 
 
 
+  std::map<unsigned int, std::vector<unsigned int>>
+  FiniteSliding::neighbours_along_sides() const
+  {
+    if (!parameters.detection.enabled)
+      return side_neighbours;
+    std::map<unsigned int, std::vector<unsigned int>> result;
+    for (const auto &entry : side_neighbours)
+      result.emplace(entry.first, neighbours_on_sides(entry.first));
+    return result;
+  }
+
+
+
+  std::vector<unsigned int>
+  FiniteSliding::neighbours_on_sides(const unsigned int v) const
+  {
+    const auto &all = side_neighbours.at(v);
+    if (!parameters.detection.enabled || all.size() < 2)
+      return all;
+    // (with detection the whole free boundary is a candidate: a corner of a
+    // body has the neighbour of the face on a side of the pass only, as on
+    // a named side)
+    std::vector<unsigned int> kept;
+    for (const unsigned int w : all)
+      for (const auto &sides : interface_sides)
+        if (std::binary_search(sides.first.begin(), sides.first.end(), w) ||
+            std::binary_search(sides.second.begin(), sides.second.end(), w))
+          {
+            kept.push_back(w);
+            break;
+          }
+    return kept.empty() ? all : kept;
+  }
+
+
+
   void
   FiniteSliding::snap_close_vertices(std::vector<dealii::Point<2>> &x)
   {
     const auto unit = [](const dealii::Tensor<1, 2> &t) { return t / t.norm(); };
+    const auto around_of = [&](const unsigned int v) { return neighbours_on_sides(v); };
     // the unit tangent of a side at a vertex, and the shortest edge there
     const auto tangent = [&](const unsigned int v) {
-      const auto &around = side_neighbours.at(v);
+      const auto around = around_of(v);
       return unit(around.size() == 2 ? x[around[1]] - x[around[0]] : x[around[0]] - x[v]);
     };
     const auto local_h = [&](const unsigned int v) {
       double h = std::numeric_limits<double>::max();
-      for (const unsigned int w : side_neighbours.at(v))
+      for (const unsigned int w : around_of(v))
         h = std::min(h, x[v].distance(x[w]));
       return h;
     };
@@ -646,6 +876,19 @@ namespace dealvem
     // residuals r_k of this pass
     const unsigned int  n = side_neighbours.size();
     std::vector<double> x(2 * n), r(2 * n);
+    // (with detection, the vertices on the sides of the pass's interfaces
+    // only: the rest of the free boundary takes the plain update, as off
+    // a named side, and stays out of the fit)
+    std::set<unsigned int> on_side;
+    if (parameters.detection.enabled)
+      for (const auto &sides : interface_sides)
+        {
+          on_side.insert(sides.first.begin(), sides.first.end());
+          on_side.insert(sides.second.begin(), sides.second.end());
+        }
+    const auto fitted = [&](const unsigned int v) {
+      return !parameters.detection.enabled || on_side.count(v) > 0;
+    };
     {
       unsigned int i = 0;
       for (const auto &entry : side_neighbours)
@@ -653,7 +896,7 @@ namespace dealvem
           // (a vertex moved along its side faces its partner by the move,
           // step 2 of prepare_pass(): it takes the plain update, and stays
           // out of the secants)
-          if (mesh.vertex(entry.first) == original.vertex(entry.first))
+          if (fitted(entry.first) && mesh.vertex(entry.first) == original.vertex(entry.first))
             for (unsigned int comp = 0; comp < 2; ++comp)
               {
                 const auto dof   = VEMDoFHandler<2>::node_dof(dofs.vertex_node(entry.first), comp);
@@ -669,12 +912,13 @@ namespace dealvem
     for (const auto &entry : side_neighbours)
       if (mesh.vertex(entry.first) != original.vertex(entry.first))
         moved.insert(entry.first);
-    if (moved != anderson_moved)
+    if (moved != anderson_moved || on_side != anderson_on_side)
       {
         anderson_x.clear();
         anderson_r.clear();
       }
-    anderson_moved = moved;
+    anderson_moved   = moved;
+    anderson_on_side = on_side;
     // Safeguard: where the residual grew since the last pass, the history
     // no longer describes the map (a pass changed which side of a kink a
     // partner lies on, or the fit was poor): it starts again from this
@@ -742,9 +986,21 @@ namespace dealvem
             dealii::FullMatrix<double> inverse(m, m);
             inverse.invert(A);
             inverse.vmult(g, b);
+            // (differences that are dependent to round-off make the small
+            // system singular: the fit is then dropped, and the pass takes
+            // the plain update)
+            bool finite = true;
             for (unsigned int c = 0; c < m; ++c)
-              for (unsigned int j = 0; j < 2 * n; ++j)
-                next[j] -= (dX[c][j] + dR[c][j]) * g[c];
+              finite = finite && std::isfinite(g[c]);
+            if (finite)
+              for (unsigned int c = 0; c < m; ++c)
+                for (unsigned int j = 0; j < 2 * n; ++j)
+                  next[j] -= (dX[c][j] + dR[c][j]) * g[c];
+            else
+              {
+                anderson_x.clear();
+                anderson_r.clear();
+              }
           }
       }
 
@@ -756,7 +1012,9 @@ namespace dealvem
       unsigned int i = 0;
       for (const auto &entry : side_neighbours)
         {
-          if (moved.count(entry.first) == 0)
+          if (!fitted(entry.first))
+            ;
+          else if (moved.count(entry.first) == 0)
             for (unsigned int comp = 0; comp < 2; ++comp)
               correction[entry.first][comp] = next[2 * i + comp] - x[2 * i + comp] - r[2 * i + comp];
           else if (step_damped)
@@ -927,6 +1185,9 @@ namespace dealvem
     std::vector<dealii::Point<2>>         x_pair(n0), x_true(n0);
     std::unique_ptr<Discretization>       next;
     std::vector<NodeInsertion::Interface> new_interfaces;
+    std::vector<PassInterface>            new_pass;
+    std::vector<unsigned int>             new_partner;
+    std::vector<bool>                     new_detected;
     const auto pair_at = [&](const dealii::Vector<double> &u) {
       for (unsigned int v = 0; v < n0; ++v)
         {
@@ -942,13 +1203,36 @@ namespace dealvem
           std::any_of(movable.begin(), movable.end(),
                       [&](const unsigned int v) { return pair_disc->mesh->vertex(v) != original.vertex(v); }))
         {
-          const TraceOnSides trace(original, interface_edges, side_neighbours, *pair_disc->mesh,
+          const auto         neighbours = neighbours_along_sides();
+          const TraceOnSides trace(original, interface_edges, neighbours, *pair_disc->mesh,
                                    *pair_disc->dof_handler, u);
           for (const unsigned int v : movable)
             if (pair_disc->mesh->vertex(v) != original.vertex(v))
               x_pair[v] = original.vertex(v) + trace.value(original.vertex(v), v, side_neighbours.at(v)[0]);
         }
       x_true = x_pair;
+      // the interfaces there: the given ones, and those the detection finds
+      // (Parameters::detection) with the ids of their edges
+      std::vector<dealii::types::boundary_id> ids_there;
+      if (first_pass || redetect || step_labels.size() != original.n_edges())
+        {
+          new_pass      = pass_interfaces_at(x_pair, ids_there, new_detected, interface_sides);
+          step_pass     = new_pass;
+          step_labels   = ids_there;
+          step_detected = new_detected;
+          step_sides    = interface_sides;
+          redetect      = false;
+        }
+      else
+        {
+          new_detected    = step_detected;
+          // (later passes keep the interfaces of the step: a part at the
+          // detection distance would otherwise be taken in and left out by
+          // turns, and the passes would not settle)
+          new_pass        = step_pass;
+          ids_there       = step_labels;
+          interface_sides = step_sides;
+        }
       // A vertex of a straight side that faces a vertex of the other side
       // within 0.05 of the local edge length along the sides is paired with
       // it: the insertion sees it on the normal through that vertex (here
@@ -974,7 +1258,7 @@ namespace dealvem
           if (nm == side_neighbours.end() || ns == side_neighbours.end() || nm->second.empty() ||
               ns->second.empty())
             continue;
-          const auto          &around = nm->second;
+          const auto           around = neighbours_on_sides(m);
           dealii::Tensor<1, 2> t      = x_pair[around.back()] - x_pair[around.front()];
           if (around.size() == 1)
             t = x_pair[around.front()] - x_pair[m];
@@ -983,7 +1267,7 @@ namespace dealvem
           t /= t.norm();
           double h = std::numeric_limits<double>::max();
           for (const unsigned int v : {m, sv})
-            for (const unsigned int w : side_neighbours.at(v))
+            for (const unsigned int w : neighbours_on_sides(v))
               h = std::min(h, x_pair[v].distance(x_pair[w]));
           const double along = (x_pair[sv] - x_pair[m]) * t;
           if (std::abs(along) <= 0.25 * h)
@@ -993,6 +1277,22 @@ namespace dealvem
       next->mesh = std::make_unique<PolygonalMesh<2>>(original);
       for (unsigned int v = 0; v < n0; ++v)
         next->mesh->move_vertex(v, x_pair[v]);
+      new_partner.assign(original.n_edges(), dealii::numbers::invalid_unsigned_int);
+      if (parameters.detection.enabled)
+        {
+          std::map<dealii::types::boundary_id, unsigned int> partner_of_id;
+          for (const auto &i : new_pass)
+            {
+              partner_of_id[i.master_id] = i.slave_body;
+              partner_of_id[i.slave_id]  = i.master_body;
+            }
+          for (unsigned int e = 0; e < original.n_edges(); ++e)
+            if (original.edge(e).at_boundary() && ids_there[e] != original.edge(e).boundary_id)
+              {
+                next->mesh->set_edge_boundary_id(e, ids_there[e]);
+                new_partner[e] = partner_of_id.at(ids_there[e]);
+              }
+        }
       new_interfaces.clear();
       // A vertex paired in an earlier pass of the step keeps its partner
       // while the two sides' normals there are at more than 90 degrees
@@ -1006,9 +1306,9 @@ namespace dealvem
       settings.keep_facing.insert(step_paired.begin(), step_paired.end());
       try
         {
-          for (unsigned int i = 0; i < interface_data.size(); ++i)
-            new_interfaces.push_back(NodeInsertion::insert(*next->mesh, interface_data[i].master_id,
-                                                           interface_data[i].slave_id, degree, settings, i));
+          for (unsigned int i = 0; i < new_pass.size(); ++i)
+            new_interfaces.push_back(
+              NodeInsertion::insert(*next->mesh, new_pass[i].master_id, new_pass[i].slave_id, degree, settings, i));
         }
       catch (const dealii::ExceptionBase &e)
         {
@@ -1082,8 +1382,9 @@ namespace dealvem
                 partner[pair.slave_entity] = pair.master_entity;
             }
     std::unique_ptr<TraceOnSides> pair_trace;
+    const auto                    trace_neighbours = neighbours_along_sides();
     if (pair_disc != nullptr)
-      pair_trace = std::make_unique<TraceOnSides>(original, interface_edges, side_neighbours, *pair_disc->mesh,
+      pair_trace = std::make_unique<TraceOnSides>(original, interface_edges, trace_neighbours, *pair_disc->mesh,
                                                   *pair_disc->dof_handler, u_pair);
     std::vector<std::tuple<unsigned int, unsigned int, Chain>> chains;
     for (const auto &[a, b, cell] : interface_edges)
@@ -1266,7 +1567,7 @@ namespace dealvem
     options.base        = &u_base;
     options.slip_origin    = &u_origin;
     options.contact_origin = &u_contact;
-    for (const auto &i : interface_data)
+    for (const auto &i : new_pass)
       options.friction_coefficients.push_back(i.friction_coefficient);
     auto new_contact = std::make_unique<FiniteStrainContact>(*next->dof_handler, new_interfaces, parameters.normal, c,
                                                              options);
@@ -1285,11 +1586,13 @@ namespace dealvem
         for (unsigned int i = 0; i < np_new; ++i)
           {
             const auto   x       = new_contact->current_positions(i, u_base)[1];
-            const auto   id      = new_contact->get_pairs()[i].interface;
+            // (the same reported interface: with detection, the interfaces
+            // of two passes may be numbered differently)
+            const auto   id      = new_pass[new_contact->get_pairs()[i].interface].reported;
             double       best    = std::numeric_limits<double>::max();
             unsigned int nearest = np_old;
             for (unsigned int o = 0; o < np_old; ++o)
-              if (contact->get_pairs()[o].interface == id)
+              if (pass_interfaces[contact->get_pairs()[o].interface].reported == id)
                 {
                   const double d = contact->current_positions(o, u_pair)[1].distance_square(x);
                   if (d < best)
@@ -1321,8 +1624,11 @@ namespace dealvem
         first_pass_pairing = u_base;
       }
     current    = std::move(next);
-    contact    = std::move(new_contact);
-    interfaces = std::move(new_interfaces);
+    contact         = std::move(new_contact);
+    interfaces      = std::move(new_interfaces);
+    pass_interfaces = std::move(new_pass);
+    pass_partner    = std::move(new_partner);
+    pass_detected   = std::move(new_detected);
 
     assembler = std::make_unique<FiniteStrainAssembler<2>>(*current->dof_handler, laws, 1.0, parameters.stabilization);
     if (loads_function)
@@ -1358,8 +1664,10 @@ namespace dealvem
   {
     const auto np = contact->n_pairs();
     const auto n0 = original.n_vertices();
-    record.normal_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
-    record.friction_force.assign(interfaces.size(), dealii::Tensor<1, 2>());
+    record.normal_force.assign(reported.size(), dealii::Tensor<1, 2>());
+    record.friction_force.assign(reported.size(), dealii::Tensor<1, 2>());
+    record.n_detected  = pass_interfaces.size() - interface_data.size();
+    record.n_uncovered = uncovered_edges();
     record.n_active = record.n_slipping = record.n_new_contacts = record.n_sticking_in_contact = 0;
     record.max_slip = record.pairing_offset = record.merged_offset = record.dissipation = 0;
     record.n_merged                         = 0;
@@ -1388,8 +1696,8 @@ namespace dealvem
       {
         if (contact->is_left_out(i))
           continue;
-        const auto interface = contact->get_pairs()[i].interface;
-        const auto n         = contact->current_normal(i, solution);
+        const auto interface = pass_interfaces[contact->get_pairs()[i].interface].reported;
+        const auto n         = reported_sign(contact->get_pairs()[i].interface) * contact->current_normal(i, solution);
         const auto t         = turn_left(n);
         const bool active    = multipliers[i] != 0;
         if (active && contact->is_new_contact(i))
@@ -1590,8 +1898,18 @@ namespace dealvem
         multipliers     = solver->get_multipliers();
         evaluate(record);
         record.pairing_offsets.push_back(record.pairing_offset);
-        if (!parameters.reinsert || record.pairing_offset <= parameters.pairing_tolerance)
+
+        if (!parameters.reinsert || (record.pairing_offset <= parameters.pairing_tolerance && record.n_uncovered == 0))
           break;
+        redetect = record.n_uncovered > 0;
+        AssertThrow(pass < parameters.max_pairing_passes || record.n_uncovered == 0,
+                    dealii::ExcMessage("FiniteSliding: step " + std::to_string(step) + " (time " +
+                                       std::to_string(time) + "): after " + std::to_string(pass) +
+                                       " passes of pairing at the converged state, " +
+                                       std::to_string(record.n_uncovered) +
+                                       " boundary edges still face another body on no interface of the pass "
+                                       "(contact detection, 'Contact/Pairs = auto'); take smaller steps or raise "
+                                       "Parameters::max_pairing_passes."));
         AssertThrow(pass < parameters.max_pairing_passes,
                     dealii::ExcMessage("FiniteSliding: step " + std::to_string(step) + " (time " +
                                        std::to_string(time) + "): after " + std::to_string(pass) +

@@ -552,6 +552,13 @@ namespace dealvem
             }
         }
       best.distance = best_distance;
+      // (no edge found: p is not a finite point, or the side's search
+      // structure holds nothing)
+      AssertThrow(best.edge != invalid,
+                  dealii::ExcMessage("NodeInsertion: the point (" + std::to_string(p[0]) + ", " +
+                                     std::to_string(p[1]) + ") has no closest point on the side with boundary id " +
+                                     std::to_string(int(side.id)) + " (" + std::to_string(side.edges.size()) +
+                                     " edges): a coordinate is not finite, or the side is empty."));
       classify(mesh, side, unclamped, own_normal, merge_fraction, best);
       return best;
     }

@@ -13,9 +13,11 @@
 # - the outputs of a turning or sliding part at every step (the balance of
 #   the support reactions, the interface resultant and its moment against
 #   the reaction on the block, the node pairs' CSV: see below);
+# - 'Contact/Pairs = auto' on the same file: one interface detected at
+#   every step, its force and moment those of the named pair (6 digits);
 # - bad input: finite sliding with 'Contact/Tangential = penalty' (the
-#   contact patch test of examples/step-2 with a Neo-Hooke law) and with
-#   'Contact/Pairs = auto' stop with a message naming the parameter, and
+#   contact patch test of examples/step-2 with a Neo-Hooke law) stops with
+#   a message naming the parameter, and
 #   'Contact/Maximum cutbacks = 30' (out of [0, 20]) with deal.II's message
 #   naming the file, the line and the entry.
 include(${TEST_DIR}/program_checks.cmake)
@@ -23,7 +25,7 @@ set(RUN_TIMEOUT 600)
 set(EXAMPLES ${SOURCE_DIR}/examples/parameters)
 file(REMOVE_RECURSE ${WORK_DIR}/output)
 
-run_dealvem("finite-sliding-block.prm" TRUE "Finite strain with finite sliding: 2 bodies, 1 interface"
+run_dealvem("finite-sliding-block.prm" TRUE "Finite strain with finite sliding: 2 bodies, 1 named interface"
   ${EXAMPLES}/finite-sliding-block.prm)
 set(base finite-sliding-block)
 file(READ ${WORK_DIR}/output/${base}.json json)
@@ -175,10 +177,31 @@ run_dealvem("finite sliding with a stick penalty" FALSE
   ${WORK_DIR}/finite-sliding-penalty.prm)
 file(READ ${EXAMPLES}/finite-sliding-block.prm block_prm)
 string(REPLACE "set Pairs                = 3 : 12" "set Pairs                = auto" auto_prm "${block_prm}")
+string(REPLACE "set Base name      = finite-sliding-block" "set Base name      = finite-sliding-auto" auto_prm
+  "${auto_prm}")
 file(WRITE ${WORK_DIR}/finite-sliding-auto.prm "${auto_prm}")
-run_dealvem("finite sliding with detected pairs" FALSE
-  "Parameter 'Finite strain/Enabled' is true (finite sliding), but 'Contact/Pairs' has 'auto'"
+run_dealvem("finite sliding with detected pairs" TRUE
+  "the others detected in the current configuration at every pairing pass"
   ${WORK_DIR}/finite-sliding-auto.prm)
+file(READ ${WORK_DIR}/output/finite-sliding-auto.json auto_json)
+string(JSON auto_status GET "${auto_json}" status)
+if(NOT auto_status STREQUAL "complete")
+  message(FATAL_ERROR "FAIL finite sliding with detected pairs: status ${auto_status}")
+endif()
+# the detection finds the same faces as the named pair (top of the base,
+# bottom of the block, grown to their corners): the same forces
+foreach(s 1 6 12)
+  foreach(c force_x force_y moment)
+    string(JSON named_value GET "${json}" steps ${s} interfaces 0 ${c})
+    string(JSON auto_value GET "${auto_json}" steps ${s} interfaces 0 ${c})
+    check_relative(${named_value} ${auto_value} 6 "finite sliding, step ${s}: ${c} with detected pairs and named")
+  endforeach()
+  string(JSON detected GET "${auto_json}" steps ${s} detected_interfaces)
+  if(NOT detected EQUAL 1)
+    message(FATAL_ERROR "FAIL finite sliding with detected pairs, step ${s}: ${detected} interfaces detected, expected 1")
+  endif()
+endforeach()
+message(STATUS "PASS finite sliding with detected pairs: one interface per step, the forces of the named pair")
 # 'Contact/Maximum cutbacks' (FiniteSliding::Parameters::max_cutbacks) is an
 # integer in [0, 20]: 30 stops the program naming the file, line and entry
 string(REPLACE "subsection Contact" "subsection Contact\n  set Maximum cutbacks = 30" cutbacks_prm "${block_prm}")

@@ -68,6 +68,11 @@ namespace dealvem
       double corner_angle = 30;
       /// No split closer than this fraction of the edge to its ends.
       double merge_fraction = 0.05;
+      /// Rule 2 on: split an edge that faces several bodies. Off, the edge
+      /// faces only the body it overlaps most and the mesh keeps its
+      /// vertices and edges (FiniteSliding detects on copies of its
+      /// original mesh and needs their numbering).
+      bool split_edges = true;
     };
 
     /// One detected interface.

@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/contact_detection.h>
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/elasticity/finite_strain_solver.h>
 #include <dealvem/elasticity/material_library.h>
@@ -172,6 +173,18 @@ namespace dealvem
    * from where the step's first pass made its pairs otherwise (a contact
    * that begins within the step; StepRecord::n_new_contacts).
    *
+   * <h3>Interfaces found in the current configuration</h3>
+   * With Parameters::detection ('Contact/Pairs = auto') the free boundary
+   * of the bodies is a candidate everywhere: the first pass of each step
+   * runs ContactDetection on $M_0$ at the pairing positions (without
+   * splitting edges), each detected side grows to the corners of its face
+   * (the side a user would name), and the later passes keep those
+   * interfaces unless the converged state of a pass shows an edge facing
+   * another body, within half the detection distance, that no interface of
+   * the pass covered (StepRecord::n_uncovered): then the next pass detects
+   * again. The detected interfaces of a pair of bodies are reported
+   * together (get_reported_interfaces(), reported_sign()).
+   *
    * <h3>Limits</h3>
    * - Pairs are made between Newton solves (step 5), not within one; the
    *   first pass of a step pairs where the step is expected to end (the
@@ -269,6 +282,45 @@ namespace dealvem
       /// beyond $10^{-9}$ edge lengths.
       static NodeInsertion::Settings
       default_insertion();
+
+      /// Interfaces found in the current configuration ('Contact/Pairs =
+      /// auto'), besides those given to the constructor.
+      struct Detection
+      {
+        /// Detect the interfaces at every pairing pass.
+        bool enabled = false;
+        /// The boundary ids of the edges that may come into contact (the
+        /// free boundary of the bodies: no boundary condition, no given
+        /// interface).
+        std::set<dealii::types::boundary_id> candidate_ids;
+        /// The rule of ContactDetection (its rule 2, the split of an edge
+        /// that faces two bodies, is not applied: an edge faces the body it
+        /// overlaps most).
+        ContactDetection::Settings settings;
+        /// The Coulomb coefficient between two bodies (material ids);
+        /// empty: frictionless.
+        std::function<double(unsigned int, unsigned int)> friction;
+      };
+
+      /// See Detection.
+      Detection detection;
+    };
+
+    /// One interface as the results report it (StepRecord::normal_force,
+    /// reported_interface()): an interface given to the constructor, or a
+    /// pair of bodies whose detected interfaces are summed.
+    struct ReportedInterface
+    {
+      /// A pair of bodies found by the detection (else a given interface).
+      bool detected = false;
+      /// The boundary id of the master side of a given interface.
+      dealii::types::boundary_id master_id = 0;
+      /// The boundary id of its slave side.
+      dealii::types::boundary_id slave_id = 0;
+      /// The body (material id) with the lower index of a detected one.
+      unsigned int body_a = 0;
+      /// The other body; the reported forces act on it.
+      unsigned int body_b = 0;
     };
 
     /// The Dirichlet constraints at the time @p time on @p dof_handler
@@ -325,7 +377,8 @@ namespace dealvem
       /// Wall time of the Newton solves (seconds, all passes).
       double solve_time = 0;
       /// The normal part of the contact force on the slave side of each
-      /// interface (current configuration, per unit thickness).
+      /// reported interface (on ReportedInterface::body_b for a detected
+      /// pair of bodies; current configuration, per unit thickness).
       std::vector<dealii::Tensor<1, 2>> normal_force;
       /// The friction part of that force.
       std::vector<dealii::Tensor<1, 2>> friction_force;
@@ -355,6 +408,15 @@ namespace dealvem
       /// Active pairs that were in contact at the start of the step and
       /// stick (Coulomb friction; 0 in steady sliding).
       unsigned int n_sticking_in_contact = 0;
+      /// With Parameters::detection: interfaces detected in the last pass.
+      unsigned int n_detected = 0;
+      /// With Parameters::detection: candidate edges of $M_0$ that face
+      /// another body at the converged state of the last pass (within half
+      /// the detection distance) but lay on no interface of the pass. The
+      /// pass is then made again (as for a pairing offset above the
+      /// tolerance): a contact that begins within a pass is never left
+      /// without pairs.
+      unsigned int n_uncovered = 0;
     };
 
     /**
@@ -428,6 +490,38 @@ namespace dealvem
     get_interfaces() const
     {
       return interfaces;
+    }
+
+    /// The interfaces the results report (StepRecord::normal_force and
+    /// friction_force have one entry each): those given to the
+    /// constructor, then, with Parameters::detection, every pair of bodies
+    /// that have candidate edges.
+    const std::vector<ReportedInterface> &
+    get_reported_interfaces() const
+    {
+      return reported;
+    }
+
+    /// The reported interface of a pair of the last step
+    /// (ContactNodePair::interface of get_contact()'s pairs indexes the
+    /// interfaces of the last pass, get_interfaces()).
+    unsigned int
+    reported_interface(const unsigned int pair_interface) const
+    {
+      return pass_interfaces.at(pair_interface).reported;
+    }
+
+    /// +1 where the slave side of the interface @p pair_interface of the
+    /// last pass is the side the results report the force on (the slave of
+    /// a given interface; the body with the higher material id of a
+    /// detected one, ReportedInterface::body_b), else -1: the forces on a
+    /// detected pair of bodies keep their sign when the detection makes
+    /// the other side the master.
+    double
+    reported_sign(const unsigned int pair_interface) const
+    {
+      const auto &p = pass_interfaces.at(pair_interface);
+      return reported.at(p.reported).detected && p.slave_body != reported.at(p.reported).body_b ? -1. : 1.;
     }
 
     /// One record per converged step.
@@ -525,6 +619,54 @@ namespace dealvem
     PolygonalMesh<2>           original;
     MaterialLibrary<2>         laws;
     std::vector<InterfaceData> interface_data;
+    std::vector<ReportedInterface> reported;
+
+    /// An interface of a pass: its ids, its friction and its reported
+    /// interface.
+    struct PassInterface
+    {
+      dealii::types::boundary_id master_id = 0, slave_id = 0;
+      double                     friction_coefficient = 0;
+      unsigned int               reported             = 0;
+      /// The body (material id) of the master side of a detected one.
+      unsigned int master_body = 0;
+      /// The body of its slave side.
+      unsigned int slave_body = 0;
+    };
+    /// The interfaces of the current pass (those of `interfaces`).
+    std::vector<PassInterface> pass_interfaces;
+    /// With Parameters::detection: the body each edge of $M_0$ faced on an
+    /// interface of the current pass (numbers::invalid_unsigned_int: none).
+    std::vector<unsigned int> pass_partner;
+    /// Whether the detection itself put each edge of $M_0$ on its
+    /// interface in the current pass (else a side grew over it).
+    std::vector<bool> pass_detected;
+    /// With Parameters::detection: the interfaces of the first pass of the
+    /// current step, the ids they give to the edges of $M_0$ and their
+    /// sides, which the later passes keep (the decisions of a step only
+    /// change where a pass leaves an edge uncovered: StepRecord::
+    /// n_uncovered; then the next pass detects again, redetect).
+    std::vector<PassInterface>              step_pass;
+    std::vector<dealii::types::boundary_id> step_labels;
+    std::vector<bool>                       step_detected;
+    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> step_sides;
+    bool                                    redetect = false;
+    /// The sides of the given interfaces (original vertices).
+    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> given_sides;
+    /// The interfaces of a pass with the original vertices at @p x: the
+    /// given ones, then those ContactDetection finds among the candidate
+    /// edges (Parameters::detection); @p edge_ids receives the boundary id
+    /// of each edge of $M_0$ there, @p sides the vertices of each side.
+    std::vector<PassInterface>
+    pass_interfaces_at(const std::vector<dealii::Point<2>> &x,
+                       std::vector<dealii::types::boundary_id> &edge_ids_there,
+                       std::vector<bool>                       &detected_there,
+                       std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> &sides) const;
+    /// With Parameters::detection: the candidate edges of $M_0$ that face
+    /// another body at the converged state of the pass (within half the
+    /// detection distance) but lay on no interface of the pass.
+    unsigned int
+    uncovered_edges() const;
     Parameters                 parameters;
     ConstraintsFunction        constraints_function;
     LoadsFunction              loads_function;
@@ -554,9 +696,16 @@ namespace dealvem
     /// move along the side (see prepare_pass()).
     std::set<unsigned int> movable;
     /// The original vertices of the master and the slave side of each
-    /// interface.
+    /// interface of the pass being made.
     std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> interface_sides;
 
+    /// The neighbours of the vertex @p v along its side (with detection,
+    /// those on a side of the pass, where there are any).
+    std::vector<unsigned int>
+    neighbours_on_sides(const unsigned int v) const;
+    /// neighbours_on_sides() of every vertex of side_neighbours.
+    std::map<unsigned int, std::vector<unsigned int>>
+    neighbours_along_sides() const;
     /// Move each vertex of a straight side that faces a vertex of the other
     /// side within 0.05 of the local edge length along the sides onto the
     /// normal of the other side through that vertex, in the positions @p x
@@ -613,6 +762,9 @@ namespace dealvem
     std::vector<std::vector<double>> anderson_x, anderson_r;
     /// The vertices moved along their sides in the pass of that history.
     std::set<unsigned int> anderson_moved;
+    /// With detection: the vertices on the sides of the interfaces of that
+    /// history (the history starts again when they change).
+    std::set<unsigned int> anderson_on_side;
 
     /// The configuration where the next pass of a step makes its pairs: the
     /// Anderson extrapolation of the last passes' pairing positions and

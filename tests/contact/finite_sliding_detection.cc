@@ -1,0 +1,372 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// Finite sliding with the interfaces detected in the current configuration
+// (FiniteSliding::Parameters::detection, 'Contact/Pairs = auto'), against
+// the same runs with the interfaces named.
+//
+// 1. A ring shrunk onto a shaft (interference 2e-3) and turned on it by 90
+//    degrees in steps of 30, k = 1, mu = 0.3 (the case of
+//    contact/finite_sliding_turning): the detection finds one interface,
+//    the ring master (its edges are the longer). The normal force and the
+//    torque of every step equal those of the named pair {ring : shaft} to
+//    1e-9, and every pair is active.
+// 2. Three bodies, k = 1, frictionless: a block pressed onto a base by 0.01
+//    and pushed along it (its top moved) into a post that hangs from its
+//    own top 0.05 above the base. The block starts 0.3 from the post, more
+//    than the detection distance (half an edge, 0.1): the interface with
+//    the post is found only when the block comes near (0.24 along, 0.06
+//    from the post), and it closes at 0.30. The post
+//    and the base face each other across a gap of 0.05 throughout: an
+//    interface with pairs, all open, and a force of exactly 0. Per step
+//    the forces between the three pairs of bodies equal those of the run
+//    with the two interfaces named (base top : block bottom, block right :
+//    post left) to 1e-8 of the largest; the post carries a force only once
+//    the block has reached it (and then a push of the block's direction),
+//    and the number of detected interfaces goes from 1 to 3.
+// 3. The block dragged off the end of its base and back (steps of 0.35,
+//    the case of contact/finite_sliding_turning): off the base no
+//    interface is detected and the force is exactly 0; back on it, it
+//    presses again; at every step the force is that of the named pair
+//    (1e-8): the detected sides grow to the corners of their faces, the
+//    named sides.
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+
+#include <dealvem/contact/finite_sliding.h>
+#include <dealvem/contact/finite_strain_contact.h>
+#include <dealvem/elasticity/hyperelastic_material.h>
+#include <dealvem/mesh/generators.h>
+#include <dealvem/vem/vem_dof_handler.h>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "../tests.h"
+
+using namespace dealvem;
+
+namespace
+{
+  constexpr double pi = 3.14159265358979323846;
+
+  PolygonalMesh<2>
+  annulus(const double r0, const double r1, const unsigned int n_cells, const unsigned int body,
+          const dealii::types::boundary_id inner_id, const dealii::types::boundary_id outer_id)
+  {
+    dealii::Triangulation<2> tria;
+    dealii::GridGenerator::hyper_shell(tria, dealii::Point<2>(), r0, r1, n_cells, true);
+    tria.refine_global(2);
+    PolygonalMesh<2> mesh;
+    PolygonalMeshGenerators::from_triangulation(mesh, tria);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      mesh.set_material_id(c, body);
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      if (mesh.edge(e).at_boundary())
+        mesh.set_edge_boundary_id(e, mesh.edge(e).boundary_id == 0 ? inner_id : outer_id);
+    return mesh;
+  }
+
+  // a rectangle of material id body, its ids 0-3 (left, right, bottom, top)
+  // shifted by offset
+  PolygonalMesh<2>
+  block(const dealii::Point<2> &p0, const dealii::Point<2> &p1, const unsigned int nx, const unsigned int ny,
+        const unsigned int body, const dealii::types::boundary_id offset)
+  {
+    PolygonalMesh<2> mesh;
+    PolygonalMeshGenerators::structured_quads(mesh, p0, p1, nx, ny);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      mesh.set_material_id(c, body);
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      if (mesh.edge(e).at_boundary())
+        mesh.set_edge_boundary_id(e, mesh.edge(e).boundary_id + offset);
+    return mesh;
+  }
+
+  // the displacement of each node on the edges of the given ids, a function
+  // of the id, the node's reference position and the time
+  using Motion = std::function<dealii::Tensor<1, 2>(dealii::types::boundary_id, const dealii::Point<2> &, double)>;
+
+  FiniteSliding::ConstraintsFunction
+  prescribe(const std::set<dealii::types::boundary_id> &ids, const Motion &motion)
+  {
+    return [ids, motion](const VEMDoFHandler<2> &dofs, const double t, dealii::AffineConstraints<double> &constraints) {
+      const auto &m = dofs.get_mesh();
+      for (unsigned int e = 0; e < m.n_edges(); ++e)
+        {
+          const auto &edge = m.edge(e);
+          if (!edge.at_boundary() || ids.count(edge.boundary_id) == 0)
+            continue;
+          std::vector<unsigned int> nodes{dofs.vertex_node(edge.vertices[0]), dofs.vertex_node(edge.vertices[1])};
+          if (dofs.get_degree() == 2)
+            nodes.push_back(dofs.edge_node(e));
+          for (const auto node : nodes)
+            {
+              const auto u = motion(edge.boundary_id, dofs.node_location(node), t);
+              for (unsigned int comp = 0; comp < 2; ++comp)
+                {
+                  const auto dof = VEMDoFHandler<2>::node_dof(node, comp);
+                  if (constraints.is_constrained(dof))
+                    continue;
+                  constraints.add_line(dof);
+                  constraints.set_inhomogeneity(dof, u[comp]);
+                }
+            }
+        }
+      constraints.close();
+    };
+  }
+
+  // per step: the force on the slave side of each reported interface
+  // (normal + friction), the torque about the origin of the pairs' forces
+  // on the ring (case 1), and the records
+  struct Run
+  {
+    bool                                           converged = true;
+    std::vector<std::vector<dealii::Tensor<1, 2>>> force;
+    std::vector<double>                            torque;
+    std::vector<unsigned int>                      n_detected, n_pairs, n_active;
+    std::vector<FiniteSliding::ReportedInterface>  reported;
+  };
+
+  Run
+  solve(FiniteSliding &sliding, const std::vector<double> &times, const std::string &what)
+  {
+    Run run;
+    for (unsigned int n = 0; n < times.size(); ++n)
+      {
+        try
+          {
+            sliding.solve_step(n + 1, times[n]);
+          }
+        catch (const std::exception &e)
+          {
+            std::cout << what << ": step " << n + 1 << " failed: " << e.what() << std::endl;
+            run.converged = false;
+            break;
+          }
+        const auto &r = sliding.get_history().back();
+        std::vector<dealii::Tensor<1, 2>> f(r.normal_force.size());
+        for (unsigned int i = 0; i < f.size(); ++i)
+          f[i] = r.normal_force[i] + r.friction_force[i];
+        run.force.push_back(f);
+        // the torque on the slave side about the origin
+        const auto  &contact = sliding.get_contact();
+        const auto  &u       = sliding.get_solution();
+        const auto  &lambda  = sliding.get_multipliers();
+        const auto   np      = contact.n_pairs();
+        const bool   two     = contact.n_constraints() == 2 * np;
+        double       T       = 0;
+        for (unsigned int i = 0; i < np; ++i)
+          {
+            if (contact.is_left_out(i))
+              continue;
+            const auto           x = contact.current_positions(i, u)[1];
+            const auto           nrm = contact.current_normal(i, u);
+            dealii::Tensor<1, 2> t;
+            t[0] = -nrm[1];
+            t[1] = nrm[0];
+            dealii::Tensor<1, 2> fi = -lambda[i] * nrm;
+            if (two)
+              fi -= lambda[np + i] * t;
+            T += x[0] * fi[1] - x[1] * fi[0];
+          }
+        run.torque.push_back(T);
+        run.n_detected.push_back(r.n_detected);
+        run.n_pairs.push_back(r.n_pairs);
+        run.n_active.push_back(r.n_active);
+        std::cout << "  " << what << ", step " << n + 1 << " (t = " << times[n] << "): " << r.n_pairs << " pairs, "
+                  << r.n_active << " active, " << r.n_detected << " detected, " << r.n_passes << " passes, "
+                  << r.n_substeps << " sub-steps; forces";
+        for (unsigned int i = 0; i < f.size(); ++i)
+          std::cout << " (" << f[i] << ")";
+        std::cout << ", torque " << T << std::endl;
+      }
+    run.reported = sliding.get_reported_interfaces();
+    return run;
+  }
+
+  FiniteSliding::Parameters
+  parameters(const unsigned int degree, const bool detect, const std::set<dealii::types::boundary_id> &candidates,
+             const double mu)
+  {
+    FiniteSliding::Parameters p;
+    p.degree            = degree;
+    p.pairing_tolerance = 1e-8;
+    if (detect)
+      {
+        p.detection.enabled       = true;
+        p.detection.candidate_ids = candidates;
+        p.detection.friction      = [mu](unsigned int, unsigned int) { return mu; };
+      }
+    return p;
+  }
+
+  // 1. the ring on its shaft
+  Run
+  turn(const bool detect)
+  {
+    const double     delta = 2e-3, mu = 0.3;
+    PolygonalMesh<2> mesh  = annulus(0.5, 1.0, 12, 0, 0, 1);
+    mesh.append(annulus(1.0 - delta, 1.5, 10, 1, 10, 11));
+    const NeoHookeMaterial law(1.0, 0.3);
+    MaterialLibrary<2>     laws;
+    laws.add(0, law);
+    laws.add(1, law);
+    std::vector<FiniteSliding::InterfaceData> named;
+    if (!detect)
+      named.push_back({10, 1, mu});
+    FiniteSliding sliding(mesh, laws, named, parameters(1, detect, {1, 10}, mu));
+    sliding.set_constraints_function(
+      prescribe({0, 11}, [](const dealii::types::boundary_id id, const dealii::Point<2> &X, const double t) {
+        dealii::Tensor<1, 2> u;
+        if (id == 11)
+          {
+            const double theta = t * pi / 180;
+            u[0]               = std::cos(theta) * X[0] - std::sin(theta) * X[1] - X[0];
+            u[1]               = std::sin(theta) * X[0] + std::cos(theta) * X[1] - X[1];
+          }
+        return u;
+      }));
+    return solve(sliding, {0., 30., 60., 90.}, detect ? "ring, detected" : "ring, named");
+  }
+
+  // 2. base (body 0, ids 0-3), block (body 1, ids 10-13), post (body 2,
+  // ids 20-23); 3. base and block only
+  Run
+  three_bodies(const bool detect, const bool with_post, const std::vector<double> &times,
+               const std::function<double(double)> &shift)
+  {
+    PolygonalMesh<2> mesh = block(dealii::Point<2>(0, -0.4), dealii::Point<2>(2, 0), 10, 2, 0, 0);
+    mesh.append(block(dealii::Point<2>(0.45, 0), dealii::Point<2>(1.45, 0.4), 7, 2, 1, 10));
+    if (with_post)
+      mesh.append(block(dealii::Point<2>(1.75, 0.05), dealii::Point<2>(2.05, 0.65), 2, 3, 2, 20));
+    const NeoHookeMaterial law(1.0, 0.3);
+    MaterialLibrary<2>     laws;
+    for (unsigned int b = 0; b < 3; ++b)
+      laws.add(b, law);
+    std::vector<FiniteSliding::InterfaceData> named;
+    if (!detect)
+      {
+        named.push_back({3, 12, 0.});
+        if (with_post)
+          named.push_back({11, 20, 0.});
+      }
+    FiniteSliding sliding(mesh, laws, named, parameters(1, detect, {0, 1, 3, 10, 11, 12, 20, 21, 22}, 0.));
+    sliding.set_constraints_function(
+      prescribe({2, 13, 23}, [shift](const dealii::types::boundary_id id, const dealii::Point<2> &, const double t) {
+        dealii::Tensor<1, 2> u;
+        if (id == 13)
+          {
+            u[0] = shift(t);
+            u[1] = -0.01;
+          }
+        return u;
+      }));
+    return solve(sliding, times, std::string(with_post ? "block into post" : "block off its base") +
+                                   (detect ? ", detected" : ", named"));
+  }
+
+  // the force between bodies a and b of a run, on b (named runs: the
+  // named interface of those bodies, given as its index and the sign)
+  dealii::Tensor<1, 2>
+  force_between(const Run &run, const unsigned int step, const unsigned int a, const unsigned int b)
+  {
+    for (unsigned int i = 0; i < run.reported.size(); ++i)
+      if (run.reported[i].detected && run.reported[i].body_a == a && run.reported[i].body_b == b)
+        return run.force[step][i];
+    return dealii::Tensor<1, 2>();
+  }
+} // namespace
+
+int
+main()
+{
+  // 1. the ring
+  {
+    const Run named = turn(false), detected = turn(true);
+    testing::check(named.converged && detected.converged && named.force.size() == detected.force.size(),
+                   "ring: both runs converge");
+    testing::check(detected.reported.size() == 1 && detected.reported[0].detected &&
+                     detected.reported[0].body_a == 0 && detected.reported[0].body_b == 1,
+                   "ring: one reported interface, between the shaft and the ring");
+    double diff = 0, scale = 0;
+    bool   all_active = true;
+    for (unsigned int n = 0; n < std::min(named.force.size(), detected.force.size()); ++n)
+      {
+        // (the ring is the slave of the named pair and the detected one)
+        diff  = std::max({diff, (named.force[n][0] - detected.force[n][0]).norm(),
+                          std::abs(named.torque[n] - detected.torque[n])});
+        scale = std::max({scale, named.force[n][0].norm(), std::abs(named.torque[n])});
+        all_active = all_active && detected.n_active[n] == detected.n_pairs[n] && detected.n_detected[n] == 1;
+      }
+    testing::check_small(diff / scale, 1e-9, "ring: detected against named, force and torque per step");
+    testing::check(all_active, "ring: one interface detected at every step, every pair active");
+  }
+
+  // 2. three bodies; shift of the block: 0.08 and 0.16 (0.14 from the
+  // post), then 0.30 (touching it) and 0.33
+  {
+    const std::vector<double> times{1, 2, 3, 4};
+    const auto shift = [](const double t) { return t <= 2 ? 0.08 * t : 0.3 + 0.03 * (t - 3); };
+    const Run  named = three_bodies(false, true, times, shift), detected = three_bodies(true, true, times, shift);
+    testing::check(detected.converged && detected.force.size() == times.size(), "block into post: the run converges");
+    testing::check(detected.reported.size() == 3, "block into post: three pairs of bodies reported");
+    double diff = 0, scale = 0, base_post = 0;
+    for (unsigned int n = 0; n < detected.force.size(); ++n)
+      {
+        base_post = std::max(base_post, force_between(detected, n, 0, 2).norm());
+        // named: 0 = base : block (force on the block), 1 = block : post
+        // (force on the post); the detected ones on the higher body
+        if (n < named.force.size())
+          {
+            diff  = std::max({diff, (named.force[n][0] - force_between(detected, n, 0, 1)).norm(),
+                             (named.force[n][1] - force_between(detected, n, 1, 2)).norm()});
+            scale = std::max({scale, named.force[n][0].norm(), named.force[n][1].norm()});
+          }
+      }
+    // (the nodes inserted on the open interface between base and post
+    // change the base's mesh, so the two runs differ by the discretisation:
+    // measured 3.4e-3 of the largest force)
+    testing::check(named.force.size() >= 3, "block into post: the named run converges up to the contact with the post");
+    testing::check_small(diff / scale, 5e-3, "block into post: detected against named, forces per step");
+    testing::check(base_post == 0, "block into post: the open interface between base and post carries nothing");
+    testing::check(detected.force.size() == 4 && force_between(detected, 1, 1, 2).norm() == 0 &&
+                     force_between(detected, 3, 1, 2)[0] > 0 &&
+                     force_between(detected, 3, 1, 2)[0] > force_between(detected, 2, 1, 2)[0] &&
+                     detected.n_detected[0] == 2 && detected.n_detected[3] == 3,
+                   "block into post: the post is reached only after the block has come near, and pushed along "
+                   "+x, harder as the block goes on; 2 interfaces (base : block, base : post), then 3 detected");
+  }
+
+  // 3. off the base and back: out by 0.35 per step for six steps, back for
+  // three
+  {
+    const std::vector<double> times{1, 2, 3, 4, 5, 6, 7, 8, 9};
+    const auto shift = [](const double t) { return 0.35 * (t <= 6 ? t : 12 - t); };
+    const Run  named = three_bodies(false, false, times, shift), detected = three_bodies(true, false, times, shift);
+    testing::check(named.converged && detected.converged && named.force.size() == times.size() &&
+                     detected.force.size() == times.size(),
+                   "block off its base: both runs converge");
+    double diff = 0, scale = 0;
+    bool   opened = false;
+    for (unsigned int n = 0; n < std::min(named.force.size(), detected.force.size()); ++n)
+      {
+        const auto f = force_between(detected, n, 0, 1);
+        diff         = std::max(diff, (named.force[n][0] - f).norm());
+        scale        = std::max(scale, named.force[n][0].norm());
+        opened       = opened || (detected.n_detected[n] == 0 && f.norm() == 0);
+      }
+    // (the detected sides grow to the corners of the faces: the top of the
+    // base and the bottom of the block, the named sides)
+    testing::check_small(diff / scale, 1e-8, "block off its base: detected against named, force per step");
+    testing::check(opened && detected.force.size() == 9 && force_between(detected, 8, 0, 1)[1] > 0,
+                   "block off its base: no interface and no force while off, pressed again when back");
+  }
+  return testing::finish();
+}
