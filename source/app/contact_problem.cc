@@ -1404,6 +1404,22 @@ namespace dealvem
 
 
 
+  std::vector<ScaleCheck::Body>
+  ContactProblem::scale_check_bodies() const
+  {
+    // each body by its material id (= its index), its name, the parameter
+    // that sets its modulus, and its characteristic stiffness
+    std::vector<ScaleCheck::Body> result;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      result.push_back({dealii::types::material_id(b), bodies[b].name,
+                        bodies[b].modulus_parameter.empty() ? "Young's modulus of " + bodies[b].name :
+                                                              bodies[b].modulus_parameter,
+                        bodies[b].material->characteristic_stiffness()});
+    return result;
+  }
+
+
+
   void
   ContactProblem::run_finite_sliding()
   {
@@ -1480,12 +1496,7 @@ namespace dealvem
       FiniteStrainAssembler<2> assembler(dofs, laws);
       bc.set_time(opt.final_time);
       bc.add_finite_strain_loads(assembler, "Finite strain/Enabled", opt.pressure_load);
-      std::vector<ScaleCheck::Body> scale_bodies;
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        scale_bodies.push_back({dealii::types::material_id(b), bodies[b].name,
-                                bodies[b].modulus_parameter.empty() ? "Young's modulus of " + bodies[b].name :
-                                                                      bodies[b].modulus_parameter,
-                                bodies[b].material->characteristic_stiffness()});
+      const std::vector<ScaleCheck::Body> scale_bodies = scale_check_bodies();
       std::ostringstream when;
       when << "at t = " << opt.final_time;
       dealii::Vector<double> f;
@@ -2193,12 +2204,7 @@ namespace dealvem
     // loads out of scale with the stiffness of a body: named before the
     // solver overflows on them
     {
-      std::vector<ScaleCheck::Body> scale_bodies;
-      for (unsigned int b = 0; b < bodies.size(); ++b)
-        scale_bodies.push_back({dealii::types::material_id(b), bodies[b].name,
-                                bodies[b].modulus_parameter.empty() ? "Young's modulus of " + bodies[b].name :
-                                                                      bodies[b].modulus_parameter,
-                                bodies[b].material->characteristic_stiffness()});
+      const std::vector<ScaleCheck::Body> scale_bodies = scale_check_bodies();
       std::ostringstream when;
       when << "at t = " << time;
       ScaleCheck::check(d.dof_handler, loads, scale_bodies, when.str(), false);

@@ -47,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "../finite_sliding_common.h"
 #include "../tests.h"
 
 using namespace dealvem;
@@ -86,40 +87,6 @@ namespace
       if (mesh.edge(e).at_boundary())
         mesh.set_edge_boundary_id(e, mesh.edge(e).boundary_id + offset);
     return mesh;
-  }
-
-  // the displacement of each node on the edges of the given ids, a function
-  // of the id, the node's reference position and the time
-  using Motion = std::function<dealii::Tensor<1, 2>(dealii::types::boundary_id, const dealii::Point<2> &, double)>;
-
-  FiniteSliding::ConstraintsFunction
-  prescribe(const std::set<dealii::types::boundary_id> &ids, const Motion &motion)
-  {
-    return [ids, motion](const VEMDoFHandler<2> &dofs, const double t, dealii::AffineConstraints<double> &constraints) {
-      const auto &m = dofs.get_mesh();
-      for (unsigned int e = 0; e < m.n_edges(); ++e)
-        {
-          const auto &edge = m.edge(e);
-          if (!edge.at_boundary() || ids.count(edge.boundary_id) == 0)
-            continue;
-          std::vector<unsigned int> nodes{dofs.vertex_node(edge.vertices[0]), dofs.vertex_node(edge.vertices[1])};
-          if (dofs.get_degree() == 2)
-            nodes.push_back(dofs.edge_node(e));
-          for (const auto node : nodes)
-            {
-              const auto u = motion(edge.boundary_id, dofs.node_location(node), t);
-              for (unsigned int comp = 0; comp < 2; ++comp)
-                {
-                  const auto dof = VEMDoFHandler<2>::node_dof(node, comp);
-                  if (constraints.is_constrained(dof))
-                    continue;
-                  constraints.add_line(dof);
-                  constraints.set_inhomogeneity(dof, u[comp]);
-                }
-            }
-        }
-      constraints.close();
-    };
   }
 
   // per step: the force on the slave side of each reported interface
@@ -223,7 +190,7 @@ namespace
       named.push_back({10, 1, mu});
     FiniteSliding sliding(mesh, laws, named, parameters(1, detect, {1, 10}, mu));
     sliding.set_constraints_function(
-      prescribe({0, 11}, [](const dealii::types::boundary_id id, const dealii::Point<2> &X, const double t) {
+      testing::prescribe({0, 11}, [](const dealii::types::boundary_id id, const dealii::Point<2> &X, const double t) {
         dealii::Tensor<1, 2> u;
         if (id == 11)
           {
@@ -259,7 +226,7 @@ namespace
       }
     FiniteSliding sliding(mesh, laws, named, parameters(1, detect, {0, 1, 3, 10, 11, 12, 20, 21, 22}, 0.));
     sliding.set_constraints_function(
-      prescribe({2, 13, 23}, [shift](const dealii::types::boundary_id id, const dealii::Point<2> &, const double t) {
+      testing::prescribe({2, 13, 23}, [shift](const dealii::types::boundary_id id, const dealii::Point<2> &, const double t) {
         dealii::Tensor<1, 2> u;
         if (id == 13)
           {

@@ -42,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "../finite_sliding_common.h"
 #include "../tests.h"
 
 using namespace dealvem;
@@ -114,35 +115,16 @@ namespace
     FiniteSliding sliding(mesh, laws, {interface}, parameters);
     // time t: the turn in degrees
     sliding.set_constraints_function(
-      [&](const VEMDoFHandler<2> &dofs, const double t, dealii::AffineConstraints<double> &constraints) {
-        const auto  &m     = dofs.get_mesh();
-        const double theta = t * pi / 180;
-        for (unsigned int e = 0; e < m.n_edges(); ++e)
+      testing::prescribe({0, 11}, [](const dealii::types::boundary_id id, const dealii::Point<2> &X, const double t) {
+        dealii::Tensor<1, 2> u;
+        if (id == 11)
           {
-            const auto &edge = m.edge(e);
-            if (!edge.at_boundary() || (edge.boundary_id != 0 && edge.boundary_id != 11))
-              continue;
-            const bool turned = edge.boundary_id == 11;
-            std::vector<unsigned int> nodes{dofs.vertex_node(edge.vertices[0]), dofs.vertex_node(edge.vertices[1])};
-            if (dofs.get_degree() == 2)
-              nodes.push_back(dofs.edge_node(e));
-            for (const auto node : nodes)
-              {
-                const dealii::Point<2> X = dofs.node_location(node);
-                const double           ux = turned ? std::cos(theta) * X[0] - std::sin(theta) * X[1] - X[0] : 0.;
-                const double           uy = turned ? std::sin(theta) * X[0] + std::cos(theta) * X[1] - X[1] : 0.;
-                for (unsigned int comp = 0; comp < 2; ++comp)
-                  {
-                    const auto dof = VEMDoFHandler<2>::node_dof(node, comp);
-                    if (constraints.is_constrained(dof))
-                      continue;
-                    constraints.add_line(dof);
-                    constraints.set_inhomogeneity(dof, comp == 0 ? ux : uy);
-                  }
-              }
+            const double theta = t * pi / 180;
+            u[0]               = std::cos(theta) * X[0] - std::sin(theta) * X[1] - X[0];
+            u[1]               = std::sin(theta) * X[0] + std::cos(theta) * X[1] - X[1];
           }
-        constraints.close();
-      });
+        return u;
+      }));
 
     TurnResult         result;
     const unsigned int n_turns = static_cast<unsigned int>(std::lround(90 / step_degrees));
@@ -248,29 +230,15 @@ namespace
     // the time: the step; out for steps 1-6, back for 7-9
     const auto shift = [](const double t) { return 0.35 * (t <= 6 ? t : 12 - t); };
     sliding.set_constraints_function(
-      [&](const VEMDoFHandler<2> &dofs, const double t, dealii::AffineConstraints<double> &constraints) {
-        const auto &m = dofs.get_mesh();
-        for (unsigned int e = 0; e < m.n_edges(); ++e)
+      testing::prescribe({2, 13}, [shift](const dealii::types::boundary_id id, const dealii::Point<2> &, const double t) {
+        dealii::Tensor<1, 2> u;
+        if (id == 13)
           {
-            const auto &edge = m.edge(e);
-            if (!edge.at_boundary() || (edge.boundary_id != 2 && edge.boundary_id != 13))
-              continue;
-            const bool                moved = edge.boundary_id == 13;
-            std::vector<unsigned int> nodes{dofs.vertex_node(edge.vertices[0]), dofs.vertex_node(edge.vertices[1])};
-            if (dofs.get_degree() == 2)
-              nodes.push_back(dofs.edge_node(e));
-            for (const auto node : nodes)
-              for (unsigned int comp = 0; comp < 2; ++comp)
-                {
-                  const auto dof = VEMDoFHandler<2>::node_dof(node, comp);
-                  if (constraints.is_constrained(dof))
-                    continue;
-                  constraints.add_line(dof);
-                  constraints.set_inhomogeneity(dof, !moved ? 0. : (comp == 0 ? shift(t) : -0.01));
-                }
+            u[0] = shift(t);
+            u[1] = -0.01;
           }
-        constraints.close();
-      });
+        return u;
+      }));
     std::vector<std::pair<double, unsigned int>> forces;
     for (unsigned int n = 1; n <= 9; ++n)
       {

@@ -731,6 +731,10 @@ namespace dealvem
     /// else from material_friction (negative: none given).
     double
     friction_between(const unsigned int a, const unsigned int b) const;
+
+    /// The bodies as ScaleCheck names them (material id = body index).
+    std::vector<ScaleCheck::Body>
+    scale_check_bodies() const;
     Options                    opt;
     /// The contact settings of the run: opt.contact with the pairs'
     /// friction coefficients (made by run()).
