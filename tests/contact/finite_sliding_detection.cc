@@ -11,7 +11,9 @@
 //    contact/finite_sliding_turning): the detection finds one interface,
 //    the ring master (its edges are the longer). The normal force and the
 //    torque of every step equal those of the named pair {ring : shaft} to
-//    1e-9, and every pair is active.
+//    1e-9, and every pair is active. The same model centred at (1000, -700)
+//    gives the same active pairs, force and torque (about its centre) to
+//    1e-7.
 // 2. Three bodies, k = 1, frictionless: a block pressed onto a base by 0.01
 //    and pushed along it (its top moved) into a post that hangs from its
 //    own top 0.05 above the base. The block starts 0.3 from the post, more
@@ -58,10 +60,11 @@ namespace
 
   PolygonalMesh<2>
   annulus(const double r0, const double r1, const unsigned int n_cells, const unsigned int body,
-          const dealii::types::boundary_id inner_id, const dealii::types::boundary_id outer_id)
+          const dealii::types::boundary_id inner_id, const dealii::types::boundary_id outer_id,
+          const dealii::Point<2> &centre)
   {
     dealii::Triangulation<2> tria;
-    dealii::GridGenerator::hyper_shell(tria, dealii::Point<2>(), r0, r1, n_cells, true);
+    dealii::GridGenerator::hyper_shell(tria, centre, r0, r1, n_cells, true);
     tria.refine_global(2);
     PolygonalMesh<2> mesh;
     PolygonalMeshGenerators::from_triangulation(mesh, tria);
@@ -102,7 +105,8 @@ namespace
   };
 
   Run
-  solve(FiniteSliding &sliding, const std::vector<double> &times, const std::string &what)
+  solve(FiniteSliding &sliding, const std::vector<double> &times, const std::string &what,
+        const dealii::Point<2> &centre = dealii::Point<2>())
   {
     Run run;
     for (unsigned int n = 0; n < times.size(); ++n)
@@ -122,7 +126,7 @@ namespace
         for (unsigned int i = 0; i < f.size(); ++i)
           f[i] = r.normal_force[i] + r.friction_force[i];
         run.force.push_back(f);
-        // the torque on the slave side about the origin
+        // the torque on the slave side about the centre
         const auto  &contact = sliding.get_contact();
         const auto  &u       = sliding.get_solution();
         const auto  &lambda  = sliding.get_multipliers();
@@ -141,7 +145,7 @@ namespace
             dealii::Tensor<1, 2> fi = -lambda[i] * nrm;
             if (two)
               fi -= lambda[np + i] * t;
-            T += x[0] * fi[1] - x[1] * fi[0];
+            T += (x[0] - centre[0]) * fi[1] - (x[1] - centre[1]) * fi[0];
           }
         run.torque.push_back(T);
         run.n_detected.push_back(r.n_detected);
@@ -176,11 +180,11 @@ namespace
 
   // 1. the ring on its shaft
   Run
-  turn(const bool detect)
+  turn(const bool detect, const dealii::Point<2> &centre = dealii::Point<2>())
   {
     const double     delta = 2e-3, mu = 0.3;
-    PolygonalMesh<2> mesh  = annulus(0.5, 1.0, 12, 0, 0, 1);
-    mesh.append(annulus(1.0 - delta, 1.5, 10, 1, 10, 11));
+    PolygonalMesh<2> mesh  = annulus(0.5, 1.0, 12, 0, 0, 1, centre);
+    mesh.append(annulus(1.0 - delta, 1.5, 10, 1, 10, 11, centre));
     const NeoHookeMaterial law(1.0, 0.3);
     MaterialLibrary<2>     laws;
     laws.add(0, law);
@@ -190,17 +194,20 @@ namespace
       named.push_back({10, 1, mu});
     FiniteSliding sliding(mesh, laws, named, parameters(1, detect, {1, 10}, mu));
     sliding.set_constraints_function(
-      testing::prescribe({0, 11}, [](const dealii::types::boundary_id id, const dealii::Point<2> &X, const double t) {
+      testing::prescribe({0, 11}, [centre](const dealii::types::boundary_id id, const dealii::Point<2> &X, const double t) {
         dealii::Tensor<1, 2> u;
         if (id == 11)
           {
-            const double theta = t * pi / 180;
-            u[0]               = std::cos(theta) * X[0] - std::sin(theta) * X[1] - X[0];
-            u[1]               = std::sin(theta) * X[0] + std::cos(theta) * X[1] - X[1];
+            const double               theta = t * pi / 180;
+            const dealii::Tensor<1, 2> d     = X - centre;
+            u[0]                             = std::cos(theta) * d[0] - std::sin(theta) * d[1] - d[0];
+            u[1]                             = std::sin(theta) * d[0] + std::cos(theta) * d[1] - d[1];
           }
         return u;
       }));
-    return solve(sliding, {0., 30., 60., 90.}, detect ? "ring, detected" : "ring, named");
+    return solve(sliding, {0., 30., 60., 90.},
+                 std::string(detect ? "ring, detected" : "ring, named") + (centre.norm() > 0 ? ", shifted" : ""),
+                 centre);
   }
 
   // 2. base (body 0, ids 0-3), block (body 1, ids 10-13), post (body 2,
@@ -274,6 +281,19 @@ main()
       }
     testing::check_small(diff / scale, 1e-9, "ring: detected against named, force and torque per step");
     testing::check(all_active, "ring: one interface detected at every step, every pair active");
+
+    // the same model far from the origin (its centre at 1e3 radii): the
+    // tolerances follow the model's size, not |x| (coordinates carry 1e-13
+    // of round-off there, against the interference 2e-3)
+    const Run shifted = turn(true, dealii::Point<2>(1000., -700.));
+    double    moved = 0;
+    for (unsigned int n = 0; n < std::min(shifted.force.size(), detected.force.size()); ++n)
+      moved = std::max({moved, (shifted.force[n][0] - detected.force[n][0]).norm(),
+                        std::abs(shifted.torque[n] - detected.torque[n])});
+    testing::check(shifted.converged && shifted.force.size() == detected.force.size() &&
+                     shifted.n_active == detected.n_active,
+                   "ring at (1000, -700): converges with the same active pairs");
+    testing::check_small(moved / scale, 1e-7, "ring at (1000, -700) against the ring at the origin: force and torque");
   }
 
   // 2. three bodies; shift of the block: 0.08 and 0.16 (0.14 from the
