@@ -1014,9 +1014,15 @@ namespace dealvem
      * transformations, rotations) or if every coordinate is a binary
      * fraction of at most 32 significant bits (integers, halves, the
      * vertices of a generator's dyadic steps such as 0.125: exact values,
-     * not rounded ones, although their decimals are short too). The grid
-     * depends on the data only, not on where the model lies: a shift by a
-     * multiple of the grid keeps it, a scaling by a power of ten scales it.
+     * not rounded ones, although their decimals are short too). It is 0
+     * as well if the grid exceeds 1/100 of the side's shortest edge: data
+     * rounded that coarsely would not be a usable mesh, so vertices on such
+     * a lattice were placed on it (a generator's steps of 0.1 or 0.05 over
+     * the unit square) and are exact; taking 0.1 as their rounding would
+     * close real gaps of up to half an element. The grid depends on the
+     * data only, not on where the model lies: a shift by a multiple of the
+     * grid keeps it, a scaling by a power of ten scales it and the edges
+     * alike.
      */
     double
     decimal_grid(const Mesh &mesh, const Side &side)
@@ -1025,6 +1031,9 @@ namespace dealvem
       for (const auto &e : side.edges)
         vertices.insert(e.begin(), e.end());
       double grid = std::numeric_limits<double>::infinity();
+      double shortest = std::numeric_limits<double>::infinity();
+      for (const auto &e : side.edges)
+        shortest = std::min(shortest, mesh.vertex(e[0]).distance(mesh.vertex(e[1])));
       bool   all_binary = true;
       for (const unsigned int v : vertices)
         for (unsigned int d = 0; d < 2; ++d)
@@ -1056,7 +1065,7 @@ namespace dealvem
             if (!found)
               return 0;
           }
-      return (all_binary || !std::isfinite(grid)) ? 0 : grid;
+      return (all_binary || !std::isfinite(grid) || grid > 1e-2 * shortest) ? 0 : grid;
     }
 
     /**

@@ -132,8 +132,10 @@ namespace dealvem
    *    coordinates of the pair: half the sum of the decimal grids the two
    *    sides' coordinates were written on (the coarsest power of ten of
    *    which every coordinate of a side is a multiple, up to 12 significant
-   *    digits; none for coordinates computed in double precision or all
-   *    short binary fractions such as 0.125, which are exact), or
+   *    digits; none for coordinates computed in double precision, for all
+   *    short binary fractions such as 0.125, which are exact, and for a
+   *    grid coarser than 1/100 of the side's shortest edge, a lattice the
+   *    vertices were placed on), or
    *    Settings::coordinate_precision times the interface size if set, plus
    *    four units in the last place of the pair's coordinates and
    *    $10^{-12}$ of the local edge length (double round-off). It never
