@@ -4,7 +4,8 @@
 // ---------------------------------------------------------------------
 // The tolerances of node insertion follow the model, not the origin (issue
 // 41). Two curved contacts, small strain, non-matching meshes, unilateral
-// frictionless contact, k = 1, one material (E = 1000, nu = 0.3):
+// frictionless contact, k = 2 (the default, with its default diagonal
+// stabilization), one material (E = 1000, nu = 0.3):
 // - Hertz: the lower half of a ring 0.5 <= r <= 1 centred at (0, 1)
 //   (64 x 4 quads in the polar map) pressed by a displacement 0.02 of its
 //   inner arc onto the block [-1, 1] x [-1, 0] (48 x 8 quads, bottom
@@ -18,19 +19,20 @@
 // Every coordinate is computed in double precision, so the data carries
 // no decimal rounding. Each model runs as given, shifted by 1e3 times its
 // size, scaled by 1e-3 and 1e3 (the prescribed displacement scaled alike,
-// so the strains and pressures stay the same), and rotated by 90 degrees
-// (the displacement rotated too; the clamped parts are clamped in both
-// directions), and all three at once. Asserted against the model as
-// given: the same number of pairs and of active pairs, the largest
-// recovered pressure to 1e-8 relative and the sorted pair pressures to
-// 1e-8 of it (measured: 1e-10 shifted, 1e-13 scaled and rotated). Under
-// the old gap tolerance, 1e-5 (|x| + |y|), the shifted models closed real
-// gaps near the edge of the contact zone.
-// Open (not a tolerance of node insertion): rotated by 30 degrees, the
-// pressures differ by 0.8 % of p_max (Hertz, 22 instead of 23 active
-// pairs) and 0.3 % (circles), unchanged with 'Coordinate precision = 0',
-// 'Close discretisation gaps = false' or 'Search distance = 10'; 90
-// degrees is exact, so some quantity aligned with the axes remains.
+// so the strains and pressures stay the same), rotated by 90 and by 30
+// degrees (the displacement rotated too; the clamped parts are clamped in
+// both directions), and shifted, scaled and rotated at once. Asserted
+// against the model as given: the same number of pairs and of active
+// pairs, the largest recovered pressure to 1e-8 relative and the sorted
+// pair pressures to 1e-8 of it (measured: 1e-10 shifted, 1e-13 scaled and
+// rotated by 90 degrees). Under the old gap tolerance, 1e-5 (|x| + |y|),
+// the shifted models closed real gaps near the edge of the contact zone.
+// The turn by 30 degrees also checks the elements: the diagonal
+// stabilization weighted the x and y components of a node by their own
+// consistency stiffness, which depends on the frame; rotated by 30
+// degrees, Hertz had p_max 0.79 % lower and 22 instead of 23 active pairs
+// (the pairs themselves, positions, normals and weights, were the same to
+// 1e-15). It now weights both by half the trace of the node's block.
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
@@ -143,6 +145,9 @@ main(int argc, char **argv)
                                              {"scaled by 1e-3", 0., 0., 1e-3, 0.},
                                              {"scaled by 1e3", 0., 0., 1e3, 0.},
                                              {"rotated by 90 degrees", 0., 0., 1., pi / 2},
+                                             {"rotated by 30 degrees", 0., 0., 1., pi / 6},
+                                             {"shifted, scaled by 1e-3 and rotated by 30 degrees", 1.5, -2.5, 1e-3,
+                                              pi / 6},
                                              {"shifted, scaled by 1e3 and rotated by 90 degrees", -7e5, 4e5, 1e3,
                                               pi / 2}};
   for (const bool seat : {false, true})
