@@ -474,7 +474,7 @@ main(int argc, char **argv)
       // The multipliers themselves converge node by node: at k = 2 (with the
       // diagonal stabilization, see ElasticityOperator) the raw values per
       // tributary length are within 1.0 / 0.7 / 0.6 % of p0 inside 0.8a on
-      // levels 0 / 1 / 2 (measured 0.67 / 0.53 / 0.45 %), and the recovered
+      // levels 0 / 1 / 2 (measured 0.62 / 0.50 / 0.44 %), and the recovered
       // pressure is no worse than the raw one.
       // The active-set iterations (issue targets: k = 1 at most 8, k = 2 at
       // most 9 at every level; measured 5 / 4 / 5 and 6 / 4 / 6 with the

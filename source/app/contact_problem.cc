@@ -415,10 +415,19 @@ namespace dealvem
                       "Node insertion: largest distance between a node and its partner, relative to "
                       "the size of the interface (the diagonal of the bounding box of both contact "
                       "parts). Nodes inside the overlap but farther apart are reported.");
-    prm.declare_entry("Coordinate precision", "1e-5", Double(0, 0.01),
-                      "Node insertion: relative precision of the mesh coordinates. Gaps smaller than "
-                      "this times |x| + |y| are round-off of the mesh files and are closed (1e-5: "
-                      "coordinates written with six significant digits).");
+    prm.declare_entry("Coordinate precision", "auto", Anything(),
+                      "Node insertion: precision of the mesh coordinates; a gap within it is round-off "
+                      "of the mesh files and is closed. 'auto': each contact part's own, the decimal "
+                      "grid its coordinates were written on (a file with six significant digits: a "
+                      "unit of the sixth digit; none for coordinates computed in double precision, for "
+                      "all short binary fractions such as 0.125, and for a grid coarser than 1/100 of "
+                      "the part's shortest edge, a lattice the vertices were placed on), a gap within half the two parts' "
+                      "grids being closed. A number in [0, 0.01) replaces the detection, for data "
+                      "rounded more coarsely than written (coordinates exported in double from a "
+                      "six-digit CAD model): the coordinates are rounded to at most this times the size "
+                      "of the interface (the diagonal of the bounding box of both contact parts); 0 "
+                      "takes them as exact. Double round-off is always allowed for. No tolerance "
+                      "depends on where the model lies.");
     prm.declare_entry("Close discretisation gaps", "true", Bool(),
                       "Node insertion: close the gaps between an inserted node and its partner that "
                       "come from two polygons approximating the same curve (below 1.5 times the "
@@ -873,7 +882,12 @@ namespace dealvem
     cs.accelerate_active_set     = prm.get_bool("Active set acceleration");
     opt.insertion.merge_fraction            = prm.get_double("Merge fraction");
     opt.insertion.search_distance           = prm.get_double("Search distance");
-    opt.insertion.coordinate_precision      = prm.get_double("Coordinate precision");
+    {
+      const std::string precision = InputParsing::trim(prm.get("Coordinate precision"));
+      opt.insertion.coordinate_precision =
+        (precision == "auto" ? NodeInsertion::Settings::detect_precision :
+                               InputParsing::parse_double(precision, "Contact/Coordinate precision"));
+    }
     opt.insertion.close_discretisation_gaps = prm.get_bool("Close discretisation gaps");
     opt.detection.distance                  = prm.get_double("Detection distance");
     opt.detection.max_angle                 = prm.get_double("Detection angle");
@@ -1290,8 +1304,9 @@ namespace dealvem
                 dealii::ExcMessage("Parameter 'Contact/Maximum active set iterations' must be at least 1."));
     InputParsing::check_range(opt.insertion.merge_fraction, 1e-6, 0.49, "Contact/Merge fraction");
     InputParsing::check_range(opt.insertion.search_distance, 0, 1e300, "Contact/Search distance", false, false);
-    InputParsing::check_range(opt.insertion.coordinate_precision, 0, 0.01, "Contact/Coordinate precision", false,
-                              false);
+    if (opt.insertion.coordinate_precision != NodeInsertion::Settings::detect_precision)
+      InputParsing::check_range(opt.insertion.coordinate_precision, 0, 0.01, "Contact/Coordinate precision", false,
+                                true, "Give 'auto' for the precision of the data, or a fraction of the interface size.");
     AssertThrow(bodies.size() == 1 || !contact_pairs.empty() || opt.detect_pairs,
                 dealii::ExcMessage("Parameter 'Contact/Pairs' is empty but there are " +
                                    std::to_string(bodies.size()) + " bodies: name at least one contact pair, or "

@@ -10,6 +10,7 @@
 #include <dealvem/contact/node_insertion.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -440,8 +441,10 @@ namespace dealvem
       AssertThrow(settings.search_distance > 0 && std::isfinite(settings.search_distance),
                   dealii::ExcMessage(name + "the search distance must be positive and finite, but it is " +
                                      number_string(settings.search_distance) + "."));
-      AssertThrow(settings.coordinate_precision >= 0 && settings.coordinate_precision < 1e-2,
-                  dealii::ExcMessage(name + "the coordinate precision must lie in [0, 0.01), but it is " +
+      AssertThrow(settings.coordinate_precision == NodeInsertion::Settings::detect_precision ||
+                    (settings.coordinate_precision >= 0 && settings.coordinate_precision < 1e-2),
+                  dealii::ExcMessage(name + "the coordinate precision must be 'auto' (detected) or lie in "
+                                            "[0, 0.01), but it is " +
                                      number_string(settings.coordinate_precision) + "."));
       AssertThrow(settings.curvature_factor >= 0 && settings.curvature_factor <= 10,
                   dealii::ExcMessage(name + "the curvature factor must lie in [0, 10], but it is " +
@@ -999,13 +1002,90 @@ namespace dealvem
       return GapVerdict::real;
     }
 
+    /// Distance from |@p c| to the next larger double: the spacing of
+    /// the doubles at @p c.
+    double
+    ulp(const double c)
+    {
+      return std::nextafter(std::abs(c), std::numeric_limits<double>::infinity()) - std::abs(c);
+    }
+
+    /**
+     * The decimal grid the coordinates of @p side were written on, for the
+     * zero gaps of rule 3 ('Coordinate precision = auto'): the coarsest
+     * power of ten $10^e$ of which every nonzero coordinate of the side's
+     * vertices is an integer multiple to within two units in the last
+     * place of a double, searched over at most 12 significant digits.
+     * Returns 0 (no rounding beyond double's own) if some coordinate needs
+     * more digits (coordinates computed in double precision: generators,
+     * transformations, rotations) or if every coordinate is a binary
+     * fraction of at most 32 significant bits (integers, halves, the
+     * vertices of a generator's dyadic steps such as 0.125: exact values,
+     * not rounded ones, although their decimals are short too). It is 0
+     * as well if the grid exceeds 1/100 of the side's shortest edge: data
+     * rounded that coarsely would not be a usable mesh, so vertices on such
+     * a lattice were placed on it (a generator's steps of 0.1 or 0.05 over
+     * the unit square) and are exact; taking 0.1 as their rounding would
+     * close real gaps of up to half an element. The grid depends on the
+     * data only, not on where the model lies: a shift by a multiple of the
+     * grid keeps it, a scaling by a power of ten scales it and the edges
+     * alike.
+     */
+    double
+    decimal_grid(const Mesh &mesh, const Side &side)
+    {
+      std::set<unsigned int> vertices;
+      for (const auto &e : side.edges)
+        vertices.insert(e.begin(), e.end());
+      double grid = std::numeric_limits<double>::infinity();
+      double shortest = std::numeric_limits<double>::infinity();
+      for (const auto &e : side.edges)
+        shortest = std::min(shortest, mesh.vertex(e[0]).distance(mesh.vertex(e[1])));
+      bool   all_binary = true;
+      for (const unsigned int v : vertices)
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            const double c = mesh.vertex(v)[d];
+            if (c == 0)
+              continue;
+            int exponent = 0;
+            std::frexp(c, &exponent);
+            const double bits = std::ldexp(c, 32 - exponent); // 32 significant bits
+            all_binary        = all_binary && bits == std::round(bits);
+            // the first (coarsest) 10^e, e = top + 1 - digits, with c an
+            // integer multiple of it: c / 10^e (or c 10^-e) is formed with
+            // at most one rounding, so an exact multiple lies within two
+            // units in the last place of the quotient
+            const int top   = static_cast<int>(std::floor(std::log10(std::abs(c))));
+            bool      found = false;
+            for (int digits = 1; digits <= 12 && !found; ++digits)
+              {
+                const int    e     = top + 1 - digits;
+                const double power = std::pow(10., std::abs(e)); // exact up to 1e22
+                const double q     = (e >= 0 ? c / power : c * power);
+                if (std::abs(q - std::round(q)) <= 2 * ulp(q))
+                  {
+                    grid  = std::min(grid, e >= 0 ? power : 1 / power);
+                    found = true;
+                  }
+              }
+            if (!found)
+              return 0;
+          }
+      return (all_binary || !std::isfinite(grid) || grid > 1e-2 * shortest) ? 0 : grid;
+    }
+
     /**
      * Rule 4, pass (a): judge the gap of every pair of @p master_partner
      * (master vertex -> slave vertex) on the current mesh, i.e. after the
      * splits and before any merged vertex moves. @p master and @p slave are
      * the sides as collected before insertion (their edges are the chords
-     * of rule 3), @p by_vertex the vertices rule 3 inserted. A gap within
-     * the coordinate precision is zero; otherwise a pair with an inserted
+     * of rule 3), @p by_vertex the vertices rule 3 inserted, @p grid the
+     * decimal grids of the master and the slave side (decimal_grid(); with
+     * 'Coordinate precision' set, that value times @p size, the interface
+     * size, on both). A gap within half the sum of the two grids, plus four
+     * units in the last place of the pair's largest coordinate and
+     * $10^{-12}$ of the local edge length (double round-off), is zero; otherwise a pair with an inserted
      * vertex is judged against the chord it split, and two merged original
      * vertices against the edge at the master vertex that the slave vertex
      * lies least beyond (along the edge). Returns the pairs in the order of @p master_partner.
@@ -1016,6 +1096,7 @@ namespace dealvem
                const Side                                 &slave,
                const std::map<unsigned int, unsigned int> &master_partner,
                const InsertedByVertex                     &by_vertex,
+               const std::array<double, 2>                &grid,
                const NodeInsertion::Settings              &settings)
     {
       std::vector<JudgedPair> judged;
@@ -1027,7 +1108,8 @@ namespace dealvem
           const Inserted *ins = (im != by_vertex.end() ? im->second : (is != by_vertex.end() ? is->second : nullptr));
           const Point     xm = mesh.vertex(m), xs = mesh.vertex(s);
           const double    g0 = (xs - xm) * master_now.normal.at(m);
-          const double    tol = settings.coordinate_precision * (std::abs(xs[0]) + std::abs(xs[1])) +
+          const double    largest = std::max({std::abs(xm[0]), std::abs(xm[1]), std::abs(xs[0]), std::abs(xs[1])});
+          const double    tol = 0.5 * (grid[0] + grid[1]) + 4 * ulp(largest) +
                              1e-12 * std::min(master_now.h.at(m), slave.h.count(s) ? slave.h.at(s) : master_now.h.at(m));
           JudgedPair j{m, s, std::abs(g0) <= tol ? GapVerdict::zero : GapVerdict::real, 0};
           const double cf = settings.curvature_factor;
@@ -1427,6 +1509,13 @@ namespace dealvem
             }
     const double search = settings.search_distance * lo.distance(hi);
     const double f      = settings.merge_fraction;
+    // the precision of the coordinates (rule 3, zero gaps): the decimal
+    // grid of each side's data, or the one set, relative to the interface
+    const std::array<double, 2> grid =
+      (settings.coordinate_precision == Settings::detect_precision ?
+         std::array<double, 2>{{decimal_grid(mesh, master), decimal_grid(mesh, slave)}} :
+         std::array<double, 2>{{settings.coordinate_precision * lo.distance(hi),
+                                settings.coordinate_precision * lo.distance(hi)}});
 
     // 1. partners: project every vertex onto the other side
     std::map<unsigned int, Candidate> on_master, on_slave; // slave vertices onto master, and back
@@ -1455,7 +1544,7 @@ namespace dealvem
     for (const auto &ins : inserted)
       by_vertex[ins.vertex] = &ins;
     const std::vector<JudgedPair> judged =
-      judge_gaps(mesh, master, slave, master_partner, by_vertex, settings);
+      judge_gaps(mesh, master, slave, master_partner, by_vertex, grid, settings);
     face_merged_vertices(mesh, master, slave, master_partner, by_vertex, report);
     close_or_keep_gaps(mesh, master, slave, judged, by_vertex, settings, report);
 

@@ -158,15 +158,21 @@ namespace dealvem
             K(i, j) += gamma * tau * 0.5 * (Ks(i, j) + Ks(j, i));
         return;
       }
-    // (I - Pi)^T diag(d) (I - Pi), d_i = c_k max(K_ii, 1e-3 tau)
+    // (I - Pi)^T diag(d) (I - Pi), d the same for the two components of a
+    // node (DoFs 2a, 2a + 1): c_k max(K_aa, 1e-3 tau) with K_aa half the
+    // trace of the node's 2 x 2 diagonal block. The block turns with the
+    // frame (R K_aa R^T), its trace does not; the single entries K_ii of
+    // the x and y components do, so weighting them one by one made the
+    // solution depend on the orientation of the model (exact only under
+    // turns by multiples of 90 degrees, which swap x and y).
     const double c_k   = (element.get_degree() == 1 ? 1. : 0.2);
     RowMatrix    I_Pi  = -view(element.get_projector_dof_basis());
     Eigen::VectorXd d(n);
+    AssertThrow(n % 2 == 0, dealii::ExcInternalError());
     for (unsigned int i = 0; i < n; ++i)
-      {
-        I_Pi(i, i) += 1.;
-        d(i) = gamma * c_k * std::max(K(i, i), 1e-3 * tau);
-      }
+      I_Pi(i, i) += 1.;
+    for (unsigned int a = 0; a < n; a += 2)
+      d(a) = d(a + 1) = gamma * c_k * std::max(0.5 * (K(a, a) + K(a + 1, a + 1)), 1e-3 * tau);
     const RowMatrix Ks = I_Pi.transpose() * d.asDiagonal() * I_Pi;
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)

@@ -30,7 +30,7 @@
 //    search distance;
 // h) real gaps and penetrations are kept: blocks 0.01 and 0.1 apart or
 //    overlapping by 0.01, and slave vertices moved normally by 1e-7 .. 1e-2
-//    edge lengths (closed only below the coordinate precision);
+//    edge lengths (computed in double precision, so kept for every size);
 // i) errors, each naming the interface ids;
 // j) the facing test's band for vertices paired before (keep_facing).
 // For k = 1 and 2: weights and segment lengths sum to the interface
@@ -625,11 +625,10 @@ main(int argc, char **argv)
         run(join(block(0, 0, 1, 1, 3, 3, 0, 0), upper), 3, 6, x, name.str());
       }
   // ... and slave interior vertices moved normally (away from the lower
-  // block) by delta h, h = 1/4: all 5 vertex pairs merge; below the
-  // coordinate precision (delta h <= 2.5e-6 < 1e-5 (|x| + |y|)) the gap is
-  // closed (the slave vertex moves onto the master vertex, all 5 pairs
-  // closed), above it (delta = 1e-3, 1e-2) the gap delta h is kept at the
-  // 3 interior pairs (only the 2 corner pairs closed).
+  // block) by delta h, h = 1/4: all 5 vertex pairs merge; the moved
+  // coordinates are computed in double precision, so for every delta
+  // (1e-7 .. 1e-2) the gap delta h is real and kept at the 3 interior
+  // pairs (only the 2 corner pairs, at zero gap, closed).
   for (const double delta : {1e-7, 1e-5, 1e-3, 1e-2})
     for (const unsigned int k : {1u, 2u})
       {
@@ -637,7 +636,9 @@ main(int argc, char **argv)
         const auto   upper = [&](const double xi, const double eta, const unsigned int i, const unsigned int j) {
           return P(xi, 1 + eta + (j == 0 && i > 0 && i < 4 ? delta * h : 0.));
         };
-        const bool closed = delta * h < 1e-5;
+        // computed in double precision: a real gap for every delta (the
+        // data carry no decimal rounding; the old rule closed delta h < 1e-5)
+        const bool closed = false;
         Mesh       mesh   = join(block(0, 0, 1, 1, 4, 1, 0, 0), mapped_quads(4, 2, upper, 1, 4));
         const auto itf    = NodeInsertion::insert(mesh, 3, 6, k, NodeInsertion::Settings());
         std::ostringstream name;

@@ -116,7 +116,7 @@ namespace dealvem
    *    curve takes between the chord's ends. The pair's gap is therefore a
    *    discretisation gap if the partner's offset $\delta$ (along the
    *    chord's outward normal) lies in $\tfrac12 t(1-t)L^2\,[\kappa_-,
-   *    \kappa_+]$, up to $\varepsilon_x(|x|+|y|)$, where $[\kappa_-,
+   *    \kappa_+]$, up to $\varepsilon_x$, where $[\kappa_-,
    *    \kappa_+]$ spans the vertex curvatures (circles through three
    *    neighbours; turns above 60 degrees are corners) of the chord's ends
    *    and their neighbours on the receiving side and of the partner and its
@@ -128,8 +128,20 @@ namespace dealvem
    *    next to the slave vertex. A flat block under a cylinder does not
    *    qualify (the block shows no curvature, the cylinder the other sign);
    *    a real gap on a curved interface is kept if it exceeds about the
-   *    chord deviation. $\varepsilon_x$ is the relative precision of the
-   *    coordinates (1e-5: six significant digits). A discretisation gap is
+   *    chord deviation. $\varepsilon_x$ is the precision of the
+   *    coordinates of the pair: half the sum of the decimal grids the two
+   *    sides' coordinates were written on (the coarsest power of ten of
+   *    which every coordinate of a side is a multiple, up to 12 significant
+   *    digits; none for coordinates computed in double precision, for all
+   *    short binary fractions such as 0.125, which are exact, and for a
+   *    grid coarser than 1/100 of the side's shortest edge, a lattice the
+   *    vertices were placed on), or
+   *    Settings::coordinate_precision times the interface size if set, plus
+   *    four units in the last place of the pair's coordinates and
+   *    $10^{-12}$ of the local edge length (double round-off). It never
+   *    grows with the distance from the origin, so a model gives the same
+   *    pairs wherever it lies, at every scale and rotation. A gap within
+   *    $\varepsilon_x$ (a zero gap) is closed. A discretisation gap is
    *    closed by moving the inserted vertex onto its partner (for two
    *    merged original vertices, the slave vertex onto the master vertex),
    *    so both sides share the node; every other gap or penetration is kept
@@ -156,9 +168,20 @@ namespace dealvem
       /// size of the interface (the diagonal of the bounding box of both
       /// sides). Larger gaps leave the node unpaired (reported).
       double search_distance = 0.25;
-      /// Relative precision of the vertex coordinates: gaps below this
-      /// times |x| + |y| are taken as round-off of the mesh files.
-      double coordinate_precision = 1e-5;
+      /// The value of coordinate_precision that detects the precision
+      /// from the data (the default, 'auto' in the parameter file).
+      static constexpr double detect_precision = -1;
+      /// Precision of the vertex coordinates (rule 3, zero gaps).
+      /// detect_precision: each side's own, the decimal grid its
+      /// coordinates were written on (0 for coordinates computed in double
+      /// precision, or all short binary fractions). A value in [0, 0.01)
+      /// replaces the detection: the coordinates are rounded to at most
+      /// this times the interface size (the diagonal of the bounding box
+      /// of both sides), for data rounded more coarsely than written (0:
+      /// exact data). A gap below half the two sides' grids plus double
+      /// round-off is taken as round-off of the mesh files. No tolerance
+      /// grows with the distance of the model from the origin.
+      double coordinate_precision = detect_precision;
       /// Factor by which the range of the sides' curvatures is widened in
       /// the gap rule (rule 3); 0 closes only gaps of coordinate precision.
       double curvature_factor = 1.5;

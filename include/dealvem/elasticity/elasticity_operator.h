@@ -26,8 +26,10 @@ namespace dealvem
     /// ElasticityOperator for the measurements behind it).
     automatic,
     /// "D-recipe": $K_s = \gamma\,c_k\,(I-\Pi)^T\,\mathrm{diag}(d_i)\,(I-\Pi)$
-    /// with $d_i = \max((K_c)_{ii}, 10^{-3}\tau)$: every degree of freedom
-    /// is stabilized like its own consistency stiffness.
+    /// with $d_i = \max(\tfrac12\mathrm{tr}(K_c)_{aa}, 10^{-3}\tau)$ for both
+    /// components $i$ of node $a$ ($(K_c)_{aa}$ its $2\times 2$ diagonal
+    /// block): every node is stabilized like its own consistency stiffness,
+    /// the same in every orientation of the model.
     diagonal,
     /// "dofi-dofi": $K_s = \gamma\,\tau\,(I-\Pi)^T(I-\Pi)$ with one scale
     /// $\tau = \mathrm{tr}(K_c)/n_{dofs}$ for all degrees of freedom.
@@ -86,7 +88,10 @@ namespace dealvem
    *   - Stabilization::diagonal, the "D-recipe" of Beirao da
    *     Veiga, Dassi and Russo (2017):
    *     $K_s = \gamma\,c_k\,(I-\Pi)^T\mathrm{diag}(d_i)(I-\Pi)$,
-   *     $d_i = \max((K_c)_{ii}, 10^{-3}\tau)$, $c_1 = 1$, $c_2 = 1/5$;
+   *     $d_i = \max(\tfrac12\mathrm{tr}(K_c)_{aa}, 10^{-3}\tau)$ for both
+   *     components $i$ of node $a$ (the trace of the node's $2\times 2$
+   *     block does not change when the model is rotated, the single
+   *     diagonal entries do), $c_1 = 1$, $c_2 = 1/5$;
    *   - Stabilization::trace, "dofi-dofi": $K_s = \gamma\,\tau\,(I-\Pi)^T(I-\Pi)$,
    *   with $\tau = \mathrm{tr}(K_c)/n_{dofs}$; both scale with the material
    *   and the cell like $K_c$;
