@@ -94,11 +94,11 @@ main()
 
   // 1. boundary ids the mesh does not have
   for (const auto &[parameter, value, entry] :
-       std::vector<std::array<std::string, 3>>{{"Dirichlet", "13 : xy : 0, 0", "Dirichlet entry '13 : xy : 0, 0'"},
-                                               {"Roller", "2, 13", "Roller entry '13'"},
-                                               {"Traction", "13 : 0, 1", "Traction entry '13 : 0, 1'"},
-                                               {"Pressure", "13 : p", "Pressure entry '13 : p'"},
-                                               {"Rigid boundary", "13 : 0, 1 : 2", "Rigid boundary entry '13 : 0, 1 : 2'"}})
+       std::vector<std::array<std::string, 3>>{{{"Dirichlet", "13 : xy : 0, 0", "Dirichlet entry '13 : xy : 0, 0'"}},
+                                               {{"Roller", "2, 13", "Roller entry '13'"}},
+                                               {{"Traction", "13 : 0, 1", "Traction entry '13 : 0, 1'"}},
+                                               {{"Pressure", "13 : p", "Pressure entry '13 : p'"}},
+                                               {{"Rigid boundary", "13 : 0, 1 : 2", "Rigid boundary entry '13 : 0, 1 : 2'"}}})
     {
       const auto bc = parse("set Function constants = p=1\nset " + parameter + " = " + value + "\n");
       testing::check_throws([&] { bc->check_boundary_ids(mesh); },
