@@ -166,7 +166,7 @@ main()
   }
 
   // 5. values that are not finite
-  for (const auto &[entries, fragment] : std::vector<std::array<std::string, 2>>{
+  for (const auto &[entries, fragment] : std::vector<std::pair<std::string, std::string>>{
          {"set Traction = 1 : sqrt(x-2), 0",
           "Parameter '" + section + "/Traction entry '1 : sqrt(x-2), 0'': the expression 'sqrt(x-2)' evaluates to nan at the point (1, "},
          {"set Pressure = 1 : sqrt(-1)", "the expression 'sqrt(-1)' evaluates to"},
