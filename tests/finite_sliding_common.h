@@ -8,9 +8,12 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 
 #include <dealvem/contact/finite_sliding.h>
+#include <dealvem/mesh/generators.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <functional>
@@ -19,6 +22,28 @@
 
 namespace testing
 {
+  /// A mesh of the annulus r0 < |x - centre| < r1 from
+  /// GridGenerator::hyper_shell (n_cells around, refined @p refinements
+  /// times, vertices on the circles), material id @p body, its inner circle
+  /// with boundary id @p inner_id and its outer one @p outer_id.
+  inline dealvem::PolygonalMesh<2>
+  annulus(const double r0, const double r1, const unsigned int n_cells, const unsigned int refinements,
+          const unsigned int body, const dealii::types::boundary_id inner_id,
+          const dealii::types::boundary_id outer_id, const dealii::Point<2> &centre = dealii::Point<2>())
+  {
+    dealii::Triangulation<2> tria;
+    dealii::GridGenerator::hyper_shell(tria, centre, r0, r1, n_cells, true);
+    tria.refine_global(refinements);
+    dealvem::PolygonalMesh<2> mesh;
+    dealvem::PolygonalMeshGenerators::from_triangulation(mesh, tria);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      mesh.set_material_id(c, body);
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      if (mesh.edge(e).at_boundary())
+        mesh.set_edge_boundary_id(e, mesh.edge(e).boundary_id == 0 ? inner_id : outer_id);
+    return mesh;
+  }
+
   /// The displacement of a node of an edge with one of the prescribed
   /// boundary ids: a function of the id, the node's reference position and
   /// the time.

@@ -377,6 +377,22 @@ namespace dealvem
 
 
 
+  ContactDetection::Result
+  FiniteSliding::detect_candidates(PolygonalMesh<2> &there, const double distance_factor) const
+  {
+    const auto                          &d = parameters.detection;
+    std::set<dealii::types::boundary_id> excluded;
+    for (const auto id : original.get_boundary_ids())
+      if (d.candidate_ids.count(id) == 0)
+        excluded.insert(id);
+    ContactDetection::Settings settings = d.settings;
+    settings.split_edges                = false;
+    settings.distance *= distance_factor;
+    return ContactDetection::detect(there, excluded, ContactDetection::first_free_id(original), settings);
+  }
+
+
+
   std::vector<FiniteSliding::PassInterface>
   FiniteSliding::pass_interfaces_at(
     const std::vector<dealii::Point<2>>                                            &x,
@@ -401,13 +417,7 @@ namespace dealvem
     PolygonalMesh<2> there(original);
     for (unsigned int v = 0; v < original.n_vertices(); ++v)
       there.move_vertex(v, x[v]);
-    std::set<dealii::types::boundary_id> excluded;
-    for (const auto id : original.get_boundary_ids())
-      if (d.candidate_ids.count(id) == 0)
-        excluded.insert(id);
-    ContactDetection::Settings settings = d.settings;
-    settings.split_edges                = false;
-    const auto found = ContactDetection::detect(there, excluded, ContactDetection::first_free_id(original), settings);
+    const auto found = detect_candidates(there, 1.);
     for (unsigned int e = 0; e < there.n_edges(); ++e)
       if (there.edge(e).at_boundary() && there.edge(e).boundary_id != original.edge(e).boundary_id)
         {
@@ -436,7 +446,7 @@ namespace dealvem
         const double l = n.norm();
         return l > 0 ? n / l : n;
       };
-      const double           cos_corner = std::cos(settings.corner_angle * M_PI / 180.);
+      const double           cos_corner = std::cos(d.settings.corner_angle * M_PI / 180.);
       const auto             labelled   = [&](const unsigned int e) {
         return edge_ids_there[e] != original.edge(e).boundary_id;
       };
@@ -514,16 +524,9 @@ namespace dealvem
           x[comp] += solution[VEMDoFHandler<2>::node_dof(current->dof_handler->vertex_node(v), comp)];
         there.move_vertex(v, x);
       }
-    std::set<dealii::types::boundary_id> excluded;
-    for (const auto id : original.get_boundary_ids())
-      if (d.candidate_ids.count(id) == 0)
-        excluded.insert(id);
     // (half the distance of the pairing passes: a band, so that a part at
     // the threshold is not taken in and left out by turns)
-    ContactDetection::Settings settings = d.settings;
-    settings.split_edges                = false;
-    settings.distance *= 0.5;
-    const auto found = ContactDetection::detect(there, excluded, ContactDetection::first_free_id(original), settings);
+    const auto found = detect_candidates(there, 0.5);
     std::map<dealii::types::boundary_id, unsigned int> partner_of_id;
     for (const auto &itf : found.interfaces)
       {

@@ -65,24 +65,6 @@ namespace
 {
   constexpr double pi = 3.14159265358979323846;
 
-  PolygonalMesh<2>
-  annulus(const double r0, const double r1, const unsigned int n_cells, const unsigned int body,
-          const dealii::types::boundary_id inner_id, const dealii::types::boundary_id outer_id,
-          const dealii::Point<2> &centre)
-  {
-    dealii::Triangulation<2> tria;
-    dealii::GridGenerator::hyper_shell(tria, centre, r0, r1, n_cells, true);
-    tria.refine_global(2);
-    PolygonalMesh<2> mesh;
-    PolygonalMeshGenerators::from_triangulation(mesh, tria);
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      mesh.set_material_id(c, body);
-    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
-      if (mesh.edge(e).at_boundary())
-        mesh.set_edge_boundary_id(e, mesh.edge(e).boundary_id == 0 ? inner_id : outer_id);
-    return mesh;
-  }
-
   // a rectangle of material id body, its ids 0-3 (left, right, bottom, top)
   // shifted by offset
   PolygonalMesh<2>
@@ -97,6 +79,40 @@ namespace
       if (mesh.edge(e).at_boundary())
         mesh.set_edge_boundary_id(e, mesh.edge(e).boundary_id + offset);
     return mesh;
+  }
+
+  // the sum of the pairs' forces of the last step of @p sliding, each on
+  // its slave side or, with @p reported, on the body its reported
+  // interface reports (FiniteSliding::reported_sign()), and its moment
+  // about @p centre
+  std::pair<dealii::Tensor<1, 2>, double>
+  pair_resultant(const FiniteSliding &sliding, const dealii::Point<2> &centre, const bool reported)
+  {
+    const auto          &contact = sliding.get_contact();
+    const auto          &u       = sliding.get_solution();
+    const auto          &lambda  = sliding.get_multipliers();
+    const auto           np      = contact.n_pairs();
+    const bool           two     = contact.n_constraints() == 2 * np;
+    dealii::Tensor<1, 2> F;
+    double               M = 0;
+    for (unsigned int i = 0; i < np; ++i)
+      {
+        if (contact.is_left_out(i))
+          continue;
+        const auto           x   = contact.current_positions(i, u)[1];
+        const auto           nrm = contact.current_normal(i, u);
+        dealii::Tensor<1, 2> tg;
+        tg[0] = -nrm[1];
+        tg[1] = nrm[0];
+        dealii::Tensor<1, 2> f = -lambda[i] * nrm;
+        if (two)
+          f -= lambda[np + i] * tg;
+        if (reported)
+          f *= sliding.reported_sign(contact.get_pairs()[i].interface);
+        F += f;
+        M += (x[0] - centre[0]) * f[1] - (x[1] - centre[1]) * f[0];
+      }
+    return {F, M};
   }
 
   // per step: the force on the slave side of each reported interface
@@ -134,26 +150,7 @@ namespace
           f[i] = r.normal_force[i] + r.friction_force[i];
         run.force.push_back(f);
         // the torque on the slave side about the centre
-        const auto  &contact = sliding.get_contact();
-        const auto  &u       = sliding.get_solution();
-        const auto  &lambda  = sliding.get_multipliers();
-        const auto   np      = contact.n_pairs();
-        const bool   two     = contact.n_constraints() == 2 * np;
-        double       T       = 0;
-        for (unsigned int i = 0; i < np; ++i)
-          {
-            if (contact.is_left_out(i))
-              continue;
-            const auto           x = contact.current_positions(i, u)[1];
-            const auto           nrm = contact.current_normal(i, u);
-            dealii::Tensor<1, 2> t;
-            t[0] = -nrm[1];
-            t[1] = nrm[0];
-            dealii::Tensor<1, 2> fi = -lambda[i] * nrm;
-            if (two)
-              fi -= lambda[np + i] * t;
-            T += (x[0] - centre[0]) * fi[1] - (x[1] - centre[1]) * fi[0];
-          }
+        const double T = pair_resultant(sliding, centre, false).second;
         run.torque.push_back(T);
         run.n_detected.push_back(r.n_detected);
         run.n_pairs.push_back(r.n_pairs);
@@ -190,8 +187,8 @@ namespace
   turn(const bool detect, const dealii::Point<2> &centre = dealii::Point<2>())
   {
     const double     delta = 2e-3, mu = 0.3;
-    PolygonalMesh<2> mesh  = annulus(0.5, 1.0, 12, 0, 0, 1, centre);
-    mesh.append(annulus(1.0 - delta, 1.5, 10, 1, 10, 11, centre));
+    PolygonalMesh<2> mesh  = testing::annulus(0.5, 1.0, 12, 2, 0, 0, 1, centre);
+    mesh.append(testing::annulus(1.0 - delta, 1.5, 10, 2, 1, 10, 11, centre));
     const NeoHookeMaterial law(1.0, 0.3);
     MaterialLibrary<2>     laws;
     laws.add(0, law);
@@ -271,8 +268,8 @@ namespace
   Race
   race(const unsigned int degree, const double mu)
   {
-    PolygonalMesh<2> mesh = annulus(1.0, 1.4, 24, 0, 0, 1, dealii::Point<2>());
-    mesh.append(annulus(0.2, 0.5, 12, 1, 10, 11, dealii::Point<2>(0, -0.5)));
+    PolygonalMesh<2> mesh = testing::annulus(1.0, 1.4, 24, 2, 0, 0, 1);
+    mesh.append(testing::annulus(0.2, 0.5, 12, 2, 1, 10, 11, dealii::Point<2>(0, -0.5)));
     const NeoHookeMaterial law(1.0, 0.3);
     MaterialLibrary<2>     laws;
     laws.add(0, law);
@@ -306,30 +303,8 @@ namespace
             break;
           }
         const auto &r        = sliding.get_history().back();
-        const auto &contact  = sliding.get_contact();
-        const auto &u        = sliding.get_solution();
-        const auto &lambda   = sliding.get_multipliers();
-        const auto  np       = contact.n_pairs();
-        const bool  two      = contact.n_constraints() == 2 * np;
-        double      M        = 0;
-        dealii::Tensor<1, 2> F;
-        for (unsigned int i = 0; i < np; ++i)
-          {
-            if (contact.is_left_out(i))
-              continue;
-            const auto           x   = contact.current_positions(i, u)[1];
-            const auto           nrm = contact.current_normal(i, u);
-            dealii::Tensor<1, 2> tg;
-            tg[0] = -nrm[1];
-            tg[1] = nrm[0];
-            dealii::Tensor<1, 2> fi = -lambda[i] * nrm;
-            if (two)
-              fi -= lambda[np + i] * tg;
-            // (on the wheel: the slave side, or the master one)
-            fi *= sliding.reported_sign(contact.get_pairs()[i].interface);
-            F += fi;
-            M += x[0] * fi[1] - x[1] * fi[0];
-          }
+        // (on the wheel: the slave side, or the master one)
+        const auto [F, M] = pair_resultant(sliding, dealii::Point<2>(), true);
         result.force.push_back(F);
         result.normal.push_back(r.normal_force[0]);
         result.moment.push_back(M);

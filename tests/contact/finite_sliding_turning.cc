@@ -51,26 +51,6 @@ namespace
 {
   constexpr double pi = 3.14159265358979323846;
 
-  // a mesh of an annulus from GridGenerator::hyper_shell, its inner circle
-  // with boundary id inner_id and its outer one outer_id, material id body
-  PolygonalMesh<2>
-  annulus(const double r0, const double r1, const unsigned int n_cells, const unsigned int refinements,
-          const unsigned int body, const dealii::types::boundary_id inner_id,
-          const dealii::types::boundary_id outer_id)
-  {
-    dealii::Triangulation<2> tria;
-    dealii::GridGenerator::hyper_shell(tria, dealii::Point<2>(), r0, r1, n_cells, true);
-    tria.refine_global(refinements);
-    PolygonalMesh<2> mesh;
-    PolygonalMeshGenerators::from_triangulation(mesh, tria);
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      mesh.set_material_id(c, body);
-    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
-      if (mesh.edge(e).at_boundary())
-        mesh.set_edge_boundary_id(e, mesh.edge(e).boundary_id == 0 ? inner_id : outer_id);
-    return mesh;
-  }
-
   // Lame, plane strain: the contact pressure of a fit with interference
   // delta at radius R between a shaft (a, R) held at r = a and a ring (R, b)
   // held at r = b
@@ -101,8 +81,8 @@ namespace
                              " master, mu = " + std::to_string(mu) + ", steps of " +
                              std::to_string(int(step_degrees)) + " degrees: ";
     // shaft: ids 0 (held), 1 (contact); ring: 10 (contact), 11 (turned)
-    PolygonalMesh<2> mesh = annulus(0.5, 1.0, 12, 2, 0, 0, 1);
-    mesh.append(annulus(1.0 - delta, 1.5, 10, 2, 1, 10, 11));
+    PolygonalMesh<2> mesh = testing::annulus(0.5, 1.0, 12, 2, 0, 0, 1);
+    mesh.append(testing::annulus(1.0 - delta, 1.5, 10, 2, 1, 10, 11));
     const NeoHookeMaterial law(1.0, 0.3);
     MaterialLibrary<2>     laws;
     laws.add(0, law);

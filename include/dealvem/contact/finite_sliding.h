@@ -662,6 +662,11 @@ namespace dealvem
                        std::vector<dealii::types::boundary_id> &edge_ids_there,
                        std::vector<bool>                       &detected_there,
                        std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> &sides) const;
+    /// ContactDetection on @p there (a copy of $M_0$ with moved vertices)
+    /// among the candidate edges, without splits, at @p distance_factor
+    /// times the detection distance.
+    ContactDetection::Result
+    detect_candidates(PolygonalMesh<2> &there, const double distance_factor) const;
     /// With Parameters::detection: the candidate edges of $M_0$ that face
     /// another body at the converged state of the pass (within half the
     /// detection distance) but lay on no interface of the pass.
