@@ -455,6 +455,12 @@ namespace dealvem
                       "also releases, next to each run of released pairs, the active pairs over the run's "
                       "length, until such a pair penetrates again. The solution is the same; false runs "
                       "the plain update.");
+    prm.declare_entry("Globalized solve", "true", Bool(),
+                      "Unilateral contact without Coulomb friction: when the active set cycles, reaches its "
+                      "iteration limit or holds no equilibrium, solve again with the primal active-set method, "
+                      "which converges whenever a solution exists and otherwise stops with 'No static "
+                      "equilibrium' and the collapse mechanism that proves it (printed, and written as "
+                      "<prefix>-mechanism.vtu and .svg). false: the active set's failure is the answer.");
     prm.leave_subsection();
     prm.enter_subsection("Load steps");
     prm.declare_entry("Number of steps", "1", Integer(),
@@ -880,6 +886,7 @@ namespace dealvem
     cs.penalty_factor            = prm.get_double("Penalty factor");
     cs.max_active_set_iterations = prm.get_integer("Maximum active set iterations");
     cs.accelerate_active_set     = prm.get_bool("Active set acceleration");
+    cs.globalize                 = prm.get_bool("Globalized solve");
     opt.insertion.merge_fraction            = prm.get_double("Merge fraction");
     opt.insertion.search_distance           = prm.get_double("Search distance");
     {
@@ -964,6 +971,8 @@ namespace dealvem
           {"Contact/Maximum active set iterations",
            "the contact conditions are part of the Newton iteration ('Finite strain/Maximum Newton iterations')"},
           {"Contact/Active set acceleration",
+           "the contact conditions are part of the Newton iteration ('Finite strain/Maximum Newton iterations')"},
+          {"Contact/Globalized solve",
            "the contact conditions are part of the Newton iteration ('Finite strain/Maximum Newton iterations')"},
           {"Contact/Penalty", "finite sliding has no stick penalty (friction by Lagrange multipliers)"},
           {"Contact/Penalty factor", "finite sliding has no stick penalty (friction by Lagrange multipliers)"},
@@ -2259,6 +2268,11 @@ namespace dealvem
       }
     catch (...)
       {
+        if (d.active_set && d.active_set->last_mechanism() != nullptr)
+          {
+            mechanism = std::make_shared<const CollapseMechanism>(*d.active_set->last_mechanism());
+            write_mechanism();
+          }
         if (opt.n_load_steps > 1)
           {
             std::cout << "  load step " << step << " of " << opt.n_load_steps << " (t = " << time
@@ -2288,6 +2302,61 @@ namespace dealvem
           }
         throw;
       }
+  }
+
+
+
+  // The collapse mechanism as a VTU file (the motion as the displacement,
+  // so that ParaView's "Warp By Vector" moves the bodies by it; the
+  // stresses of a rigid motion are zero) and an SVG picture of the bodies
+  // moved by a tenth of the model's size, the hinge nodes marked.
+  void
+  ContactProblem::write_mechanism() const
+  {
+    const CycleData &d = *data;
+    if (mechanism == nullptr || !(opt.write_vtu || opt.write_pictures))
+      return;
+    const auto     &dh = d.dof_handler;
+    dealii::Vector<double> field(dh.n_dofs());
+    for (unsigned int i = 0; i < dh.n_dofs() && i < mechanism->displacement.size(); ++i)
+      field[i] = mechanism->displacement[i];
+    std::cout << "  collapse mechanism: " << mechanism->failing_condition;
+    if (opt.write_vtu)
+      {
+        StressRecovery<2> zero(dh, d.materials, field);
+        write_vtu_file(d.prefix + "-mechanism.vtu", dh, field, zero);
+        std::cout << "; " << d.prefix << "-mechanism.vtu";
+      }
+    if (opt.write_pictures)
+      {
+        const auto &mesh = dh.get_mesh();
+        std::vector<dealii::Tensor<1, 2>> motion(mesh.n_vertices());
+        std::vector<bool>                 marked(mesh.n_vertices(), false);
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          for (unsigned int c = 0; c < 2; ++c)
+            motion[v][c] = field[2 * v + c];
+        for (const auto i : mechanism->closed_pairs)
+          {
+            const auto dofs = d.contact->pair_dofs(i);
+            for (const auto dof : {dofs[0], dofs[2]})
+              if (dof / 2 < mesh.n_vertices())
+                marked[dof / 2] = true;
+          }
+        dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              lo[c] = std::min(lo[c], mesh.vertex(v)[c]);
+              hi[c] = std::max(hi[c], mesh.vertex(v)[c]);
+            }
+        std::vector<double> body(mesh.n_cells());
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          body[c] = mesh.cell(c).material_id;
+        SVGPlots::write_mesh(d.prefix + "-mechanism.svg", mesh, motion, 0.1 * (hi - lo).norm(), body, "body",
+                             marked, "Collapse mechanism (" + mechanism->failing_condition + ")");
+        std::cout << "; " << d.prefix << "-mechanism.svg";
+      }
+    std::cout << std::endl;
   }
 
 
@@ -2385,7 +2454,10 @@ namespace dealvem
         r.tangent         = p.tangent;
         r.shear           = recovered_shear[i];
         r.normal          = p.normal;
-        r.tangential_traction = (as.active[i] ? tangential_force[i] / p.weight : 0.);
+        // (the convex stick model of the globalized solve ties open pairs
+        // tangentially too: their tangential force counts)
+        r.tangential_traction =
+          (as.active[i] || as.convex_stick_model ? tangential_force[i] / p.weight : 0.);
         if (friction)
           {
             r.slip_increment      = fr.slip_increment[i];
@@ -2394,7 +2466,7 @@ namespace dealvem
                                                                     "slip");
           }
         else
-          r.status = (as.active[i] ? "closed" : "open");
+          r.status = (as.active[i] ? "closed" : as.convex_stick_model ? "open-tied" : "open");
         step_result.n_open += (!r.active);
         step_result.n_stick += (r.active && r.status != "slip");
         step_result.n_slip += (r.status == "slip");
@@ -2581,11 +2653,12 @@ namespace dealvem
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const auto                 dofs = d.contact->pair_dofs(i);
-        if (d.as.active[i])
+        const bool                 transmits = d.as.active[i] || d.as.convex_stick_model;
+        if (transmits)
           for (unsigned int c = 0; c < 2; ++c)
             couplings.emplace_back(dofs[c], dofs[2 + c]);
         const dealii::Tensor<1, 2> F    = (-x[n + i]) * pairs[i].normal +
-                                       (d.as.active[i] ? tangential_force[i] : 0.) * pairs[i].tangent;
+                                       (transmits ? tangential_force[i] : 0.) * pairs[i].tangent;
         for (unsigned int c = 0; c < 2; ++c)
           {
             contact_forces[dofs[2 + c]] += F[c];
@@ -2888,6 +2961,19 @@ namespace dealvem
                 << " pair(s) of smallest initial gap, so that every body is held)";
     if (as.n_accelerated > 0)
       std::cout << " (" << as.n_accelerated << " step(s) corrected by the active-set acceleration)";
+    if (!as.fast_path_failure.empty())
+      {
+        std::cout << "\n  globalized solve: the active-set iteration gave up ("
+                  << as.fast_path_failure.substr(0, as.fast_path_failure.find(':')) << "); the primal active-set "
+                  << "method converged in " << as.n_globalized_solves << " solve(s) and "
+                  << as.n_globalized_rigid_steps << " rigid step(s)";
+        if (as.n_polish_iterations > 0 || as.convex_stick_model)
+          std::cout << (as.convex_stick_model ?
+                          ", convex stick model kept (open pairs tied tangentially: the polish to stick at "
+                          "closed pairs only did not converge)" :
+                          ", polished to stick at closed pairs only in " + std::to_string(as.n_polish_iterations) +
+                            " solve(s)");
+      }
     std::cout << std::endl << "  solver: " << d.solver->description();
     if (as.linear_iterations > as.n_iterations)
       std::cout << ", " << as.linear_iterations << " linear iterations in all";

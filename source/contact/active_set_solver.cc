@@ -55,7 +55,8 @@ namespace dealvem
 
   // The driver: the loop over linear solves, with every decision about the
   // active set (first set, update, acceleration, convergence, cycles,
-  // iteration limit, equilibrium) taken by ActiveSetUpdate.
+  // iteration limit, equilibrium) taken by ActiveSetUpdate; when that
+  // iteration gives up, the globalized solve (PrimalActiveSetSolver).
   template <int dim>
   typename ActiveSetSolver<dim>::Result
   ActiveSetSolver<dim>::solve(const dealii::SparseMatrix<double> &system_matrix,
@@ -63,32 +64,108 @@ namespace dealvem
                               dealii::SparseMatrix<double>       &matrix,
                               dealii::Vector<double>             &x)
   {
+    mechanism.reset();
+    const bool globalize = settings.globalize && settings.normal == ContactSettings::Normal::unilateral &&
+                           !settings.is_coulomb() && support != nullptr;
     ActiveSetUpdate<dim> update(contact.get_pairs(), settings, c);
     update.set_support(support);
     update.set_pair_neighbours(neighbours);
+    update.set_report_failures(globalize);
     auto                   state = update.initial_state();
     const auto             n     = system_matrix.m() - contact.n_multipliers();
     Result                 result;
     dealii::Vector<double> rhs;
-    do
-      {
-        matrix.copy_from(system_matrix);
-        rhs = system_rhs;
-        contact.assemble(constraints, state.active, matrix, rhs);
-        // the condensed solver preconditions stick springs by tying them
-        if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
-          solver.set_stick_directions(contact.stick_penalty_rows(constraints, state.active));
-        solver.set_context("active-set iteration " + std::to_string(state.n_iterations + 1));
-        solver.solve(matrix, n, x, rhs);
-        constraints.distribute(x);
-        result.linear_iterations += solver.last_iterations();
-      }
-    while (!update.update(state, contact, x));
+    const auto             iterate = [&](ActiveSetUpdate<dim> &rule, typename ActiveSetUpdate<dim>::State &st,
+                                   const std::string &name) {
+      do
+        {
+          matrix.copy_from(system_matrix);
+          rhs = system_rhs;
+          contact.assemble(constraints, st.active, matrix, rhs);
+          // the condensed solver preconditions stick springs by tying them
+          if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
+            solver.set_stick_directions(contact.stick_penalty_rows(constraints, st.active));
+          solver.set_context(name + " " + std::to_string(st.n_iterations + 1));
+          solver.solve(matrix, n, x, rhs);
+          constraints.distribute(x);
+          result.linear_iterations += solver.last_iterations();
+        }
+      while (!rule.update(st, contact, x));
+    };
+    iterate(update, state, "active-set iteration");
     result.active               = state.active;
     result.n_iterations         = state.n_iterations;
     result.n_active_history     = state.n_active_history;
     result.n_closed_for_support = state.n_closed_for_support;
     result.n_accelerated        = state.n_accelerated;
+    if (state.converged)
+      return result;
+
+    // the fast path gave up: the globalized solve (only with the assembled
+    // matrix at hand; a distributed solver assembles its own)
+    result.fast_path_failure = state.failure;
+    AssertThrow(system_matrix.frobenius_norm() > 0, dealii::ExcMessage(state.failure));
+    PrimalActiveSetSolver<dim> primal(contact, constraints, solver, settings);
+    const auto                 pr = primal.solve(system_matrix, system_rhs, matrix, x);
+    result.n_globalized_solves      = pr.n_solves;
+    result.n_globalized_rigid_steps = pr.n_rigid_steps;
+    result.linear_iterations += pr.linear_iterations;
+    if (!pr.converged)
+      {
+        mechanism = std::make_unique<CollapseMechanism>(pr.mechanism);
+        AssertThrow(false,
+                    dealii::ExcMessage("No static equilibrium: " +
+                                       pr.mechanism.describe(contact.get_pairs()) +
+                                       "\n  (the active-set iteration had given up: " + state.failure +
+                                       " The globalized solve then found the mechanism after " +
+                                       std::to_string(pr.n_solves) + " solves and " +
+                                       std::to_string(pr.n_rigid_steps) + " rigid steps.)"));
+      }
+    result.active = pr.active;
+    if (settings.tangential != ContactSettings::Tangential::frictionless)
+      {
+        // polish the convex stick solution to the model of the fast path
+        // (open pairs free tangentially), from its set: first by the same
+        // primal iteration, then by the fast path's update
+        const dealii::Vector<double> convex = x;
+        bool                         done   = false;
+        try
+          {
+            const auto pc = primal.solve_stick_on_closed(system_matrix, system_rhs, matrix, x, pr.active);
+            result.n_polish_iterations = pc.n_solves;
+            result.linear_iterations += pc.linear_iterations;
+            if (pc.converged)
+              {
+                result.active = pc.active;
+                done          = true;
+              }
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            // (a degenerate tie: the fast path's update polishes instead)
+          }
+        if (!done)
+          {
+            x                           = convex;
+            ContactSettings plain       = settings;
+            plain.accelerate_active_set = false;
+            plain.max_active_set_iterations = 10;
+            ActiveSetUpdate<dim> polish(contact.get_pairs(), plain, c);
+            polish.set_support(support);
+            polish.set_report_failures(true);
+            auto pstate   = polish.initial_state();
+            pstate.active = pr.active;
+            iterate(polish, pstate, "polish of the globalized solve, iteration");
+            result.n_polish_iterations += pstate.n_iterations;
+            if (pstate.converged)
+              result.active = pstate.active;
+            else
+              {
+                x                         = convex;
+                result.convex_stick_model = true;
+              }
+          }
+      }
     return result;
   }
 

@@ -286,17 +286,23 @@ namespace dealvem
             --state.n_accelerated;
           }
       }
+    // a failure: thrown, or recorded for the driver
+    const auto fail = [&](const std::string &message) {
+      AssertThrow(report_failures, dealii::ExcMessage(message));
+      state.failure = message;
+      return true;
+    };
     if (support != nullptr)
       {
         const std::string free = support->free_motions(next);
-        AssertThrow(free.empty(),
-                    dealii::ExcMessage(
+        if (!free.empty())
+          return fail(
                       "No static equilibrium: in active-set iteration " + std::to_string(it) +
                       " every contact pair that held these rigid-body motions came out in tension or "
                       "open: " + free + " (active pairs per iteration:" + history_string(state) +
                       "). The loads pull the body off its contact partner, or the bodies are too far "
                       "apart for the load to close the gap; hold the body by Dirichlet, roller or point "
-                      "constraints, or check the sign of the loads."));
+                      "constraints, or check the sign of the loads.");
       }
     if (plain && state.visited.count(next) > 0)
       {
@@ -314,12 +320,10 @@ namespace dealvem
             }
         if (n_switching > 10)
           switching << " and " << n_switching - 10 << " more";
-        AssertThrow(false,
-                    dealii::ExcMessage("The contact active set cycles: the set of iteration " +
-                                       std::to_string(it + 1) +
-                                       " was already visited (active pairs per iteration:" +
-                                       history_string(state) + "; switching back: " + switching.str() +
-                                       "). Try another active-set constant or finer meshes."));
+        return fail("The contact active set cycles: the set of iteration " + std::to_string(it + 1) +
+                    " was already visited (active pairs per iteration:" + history_string(state) +
+                    "; switching back: " + switching.str() +
+                    "). Try another active-set constant or finer meshes.");
       }
     if (plain)
       state.visited.insert(state.active);
@@ -329,12 +333,11 @@ namespace dealvem
         state.n_opened += (!next[i] && state.active[i]);
       }
     state.active = next;
-    AssertThrow(it < settings.max_active_set_iterations,
-                dealii::ExcMessage("The contact active set did not settle within " +
-                                   std::to_string(settings.max_active_set_iterations) +
-                                   " iterations (active pairs per iteration:" + history_string(state) +
-                                   "). Increase 'Maximum active set iterations' or check the "
-                                   "loads and supports."));
+    if (it >= settings.max_active_set_iterations)
+      return fail("The contact active set did not settle within " +
+                  std::to_string(settings.max_active_set_iterations) +
+                  " iterations (active pairs per iteration:" + history_string(state) +
+                  "). Increase 'Maximum active set iterations' or check the loads and supports.");
     return false;
   }
 

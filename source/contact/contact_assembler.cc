@@ -231,7 +231,24 @@ namespace dealvem
                                   dealii::SparseMatrix<double>            &matrix,
                                   dealii::Vector<double>                  &rhs) const
   {
+    assemble(constraints, active, active, matrix, rhs);
+  }
+
+
+
+  template <int dim>
+  void
+  ContactAssembler<dim>::assemble(const dealii::AffineConstraints<double> &constraints,
+                                  const std::vector<bool>                 &active,
+                                  const std::vector<bool>                 &tangential_active,
+                                  dealii::SparseMatrix<double>            &matrix,
+                                  dealii::Vector<double>                  &rhs,
+                                  const std::vector<double>               *reference) const
+  {
     AssertDimension(active.size(), pairs.size());
+    AssertDimension(tangential_active.size(), pairs.size());
+    Assert(reference == nullptr || reference->size() == pairs.size(),
+           dealii::ExcDimensionMismatch(reference->size(), pairs.size()));
     const auto n = dof_handler.n_dofs();
     dropped.clear();
     for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -261,17 +278,28 @@ namespace dealvem
           M(4, 4) = 1.;
         if (settings.tangential == ContactSettings::Tangential::multipliers)
           {
-            // tangential stick only where the normal constraint is active
-            if (active[i] && !drop_if_fixed(constraints, i, ct, true, 0., unilateral))
-              for (unsigned int j = 0; j < 4; ++j)
-                M(5, j) = M(j, 5) = ct[j];
+            // tangential stick where asked (assemble(): where the normal
+            // constraint is active)
+            const double r = (reference != nullptr ? (*reference)[i] : 0.);
+            if (tangential_active[i] && !drop_if_fixed(constraints, i, ct, true, r, unilateral))
+              {
+                for (unsigned int j = 0; j < 4; ++j)
+                  M(5, j) = M(j, 5) = ct[j];
+                F(5) = r;
+              }
             else
               M(5, 5) = 1.;
           }
-        else if (settings.tangential == ContactSettings::Tangential::penalty && active[i])
-          for (unsigned int j = 0; j < 4; ++j)
-            for (unsigned int k = 0; k < 4; ++k)
-              M(j, k) += penalty * p.weight * ct[j] * ct[k];
+        else if (settings.tangential == ContactSettings::Tangential::penalty && tangential_active[i])
+          {
+            const double r = (reference != nullptr ? (*reference)[i] : 0.);
+            for (unsigned int j = 0; j < 4; ++j)
+              {
+                for (unsigned int k = 0; k < 4; ++k)
+                  M(j, k) += penalty * p.weight * ct[j] * ct[k];
+                F(j) += penalty * p.weight * r * ct[j];
+              }
+          }
         constraints.distribute_local_to_global(M, F, idx, matrix, rhs);
       }
   }

@@ -97,7 +97,8 @@ main(int argc, char **argv)
         << "subsection Material\n  set Young's modulus = 7000\nend\n"
         << "subsection Body 1\n" << testing::block_mesh("structured quads", 0, 1, 1, 2, 7, 7, 10)
         << "subsection Material\n  set Young's modulus = 7000\nend\nend\n"
-        << "subsection Contact\n  set Pairs = 3 : 12\n  set Maximum active set iterations = 1\nend\n"
+        << "subsection Contact\n  set Pairs = 3 : 12\n  set Maximum active set iterations = 1\n"
+        << "  set Globalized solve = false\nend\n"
         << "subsection Boundary conditions and loads\n  set Dirichlet = 2 : xy : 0, 0\n"
         << "  set Pressure = 13 : 10 * (x < 0.3)\nend\n"
         << "subsection Output\n  set Folder = output-limit\n  set Write VTU = false\nend\n";

@@ -17,6 +17,7 @@
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/contact/contact_detection.h>
 #include <dealvem/contact/node_insertion.h>
+#include <dealvem/contact/primal_active_set.h>
 #include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/elasticity/support_reactions.h>
@@ -636,6 +637,20 @@ namespace dealvem
       return results;
     }
 
+    /**
+     * The collapse mechanism of the last solve that ended in "No static
+     * equilibrium" (the proof the globalized contact solve returns, see
+     * ActiveSetSolver), or nullptr. run() writes it as
+     * `<prefix>-mechanism.vtu` (the motion as the displacement field,
+     * largest nodal displacement 1) and `<prefix>-mechanism.svg` (the
+     * bodies moved by it, hinges marked) before it passes the exception on.
+     */
+    const CollapseMechanism *
+    collapse_mechanism() const
+    {
+      return mechanism.get();
+    }
+
     /// The per-body errors of every cycle of run().
     const std::vector<std::vector<ErrorNorms>> &
     convergence_history() const
@@ -644,6 +659,13 @@ namespace dealvem
     }
 
   private:
+    /// See collapse_mechanism().
+    std::shared_ptr<const CollapseMechanism> mechanism;
+
+    /// Write the collapse mechanism's files (see collapse_mechanism()).
+    void
+    write_mechanism() const;
+
     /// The refinement cycles of run(), after the output files of an
     /// earlier run were removed.
     void

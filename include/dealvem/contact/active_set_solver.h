@@ -12,9 +12,12 @@
 #include <dealvem/contact/active_set_update.h>
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/contact/node_insertion.h>
+#include <dealvem/contact/primal_active_set.h>
 #include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace dealvem
@@ -71,6 +74,26 @@ namespace dealvem
    * (Hertz, step-3's meshes: k = 1 from 8/10/10 to 4/4/5 iterations, k = 2
    * from 8/9/11 to 5/5/6). Cycle detection applies to plain steps.
    *
+   * <h3>Global convergence</h3>
+   * The update above is a semismooth Newton method: fast near the
+   * solution, but with no guarantee from far away. Near a limit load (an
+   * arch just thicker than its least thickness, a wall just inside its
+   * friction limit) its first steps open so many pairs at once that the
+   * set holds no equilibrium, or the sets cycle. With
+   * ContactSettings::globalize (the default) such a failure is not the
+   * answer: the solve starts again with PrimalActiveSetSolver, a primal
+   * active-set method whose energy never rises, which converges whenever
+   * the problem has a solution and otherwise returns a collapse mechanism,
+   * the proof that it has none. solve() then throws "No static
+   * equilibrium" with the mechanism (last_mechanism()).
+   * With tangential stick the globalized solve ties open pairs
+   * tangentially too (the convex model); the update above then polishes
+   * its solution, starting from its set, to the model of the fast path
+   * (open pairs free), which takes one or two solves. If the polish does
+   * not converge, the convex solution is returned and
+   * Result::convex_stick_model says so. The fast path's answers are not
+   * touched where it converges.
+   *
    * <h3>Driver and rule</h3>
    * solve() only owns the loop: per iteration it adds the contact blocks
    * of the current set (ContactAssembler::assemble()), solves with the
@@ -102,6 +125,19 @@ namespace dealvem
       unsigned int              n_closed_for_support = 0;
       /// Steps whose proposed set the acceleration corrected.
       unsigned int              n_accelerated = 0;
+      /// Why the fast path (the active-set iteration above) gave up, when
+      /// the globalized solve took over; empty otherwise.
+      std::string               fast_path_failure;
+      /// Saddle-point solves of the globalized solve (0: not needed).
+      unsigned int              n_globalized_solves = 0;
+      /// Rigid steps of the globalized solve.
+      unsigned int              n_globalized_rigid_steps = 0;
+      /// Iterations of the polish after the globalized solve (stick models).
+      unsigned int              n_polish_iterations = 0;
+      /// Whether the result is the convex stick model of the globalized
+      /// solve (open pairs tied tangentially) because the polish to the
+      /// model of the fast path did not converge.
+      bool                      convex_stick_model = false;
     };
 
     /// @p c is the constant of the active-set update, units of E/h.
@@ -146,6 +182,19 @@ namespace dealvem
           dealii::SparseMatrix<double>       &matrix,
           dealii::Vector<double>             &x);
 
+    /**
+     * The collapse mechanism of the last solve() that found no equilibrium
+     * (the globalized solve's proof), or nullptr. solve() throws "No static
+     * equilibrium" with its description; a program catches the exception
+     * and writes the mechanism (ContactProblem: a VTU field and an SVG
+     * picture).
+     */
+    const CollapseMechanism *
+    last_mechanism() const
+    {
+      return mechanism.get();
+    }
+
   private:
     const ContactAssembler<dim>             &contact;
     const dealii::AffineConstraints<double> &constraints;
@@ -154,6 +203,7 @@ namespace dealvem
     double                                   c;
     const RigidBodySupport                  *support = nullptr;
     std::vector<std::vector<unsigned int>>   neighbours;
+    std::unique_ptr<CollapseMechanism>       mechanism;
   };
 } // namespace dealvem
 

@@ -101,6 +101,10 @@ namespace dealvem
       std::set<std::vector<bool>> visited;
       /// Per pair, whether the release extrapolation released it.
       std::vector<bool> extrapolated;
+      /// With set_report_failures(): why the iteration gave up (a cycle,
+      /// the iteration limit, a set that holds no equilibrium); empty while
+      /// it goes on or once it has converged.
+      std::string failure;
       /// Whether the release extrapolation is still switched on: starts as
       /// ContactSettings::accelerate_active_set, and is off for the rest of
       /// the solve once a pair it released penetrates again.
@@ -123,6 +127,19 @@ namespace dealvem
     set_support(const RigidBodySupport *support)
     {
       this->support = support;
+    }
+
+    /**
+     * Record a failure (cycle, iteration limit, a set that holds no
+     * equilibrium) in State::failure and end the iteration (update()
+     * returns true with State::converged false) instead of throwing, so
+     * that a driver can go on with another method (ActiveSetSolver's
+     * globalized solve).
+     */
+    void
+    set_report_failures(const bool report)
+    {
+      report_failures = report;
     }
 
     /**
@@ -153,7 +170,8 @@ namespace dealvem
      * the step in @p state, replaces State::active by the next set unless
      * the iteration has converged, and returns State::converged. Throws on
      * a cycle, at the iteration limit, and (with a support) when the next
-     * set holds no equilibrium.
+     * set holds no equilibrium (with set_report_failures(): records it in
+     * State::failure and returns true).
      */
     bool
     update(State &state, const std::vector<double> &gaps, const std::vector<double> &multipliers) const;
@@ -198,6 +216,7 @@ namespace dealvem
     std::vector<ContactNodePair>           pairs;
     ContactSettings                        settings;
     double                                 c;
+    bool                                   report_failures = false;
     const RigidBodySupport                *support = nullptr;
     std::vector<std::vector<unsigned int>> neighbours;
   };

@@ -70,6 +70,13 @@ namespace dealvem
     /// Active set: correct the plain update where it crawls (see
     /// ActiveSetSolver); false gives the plain primal-dual active set.
     bool accelerate_active_set = true;
+    /// Unilateral contact without Coulomb friction: when the active-set
+    /// iteration gives up (a cycle, the iteration limit, a set that holds
+    /// no equilibrium), solve again with the globally convergent
+    /// PrimalActiveSetSolver, which either converges or proves that there
+    /// is no equilibrium (ActiveSetSolver). False: the iteration's failure
+    /// is the answer.
+    bool globalize = true;
     /// Coulomb friction coefficient of every interface without its own.
     double friction_coefficient = 0;
     /// Friction coefficient per interface (index ContactNodePair::interface);
@@ -312,6 +319,32 @@ namespace dealvem
              const std::vector<bool>                 &active,
              dealii::SparseMatrix<double>            &matrix,
              dealii::Vector<double>                  &rhs) const;
+
+    /**
+     * The same with the tangential stick (multipliers or penalty springs)
+     * of pair i enforced where @p tangential_active[i] holds, whether or
+     * not its normal constraint is: the convex model of stick contact that
+     * PrimalActiveSetSolver solves (the associated limit of Coulomb
+     * friction for an infinite coefficient: no relative tangential motion
+     * at any pair). With @p tangential_active equal to @p active this is
+     * assemble(). With @p reference, pair i sticks at the relative
+     * tangential displacement (*reference)[i] instead of 0 (where it
+     * closed: PrimalActiveSetSolver::solve_stick_on_closed()).
+     */
+    void
+    assemble(const dealii::AffineConstraints<double> &constraints,
+             const std::vector<bool>                 &active,
+             const std::vector<bool>                 &tangential_active,
+             dealii::SparseMatrix<double>            &matrix,
+             dealii::Vector<double>                  &rhs,
+             const std::vector<double>               *reference = nullptr) const;
+
+    /// The DoF handler of the constructor.
+    const VEMDoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
 
     /**
      * Add the contact blocks of Coulomb friction (ContactSettings::coulomb

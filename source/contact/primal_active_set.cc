@@ -1,0 +1,735 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <dealvem/contact/primal_active_set.h>
+#include <dealvem/elasticity/piece_support.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace dealvem
+{
+  namespace
+  {
+    using ModeRow = std::vector<std::pair<unsigned int, double>>;
+
+    // the value of a row over the modes on a mode vector
+    double
+    row_value(const ModeRow &row, const std::vector<double> &modes)
+    {
+      double v = 0;
+      for (const auto &[j, c] : row)
+        v += c * modes[j];
+      return v;
+    }
+  } // namespace
+
+
+
+  std::string
+  CollapseMechanism::describe(const std::vector<ContactNodePair> &pairs) const
+  {
+    std::ostringstream out;
+    out << "collapse mechanism (a rigid motion that every contact and support allows and on which the loads do "
+           "positive work: the proof that no equilibrium exists): "
+        << moving.size() << " piece(s) move";
+    out.precision(4);
+    for (const auto &m : moving)
+      {
+        out << "\n    body " << m.body;
+        if (m.rotates)
+          out << " rotates by " << m.rotation << " about (" << m.centre << ")";
+        else
+          out << " translates by (" << m.translation << ")";
+      }
+    if (!closed_pairs.empty())
+      {
+        out << "\n    it stays in contact (hinges, or points it slides on) at";
+        const unsigned int shown = std::min<unsigned int>(closed_pairs.size(), 12);
+        for (unsigned int j = 0; j < shown; ++j)
+          out << (j > 0 ? "," : "") << " (" << pairs[closed_pairs[j]].slave_location << ")";
+        if (closed_pairs.size() > shown)
+          out << " and " << closed_pairs.size() - shown << " more";
+      }
+    out << "\n    failing condition: " << failing_condition << " (" << opening_pairs.size()
+        << " pair(s) open, " << sliding_pairs.size() << " slide); work of the loads " << work
+        << " for a largest displacement 1 (cosine with the loads " << relative_work
+        << "); largest violation of the contact conditions " << largest_violation;
+    return out.str();
+  }
+
+
+
+  template <int dim>
+  PrimalActiveSetSolver<dim>::PrimalActiveSetSolver(const ContactAssembler<dim>             &contact,
+                                                    const dealii::AffineConstraints<double> &constraints,
+                                                    SaddlePointSolver                       &solver,
+                                                    const ContactSettings                   &settings)
+    : contact(contact)
+    , constraints(constraints)
+    , solver(solver)
+    , settings(settings)
+    , stick(settings.tangential == ContactSettings::Tangential::penalty ||
+            settings.tangential == ContactSettings::Tangential::multipliers)
+    , pieces(std::make_unique<PieceSupport>(contact.get_dof_handler()))
+  {
+    AssertThrow(settings.normal == ContactSettings::Normal::unilateral && !settings.is_coulomb(),
+                dealii::ExcMessage("PrimalActiveSetSolver solves unilateral contact, frictionless or with "
+                                   "stick (Tangential = frictionless, penalty or multipliers)."));
+    const auto        &dh     = contact.get_dof_handler();
+    const unsigned int n_dofs = dh.n_dofs();
+    dof_piece.assign(n_dofs, dealii::numbers::invalid_unsigned_int);
+    for (unsigned int dof = 0; dof < n_dofs; ++dof)
+      if (const auto &ps = pieces->pieces_of_node(dof / 2); !ps.empty())
+        dof_piece[dof] = ps.front();
+
+    // a linear form over DoFs as a row over the modes (first piece of
+    // each node), and in PieceSupport's convention
+    const auto to_modes = [&](const PieceSupport::Form &form) {
+      std::map<unsigned int, double> row;
+      for (const auto &[dof, c] : form)
+        if (const unsigned int p = dof_piece[dof]; p != dealii::numbers::invalid_unsigned_int)
+          for (unsigned int k = 0; k < 3; ++k)
+            row[3 * p + k] += c * pieces->mode(p, k, dof);
+      ModeRow r;
+      for (const auto &e : row)
+        if (e.second != 0.)
+          r.push_back(e);
+      return r;
+    };
+    PieceSupport::Form form;
+    for (const auto &line : constraints.get_lines())
+      {
+        if (line.index >= n_dofs)
+          continue;
+        form.assign(1, {line.index, 1.});
+        for (const auto &e : line.entries)
+          form.emplace_back(e.first, -e.second);
+        constraint_rows.push_back(to_modes(form));
+        pieces->add_rows(form, support_constraint_rows);
+      }
+    const auto &pairs = contact.get_pairs();
+    normal_rows.resize(pairs.size());
+    tangential_rows.resize(pairs.size());
+    support_normal_rows.resize(pairs.size());
+    support_tangential_rows.resize(pairs.size());
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto d = contact.pair_dofs(i);
+        for (unsigned int dir = 0; dir < 2; ++dir)
+          {
+            const auto &v = (dir == 0 ? pairs[i].normal : pairs[i].tangent);
+            form          = {{d[0], -v[0]}, {d[1], -v[1]}, {d[2], v[0]}, {d[3], v[1]}};
+            (dir == 0 ? normal_rows : tangential_rows)[i] = to_modes(form);
+            pieces->add_rows(form, (dir == 0 ? support_normal_rows : support_tangential_rows)[i]);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  PrimalActiveSetSolver<dim>::~PrimalActiveSetSolver() = default;
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  PrimalActiveSetSolver<dim>::free_motions(const std::vector<bool> &closed) const
+  {
+    const auto &pairs = contact.get_pairs();
+    std::vector<const PieceSupport::Row *> rows;
+    for (const auto &r : support_constraint_rows)
+      rows.push_back(&r);
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (!pairs[i].junction)
+        {
+          if (closed[i])
+            for (const auto &r : support_normal_rows[i])
+              rows.push_back(&r);
+          if (stick && (closed[i] || !on_closed_only))
+            for (const auto &r : support_tangential_rows[i])
+              rows.push_back(&r);
+        }
+    const auto motions = pieces->free_motions(rows);
+    if (motions.empty())
+      return {};
+    // every mode of the pieces that a free motion moves, and the null space
+    // of all rows restricted to them (the other pieces are held)
+    std::vector<unsigned int> column(pieces->n_modes(), dealii::numbers::invalid_unsigned_int), modes;
+    for (const auto &m : motions)
+      for (const auto j : m)
+        if (column[3 * (j / 3)] == dealii::numbers::invalid_unsigned_int)
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              column[3 * (j / 3) + k] = modes.size();
+              modes.push_back(3 * (j / 3) + k);
+            }
+    std::vector<const ModeRow *> all;
+    for (const auto &r : constraint_rows)
+      all.push_back(&r);
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (!pairs[i].junction)
+        {
+          if (closed[i])
+            all.push_back(&normal_rows[i]);
+          if (stick && (closed[i] || !on_closed_only))
+            all.push_back(&tangential_rows[i]);
+        }
+    std::vector<const ModeRow *> touching;
+    for (const auto *r : all)
+      for (const auto &e : *r)
+        if (column[e.first] != dealii::numbers::invalid_unsigned_int)
+          {
+            touching.push_back(r);
+            break;
+          }
+    const unsigned int N = modes.size();
+    Eigen::MatrixXd    A = Eigen::MatrixXd::Zero(std::max<std::size_t>(touching.size(), 1), N);
+    for (unsigned int r = 0; r < touching.size(); ++r)
+      for (const auto &e : *touching[r])
+        if (column[e.first] != dealii::numbers::invalid_unsigned_int)
+          A(r, column[e.first]) += e.second;
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+    const auto                             &sigma = svd.singularValues();
+    const double                            smax  = sigma.size() > 0 ? sigma.maxCoeff() : 0.;
+    std::vector<std::vector<double>>        basis;
+    for (unsigned int k = 0; k < N; ++k)
+      {
+        const double s = (k < sigma.size() ? sigma(k) : 0.);
+        if (smax == 0 || s <= 1e-6 * smax)
+          {
+            std::vector<double> z(pieces->n_modes(), 0.);
+            for (unsigned int j = 0; j < N; ++j)
+              z[modes[j]] = svd.matrixV()(j, k);
+            basis.push_back(std::move(z));
+          }
+      }
+    return basis;
+  }
+
+
+
+  template <int dim>
+  dealii::Vector<double>
+  PrimalActiveSetSolver<dim>::motion_field(const std::vector<double> &modes) const
+  {
+    dealii::Vector<double> d(dof_piece.size());
+    for (unsigned int dof = 0; dof < dof_piece.size(); ++dof)
+      if (const unsigned int p = dof_piece[dof]; p != dealii::numbers::invalid_unsigned_int)
+        for (unsigned int k = 0; k < 3; ++k)
+          if (modes[3 * p + k] != 0.)
+            d[dof] += modes[3 * p + k] * pieces->mode(p, k, dof);
+    return d;
+  }
+
+
+
+  template <int dim>
+  CollapseMechanism
+  PrimalActiveSetSolver<dim>::make_mechanism(const std::vector<double> &modes_in,
+                                             const std::vector<bool>   &closed) const
+  {
+    (void)closed;
+    const auto        &pairs = contact.get_pairs();
+    const auto        &cp    = pieces->get_pieces();
+    CollapseMechanism  m;
+    std::vector<double> modes = modes_in;
+    m.displacement            = motion_field(modes);
+    // scale: largest nodal displacement 1
+    double dmax = 0;
+    for (unsigned int node = 0; 2 * node + 1 < m.displacement.size(); ++node)
+      dmax = std::max(dmax, std::hypot(m.displacement[2 * node], m.displacement[2 * node + 1]));
+    AssertThrow(dmax > 0, dealii::ExcInternalError());
+    for (auto &v : modes)
+      v /= dmax;
+    m.displacement /= dmax;
+    double wnorm = 0, anorm = 0;
+    for (unsigned int j = 0; j < modes.size(); ++j)
+      {
+        m.work += mode_work[j] * modes[j];
+        wnorm += mode_work[j] * mode_work[j];
+        anorm += modes[j] * modes[j];
+      }
+    m.relative_work = m.work / std::sqrt(std::max(wnorm * anorm, 1e-300));
+    // the conditions, relative to the largest displacement (1)
+    for (const auto &r : constraint_rows)
+      m.largest_violation = std::max(m.largest_violation, std::abs(row_value(r, modes)));
+    // per piece: its motion
+    std::vector<bool> moves(cp.n_pieces(), false);
+    for (unsigned int p = 0; p < cp.n_pieces(); ++p)
+      {
+        const double t0 = modes[3 * p], t1 = modes[3 * p + 1], r = modes[3 * p + 2];
+        if (std::abs(t0) + std::abs(t1) + std::abs(r) <= 1e-9)
+          continue;
+        moves[p] = true;
+        CollapseMechanism::PieceMotion pm;
+        pm.piece          = p;
+        pm.body           = cp.body(p);
+        pm.centroid       = cp.centroid(p);
+        pm.translation[0] = t0;
+        pm.translation[1] = t1;
+        pm.rotation       = r / cp.size(p);
+        pm.rotates        = std::abs(r) > 1e-9 * std::hypot(t0, t1);
+        if (pm.rotates)
+          pm.centre = pm.centroid + dealii::Tensor<1, 2>({t1 / pm.rotation, -t0 / pm.rotation});
+        m.moving.push_back(pm);
+      }
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        if (pairs[i].junction)
+          continue;
+        const double gn = row_value(normal_rows[i], modes), gt = row_value(tangential_rows[i], modes);
+        m.largest_violation = std::max(m.largest_violation, -gn);
+        const auto   d      = contact.pair_dofs(i);
+        const unsigned int pa = dof_piece[d[0]], pb = dof_piece[d[2]];
+        const bool   involved = (pa != dealii::numbers::invalid_unsigned_int && moves[pa]) ||
+                              (pb != dealii::numbers::invalid_unsigned_int && moves[pb]);
+        if (stick)
+          m.largest_violation = std::max(m.largest_violation, std::abs(gt));
+        if (!involved)
+          continue;
+        if (gn > 1e-8)
+          m.opening_pairs.push_back(i);
+        else
+          {
+            // closed: a hinge or a contact it slides on, unless both sides
+            // move together
+            const bool same = (pa == pb) || (pa != dealii::numbers::invalid_unsigned_int &&
+                                             pb != dealii::numbers::invalid_unsigned_int && moves[pa] &&
+                                             moves[pb] &&
+                                             std::abs(modes[3 * pa + 2] / cp.size(pa) -
+                                                      modes[3 * pb + 2] / cp.size(pb)) <= 1e-8 &&
+                                             std::abs(gt) <= 1e-8);
+            if (!same)
+              {
+                m.closed_pairs.push_back(i);
+                m.closed_pair_bodies.emplace_back(
+                  pa != dealii::numbers::invalid_unsigned_int ? cp.body(pa) : 0u,
+                  pb != dealii::numbers::invalid_unsigned_int ? cp.body(pb) : 0u);
+                m.closed_pair_locations.push_back(pairs[i].slave_location);
+              }
+            if (!stick && std::abs(gt) > 1e-8)
+              m.sliding_pairs.push_back(i);
+          }
+      }
+    if (!m.opening_pairs.empty() && !m.sliding_pairs.empty())
+      m.failing_condition = "no-tension joints and frictionless sliding (pairs open, and closed pairs slide)";
+    else if (!m.sliding_pairs.empty())
+      m.failing_condition = "frictionless sliding (closed pairs slide, none opens)";
+    else if (!m.opening_pairs.empty())
+      m.failing_condition = std::string("no-tension joints (pairs open") +
+                            (stick ? "; nothing slides: the joints stick)" : ")");
+    else
+      m.failing_condition = "no support (the moving bodies touch nothing in the direction they move)";
+    return m;
+  }
+
+
+
+  template <int dim>
+  typename PrimalActiveSetSolver<dim>::Result
+  PrimalActiveSetSolver<dim>::solve(const dealii::SparseMatrix<double> &system_matrix,
+                                    const dealii::Vector<double>       &system_rhs,
+                                    dealii::SparseMatrix<double>       &matrix,
+                                    dealii::Vector<double>             &x)
+  {
+    on_closed_only = false;
+    return iterate(system_matrix, system_rhs, matrix, x, nullptr);
+  }
+
+
+
+  template <int dim>
+  typename PrimalActiveSetSolver<dim>::Result
+  PrimalActiveSetSolver<dim>::solve_stick_on_closed(const dealii::SparseMatrix<double> &system_matrix,
+                                                    const dealii::Vector<double>       &system_rhs,
+                                                    dealii::SparseMatrix<double>       &matrix,
+                                                    dealii::Vector<double>             &x,
+                                                    const std::vector<bool>            &active)
+  {
+    on_closed_only = stick;
+    auto r         = iterate(system_matrix, system_rhs, matrix, x, &active);
+    on_closed_only = false;
+    return r;
+  }
+
+
+
+  template <int dim>
+  typename PrimalActiveSetSolver<dim>::Result
+  PrimalActiveSetSolver<dim>::iterate(const dealii::SparseMatrix<double> &system_matrix,
+                                      const dealii::Vector<double>       &system_rhs,
+                                      dealii::SparseMatrix<double>       &matrix,
+                                      dealii::Vector<double>             &x,
+                                      const std::vector<bool>            *start)
+  {
+    const auto        &pairs   = contact.get_pairs();
+    const unsigned int n_pairs = pairs.size();
+    const unsigned int n       = system_matrix.m() - contact.n_multipliers();
+    Result             result;
+
+    // the work of the loads on each mode (the condensed load vector)
+    mode_work.assign(pieces->n_modes(), 0.);
+    for (unsigned int dof = 0; dof < n; ++dof)
+      if (const unsigned int p = dof_piece[dof];
+          p != dealii::numbers::invalid_unsigned_int && !constraints.is_constrained(dof))
+        for (unsigned int k = 0; k < 3; ++k)
+          mode_work[3 * p + k] += system_rhs[dof] * pieces->mode(p, k, dof);
+    double work_scale = 0;
+    for (const double w : mode_work)
+      work_scale += w * w;
+    work_scale = std::sqrt(work_scale);
+
+    std::vector<bool> usable(n_pairs), tangential(n_pairs);
+    double            max_weight = 0;
+    for (unsigned int i = 0; i < n_pairs; ++i)
+      {
+        usable[i]     = !pairs[i].junction;
+        tangential[i] = stick && usable[i];
+        max_weight    = std::max(max_weight, pairs[i].weight);
+      }
+
+    // (stick at closed pairs only: a pair sticks where it closes)
+    std::vector<double> reference(n_pairs, 0.);
+
+    // the energy 1/2 u.K u - f.u (condensed; with the stick springs)
+    const double penalty = contact.get_penalty();
+    const auto   energy  = [&](const dealii::Vector<double> &y) {
+      double e = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          if (constraints.is_constrained(i))
+            continue;
+          double ku = 0;
+          for (auto it = system_matrix.begin(i); it != system_matrix.end(i); ++it)
+            if (it->column() < n && !constraints.is_constrained(it->column()))
+              ku += it->value() * y[it->column()];
+          e += 0.5 * y[i] * ku - system_rhs[i] * y[i];
+        }
+      if (settings.tangential == ContactSettings::Tangential::penalty)
+        {
+          const auto s = contact.slips(y);
+          for (unsigned int i = 0; i < n_pairs; ++i)
+            if (tangential[i])
+              e += 0.5 * penalty * pairs[i].weight * (s[i] - reference[i]) * (s[i] - reference[i]);
+        }
+      return e;
+    };
+
+    // one solve with g = 0 on `closed`, optionally with the proximal term
+    // eps (u - anchor) on the DoFs `prox`
+    dealii::Vector<double> rhs, trial(x.size());
+    const auto             eqp = [&](const std::vector<bool>          &closed,
+                         const std::vector<unsigned int> &prox,
+                         const double                     eps,
+                         const dealii::Vector<double>    &anchor,
+                         dealii::Vector<double>          &y) {
+      matrix.copy_from(system_matrix);
+      rhs = system_rhs;
+      if (on_closed_only)
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          tangential[i] = closed[i] && usable[i];
+      contact.assemble(constraints, closed, tangential, matrix, rhs, on_closed_only ? &reference : nullptr);
+      for (const auto dof : prox)
+        {
+          matrix.add(dof, dof, eps);
+          rhs[dof] += eps * anchor[dof];
+        }
+      if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
+        solver.set_stick_directions(contact.stick_penalty_rows(constraints, tangential));
+      solver.set_context("globalized active set, solve " + std::to_string(result.n_solves + 1));
+      y.reinit(x.size());
+      solver.solve(matrix, n, y, rhs);
+      constraints.distribute(y);
+      ++result.n_solves;
+      result.linear_iterations += solver.last_iterations();
+    };
+
+    const unsigned int max_solves = std::max(200u, 6 * n_pairs);
+    const auto         check_limit = [&]() {
+      AssertThrow(result.n_solves + result.n_rigid_steps <= max_solves,
+                  dealii::ExcMessage("The globalized contact solver made " + std::to_string(result.n_solves) +
+                                     " solves and " + std::to_string(result.n_rigid_steps) +
+                                     " rigid steps without settling: degenerate ties between pairs that close "
+                                     "and open at once. Perturb the geometry or the loads slightly."));
+    };
+
+    // 1. start: closed initial gaps, the smallest gaps until every body is
+    // held, then the pairs that penetrate, until none does
+    std::vector<bool>      W(n_pairs);
+    dealii::Vector<double> xc;
+    const auto             gap_tolerance = [&](const dealii::Vector<double> &y) {
+      double umax = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        umax = std::max(umax, std::abs(y[i]));
+      return 1e-12 * max_weight + 1e-11 * umax;
+    };
+    bool at_minimiser = true;
+    if (start != nullptr)
+      {
+        AssertDimension(start->size(), n_pairs);
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          W[i] = (*start)[i] && usable[i];
+        xc           = x;
+        at_minimiser = false;
+      }
+    else
+      {
+    for (unsigned int i = 0; i < n_pairs; ++i)
+      W[i] = usable[i] && pairs[i].initial_gap <= 1e-12 * max_weight;
+    while (!free_motions(W).empty())
+      {
+        double g = std::numeric_limits<double>::max();
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (usable[i] && !W[i])
+            g = std::min(g, pairs[i].initial_gap);
+        AssertThrow(g < std::numeric_limits<double>::max(),
+                    dealii::ExcMessage("Contact: even with every contact pair closed, some rigid-body motions "
+                                       "are free. Add Dirichlet, roller or point constraints."));
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (usable[i] && !W[i] && pairs[i].initial_gap <= g + 1e-9 * max_weight)
+            W[i] = true;
+      }
+    for (;;)
+      {
+        check_limit();
+        eqp(W, {}, 0., xc, xc);
+        const auto   g    = contact.gaps(xc);
+        const double gtol = gap_tolerance(xc);
+        bool         added = false;
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (usable[i] && !W[i] && g[i] < -gtol)
+            {
+              W[i]  = true;
+              added = true;
+              ++result.n_changes;
+            }
+        if (!added)
+          break;
+      }
+      }
+    result.energy.push_back(energy(xc));
+
+    // 2. the primal active-set iteration from the minimiser over W
+    bool                      single = start != nullptr;
+    std::vector<unsigned int> dropped;
+    unsigned int              largest = 0;
+    for (;;)
+      {
+        check_limit();
+        if (at_minimiser)
+          {
+            double scale = 0;
+            for (unsigned int i = 0; i < n_pairs; ++i)
+              if (W[i])
+                scale = std::max(scale, std::abs(xc[n + i]) / pairs[i].weight);
+            const double threshold = 1e-9 * scale;
+            dropped.clear();
+            double most = 0;
+            for (unsigned int i = 0; i < n_pairs; ++i)
+              if (W[i] && xc[n + i] / pairs[i].weight > threshold)
+                {
+                  dropped.push_back(i);
+                  if (xc[n + i] / pairs[i].weight > most)
+                    {
+                      most    = xc[n + i] / pairs[i].weight;
+                      largest = i;
+                    }
+                }
+            if (dropped.empty())
+              {
+                result.converged = true;
+                result.active    = W;
+                x                = xc;
+                return result;
+              }
+            for (const auto i : dropped)
+              W[i] = false;
+            single = (dropped.size() == 1);
+            if (!single)
+              {
+                // several drops that leave a motion free without work: drop
+                // the largest tension alone
+                const auto Z = free_motions(W);
+                double     projected = 0;
+                for (const auto &z : Z)
+                  {
+                    double wz = 0;
+                    for (unsigned int j = 0; j < z.size(); ++j)
+                      wz += mode_work[j] * z[j];
+                    projected += wz * wz;
+                  }
+                if (!Z.empty() && std::sqrt(projected) <= 1e-10 * work_scale)
+                  {
+                    for (const auto i : dropped)
+                      W[i] = true;
+                    W[largest] = false;
+                    dropped    = {largest};
+                    single     = true;
+                  }
+              }
+            result.n_changes += dropped.size();
+            at_minimiser = false;
+          }
+
+        // a step with working set W from xc
+        const auto             g    = contact.gaps(xc);
+        const double           gtol = gap_tolerance(xc);
+        const auto             Z    = free_motions(W);
+        std::vector<double>    a;
+        double                 work = 0;
+        if (!Z.empty())
+          {
+            a.assign(pieces->n_modes(), 0.);
+            for (const auto &z : Z)
+              {
+                double wz = 0;
+                for (unsigned int j = 0; j < z.size(); ++j)
+                  wz += mode_work[j] * z[j];
+                for (unsigned int j = 0; j < z.size(); ++j)
+                  a[j] += wz * z[j];
+                work += wz * wz;
+              }
+          }
+        const bool rigid = !Z.empty() && std::sqrt(work) > 1e-10 * work_scale;
+        std::vector<double> slope(n_pairs, 0.);
+        if (rigid)
+          {
+            dealii::Vector<double> d = motion_field(a);
+            trial.reinit(x.size());
+            for (unsigned int i = 0; i < n; ++i)
+              trial[i] = d[i];
+            const auto s = contact.gaps(trial);
+            for (unsigned int i = 0; i < n_pairs; ++i)
+              slope[i] = s[i] - pairs[i].initial_gap;
+          }
+        else
+          {
+            std::vector<unsigned int> prox;
+            double                    eps = 0;
+            if (!Z.empty())
+              {
+                // free motions without work: the energy is constant along
+                // them, so pinning one DoF per motion (a spring to its
+                // present value at DoFs where the motions are independent)
+                // selects one of the minimisers and the springs carry no
+                // force (to round-off)
+                std::vector<dealii::Vector<double>> fields;
+                for (const auto &z : Z)
+                  fields.push_back(motion_field(z));
+                std::vector<bool> used(fields.size(), false);
+                for (unsigned int k = 0; k < fields.size(); ++k)
+                  {
+                    double       best = 0;
+                    unsigned int bdof = 0, bcol = 0;
+                    for (unsigned int c = 0; c < fields.size(); ++c)
+                      if (!used[c])
+                        for (unsigned int dof = 0; dof < n; ++dof)
+                          if (!constraints.is_constrained(dof) && std::abs(fields[c][dof]) > best)
+                            {
+                              best = std::abs(fields[c][dof]);
+                              bdof = dof;
+                              bcol = c;
+                            }
+                    if (best == 0)
+                      break;
+                    used[bcol] = true;
+                    prox.push_back(bdof);
+                    for (unsigned int c = 0; c < fields.size(); ++c)
+                      if (!used[c])
+                        fields[c].add(-fields[c][bdof] / fields[bcol][bdof], fields[bcol]);
+                  }
+                for (unsigned int dof = 0; dof < n; ++dof)
+                  eps = std::max(eps, std::abs(system_matrix.diag_element(dof)));
+              }
+            eqp(W, prox, eps, xc, trial);
+            const auto gt = contact.gaps(trial);
+            for (unsigned int i = 0; i < n_pairs; ++i)
+              slope[i] = gt[i] - g[i];
+          }
+        // the ratio test
+        double                    alpha = rigid ? std::numeric_limits<double>::infinity() : 1.;
+        std::vector<double>       ratio(n_pairs, std::numeric_limits<double>::infinity());
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (usable[i] && !W[i] && slope[i] < 0)
+            {
+              ratio[i] = std::max(0., g[i] + gtol) / -slope[i];
+              alpha    = std::min(alpha, ratio[i]);
+            }
+        if (rigid && alpha == std::numeric_limits<double>::infinity())
+          {
+            if (on_closed_only)
+              {
+                // a free motion of the non-convex model proves nothing
+                result.converged = false;
+                return result;
+              }
+            // nothing ever blocks the free motion: no equilibrium
+            result.converged = false;
+            result.active    = W;
+            result.mechanism = make_mechanism(a, W);
+            x                = xc;
+            return result;
+          }
+        std::vector<unsigned int> blocking;
+        if (alpha < (rigid ? std::numeric_limits<double>::infinity() : 1.))
+          for (unsigned int i = 0; i < n_pairs; ++i)
+            if (ratio[i] <= alpha * (1 + 1e-9) + 1e-300)
+              blocking.push_back(i);
+        // a pair dropped together with others that would penetrate at once:
+        // drop the largest tension alone
+        if (!single && alpha <= 1e-12 && !blocking.empty())
+          {
+            bool back = false;
+            for (const auto i : blocking)
+              back = back || std::find(dropped.begin(), dropped.end(), i) != dropped.end();
+            if (back)
+              {
+                for (const auto i : dropped)
+                  W[i] = true;
+                W[largest] = false;
+                dropped    = {largest};
+                single     = true;
+                continue;
+              }
+          }
+        // the step
+        if (rigid)
+          {
+            const dealii::Vector<double> d = motion_field(a);
+            for (unsigned int i = 0; i < n; ++i)
+              xc[i] += alpha * d[i];
+            ++result.n_rigid_steps;
+          }
+        else if (blocking.empty())
+          {
+            // the full step: the minimiser over W (with pinned free
+            // motions: one of the minimisers)
+            xc           = trial;
+            at_minimiser = true;
+          }
+        else
+          for (unsigned int i = 0; i < n; ++i)
+            xc[i] += alpha * (trial[i] - xc[i]);
+        const auto slips_now = on_closed_only ? contact.slips(xc) : std::vector<double>();
+        for (const auto i : blocking)
+          {
+            W[i] = true;
+            if (on_closed_only)
+              reference[i] = slips_now[i];
+            ++result.n_changes;
+          }
+        single = true; // after the first step every drop is settled
+        result.energy.push_back(energy(xc));
+      }
+  }
+
+  template class PrimalActiveSetSolver<2>;
+} // namespace dealvem
