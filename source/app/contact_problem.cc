@@ -2268,9 +2268,13 @@ namespace dealvem
       }
     catch (...)
       {
-        if (d.active_set && d.active_set->last_mechanism() != nullptr)
+        const CollapseMechanism *found =
+          d.friction_solver ? d.friction_solver->last_mechanism() :
+          d.active_set      ? d.active_set->last_mechanism() :
+                              nullptr;
+        if (found != nullptr)
           {
-            mechanism = std::make_shared<const CollapseMechanism>(*d.active_set->last_mechanism());
+            mechanism = std::make_shared<const CollapseMechanism>(*found);
             write_mechanism();
           }
         if (opt.n_load_steps > 1)

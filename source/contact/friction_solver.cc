@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <exception>
 #include <iomanip>
 #include <set>
 #include <sstream>
@@ -243,16 +244,76 @@ namespace dealvem
     Result                                   result;
     typename FrictionStateUpdate<dim>::State state;
     const dealii::Vector<double>             x_start = x;
+    std::exception_ptr                       plain_failure_ptr;
+    std::string                              plain_reason;
     try
       {
         state = iterate(update, system_matrix, system_rhs, matrix, x, start, reference, result);
       }
     catch (const std::exception &plain_failure)
       {
-        if (!continuation.enabled)
-          throw;
         ++result.n_failed_attempts;
-        const std::string plain_reason = reason_of(plain_failure);
+        plain_reason      = reason_of(plain_failure);
+        plain_failure_ptr = std::current_exception();
+        mechanism.reset();
+        // the sticking joints, solved by the globally convergent method: no
+        // equilibrium there is none here; otherwise a start for Newton
+        if (settings.globalize && settings.normal == ContactSettings::Normal::unilateral && support != nullptr &&
+            system_matrix.frobenius_norm() > 0)
+          {
+            ContactSettings stick_settings = settings;
+            stick_settings.tangential =
+              (settings.tangential == ContactSettings::Tangential::coulomb ? ContactSettings::Tangential::multipliers :
+                                                                             ContactSettings::Tangential::penalty);
+            const ContactAssembler<dim> stick(contact.get_dof_handler(), contact.get_pairs(), stick_settings,
+                                              contact.get_penalty());
+            PrimalActiveSetSolver<dim> primal(stick, constraints, solver, stick_settings);
+            primal.set_tangential_reference(reference);
+            x        = x_start;
+            auto pr  = primal.solve(system_matrix, system_rhs, matrix, x);
+            result.n_globalized_solves = pr.n_solves;
+            result.n_iterations += pr.n_solves;
+            if (!pr.converged)
+              {
+                mechanism = std::make_shared<CollapseMechanism>(pr.mechanism);
+                AssertThrow(false,
+                            dealii::ExcMessage(
+                              "No static equilibrium, even with unlimited friction (every closed pair "
+                              "sticking): " + pr.mechanism.describe(contact.get_pairs()) +
+                              "\n  (the semismooth Newton iteration had failed: " + headline(plain_reason) + ")"));
+              }
+            std::vector<bool> closed = pr.active;
+            try
+              {
+                const auto pc = primal.solve_stick_on_closed(system_matrix, system_rhs, matrix, x, pr.active);
+                result.n_globalized_solves += pc.n_solves;
+                result.n_iterations += pc.n_solves;
+                if (pc.converged)
+                  closed = pc.active;
+              }
+            catch (const dealii::ExceptionBase &)
+              {
+                // keep the convex model's set
+              }
+            std::vector<PairState> from(n_pairs, PairState::open);
+            for (unsigned int i = 0; i < n_pairs; ++i)
+              if (closed[i])
+                from[i] = PairState::stick;
+            try
+              {
+                state = iterate(update, system_matrix, system_rhs, matrix, x, from, reference, result);
+                result.globalized_start = true;
+              }
+            catch (const std::exception &)
+              {
+                ++result.n_failed_attempts;
+              }
+          }
+        if (!result.globalized_start && !continuation.enabled)
+          throw;
+      }
+    if (!result.globalized_start && plain_failure_ptr)
+      {
 
         // 1. a factor at which the iteration converges
         double       factor    = continuation.first_factor;
@@ -276,7 +337,7 @@ namespace dealvem
               break;
           }
         if (!converged)
-          throw;
+          std::rethrow_exception(plain_failure_ptr);
         result.continuation_factors.push_back(factor);
 
         // 2. lower it to 1, each attempt from the states of the last factor

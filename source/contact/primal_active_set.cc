@@ -278,7 +278,7 @@ namespace dealvem
         pm.rotation       = r / cp.size(p);
         pm.rotates        = std::abs(r) > 1e-9 * std::hypot(t0, t1);
         if (pm.rotates)
-          pm.centre = pm.centroid + dealii::Tensor<1, 2>({t1 / pm.rotation, -t0 / pm.rotation});
+          pm.centre = pm.centroid + dealii::Tensor<1, 2>({-t1 / pm.rotation, t0 / pm.rotation});
         m.moving.push_back(pm);
       }
     for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -398,6 +398,8 @@ namespace dealvem
 
     // (stick at closed pairs only: a pair sticks where it closes)
     std::vector<double> reference(n_pairs, 0.);
+    if (initial_reference.size() == n_pairs)
+      reference = initial_reference;
 
     // the energy 1/2 u.K u - f.u (condensed; with the stick springs)
     const double penalty = contact.get_penalty();
@@ -425,7 +427,7 @@ namespace dealvem
 
     // one solve with g = 0 on `closed`, optionally with the proximal term
     // eps (u - anchor) on the DoFs `prox`
-    dealii::Vector<double> rhs, trial(x.size());
+    dealii::Vector<double> rhs, trial(system_matrix.m());
     const auto             eqp = [&](const std::vector<bool>          &closed,
                          const std::vector<unsigned int> &prox,
                          const double                     eps,
@@ -436,7 +438,7 @@ namespace dealvem
       if (on_closed_only)
         for (unsigned int i = 0; i < n_pairs; ++i)
           tangential[i] = closed[i] && usable[i];
-      contact.assemble(constraints, closed, tangential, matrix, rhs, on_closed_only ? &reference : nullptr);
+      contact.assemble(constraints, closed, tangential, matrix, rhs, &reference);
       for (const auto dof : prox)
         {
           matrix.add(dof, dof, eps);
@@ -445,7 +447,7 @@ namespace dealvem
       if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
         solver.set_stick_directions(contact.stick_penalty_rows(constraints, tangential));
       solver.set_context("globalized active set, solve " + std::to_string(result.n_solves + 1));
-      y.reinit(x.size());
+      y.reinit(system_matrix.m());
       solver.solve(matrix, n, y, rhs);
       constraints.distribute(y);
       ++result.n_solves;
@@ -530,7 +532,7 @@ namespace dealvem
             for (unsigned int i = 0; i < n_pairs; ++i)
               if (W[i])
                 scale = std::max(scale, std::abs(xc[n + i]) / pairs[i].weight);
-            const double threshold = 1e-9 * scale;
+            const double threshold = 1e-11 * scale;
             dropped.clear();
             double most = 0;
             for (unsigned int i = 0; i < n_pairs; ++i)
@@ -603,7 +605,7 @@ namespace dealvem
         if (rigid)
           {
             dealii::Vector<double> d = motion_field(a);
-            trial.reinit(x.size());
+            trial.reinit(system_matrix.m());
             for (unsigned int i = 0; i < n; ++i)
               trial[i] = d[i];
             const auto s = contact.gaps(trial);

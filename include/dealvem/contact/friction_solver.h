@@ -11,10 +11,12 @@
 
 #include <dealvem/contact/contact_assembler.h>
 #include <dealvem/contact/friction_state_update.h>
+#include <dealvem/contact/primal_active_set.h>
 #include <dealvem/contact/rigid_body_support.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace dealvem
@@ -76,6 +78,20 @@ namespace dealvem
    * equilibrium exists, so solve() then decides by the continuation below
    * and throws "No static equilibrium" only when that ends without one
    * (or the plain failure when the continuation cannot start).
+   *
+   * <h3>A start that always exists: the sticking joints</h3>
+   * With ContactSettings::globalize (the default), a failed plain iteration
+   * first solves the same step with every closed pair sticking (at the
+   * reference slips of the step: unlimited friction) by the globally
+   * convergent PrimalActiveSetSolver. If that problem has no equilibrium,
+   * the Coulomb problem has none either (finite friction allows fewer
+   * force distributions), and solve() throws "No static equilibrium" with
+   * the collapse mechanism (last_mechanism()): the joints open (no
+   * tension), whatever the friction. Otherwise the semismooth Newton
+   * iteration starts again from the stick solution (closed pairs stick,
+   * the others open); where that solution lies inside every friction cone
+   * it converges at once. Only if it fails again does the continuation
+   * below run.
    *
    * <h3>Continuation in the friction coefficient</h3>
    * Close to the friction limit the plain iteration can stop without an
@@ -169,6 +185,12 @@ namespace dealvem
       /// and those of the continuation); their saddle-point solves are
       /// counted in n_iterations.
       unsigned int n_failed_attempts = 0;
+      /// Saddle-point solves of the globalized stick solve that started
+      /// the iteration again after the plain one failed (0: not needed).
+      unsigned int n_globalized_solves = 0;
+      /// Whether the iteration converged from the globalized stick
+      /// solution (without continuation).
+      bool globalized_start = false;
     };
 
     /// The parameters of the continuation in the friction coefficient (see
@@ -230,6 +252,14 @@ namespace dealvem
           const std::vector<PairState>       &state,
           const std::vector<double>          &reference);
 
+    /// The collapse mechanism of the last solve() that found no
+    /// equilibrium even with sticking joints (see solve()), or nullptr.
+    const CollapseMechanism *
+    last_mechanism() const
+    {
+      return mechanism.get();
+    }
+
   private:
     /**
      * One semismooth Newton iteration from @p start with the friction
@@ -253,6 +283,7 @@ namespace dealvem
     ContactSettings                          settings;
     double                                   c;
     const RigidBodySupport                  *support = nullptr;
+    std::shared_ptr<CollapseMechanism>       mechanism;
     Continuation                             continuation;
   };
 } // namespace dealvem

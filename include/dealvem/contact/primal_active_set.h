@@ -220,6 +220,18 @@ namespace dealvem
                           dealii::Vector<double>             &x,
                           const std::vector<bool>            &active);
 
+    /**
+     * Stick at the relative tangential displacements @p reference (one per
+     * pair) instead of 0: the stick of a quasi-static load step that starts
+     * from earlier slips (Coulomb friction's reference, FrictionSolver).
+     * Empty: 0.
+     */
+    void
+    set_tangential_reference(const std::vector<double> &reference)
+    {
+      initial_reference = reference;
+    }
+
   private:
     /// The iteration of solve() and solve_stick_on_closed() (@p start:
     /// the closed pairs to start from with the displacement in @p x).
@@ -250,6 +262,8 @@ namespace dealvem
     bool                                     stick;
     /// Stick only at closed pairs (solve_stick_on_closed()).
     bool                                     on_closed_only = false;
+    /// See set_tangential_reference().
+    std::vector<double>                      initial_reference;
     std::unique_ptr<PieceSupport>            pieces;
     /// Per DoF, the piece that moves it (the first piece of its node;
     /// invalid for nodes of no cell).
