@@ -76,10 +76,7 @@
 //    violation below 1e-12, exactly one closed pair, at (1,1) (1e-12),
 //    every other pair opening, failing condition "no-tension joints".
 //    The centre is computed here from the motion's translation, rotation
-//    and centroid: CollapseMechanism::PieceMotion::centre has the offset
-//    from the centroid with the wrong sign (it gives (0,3), the
-//    reflection of (1,1) through the centroid (0.5,2)); printed, not
-//    asserted.
+//    and centroid, and PieceMotion::centre must be the same point (1e-8).
 // 5. Energy monotone: PrimalActiveSetSolver called directly on the tipping
 //    block of 4 (k = 2; 0.99 and 1.01 q_crit) and on that block,
 //    frictionless, pressed by 10 on x < 0.3 and held in x at its top left
@@ -207,9 +204,8 @@ namespace
 
   /// The point a rigid motion (translation t of the centroid G, rotation
   /// theta counter-clockwise) leaves in place: t + theta (-(c - G)_y,
-  /// (c - G)_x) = 0, i.e. c = G + (-t_y, t_x) / theta. (Computed here:
-  /// PieceMotion::centre has the offset with the opposite sign, G + (t_y,
-  /// -t_x) / theta, the reflection of the centre through the centroid.)
+  /// (c - G)_x) = 0, i.e. c = G + (-t_y, t_x) / theta (the check of
+  /// PieceMotion::centre).
   dealii::Point<2>
   centre(const CollapseMechanism::PieceMotion &p)
   {
@@ -463,6 +459,8 @@ namespace
             testing::check(p.rotates && p.rotation < 0, tag + ", 1.01 q_crit: a rotation (clockwise)");
             testing::check_small(c.distance(dealii::Point<2>(1, 1)) / 2, 1e-8,
                                  tag + ", 1.01 q_crit: |centre - (1,1)| / block height");
+            testing::check_small(p.centre.distance(dealii::Point<2>(1, 1)) / 2, 1e-8,
+                                 tag + ", 1.01 q_crit: |PieceMotion::centre - (1,1)| / block height");
             // the far corner (0,3), sqrt(5) from the centre, moves by 1
             testing::check_near(p.rotation, -1 / std::sqrt(5.), 1e-12, tag + ", 1.01 q_crit: rotation");
           }
