@@ -139,7 +139,8 @@ namespace dealvem
    * costs one saddle-point solve (a rigid step none); a limit of
    * $\max(200, 6 n_{pairs})$ solves guards degenerate ties and throws.
    *
-   * With tangential stick (Tangential::penalty and ::multipliers) the
+   * With tangential stick (ContactSettings::Tangential::penalty and
+   * ContactSettings::Tangential::multipliers) the
    * convex model ties the tangential direction of every pair, open or
    * closed, as Coulomb friction with an infinite coefficient and the
    * associated flow rule does; the non-associated model of
