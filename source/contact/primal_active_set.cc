@@ -233,10 +233,8 @@ namespace dealvem
 
   template <int dim>
   CollapseMechanism
-  PrimalActiveSetSolver<dim>::make_mechanism(const std::vector<double> &modes_in,
-                                             const std::vector<bool>   &closed) const
+  PrimalActiveSetSolver<dim>::make_mechanism(const std::vector<double> &modes_in) const
   {
-    (void)closed;
     const auto        &pairs = contact.get_pairs();
     const auto        &cp    = pieces->get_pieces();
     CollapseMechanism  m;
@@ -519,6 +517,27 @@ namespace dealvem
       }
     result.energy.push_back(energy(xc));
 
+    // the projection a of the loads on the free motions Z (an orthonormal
+    // basis over the modes), and the work on it, |a|^2
+    std::vector<double> a;
+    const auto          project_loads = [&](const std::vector<std::vector<double>> &Z, std::vector<double> &proj) {
+      proj.assign(pieces->n_modes(), 0.);
+      double w = 0;
+      for (const auto &z : Z)
+        {
+          double wz = 0;
+          for (unsigned int j = 0; j < z.size(); ++j)
+            wz += mode_work[j] * z[j];
+          for (unsigned int j = 0; j < z.size(); ++j)
+            proj[j] += wz * z[j];
+          w += wz * wz;
+        }
+      return w;
+    };
+    // the free motions of W, when the drop test has computed them already
+    std::vector<std::vector<double>> Z_of_W;
+    bool                             Z_up_to_date = false;
+
     // 2. the primal active-set iteration from the minimiser over W
     bool                      single = start != nullptr;
     std::vector<unsigned int> dropped;
@@ -559,17 +578,11 @@ namespace dealvem
               {
                 // several drops that leave a motion free without work: drop
                 // the largest tension alone
-                const auto Z = free_motions(W);
-                double     projected = 0;
-                for (const auto &z : Z)
+                Z_of_W       = free_motions(W);
+                Z_up_to_date = true;
+                if (!Z_of_W.empty() && std::sqrt(project_loads(Z_of_W, a)) <= 1e-10 * work_scale)
                   {
-                    double wz = 0;
-                    for (unsigned int j = 0; j < z.size(); ++j)
-                      wz += mode_work[j] * z[j];
-                    projected += wz * wz;
-                  }
-                if (!Z.empty() && std::sqrt(projected) <= 1e-10 * work_scale)
-                  {
+                    Z_up_to_date = false;
                     for (const auto i : dropped)
                       W[i] = true;
                     W[largest] = false;
@@ -584,23 +597,12 @@ namespace dealvem
         // a step with working set W from xc
         const auto             g    = contact.gaps(xc);
         const double           gtol = gap_tolerance(xc);
-        const auto             Z    = free_motions(W);
-        std::vector<double>    a;
-        double                 work = 0;
-        if (!Z.empty())
-          {
-            a.assign(pieces->n_modes(), 0.);
-            for (const auto &z : Z)
-              {
-                double wz = 0;
-                for (unsigned int j = 0; j < z.size(); ++j)
-                  wz += mode_work[j] * z[j];
-                for (unsigned int j = 0; j < z.size(); ++j)
-                  a[j] += wz * z[j];
-                work += wz * wz;
-              }
-          }
-        const bool rigid = !Z.empty() && std::sqrt(work) > 1e-10 * work_scale;
+        if (!Z_up_to_date)
+          Z_of_W = free_motions(W);
+        Z_up_to_date      = false;
+        const auto &Z     = Z_of_W;
+        const double work = project_loads(Z, a);
+        const bool rigid  = !Z.empty() && std::sqrt(work) > 1e-10 * work_scale;
         std::vector<double> slope(n_pairs, 0.);
         if (rigid)
           {
@@ -676,7 +678,7 @@ namespace dealvem
             // nothing ever blocks the free motion: no equilibrium
             result.converged = false;
             result.active    = W;
-            result.mechanism = make_mechanism(a, W);
+            result.mechanism = make_mechanism(a);
             x                = xc;
             return result;
           }

@@ -254,7 +254,7 @@ namespace dealvem
 
     /// The mechanism of the motion @p modes (verified, scaled, described).
     CollapseMechanism
-    make_mechanism(const std::vector<double> &modes, const std::vector<bool> &closed) const;
+    make_mechanism(const std::vector<double> &modes) const;
 
     const ContactAssembler<dim>             &contact;
     const dealii::AffineConstraints<double> &constraints;
