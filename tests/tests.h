@@ -99,7 +99,7 @@ namespace testing
           {
             // Show the first line of the message that matched.
             const auto p = msg.find(fragment);
-            std::cout << "      ... " << msg.substr(p, 100) << std::endl;
+            std::cout << "      ... " << msg.substr(p, std::getenv("DEALVEM_FULL_MESSAGES") ? std::string::npos : 100) << std::endl;
           }
         return;
       }

@@ -2621,6 +2621,10 @@ namespace dealvem
                 for (const double f : fr.continuation_factors)
                   std::cout << " " << f;
               }
+            else if (fr.globalized_start)
+              std::cout << "; the Newton iteration failed, solved as a fixed point of "
+                        << fr.n_fixed_point_iterations << " Tresca problem(s) (globally convergent; "
+                        << fr.n_globalized_solves << " solves with the stick solve)";
           }
         std::cout << std::endl;
         print_reactions(step_result.reactions, opt.moment_point, "    ");

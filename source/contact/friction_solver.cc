@@ -246,6 +246,15 @@ namespace dealvem
     const dealii::Vector<double>             x_start = x;
     std::exception_ptr                       plain_failure_ptr;
     std::string                              plain_reason;
+    // the refusal with the mechanism of the last Tresca problem
+    const auto friction_collapse = [&](const std::string &reason) {
+      return "No static equilibrium: the friction cannot hold the bodies. With the friction bounds mu |N| of "
+             "the normal forces N of the last iterate of the Tresca fixed point, " +
+             mechanism->describe(contact.get_pairs()) +
+             "\n  (the semismooth Newton iteration had failed: " + headline(reason) +
+             (continuation.enabled ? "; the continuation in the friction coefficient found no equilibrium either)" :
+                                     ")");
+    };
     try
       {
         state = iterate(update, system_matrix, system_rhs, matrix, x, start, reference, result);
@@ -282,35 +291,89 @@ namespace dealvem
                               "sticking): " + pr.mechanism.describe(contact.get_pairs()) +
                               "\n  (the semismooth Newton iteration had failed: " + headline(plain_reason) + ")"));
               }
-            std::vector<bool> closed = pr.active;
-            try
+            // Coulomb as a fixed point of Tresca problems: the friction
+            // bounds b_i = mu_i |lambda_n,i| of the last solution, each
+            // Tresca problem solved by the globally convergent iteration
+            // from the last one's solution and states
+            const unsigned int n  = system_matrix.m() - contact.n_multipliers();
+            const auto         bounds_of = [&](const dealii::Vector<double> &y, const std::vector<bool> &closed) {
+              std::vector<double> b(n_pairs, 0.);
+              for (unsigned int i = 0; i < n_pairs; ++i)
+                if (closed[i])
+                  b[i] = contact.friction_coefficient(i) * std::max(0., -y[n + i]);
+              return b;
+            };
+            std::vector<bool>      closed = pr.active;
+            std::vector<double>    bound  = bounds_of(x, closed);
+            std::vector<PairState> tstate(n_pairs, PairState::stick);
+            bool                   newton_tried = false;
+            for (unsigned int k = 0; k < max_fixed_point_iterations && !result.globalized_start; ++k)
               {
-                const auto pc = primal.solve_stick_on_closed(system_matrix, system_rhs, matrix, x, pr.active);
-                result.n_globalized_solves += pc.n_solves;
-                result.n_iterations += pc.n_solves;
-                if (pc.converged)
-                  closed = pc.active;
+                const auto tr = primal.solve_tresca(system_matrix, system_rhs, matrix, x, bound, closed, tstate);
+                ++result.n_fixed_point_iterations;
+                result.n_globalized_solves += tr.n_solves;
+                result.n_iterations += tr.n_solves;
+                result.linear_iterations += tr.linear_iterations;
+                if (!tr.converged)
+                  {
+                    // no equilibrium with these bounds: the evidence, if
+                    // the continuation below finds none either
+                    mechanism = std::make_shared<CollapseMechanism>(tr.mechanism);
+                    break;
+                  }
+                const auto   next   = bounds_of(x, tr.active);
+                double       change = 0, largest = 0;
+                for (unsigned int i = 0; i < n_pairs; ++i)
+                  {
+                    change  = std::max(change, std::abs(next[i] - bound[i]));
+                    largest = std::max(largest, next[i]);
+                  }
+                const bool same_states = (tr.active == closed && tr.state == tstate);
+                closed                 = tr.active;
+                tstate                 = tr.state;
+                if (change <= 1e-11 * largest)
+                  {
+                    // a fixed point: the Tresca solution with b = mu |lambda_n|
+                    // is a Coulomb solution
+                    state             = update.start(tstate);
+                    state.slip        = contact.slips(x);
+                    state.tangential_multiplier = tr.tangential_force;
+                    state.converged   = true;
+                    state.n_iterations = tr.n_solves;
+                    if (settings.tangential == ContactSettings::Tangential::coulomb)
+                      for (unsigned int i = 0; i < n_pairs; ++i)
+                        x[n + n_pairs + i] = tr.tangential_force[i];
+                    result.globalized_start = true;
+                    break;
+                  }
+                bound = next;
+                if (same_states && !newton_tried && change <= 1e-6 * largest)
+                  {
+                    // the states have settled: Newton from them solves the
+                    // coupled problem at once
+                    newton_tried                     = true;
+                    const dealii::Vector<double> x_fp = x;
+                    try
+                      {
+                        state = iterate(update, system_matrix, system_rhs, matrix, x, tstate, reference, result);
+                        result.globalized_start = true;
+                      }
+                    catch (const std::exception &)
+                      {
+                        ++result.n_failed_attempts;
+                        x = x_fp;
+                      }
+                  }
               }
-            catch (const dealii::ExceptionBase &)
-              {
-                // keep the convex model's set
-              }
-            std::vector<PairState> from(n_pairs, PairState::open);
-            for (unsigned int i = 0; i < n_pairs; ++i)
-              if (closed[i])
-                from[i] = PairState::stick;
-            try
-              {
-                state = iterate(update, system_matrix, system_rhs, matrix, x, from, reference, result);
-                result.globalized_start = true;
-              }
-            catch (const std::exception &)
-              {
-                ++result.n_failed_attempts;
-              }
+            if (result.globalized_start)
+              mechanism.reset();
           }
         if (!result.globalized_start && !continuation.enabled)
-          throw;
+          {
+            if (mechanism)
+              AssertThrow(false, dealii::ExcMessage(friction_collapse(plain_reason)));
+            throw;
+          }
       }
     if (!result.globalized_start && plain_failure_ptr)
       {
@@ -337,7 +400,11 @@ namespace dealvem
               break;
           }
         if (!converged)
-          std::rethrow_exception(plain_failure_ptr);
+          {
+            if (mechanism)
+              AssertThrow(false, dealii::ExcMessage(friction_collapse(plain_reason)));
+            std::rethrow_exception(plain_failure_ptr);
+          }
         result.continuation_factors.push_back(factor);
 
         // 2. lower it to 1, each attempt from the states of the last factor
@@ -398,12 +465,16 @@ namespace dealvem
                               factor_string(last_target) + ", failed with: " + headline(last_reason) + ")." +
                               (motions.empty() ? std::string() :
                                                  " Held only by friction: " + motions_and_bodies(motions) + ".") +
+                              (mechanism ? "\n  With the friction bounds mu |N| of the normal forces N found, " +
+                                             mechanism->describe(contact.get_pairs()) + "\n " :
+                                           std::string()) +
                               " Raise the friction coefficient, hold the bodies by Dirichlet, roller or point "
                               "constraints, or reduce the load."));
               }
           }
       }
 
+    mechanism.reset();
     // converged: slips, friction forces, references for the next step and
     // the dissipated energy, all against the reference of the start of the
     // step

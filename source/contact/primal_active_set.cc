@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -61,6 +62,9 @@ namespace dealvem
         << " pair(s) open, " << sliding_pairs.size() << " slide); work of the loads " << work
         << " for a largest displacement 1 (cosine with the loads " << relative_work
         << "); largest violation of the contact conditions " << largest_violation;
+    if (!friction_pairs.empty())
+      out << "\n    " << friction_pairs.size() << " pair(s) slide against their friction bound, which can absorb "
+          << friction_dissipation << " of that work at most";
     return out.str();
   }
 
@@ -141,7 +145,8 @@ namespace dealvem
 
   template <int dim>
   std::vector<std::vector<double>>
-  PrimalActiveSetSolver<dim>::free_motions(const std::vector<bool> &closed) const
+  PrimalActiveSetSolver<dim>::free_motions(const std::vector<bool> &closed,
+                                           const std::vector<bool> &tangential) const
   {
     const auto &pairs = contact.get_pairs();
     std::vector<const PieceSupport::Row *> rows;
@@ -153,7 +158,7 @@ namespace dealvem
           if (closed[i])
             for (const auto &r : support_normal_rows[i])
               rows.push_back(&r);
-          if (stick && (closed[i] || !on_closed_only))
+          if (tangential[i])
             for (const auto &r : support_tangential_rows[i])
               rows.push_back(&r);
         }
@@ -179,7 +184,7 @@ namespace dealvem
         {
           if (closed[i])
             all.push_back(&normal_rows[i]);
-          if (stick && (closed[i] || !on_closed_only))
+          if (tangential[i])
             all.push_back(&tangential_rows[i]);
         }
     std::vector<const ModeRow *> touching;
@@ -233,7 +238,9 @@ namespace dealvem
 
   template <int dim>
   CollapseMechanism
-  PrimalActiveSetSolver<dim>::make_mechanism(const std::vector<double> &modes_in) const
+  PrimalActiveSetSolver<dim>::make_mechanism(const std::vector<double> &modes_in,
+                                             const std::vector<bool>   &tangential,
+                                             const std::vector<double> &bound) const
   {
     const auto        &pairs = contact.get_pairs();
     const auto        &cp    = pieces->get_pieces();
@@ -289,8 +296,11 @@ namespace dealvem
         const unsigned int pa = dof_piece[d[0]], pb = dof_piece[d[2]];
         const bool   involved = (pa != dealii::numbers::invalid_unsigned_int && moves[pa]) ||
                               (pb != dealii::numbers::invalid_unsigned_int && moves[pb]);
-        if (stick)
+        if (tangential[i])
           m.largest_violation = std::max(m.largest_violation, std::abs(gt));
+        // Tresca bounds: the friction force b_i opposes the slide
+        if (!bound.empty() && !tangential[i])
+          m.friction_dissipation += bound[i] * std::abs(gt);
         if (!involved)
           continue;
         if (gn > 1e-8)
@@ -313,11 +323,19 @@ namespace dealvem
                   pb != dealii::numbers::invalid_unsigned_int ? cp.body(pb) : 0u);
                 m.closed_pair_locations.push_back(pairs[i].slave_location);
               }
-            if (!stick && std::abs(gt) > 1e-8)
-              m.sliding_pairs.push_back(i);
+            if (!tangential[i] && std::abs(gt) > 1e-8)
+              {
+                m.sliding_pairs.push_back(i);
+                if (!bound.empty() && bound[i] > 0)
+                  m.friction_pairs.push_back(i);
+              }
           }
       }
-    if (!m.opening_pairs.empty() && !m.sliding_pairs.empty())
+    if (!m.friction_pairs.empty())
+      m.failing_condition = std::string("friction (closed pairs slide against their friction bound") +
+                            (m.opening_pairs.empty() ? std::string(")") :
+                                                       std::string("; and no-tension joints: pairs open)"));
+    else if (!m.opening_pairs.empty() && !m.sliding_pairs.empty())
       m.failing_condition = "no-tension joints and frictionless sliding (pairs open, and closed pairs slide)";
     else if (!m.sliding_pairs.empty())
       m.failing_condition = "frictionless sliding (closed pairs slide, none opens)";
@@ -362,6 +380,48 @@ namespace dealvem
 
   template <int dim>
   typename PrimalActiveSetSolver<dim>::Result
+  PrimalActiveSetSolver<dim>::solve_tresca(const dealii::SparseMatrix<double> &system_matrix,
+                                           const dealii::Vector<double>       &system_rhs,
+                                           dealii::SparseMatrix<double>       &matrix,
+                                           dealii::Vector<double>             &x,
+                                           const std::vector<double>          &bound,
+                                           const std::vector<bool>            &active,
+                                           const std::vector<PairState>       &state)
+  {
+    const unsigned int n_pairs = contact.n_pairs();
+    AssertThrow(stick, dealii::ExcMessage("PrimalActiveSetSolver::solve_tresca() needs a stick model "
+                                          "(Tangential = penalty or multipliers) in its settings."));
+    AssertThrow(bound.size() == n_pairs && active.size() == n_pairs && state.size() == n_pairs,
+                dealii::ExcMessage("PrimalActiveSetSolver::solve_tresca(): " + std::to_string(bound.size()) +
+                                   " bounds, " + std::to_string(active.size()) + " closed flags and " +
+                                   std::to_string(state.size()) + " states for " + std::to_string(n_pairs) +
+                                   " pairs."));
+    for (unsigned int i = 0; i < n_pairs; ++i)
+      AssertThrow(std::isfinite(bound[i]) && bound[i] >= 0,
+                  dealii::ExcMessage("PrimalActiveSetSolver::solve_tresca(): the friction bound of pair " +
+                                     std::to_string(i) + " is " + std::to_string(bound[i]) +
+                                     "; it must be finite and >= 0."));
+    on_closed_only = false;
+    tresca_bound   = bound;
+    tresca_start   = state;
+    Result r;
+    try
+      {
+        r = iterate(system_matrix, system_rhs, matrix, x, &active);
+      }
+    catch (...)
+      {
+        tresca_bound.clear();
+        throw;
+      }
+    tresca_bound.clear();
+    return r;
+  }
+
+
+
+  template <int dim>
+  typename PrimalActiveSetSolver<dim>::Result
   PrimalActiveSetSolver<dim>::iterate(const dealii::SparseMatrix<double> &system_matrix,
                                       const dealii::Vector<double>       &system_rhs,
                                       dealii::SparseMatrix<double>       &matrix,
@@ -371,6 +431,9 @@ namespace dealvem
     const auto        &pairs   = contact.get_pairs();
     const unsigned int n_pairs = pairs.size();
     const unsigned int n       = system_matrix.m() - contact.n_multipliers();
+    const bool         tresca  = !tresca_bound.empty();
+    const bool         springs = (settings.tangential == ContactSettings::Tangential::penalty);
+    const double       penalty = contact.get_penalty();
     Result             result;
 
     // the work of the loads on each mode (the condensed load vector)
@@ -389,9 +452,8 @@ namespace dealvem
     double            max_weight = 0;
     for (unsigned int i = 0; i < n_pairs; ++i)
       {
-        usable[i]     = !pairs[i].junction;
-        tangential[i] = stick && usable[i];
-        max_weight    = std::max(max_weight, pairs[i].weight);
+        usable[i]  = !pairs[i].junction;
+        max_weight = std::max(max_weight, pairs[i].weight);
       }
 
     // (stick at closed pairs only: a pair sticks where it closes)
@@ -399,9 +461,31 @@ namespace dealvem
     if (initial_reference.size() == n_pairs)
       reference = initial_reference;
 
-    // the energy 1/2 u.K u - f.u (condensed; with the stick springs)
-    const double penalty = contact.get_penalty();
-    const auto   energy  = [&](const dealii::Vector<double> &y) {
+    // Tresca: per pair its bound, whether it is free (no bound) and its
+    // slip direction (0: sticks)
+    std::vector<double> bound(n_pairs, 0.);
+    std::vector<bool>   free_t(n_pairs, true);
+    std::vector<int>    slip_dir(n_pairs, 0);
+    if (tresca)
+      {
+        bound = tresca_bound;
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          free_t[i] = !usable[i] || !(bound[i] > 0);
+      }
+    // the pairs held tangentially with the closed pairs `closed`
+    const auto tangential_of = [&](const std::vector<bool> &closed) {
+      std::vector<bool> t(n_pairs);
+      for (unsigned int i = 0; i < n_pairs; ++i)
+        t[i] = usable[i] &&
+               (tresca ? (!free_t[i] && slip_dir[i] == 0) : (on_closed_only ? bool(closed[i]) : stick));
+      return t;
+    };
+    // the length of the stick piece of the Huber function (penalty)
+    const auto stick_range = [&](const unsigned int i) { return bound[i] / (penalty * pairs[i].weight); };
+
+    // the energy 1/2 u.K u - f.u (condensed) with the stick springs and
+    // the friction terms
+    const auto energy = [&](const dealii::Vector<double> &y) {
       double e = 0;
       for (unsigned int i = 0; i < n; ++i)
         {
@@ -413,30 +497,49 @@ namespace dealvem
               ku += it->value() * y[it->column()];
           e += 0.5 * y[i] * ku - system_rhs[i] * y[i];
         }
-      if (settings.tangential == ContactSettings::Tangential::penalty)
+      if (springs || tresca)
         {
           const auto s = contact.slips(y);
           for (unsigned int i = 0; i < n_pairs; ++i)
-            if (tangential[i])
-              e += 0.5 * penalty * pairs[i].weight * (s[i] - reference[i]) * (s[i] - reference[i]);
+            {
+              const double d = s[i] - reference[i];
+              if (tangential[i] && springs)
+                e += 0.5 * penalty * pairs[i].weight * d * d;
+              else if (tresca && !free_t[i] && !tangential[i])
+                e += bound[i] * std::abs(d) - (springs ? 0.5 * bound[i] * stick_range(i) : 0.);
+            }
         }
       return e;
     };
 
-    // one solve with g = 0 on `closed`, optionally with the proximal term
-    // eps (u - anchor) on the DoFs `prox`
+    // one solve with g = 0 on `closed` (and the slip forces as loads),
+    // optionally with the proximal term eps (u - anchor) on the DoFs `prox`
     dealii::Vector<double> rhs, trial(system_matrix.m());
+    dealii::Vector<double> local(4);
     const auto             eqp = [&](const std::vector<bool>          &closed,
                          const std::vector<unsigned int> &prox,
                          const double                     eps,
                          const dealii::Vector<double>    &anchor,
                          dealii::Vector<double>          &y) {
       matrix.copy_from(system_matrix);
-      rhs = system_rhs;
-      if (on_closed_only)
-        for (unsigned int i = 0; i < n_pairs; ++i)
-          tangential[i] = closed[i] && usable[i];
+      rhs        = system_rhs;
+      tangential = tangential_of(closed);
       contact.assemble(constraints, closed, tangential, matrix, rhs, &reference);
+      if (tresca)
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (!free_t[i] && slip_dir[i] != 0)
+            {
+              // the friction force sigma b along C_t, moved to the loads
+              const auto   d = contact.pair_dofs(i);
+              const auto  &t = pairs[i].tangent;
+              const double f = slip_dir[i] * bound[i];
+              local[0]       = f * t[0];
+              local[1]       = f * t[1];
+              local[2]       = -f * t[0];
+              local[3]       = -f * t[1];
+              const std::vector<dealii::types::global_dof_index> dofs(d.begin(), d.end());
+              constraints.distribute_local_to_global(local, dofs, rhs);
+            }
       for (const auto dof : prox)
         {
           matrix.add(dof, dof, eps);
@@ -444,7 +547,8 @@ namespace dealvem
         }
       if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
         solver.set_stick_directions(contact.stick_penalty_rows(constraints, tangential));
-      solver.set_context("globalized active set, solve " + std::to_string(result.n_solves + 1));
+      solver.set_context(std::string(tresca ? "Tresca friction" : "globalized active set") + ", solve " +
+                         std::to_string(result.n_solves + 1));
       y.reinit(system_matrix.m());
       solver.solve(matrix, n, y, rhs);
       constraints.distribute(y);
@@ -452,7 +556,7 @@ namespace dealvem
       result.linear_iterations += solver.last_iterations();
     };
 
-    const unsigned int max_solves = std::max(200u, 6 * n_pairs);
+    const unsigned int max_solves = std::max(200u, (tresca ? 12 : 6) * n_pairs);
     const auto         check_limit = [&]() {
       AssertThrow(result.n_solves + result.n_rigid_steps <= max_solves,
                   dealii::ExcMessage("The globalized contact solver made " + std::to_string(result.n_solves) +
@@ -479,12 +583,32 @@ namespace dealvem
           W[i] = (*start)[i] && usable[i];
         xc           = x;
         at_minimiser = false;
+        if (tresca)
+          {
+            // the tangential states, where they agree with the start
+            const auto   s    = contact.slips(xc);
+            const double stol = gap_tolerance(xc);
+            for (unsigned int i = 0; i < n_pairs; ++i)
+              {
+                if (free_t[i])
+                  continue;
+                const double d = s[i] - reference[i];
+                if (springs)
+                  slip_dir[i] = (std::abs(d) <= stick_range(i) ? 0 : (d > 0 ? 1 : -1));
+                else if (std::abs(d) > stol)
+                  slip_dir[i] = (d > 0 ? 1 : -1);
+                else
+                  slip_dir[i] = (tresca_start[i] == PairState::slip_positive ? 1 :
+                                 tresca_start[i] == PairState::slip_negative ? -1 :
+                                                                                0);
+              }
+          }
       }
     else
       {
     for (unsigned int i = 0; i < n_pairs; ++i)
       W[i] = usable[i] && pairs[i].initial_gap <= 1e-12 * max_weight;
-    while (!free_motions(W).empty())
+    while (!free_motions(W, tangential_of(W)).empty())
       {
         double g = std::numeric_limits<double>::max();
         for (unsigned int i = 0; i < n_pairs; ++i)
@@ -515,19 +639,31 @@ namespace dealvem
           break;
       }
       }
+    tangential = tangential_of(W);
     result.energy.push_back(energy(xc));
 
+    // the work of the loads and of the slip forces on each mode
+    std::vector<double> load_work;
+    const auto          update_load_work = [&]() {
+      load_work = mode_work;
+      if (tresca)
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (!free_t[i] && slip_dir[i] != 0)
+            for (const auto &[j, c] : tangential_rows[i])
+              load_work[j] -= slip_dir[i] * bound[i] * c;
+    };
     // the projection a of the loads on the free motions Z (an orthonormal
     // basis over the modes), and the work on it, |a|^2
     std::vector<double> a;
     const auto          project_loads = [&](const std::vector<std::vector<double>> &Z, std::vector<double> &proj) {
+      update_load_work();
       proj.assign(pieces->n_modes(), 0.);
       double w = 0;
       for (const auto &z : Z)
         {
           double wz = 0;
           for (unsigned int j = 0; j < z.size(); ++j)
-            wz += mode_work[j] * z[j];
+            wz += load_work[j] * z[j];
           for (unsigned int j = 0; j < z.size(); ++j)
             proj[j] += wz * z[j];
           w += wz * wz;
@@ -538,10 +674,58 @@ namespace dealvem
     std::vector<std::vector<double>> Z_of_W;
     bool                             Z_up_to_date = false;
 
+    // the result's Tresca states and tangential forces at xc
+    const auto finish_tresca = [&]() {
+      if (!tresca)
+        return;
+      const auto s = contact.slips(xc);
+      result.state.assign(n_pairs, PairState::open);
+      result.tangential_force.assign(n_pairs, 0.);
+      for (unsigned int i = 0; i < n_pairs; ++i)
+        {
+          const double d = s[i] - reference[i];
+          if (!free_t[i] && slip_dir[i] == 0)
+            result.tangential_force[i] =
+              springs ? penalty * pairs[i].weight * d : xc[n + n_pairs + i];
+          else if (!free_t[i])
+            result.tangential_force[i] = slip_dir[i] * bound[i];
+          if (!W[i])
+            continue;
+          if (free_t[i])
+            result.state[i] = (d >= 0 ? PairState::slip_positive : PairState::slip_negative);
+          else
+            result.state[i] = (slip_dir[i] == 0 ? PairState::stick :
+                               slip_dir[i] > 0  ? PairState::slip_positive :
+                                                  PairState::slip_negative);
+        }
+    };
+
     // 2. the primal active-set iteration from the minimiser over W
     bool                      single = start != nullptr;
-    std::vector<unsigned int> dropped;
-    unsigned int              largest = 0;
+    std::vector<unsigned int> dropped, released;
+    // the pair of the largest violation at the minimiser, and whether it is
+    // a tangential one (a stick multiplier above its bound)
+    unsigned int largest            = 0;
+    bool         largest_tangential = false;
+    const auto   restore_single     = [&]() {
+      for (const auto i : dropped)
+        W[i] = true;
+      for (const auto i : released)
+        slip_dir[i] = 0;
+      dropped.clear();
+      released.clear();
+      if (largest_tangential)
+        {
+          slip_dir[largest] = (xc[n + n_pairs + largest] > 0 ? 1 : -1);
+          released          = {largest};
+        }
+      else
+        {
+          W[largest] = false;
+          dropped    = {largest};
+        }
+      single = true;
+    };
     for (;;)
       {
         check_limit();
@@ -549,10 +733,15 @@ namespace dealvem
           {
             double scale = 0;
             for (unsigned int i = 0; i < n_pairs; ++i)
-              if (W[i])
-                scale = std::max(scale, std::abs(xc[n + i]) / pairs[i].weight);
+              {
+                if (W[i])
+                  scale = std::max(scale, std::abs(xc[n + i]) / pairs[i].weight);
+                if (tresca && !springs && tangential[i])
+                  scale = std::max(scale, std::abs(xc[n + n_pairs + i]) / pairs[i].weight);
+              }
             const double threshold = 1e-11 * scale;
             dropped.clear();
+            released.clear();
             double most = 0;
             for (unsigned int i = 0; i < n_pairs; ++i)
               if (W[i] && xc[n + i] / pairs[i].weight > threshold)
@@ -560,52 +749,72 @@ namespace dealvem
                   dropped.push_back(i);
                   if (xc[n + i] / pairs[i].weight > most)
                     {
-                      most    = xc[n + i] / pairs[i].weight;
-                      largest = i;
+                      most               = xc[n + i] / pairs[i].weight;
+                      largest            = i;
+                      largest_tangential = false;
                     }
                 }
-            if (dropped.empty())
+            // Tresca, exact stick: a multiplier above its bound slips
+            if (tresca && !springs)
+              for (unsigned int i = 0; i < n_pairs; ++i)
+                if (tangential[i])
+                  {
+                    const double lt     = xc[n + n_pairs + i];
+                    const double excess = (std::abs(lt) - bound[i]) / pairs[i].weight;
+                    if (excess > threshold)
+                      {
+                        released.push_back(i);
+                        if (excess > most)
+                          {
+                            most               = excess;
+                            largest            = i;
+                            largest_tangential = true;
+                          }
+                      }
+                  }
+            if (dropped.empty() && released.empty())
               {
                 result.converged = true;
                 result.active    = W;
                 x                = xc;
+                finish_tresca();
                 return result;
               }
             for (const auto i : dropped)
               W[i] = false;
-            single = (dropped.size() == 1);
+            for (const auto i : released)
+              slip_dir[i] = (xc[n + n_pairs + i] > 0 ? 1 : -1);
+            single = (dropped.size() + released.size() == 1);
             if (!single)
               {
                 // several drops that leave a motion free without work: drop
-                // the largest tension alone
-                Z_of_W       = free_motions(W);
+                // the largest violation alone
+                Z_of_W       = free_motions(W, tangential_of(W));
                 Z_up_to_date = true;
                 if (!Z_of_W.empty() && std::sqrt(project_loads(Z_of_W, a)) <= 1e-10 * work_scale)
                   {
                     Z_up_to_date = false;
-                    for (const auto i : dropped)
-                      W[i] = true;
-                    W[largest] = false;
-                    dropped    = {largest};
-                    single     = true;
+                    restore_single();
                   }
               }
-            result.n_changes += dropped.size();
+            result.n_changes += dropped.size() + released.size();
             at_minimiser = false;
           }
 
         // a step with working set W from xc
-        const auto             g    = contact.gaps(xc);
-        const double           gtol = gap_tolerance(xc);
+        const auto   g    = contact.gaps(xc);
+        const auto   sc   = tresca ? contact.slips(xc) : std::vector<double>();
+        const double gtol = gap_tolerance(xc);
         if (!Z_up_to_date)
-          Z_of_W = free_motions(W);
+          Z_of_W = free_motions(W, tangential_of(W));
         Z_up_to_date      = false;
         const auto &Z     = Z_of_W;
         const double work = project_loads(Z, a);
         const bool rigid  = !Z.empty() && std::sqrt(work) > 1e-10 * work_scale;
-        std::vector<double> slope(n_pairs, 0.);
+        std::vector<double> slope(n_pairs, 0.), tslope(n_pairs, 0.);
         if (rigid)
           {
+            tangential             = tangential_of(W);
             dealii::Vector<double> d = motion_field(a);
             trial.reinit(system_matrix.m());
             for (unsigned int i = 0; i < n; ++i)
@@ -613,6 +822,8 @@ namespace dealvem
             const auto s = contact.gaps(trial);
             for (unsigned int i = 0; i < n_pairs; ++i)
               slope[i] = s[i] - pairs[i].initial_gap;
+            if (tresca)
+              tslope = contact.slips(trial);
           }
         else
           {
@@ -657,15 +868,47 @@ namespace dealvem
             const auto gt = contact.gaps(trial);
             for (unsigned int i = 0; i < n_pairs; ++i)
               slope[i] = gt[i] - g[i];
+            if (tresca)
+              {
+                const auto st = contact.slips(trial);
+                for (unsigned int i = 0; i < n_pairs; ++i)
+                  tslope[i] = st[i] - sc[i];
+              }
           }
-        // the ratio test
-        double                    alpha = rigid ? std::numeric_limits<double>::infinity() : 1.;
-        std::vector<double>       ratio(n_pairs, std::numeric_limits<double>::infinity());
+        // the ratio test: pairs that would penetrate, and (Tresca) pairs
+        // that would leave their piece of the friction term
+        double              alpha = rigid ? std::numeric_limits<double>::infinity() : 1.;
+        std::vector<double> ratio(n_pairs, std::numeric_limits<double>::infinity()),
+          tratio(n_pairs, std::numeric_limits<double>::infinity());
         for (unsigned int i = 0; i < n_pairs; ++i)
           if (usable[i] && !W[i] && slope[i] < 0)
             {
               ratio[i] = std::max(0., g[i] + gtol) / -slope[i];
               alpha    = std::min(alpha, ratio[i]);
+            }
+        double tslope_max = 0;
+        for (const double v : tslope)
+          tslope_max = std::max(tslope_max, std::abs(v));
+        if (tresca)
+          for (unsigned int i = 0; i < n_pairs; ++i)
+            {
+              // (a held pair moves by round-off only)
+              if (free_t[i] || std::abs(tslope[i]) <= 1e-12 * tslope_max)
+                continue;
+              const double d = sc[i] - reference[i];
+              if (slip_dir[i] != 0)
+                {
+                  // slipping: back to the stick piece (0, or |d| = b/k)
+                  const double ds = slip_dir[i] * tslope[i];
+                  if (ds < 0)
+                    tratio[i] =
+                      std::max(0., slip_dir[i] * d - (springs ? stick_range(i) : 0.) + gtol) / -ds;
+                }
+              else if (springs)
+                // a spring reaching its bound: |d| = b/k
+                tratio[i] = (tslope[i] > 0 ? std::max(0., stick_range(i) - d + gtol) / tslope[i] :
+                                             std::max(0., d + stick_range(i) + gtol) / -tslope[i]);
+              alpha = std::min(alpha, tratio[i]);
             }
         if (rigid && alpha == std::numeric_limits<double>::infinity())
           {
@@ -678,29 +921,32 @@ namespace dealvem
             // nothing ever blocks the free motion: no equilibrium
             result.converged = false;
             result.active    = W;
-            result.mechanism = make_mechanism(a);
+            result.mechanism = make_mechanism(a, tangential_of(W), tresca ? bound : std::vector<double>());
             x                = xc;
+            finish_tresca();
             return result;
           }
-        std::vector<unsigned int> blocking;
+        std::vector<unsigned int> blocking, tblocking;
         if (alpha < (rigid ? std::numeric_limits<double>::infinity() : 1.))
           for (unsigned int i = 0; i < n_pairs; ++i)
-            if (ratio[i] <= alpha * (1 + 1e-9) + 1e-300)
-              blocking.push_back(i);
-        // a pair dropped together with others that would penetrate at once:
-        // drop the largest tension alone
-        if (!single && alpha <= 1e-12 && !blocking.empty())
+            {
+              if (ratio[i] <= alpha * (1 + 1e-9) + 1e-300)
+                blocking.push_back(i);
+              if (tratio[i] <= alpha * (1 + 1e-9) + 1e-300)
+                tblocking.push_back(i);
+            }
+        // a pair dropped together with others that would penetrate (or
+        // slip back) at once: drop the largest violation alone
+        if (!single && alpha <= 1e-12 && !(blocking.empty() && tblocking.empty()))
           {
             bool back = false;
             for (const auto i : blocking)
               back = back || std::find(dropped.begin(), dropped.end(), i) != dropped.end();
+            for (const auto i : tblocking)
+              back = back || std::find(released.begin(), released.end(), i) != released.end();
             if (back)
               {
-                for (const auto i : dropped)
-                  W[i] = true;
-                W[largest] = false;
-                dropped    = {largest};
-                single     = true;
+                restore_single();
                 continue;
               }
           }
@@ -712,7 +958,7 @@ namespace dealvem
               xc[i] += alpha * d[i];
             ++result.n_rigid_steps;
           }
-        else if (blocking.empty())
+        else if (blocking.empty() && tblocking.empty())
           {
             // the full step: the minimiser over W (with pinned free
             // motions: one of the minimisers)
@@ -730,7 +976,14 @@ namespace dealvem
               reference[i] = slips_now[i];
             ++result.n_changes;
           }
-        single = true; // after the first step every drop is settled
+        for (const auto i : tblocking)
+          {
+            // a slipping pair sticks; a spring at its bound slips on
+            slip_dir[i] = (slip_dir[i] != 0 ? 0 : (tslope[i] > 0 ? 1 : -1));
+            ++result.n_changes;
+          }
+        tangential = tangential_of(W);
+        single     = true; // after the first step every drop is settled
         result.energy.push_back(energy(xc));
       }
   }

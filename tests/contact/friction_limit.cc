@@ -30,6 +30,23 @@
 // |T| <= mu N (1 + 1e-10), and its centre of pressure lies on it; and
 // mu = 0.99 mu_limit stops with "No static equilibrium" (in b) the plain
 // iteration cycles there, and the continuation decides).
+// The proof at 0.99 (the Tresca fixed point's mechanism, FrictionSolver):
+// in a) the failing condition is named "friction", the six blocks move
+// down together by (0, -1) (1e-10) and nothing else moves, the work of the
+// weights on that motion is n = 6 (1e-10) and the friction of the two jaw
+// interfaces can absorb at most mu 2 P = 0.99 n = 5.94 of it (1e-8: the
+// normal forces P are fixed by statics, so this is the exact limit
+// analysis of the row); in b) the failing condition names friction too and
+// the work exceeds what the bounds absorb.
+// The globally convergent path gives the semismooth Newton solution: a)
+// and b) at 1.01 solved once normally and once with 'Maximum active set
+// iterations = 1', so that the plain iteration fails and FrictionSolver
+// solves the stick problem and then Coulomb as a fixed point of Tresca
+// problems: the same displacements (1e-9 of the largest) and the same
+// pressures and tangential tractions at every pair (1e-8 of the largest).
+// (The step of the plain iteration converges without continuation.)
+// a) again with Coulomb friction by a penalty ('coulomb penalty'): the same
+// checks at 1.01 and 0.99 (the Tresca problems then have Huber terms).
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 
@@ -68,6 +85,9 @@ namespace
 
   // Bodies 0 (left jaw), 1..n (the blocks [i-1, i] x [0, 1]) and n + 1
   // (right jaw); the boundary ids of body b are offset by 10 b.
+  // Coulomb friction by a penalty ('coulomb penalty') instead of multipliers
+  bool penalty_model = false;
+
   void
   build(ContactProblem &problem, const double mu, const bool guided)
   {
@@ -105,20 +125,23 @@ namespace
     auto &o                       = problem.options();
     o.degree                      = 2;
     o.contact.normal              = ContactSettings::Normal::unilateral;
-    o.contact.tangential          = ContactSettings::Tangential::coulomb;
+    o.contact.tangential          = penalty_model ? ContactSettings::Tangential::coulomb_penalty :
+                                                    ContactSettings::Tangential::coulomb;
     o.contact.friction_coefficient = mu;
     o.base_name                   = "friction-limit";
     o.write_vtu = o.write_json = o.write_pictures = o.write_csv = false;
   }
 
   void
-  standing_row(const bool guided, const double ratio)
+  standing_row(const bool guided, const double ratio, const bool forced_fallback = false)
   {
     const double      mu  = ratio * (guided ? mu_crit : mu_rock);
     const std::string tag = std::string(guided ? "a) " : "b) ") + "mu = " + std::to_string(ratio).substr(0, 4) +
-                            (guided ? " mu_crit: " : " mu_rock: ");
+                            (guided ? " mu_crit" : " mu_rock") + (forced_fallback ? " (fixed point): " : ": ");
     ContactProblem    problem;
     build(problem, mu, guided);
+    if (forced_fallback)
+      problem.options().contact.max_active_set_iterations = 1;
     problem.run();
     const auto &r = problem.get_results();
     std::cout << tag << r.active_set_iterations << " Newton iterations (continuation included)" << std::endl;
@@ -151,6 +174,65 @@ namespace
     check(n_jaws == 2, tag + "two jaw interfaces");
     check_near(jaw_lift, n_blocks, 1e-8 * n_blocks, tag + "the jaws carry the weight of the row");
     check(worst_cone <= 0, tag + "every interface has |T| <= mu N (1 + 1e-10)");
+    if (!forced_fallback)
+      {
+        // the same step through the globally convergent path
+        ContactProblem other;
+        build(other, mu, guided);
+        other.options().contact.max_active_set_iterations = 1;
+        other.run();
+        const auto &q = other.get_results();
+        double      umax = 0, du = 0, pmax = 0, dp = 0;
+        for (unsigned int i = 0; i < r.solution.size(); ++i)
+          {
+            umax = std::max(umax, std::abs(r.solution[i]));
+            du   = std::max(du, std::abs(r.solution[i] - q.solution[i]));
+          }
+        check(q.pairs.size() == r.pairs.size(), tag + "the fixed point has the same pairs");
+        for (unsigned int i = 0; i < std::min(r.pairs.size(), q.pairs.size()); ++i)
+          {
+            pmax = std::max({pmax, std::abs(r.pairs[i].pressure), std::abs(r.pairs[i].tangential_traction)});
+            dp   = std::max({dp, std::abs(r.pairs[i].pressure - q.pairs[i].pressure),
+                             std::abs(r.pairs[i].tangential_traction - q.pairs[i].tangential_traction)});
+          }
+        std::cout << tag << "fixed point against Newton: displacements " << du / umax << ", tractions "
+                  << dp / pmax << " (relative)" << std::endl;
+        check(du <= 1e-9 * umax, tag + "the fixed point gives Newton's displacements (1e-9)");
+        check(dp <= 1e-8 * pmax, tag + "the fixed point gives Newton's pressures and tractions (1e-8)");
+      }
+  }
+
+  // the refusal at 0.99 and its proof
+  void
+  falling_row(const bool guided, const double mu, const std::string &tag)
+  {
+    ContactProblem problem;
+    build(problem, mu, guided);
+    check_throws([&] { problem.run(); }, "No static equilibrium", tag + ": no static equilibrium");
+    const CollapseMechanism *m = problem.collapse_mechanism();
+    check(m != nullptr, tag + ": a collapse mechanism is given");
+    if (m == nullptr)
+      return;
+    std::cout << tag << ": " << m->failing_condition << "; work " << m->work << ", friction can absorb "
+              << m->friction_dissipation << std::endl;
+    check(m->failing_condition.find("friction") == 0, tag + ": the failing condition is friction");
+    check(m->work > m->friction_dissipation, tag + ": the loads do more work than friction can absorb");
+    check_small(m->largest_violation, 1e-10, tag + ": the motion violates no contact condition");
+    if (guided)
+      {
+        check(m->moving.size() == n_blocks, tag + ": the six blocks move, nothing else");
+        double off = 0;
+        for (const auto &pm : m->moving)
+          {
+            check(pm.body >= 1 && pm.body <= n_blocks, tag + ": body " + std::to_string(pm.body) + " is a block");
+            off = std::max({off, std::abs(pm.translation[0]), std::abs(pm.translation[1] + 1),
+                            std::abs(pm.rotation)});
+          }
+        check_small(off, 1e-10, tag + ": every block translates by (0, -1)");
+        check_near(m->work, n_blocks, 1e-10 * n_blocks, tag + ": work of the weights n");
+        check_near(m->friction_dissipation, mu * 2 * P, 1e-8 * n_blocks,
+                   tag + ": friction of the jaws absorbs mu 2 P at most");
+      }
   }
 } // namespace
 
@@ -163,12 +245,16 @@ main(int argc, char **argv)
   for (const bool guided : {true, false})
     {
       standing_row(guided, 1.01);
-      ContactProblem problem;
-      build(problem, 0.99 * (guided ? mu_crit : mu_rock), guided);
-      check_throws([&] { problem.run(); }, "No static equilibrium",
-                   guided ? "a) mu = 0.99 mu_crit: no static equilibrium" :
-                            "b) mu = 0.99 mu_rock: no static equilibrium");
+      falling_row(guided, 0.99 * (guided ? mu_crit : mu_rock),
+                  guided ? "a) mu = 0.99 mu_crit" : "b) mu = 0.99 mu_rock");
     }
+  // a) with the penalty variant of Coulomb friction: the same limit (the
+  // springs only add elastic slip), the same proof, and the fixed point
+  // (Huber-type Tresca terms) gives Newton's solution
+  penalty_model = true;
+  standing_row(true, 1.01);
+  falling_row(true, 0.99 * mu_crit, "a) penalty, mu = 0.99 mu_crit");
+  penalty_model = false;
   // b) with the friction bound alone the row would stand at 1.01 mu_crit; it
   // does not, since it would rock
   {

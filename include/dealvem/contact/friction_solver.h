@@ -188,9 +188,12 @@ namespace dealvem
       /// Saddle-point solves of the globalized stick solve that started
       /// the iteration again after the plain one failed (0: not needed).
       unsigned int n_globalized_solves = 0;
-      /// Whether the iteration converged from the globalized stick
-      /// solution (without continuation).
+      /// Whether the step was solved by the globalized path after the plain
+      /// iteration failed: the Tresca fixed point (or Newton from its
+      /// settled states), without continuation.
       bool globalized_start = false;
+      /// Tresca problems solved in the fixed point (0: not needed).
+      unsigned int n_fixed_point_iterations = 0;
     };
 
     /// The parameters of the continuation in the friction coefficient (see
@@ -284,6 +287,8 @@ namespace dealvem
     double                                   c;
     const RigidBodySupport                  *support = nullptr;
     std::shared_ptr<CollapseMechanism>       mechanism;
+    /// At most this many Tresca problems in the fixed point of solve().
+    static constexpr unsigned int            max_fixed_point_iterations = 60;
     Continuation                             continuation;
   };
 } // namespace dealvem

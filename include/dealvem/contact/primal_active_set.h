@@ -87,9 +87,17 @@ namespace dealvem
     std::vector<unsigned int> opening_pairs;
     /// Closed pairs that slide ($C_{t,i}d \ne 0$; frictionless contact only).
     std::vector<unsigned int> sliding_pairs;
+    /// Closed pairs among sliding_pairs that slide against a friction
+    /// bound (PrimalActiveSetSolver::solve_tresca()).
+    std::vector<unsigned int> friction_pairs;
+    /// The largest work that the friction bounds $b_i$ can absorb on the
+    /// motion, $D = \sum_i b_i |C_{t,i}d|$ (0 without bounds); work
+    /// $> D$ proves that the bounds cannot hold the bodies.
+    double friction_dissipation = 0;
     /// The condition that fails, named from the motion: "no-tension joints"
     /// (pairs open, nothing slides), "frictionless sliding" (closed pairs
-    /// slide, none opens) or both.
+    /// slide, none opens), "friction" (closed pairs slide against their
+    /// friction bound) or two of them.
     std::string failing_condition;
 
     /// A few lines: which bodies move and how (translation, or rotation and
@@ -180,6 +188,13 @@ namespace dealvem
       std::vector<double> energy;
       /// The collapse mechanism when !converged.
       CollapseMechanism mechanism;
+      /// solve_tresca() only: the state of each pair at the solution
+      /// (open: not in the working set, whatever its tangential force; a
+      /// closed pair without friction bound slips with zero force).
+      std::vector<PairState> state;
+      /// solve_tresca() only: the tangential nodal force $\lambda_{t,i}$ of
+      /// each pair (ContactAssembler's sign), $\pm b_i$ where it slips.
+      std::vector<double> tangential_force;
     };
 
     /// The contact @p contact (unilateral normal contact; frictionless,
@@ -222,6 +237,49 @@ namespace dealvem
                           const std::vector<bool>            &active);
 
     /**
+     * Tresca friction: the same iteration for the convex problem
+     * @f[
+     *   \min_u\ \tfrac12 u^TKu - f^Tu + \sum_i \psi_i(C_{t,i}u - r_i)
+     *   \quad\text{s.t.}\quad C_{n,i}u + g_{0,i} \ge 0,
+     * @f]
+     * where the friction bound $b_i \ge 0$ of pair i (@p bound, a nodal
+     * force) limits its tangential force: with tangential multipliers
+     * $\psi_i(s) = b_i|s|$ (exact stick below the bound), with the stick
+     * penalty $k_i = \varepsilon_t w_i$ the Huber function
+     * $\psi_i(s) = \tfrac12 k_i s^2$ for $|s| \le b_i/k_i$ and
+     * $b_i|s| - b_i^2/(2k_i)$ beyond. Besides its working set of closed
+     * pairs the iteration keeps, per pair with $b_i > 0$, whether it sticks
+     * (the stick row or spring) or slips in the direction $\sigma_i$ (the
+     * force $\sigma_ib_i$ as a load): a sticking pair whose multiplier
+     * exceeds $b_i$ at a minimiser starts to slip (as a pair in tension
+     * leaves the working set), and a step that would carry a pair across the
+     * end of its piece of $\psi_i$ stops there and switches it (as a pair
+     * that would penetrate joins the set). The energy falls at every step
+     * that moves, so the iteration ends at the minimiser or with a rigid
+     * motion, allowed by the normal contacts, on which the loads do more
+     * work than the bounds can absorb (CollapseMechanism, failing condition
+     * "friction" when pairs slide against a bound). Pairs with $b_i = 0$
+     * are free tangentially. Every pair keeps its bound whether it is open
+     * or closed (convexity); FrictionSolver's fixed point sets $b_i$ from
+     * the normal forces, 0 at open pairs.
+     *
+     * @p x is the start (no pair penetrates) and returns the solution;
+     * @p active the closed pairs at the start; @p state the tangential
+     * state of each pair at the start (stick or a slip direction; used where
+     * it agrees with @p x). The settings of the constructor must be a stick
+     * model (penalty or multipliers); the reference of
+     * set_tangential_reference() is $r$.
+     */
+    Result
+    solve_tresca(const dealii::SparseMatrix<double> &system_matrix,
+                 const dealii::Vector<double>       &system_rhs,
+                 dealii::SparseMatrix<double>       &matrix,
+                 dealii::Vector<double>             &x,
+                 const std::vector<double>          &bound,
+                 const std::vector<bool>            &active,
+                 const std::vector<PairState>       &state);
+
+    /**
      * Stick at the relative tangential displacements @p reference (one per
      * pair) instead of 0: the stick of a quasi-static load step that starts
      * from earlier slips (Coulomb friction's reference, FrictionSolver).
@@ -246,15 +304,19 @@ namespace dealvem
     /// The free rigid motions with working set @p closed: an orthonormal
     /// basis over the modes (3 p + k), empty when every body is held.
     std::vector<std::vector<double>>
-    free_motions(const std::vector<bool> &closed) const;
+    free_motions(const std::vector<bool> &closed, const std::vector<bool> &tangential) const;
 
     /// The displacement (per DoF) of the motion @p modes.
     dealii::Vector<double>
     motion_field(const std::vector<double> &modes) const;
 
-    /// The mechanism of the motion @p modes (verified, scaled, described).
+    /// The mechanism of the motion @p modes (verified, scaled, described)
+    /// with the pairs @p tangential held tangentially and the friction
+    /// bounds @p bound (empty: none).
     CollapseMechanism
-    make_mechanism(const std::vector<double> &modes) const;
+    make_mechanism(const std::vector<double> &modes,
+                   const std::vector<bool>   &tangential,
+                   const std::vector<double> &bound) const;
 
     const ContactAssembler<dim>             &contact;
     const dealii::AffineConstraints<double> &constraints;
@@ -265,6 +327,10 @@ namespace dealvem
     bool                                     on_closed_only = false;
     /// See set_tangential_reference().
     std::vector<double>                      initial_reference;
+    /// solve_tresca(): the friction bounds (empty otherwise) and the
+    /// tangential states to start from.
+    std::vector<double>                      tresca_bound;
+    std::vector<PairState>                   tresca_start;
     std::unique_ptr<PieceSupport>            pieces;
     /// Per DoF, the piece that moves it (the first piece of its node;
     /// invalid for nodes of no cell).
