@@ -9,6 +9,7 @@
 #include <cmath>
 #include <exception>
 #include <iomanip>
+#include <iostream>
 #include <set>
 #include <sstream>
 

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <set>
@@ -935,18 +936,51 @@ namespace dealvem
               if (tratio[i] <= alpha * (1 + 1e-9) + 1e-300)
                 tblocking.push_back(i);
             }
-        // a pair dropped together with others that would penetrate (or
-        // slip back) at once: drop the largest violation alone
-        if (!single && alpha <= 1e-12 && !(blocking.empty() && tblocking.empty()))
+        // pairs dropped together with others that would penetrate (or slip
+        // back) at once: they stay in the set and the step is taken again
+        // without them (no move, so the energy is unchanged, and the set of
+        // drops shrinks each time); if all of them would, the largest
+        // violation alone is dropped (the classical single drop, whose step
+        // keeps that pair free)
+        // (at once: a dropped pair still closed, or a released one still at
+        // its stick point, moving back)
+        if (!single)
           {
-            bool back = false;
-            for (const auto i : blocking)
-              back = back || std::find(dropped.begin(), dropped.end(), i) != dropped.end();
-            for (const auto i : tblocking)
-              back = back || std::find(released.begin(), released.end(), i) != released.end();
-            if (back)
+            std::vector<unsigned int> back_n, back_t;
+            for (const auto i : dropped)
+              if (slope[i] < 0 && g[i] <= gtol)
+                back_n.push_back(i);
+            for (const auto i : released)
+              if (slip_dir[i] * tslope[i] < 0 && std::abs(tslope[i]) > 1e-12 * tslope_max &&
+                  slip_dir[i] * (sc[i] - reference[i]) - (springs ? stick_range(i) : 0.) <= gtol)
+                back_t.push_back(i);
+            if (!back_n.empty() || !back_t.empty())
               {
-                restore_single();
+                if (back_n.size() + back_t.size() < dropped.size() + released.size())
+                  {
+                    for (const auto i : back_n)
+                      {
+                        W[i] = true;
+                        dropped.erase(std::find(dropped.begin(), dropped.end(), i));
+                      }
+                    for (const auto i : back_t)
+                      {
+                        slip_dir[i] = 0;
+                        released.erase(std::find(released.begin(), released.end(), i));
+                      }
+                    single = (dropped.size() + released.size() == 1);
+                    // the largest violation among those left
+                    if ((largest_tangential &&
+                         std::find(back_t.begin(), back_t.end(), largest) != back_t.end()) ||
+                        (!largest_tangential &&
+                         std::find(back_n.begin(), back_n.end(), largest) != back_n.end()))
+                      {
+                        largest_tangential = dropped.empty();
+                        largest            = dropped.empty() ? released.front() : dropped.front();
+                      }
+                  }
+                else
+                  restore_single();
                 continue;
               }
           }

@@ -88,7 +88,23 @@
 //    to 1e-10 of the largest). At 1.01 the motion field itself is checked:
 //    0 at the upper block's vertex (1,1), (2,1)/sqrt(5) at its vertex
 //    (0,3) (1e-12).
-// All runs are small (at most a few hundred DoFs): about 1.3 s in Release.
+// 6. The friction limit of a block on a slope (Coulomb friction, the
+//    Tresca fixed point of FrictionSolver and its certificate): the upper
+//    block [0,1]x[1,1.5] (5 x 2 quads, not matching the lower block's 4
+//    cells) under the body force (q, -b), b = 10 (the weight on a slope of
+//    tan(theta) = q/b), mu = 0.4, Tangential = coulomb and coulomb penalty,
+//    k = 1, 2. Statics of the rigid block: the joint carries the normal
+//    force b A (A = 0.5) and must carry the tangential force q A, so it
+//    stands iff q <= mu b (it would tip only for q > 2 b). At 0.99 mu b it
+//    stands (contact force + load = 0 to 1e-10 of the load; |tau| <= mu p
+//    at every pair, 1e-10 of the largest pressure). At 1.01 mu b: "No
+//    static equilibrium" with the mechanism of the Tresca problem whose
+//    bounds mu |N| hold no equilibrium: failing condition "friction", the
+//    upper block alone translating by (1, 0) (1e-10; rotation below
+//    1e-10), the work of the loads q A (1e-10 relative) against at most
+//    mu b A that friction can absorb (1e-8 relative: the normal forces sum
+//    to b A whatever their distribution), largest violation below 1e-10.
+// All runs are small (at most a few hundred DoFs): about 2 s in Release.
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -552,6 +568,73 @@ namespace
     }
   };
 
+  // 6. a block on a slope at its friction limit
+  void
+  slope()
+  {
+    const double mu = 0.4, b = 10, A = 0.5;
+    for (const unsigned int k : {1u, 2u})
+      for (const std::string tangential : {"coulomb", "coulomb penalty"})
+        for (const double ratio : {0.99, 1.01})
+          {
+            const double      q   = ratio * mu * b;
+            const std::string tag = "6. slope, k=" + std::to_string(k) + ", " + tangential + ", q = " +
+                                    std::to_string(ratio).substr(0, 4) + " mu b";
+            std::ostringstream loads, contact;
+            loads << std::setprecision(17) << "  set Body force = " << q << ", " << -b << "\n";
+            contact << "  set Friction coefficient = " << mu << "\n";
+            const Run r = run(prm(k, tangential, 0.5, 5, 2, loads.str(), contact.str()));
+            if (ratio < 1)
+              {
+                testing::check(!r.threw, tag + ": the block stands" +
+                                           (r.threw ? " (" + r.message.substr(0, 300) + ")" : std::string()));
+                if (r.threw)
+                  continue;
+                const auto  &res  = r.results;
+                const double load = res.applied_load_per_body[1].norm();
+                testing::check_small((res.total_contact_force + res.applied_load_per_body[1]).norm() / load,
+                                     1e-10, tag + ": |contact force + load| / |load|");
+                // the nodal values: friction traction and pressure of each
+                // pair's forces (force / tributary weight)
+                double pmax = 0, excess = -1e300, ratio_max = 0;
+                for (const auto &pr : res.pairs)
+                  pmax = std::max(pmax, std::abs(pr.lumped_pressure));
+                for (const auto &pr : res.pairs)
+                  {
+                    excess = std::max(excess, std::abs(pr.tangential_traction) - mu * pr.lumped_pressure);
+                    if (pr.lumped_pressure > 0)
+                      ratio_max = std::max(ratio_max, std::abs(pr.tangential_traction) / pr.lumped_pressure);
+                  }
+                std::cout << tag << ": largest |tau| / p " << ratio_max << std::endl;
+                testing::check(excess <= 1e-10 * pmax, tag + ": |tau| <= mu p at every pair");
+                continue;
+              }
+            testing::check(r.threw && r.message.find("No static equilibrium") != std::string::npos,
+                           tag + ": no static equilibrium");
+            testing::check(r.message.find("failing condition: friction") != std::string::npos,
+                           tag + ": the message names friction as the failing condition");
+            testing::check(r.mechanism != nullptr, tag + ": a collapse mechanism");
+            if (r.mechanism == nullptr)
+              continue;
+            const auto &m = *r.mechanism;
+            std::cout << tag << ": failing condition '" << m.failing_condition << "', work " << m.work
+                      << ", friction absorbs at most " << m.friction_dissipation << std::endl;
+            testing::check(m.failing_condition.find("friction") == 0, tag + ": failing condition friction");
+            testing::check(m.moving.size() == 1 && m.moving[0].body == 1, tag + ": the upper block moves, alone");
+            if (m.moving.size() == 1)
+              {
+                const auto &p = m.moving[0];
+                testing::check_small(std::abs(p.translation[0] - 1) + std::abs(p.translation[1]), 1e-10,
+                                     tag + ": it translates by (1, 0)");
+                testing::check_small(std::abs(p.rotation), 1e-10, tag + ": it does not rotate");
+              }
+            testing::check_near(m.work, q * A, 1e-10 * q * A, tag + ": work of the loads q A");
+            testing::check_near(m.friction_dissipation, mu * b * A, 1e-8 * mu * b * A,
+                                tag + ": friction absorbs at most mu b A");
+            testing::check_small(m.largest_violation, 1e-10, tag + ": largest violation");
+          }
+  }
+
   void
   energy_monotone()
   {
@@ -633,5 +716,6 @@ main(int argc, char **argv)
   pulled_off();
   tipping();
   energy_monotone();
+  slope();
   return testing::finish();
 }

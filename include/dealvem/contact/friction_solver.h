@@ -75,11 +75,11 @@ namespace dealvem
    * has no static equilibrium (for example a tangential load above $\mu$
    * times the normal load on a body held only by friction), as far as this
    * iteration can tell: near the friction limit it can also fail where an
-   * equilibrium exists, so solve() then decides by the continuation below
-   * and throws "No static equilibrium" only when that ends without one
-   * (or the plain failure when the continuation cannot start).
+   * equilibrium exists, so solve() then takes the globalized path below
+   * (and, only if that does not find the solution, the continuation after
+   * it), and throws "No static equilibrium" only when they end without one.
    *
-   * <h3>A start that always exists: the sticking joints</h3>
+   * <h3>The globalized path: sticking joints, then a fixed point of Tresca problems</h3>
    * With ContactSettings::globalize (the default), a failed plain iteration
    * first solves the same step with every closed pair sticking (at the
    * reference slips of the step: unlimited friction) by the globally
@@ -87,11 +87,38 @@ namespace dealvem
    * the Coulomb problem has none either (finite friction allows fewer
    * force distributions), and solve() throws "No static equilibrium" with
    * the collapse mechanism (last_mechanism()): the joints open (no
-   * tension), whatever the friction. Otherwise the semismooth Newton
-   * iteration starts again from the stick solution (closed pairs stick,
-   * the others open); where that solution lies inside every friction cone
-   * it converges at once. Only if it fails again does the continuation
-   * below run.
+   * tension), whatever the friction.
+   *
+   * Otherwise Coulomb friction is solved as a fixed point of Tresca
+   * problems (friction bounds given): with the bounds
+   * $b_i = \mu_i|\lambda_{n,i}|$ of the last solution (0 at open pairs),
+   * PrimalActiveSetSolver::solve_tresca() minimises the convex energy with
+   * the friction terms $b_i|\Delta s_i|$ (Huber terms with the penalty
+   * variant) under the normal contact constraints, from the last solution
+   * and its pair states; then the bounds are updated. A Tresca solution
+   * whose bounds reproduce themselves ($10^{-11}$ relative) is a Coulomb
+   * solution. Each Tresca problem is solved by a method that cannot cycle
+   * (its energy falls at every step), so the pairs whose normal force
+   * tends to zero at the ends of a contact zone, which throw the
+   * semismooth Newton iteration out of their friction cones, get a bound
+   * that tends to zero too and simply slip. As soon as the pair states
+   * repeat and the bounds change by less than $10^{-6}$, the semismooth
+   * Newton iteration is tried once from those states: with the right
+   * states it solves the coupled problem in one linear solve. Result
+   * counts the Tresca problems (n_fixed_point_iterations) and all solves
+   * of this path (n_globalized_solves); at most 60 Tresca problems.
+   *
+   * If a Tresca problem has no solution, its mechanism is a rigid motion
+   * allowed by the normal contacts on which the loads do more work than the
+   * bounds can absorb, $f\cdot d > \sum_i b_i|C_{t,i}d|$ (failing
+   * condition "friction" when pairs slide against their bound). It proves
+   * that friction cannot hold the bodies with the normal forces of that
+   * iterate; where statics fixes the normal forces on the sliding pairs
+   * (a block on a slope, the row of blocks between jaws of
+   * tests/contact/friction_limit) that is the exact friction limit, in
+   * general it is not a proof for Coulomb friction (the normal forces of
+   * another equilibrium may be larger). So the continuation below still
+   * decides, and its refusal carries that mechanism (last_mechanism()).
    *
    * <h3>Continuation in the friction coefficient</h3>
    * Close to the friction limit the plain iteration can stop without an
@@ -256,7 +283,9 @@ namespace dealvem
           const std::vector<double>          &reference);
 
     /// The collapse mechanism of the last solve() that found no
-    /// equilibrium even with sticking joints (see solve()), or nullptr.
+    /// equilibrium: even with sticking joints, or (failing condition
+    /// "friction") with the friction bounds of the Tresca fixed point (see
+    /// the class documentation); nullptr after a solve() that converged.
     const CollapseMechanism *
     last_mechanism() const
     {
