@@ -869,6 +869,44 @@ namespace Step8
             failures);
   }
 
+  // @sect3{Just below and just above the limit}
+  //
+  // For N voussoirs and both joint models: 0.99, 1.01 and 1.02 times the
+  // least thickness of the limit analysis. Below it there must be no static
+  // equilibrium (and, with sticking joints, a mechanism whose hinges are
+  // the limit analysis'), above it the arch must stand. One line per N.
+  void
+  near_limit(const unsigned int N, const unsigned int degree, std::vector<std::string> &failures)
+  {
+    const double t_la   = least_thickness(N);
+    const auto   hinges = limit_hinges(N);
+    std::cout << std::setw(3) << N << " | " << degree << " | " << std::fixed << std::setprecision(5) << t_la;
+    for (const double mu : {0., 0.8})
+      {
+        joint_friction = mu;
+        std::cout << " |";
+        for (const double ratio : {0.99, 1.01, 1.02})
+          {
+            const auto rep = run_thickness(Arch{N, ratio * t_la * R}, degree, failures, false);
+            const auto o   = outcome(rep);
+            std::cout << " " << (o == Outcome::stands ? "S" : o == Outcome::no_equilibrium ? "E" : "C");
+            const std::string name = "N = " + std::to_string(N) + ", k = " + std::to_string(degree) +
+                                     (mu > 0 ? ", Coulomb" : ", stick") + ", " +
+                                     std::to_string(ratio).substr(0, 4) + " t_crit: ";
+            if (ratio < 1)
+              {
+                check(o == Outcome::no_equilibrium, name + "does not end in 'No static equilibrium'", failures);
+                if (o == Outcome::no_equilibrium && mu == 0)
+                  check_mechanism(Arch{N, ratio * t_la * R}, degree, rep, hinges, failures);
+              }
+            else
+              check(o == Outcome::stands, name + "does not stand: " + rep.message, failures);
+          }
+      }
+    joint_friction = 0;
+    std::cout << std::endl;
+  }
+
   // @sect3{A scan of thicknesses}
   //
   // The contact solve at t/R = 0.100, 0.101, ..., 0.120 for N voussoirs,
@@ -1051,6 +1089,14 @@ main(int argc, char **argv)
           for (const unsigned int n : {9u, 13u, 25u})
             scan(n, k, failures);
       joint_friction = 0;
+
+      // Other voussoir counts just below and just above their limits
+      // (0.99, 1.01 and 1.02 times the least thickness), both joint models.
+      std::cout << "\nOther voussoir counts at 0.99, 1.01 and 1.02 times their least thickness (stick | "
+                   "Coulomb, mu = 0.8):\n"
+                << "  N | k | limit   | stick  | Coulomb\n";
+      for (const unsigned int n : {9u, 13u, 25u})
+        near_limit(n, 1, failures);
 
       for (const auto &m : failures)
         std::cerr << "step-8 check failed: " << m << std::endl;

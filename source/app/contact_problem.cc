@@ -2440,6 +2440,11 @@ namespace dealvem
     step_result.step       = step;
     step_result.time       = time;
     step_result.iterations = as.n_iterations;
+    if (friction)
+      {
+        step_result.fixed_point_iterations = fr.n_fixed_point_iterations;
+        step_result.continuation_factors   = fr.continuation_factors.size();
+      }
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const auto &p = pairs[i];
@@ -3177,6 +3182,8 @@ namespace dealvem
             const std::string k = "steps." + std::to_string(sr.step) + ".";
             json.set(k + "time", sr.time);
             json.set(k + "iterations", double(sr.iterations));
+            json.set(k + "tresca_problems", double(sr.fixed_point_iterations));
+            json.set(k + "continuation_factors", double(sr.continuation_factors));
             json.set(k + "open", double(sr.n_open));
             json.set(k + "stick", double(sr.n_stick));
             json.set(k + "slip", double(sr.n_slip));

@@ -104,14 +104,16 @@ string(CONFIGURE "${friction}" prm @ONLY)
 run_dealvem(failing FALSE "${prm}")
 expect_text("${output}" "Output: removed the 21 file(s) of an earlier run with the output prefix 'output/run'"
             "the output of the failing rerun")
-expect_text("${output}" "The run did not complete: the 9 file(s) it wrote are incomplete as a set"
+# (9 files of the two converged steps and the collapse mechanism of step 3,
+# friction failing: run-mechanism.vtu and .svg)
+expect_text("${output}" "The run did not complete: the 11 file(s) it wrote are incomplete as a set"
             "the output of the failing rerun")
 foreach(f run-step-001.vtu run-step-002-interface.csv run.pvd run.json)
   expect_text("${output}" "output/${f}" "the list of the failing rerun's files")
 endforeach()
 expect_files(TRUE run-step-001.vtu run-step-001-interface.csv run-step-002.vtu run-step-002-interface.csv
              run-step-001-resultants.csv run-step-002-resultants.csv run-reactions.csv run.pvd run.json run.files
-             other.json run-notes.txt)
+             run-mechanism.vtu run-mechanism.svg other.json run-notes.txt)
 expect_files(FALSE run-step-003.vtu run-step-003-interface.csv run-step-004.vtu run-step-004-interface.csv
              run.vtu run-interface.csv run-resultants.csv run-stress.svg run-pressure.svg run-assembly.svg)
 file(READ ${WORK_DIR}/output/run.files manifest)

@@ -504,6 +504,13 @@ namespace dealvem
       double       time;
       /// Newton (active-set) iterations of the step.
       unsigned int iterations;
+      /// Coulomb friction: Tresca problems of the fixed point that solved
+      /// the step after the semismooth Newton iteration failed (0: not
+      /// needed; FrictionSolver::Result::n_fixed_point_iterations).
+      unsigned int fixed_point_iterations = 0;
+      /// Coulomb friction: factors of the friction continuation passed (0:
+      /// none; FrictionSolver::Result::continuation_factors).
+      unsigned int continuation_factors = 0;
       /// @var unsigned int n_open
       /// Pairs open at the end of the step.
       /// @var unsigned int n_stick
