@@ -158,71 +158,8 @@ namespace dealvem
             iterate(polish, pstate, "polish of the globalized solve, iteration");
             result.n_polish_iterations += pstate.n_iterations;
             if (pstate.converged)
-              {
-                result.active = pstate.active;
-                done          = true;
-              }
-          }
-        if (!done)
-          {
-            // The fast path's model is Coulomb friction with an infinite
-            // coefficient: the fixed point of Tresca problems with the
-            // bounds M |lambda_n| (M = 1e8; 0 at open pairs), each solved by
-            // the globally convergent iteration, from the convex solution.
-            // Its fixed point is a solution of that model if no closed pair
-            // slips against its bound (a closed pair without normal force
-            // that slides is an open pair at zero gap).
-            x                    = convex;
-            const unsigned int np = contact.n_pairs();
-            const auto bounds_of = [&](const std::vector<bool> &closed) {
-              std::vector<double> b(np, 0.);
-              for (unsigned int i = 0; i < np; ++i)
-                if (closed[i])
-                  b[i] = 1e8 * std::max(0., -x[n + i]);
-              return b;
-            };
-            std::vector<bool>      closed = pr.active;
-            std::vector<double>    bound  = bounds_of(closed);
-            std::vector<PairState> tstate(np, PairState::stick);
-            try
-              {
-                for (unsigned int k = 0; k < 60 && !done; ++k)
-                  {
-                    const auto tr = primal.solve_tresca(system_matrix, system_rhs, matrix, x, bound, closed, tstate);
-                    result.n_polish_iterations += tr.n_solves;
-                    result.linear_iterations += tr.linear_iterations;
-                    if (!tr.converged)
-                      break;
-                    closed            = tr.active;
-                    tstate            = tr.state;
-                    const auto next   = bounds_of(closed);
-                    double     change = 0, largest = 0;
-                    for (unsigned int i = 0; i < np; ++i)
-                      {
-                        change  = std::max(change, std::abs(next[i] - bound[i]));
-                        largest = std::max(largest, next[i]);
-                      }
-                    bound = next;
-                    if (change > 1e-11 * largest)
-                      continue;
-                    bool slips = false;
-                    for (unsigned int i = 0; i < np; ++i)
-                      slips = slips || (closed[i] && bound[i] > 0 && tstate[i] != PairState::stick);
-                    if (!slips)
-                      {
-                        for (unsigned int i = 0; i < np; ++i)
-                          closed[i] = closed[i] && bound[i] > 0;
-                        result.active = closed;
-                        done          = true;
-                      }
-                    break;
-                  }
-              }
-            catch (const dealii::ExceptionBase &)
-              {
-                // (a degenerate tie: keep the convex model)
-              }
-            if (!done)
+              result.active = pstate.active;
+            else
               {
                 x                         = convex;
                 result.convex_stick_model = true;
