@@ -135,8 +135,8 @@ namespace dealvem
                       "non-symmetric (Petrov-Galerkin condensation): CG-AMG then runs GMRES, direct "
                       "constraints UMFPACK's LU (Amesos KLU under mpirun).");
     prm.declare_entry("Warm start", "true", Bool(),
-                      "Contact, CG-AMG: start each Krylov solve from the condensed displacements of the "
-                      "previous one (active-set or Newton iteration, load step) instead of from zero.");
+                      "Contact, CG-AMG: start each Krylov solve from the displacements of the previous one "
+                      "(active-set or Newton iteration, load step) instead of from zero.");
     prm.declare_entry("Preconditioner", "automatic", Selection("automatic|AMG|p-multigrid"),
                       "Preconditioner of CG for one body (serial and distributed): automatic (the "
                       "p-multigrid for k = 2, ML AMG for k = 1), AMG (one ML V-cycle on the whole "

@@ -4,6 +4,8 @@
 // ---------------------------------------------------------------------
 #include <dealvem/contact/active_set_solver.h>
 
+#include <exception>
+
 namespace dealvem
 {
   template <int dim>
@@ -75,9 +77,23 @@ namespace dealvem
     const auto             n     = system_matrix.m() - contact.n_multipliers();
     Result                 result;
     dealii::Vector<double> rhs;
-    const auto             iterate = [&](ActiveSetUpdate<dim> &rule, typename ActiveSetUpdate<dim>::State &st,
-                                   const std::string &name) {
-      do
+    // the solves of a set that is not the last one only choose the next
+    // set: they may stop at the solver's inexact tolerance (see the class
+    // documentation); the solver is exact again when solve() returns or
+    // throws
+    const bool inexact = (settings.normal != ContactSettings::Normal::tied);
+    struct ExactOnExit
+    {
+      SaddlePointSolver &solver;
+      ~ExactOnExit()
+      {
+        solver.set_inexact(false);
+      }
+    } exact_on_exit{solver};
+    const auto iterate = [&](ActiveSetUpdate<dim> &rule, typename ActiveSetUpdate<dim>::State &st,
+                             const std::string &name) {
+      solver.set_inexact(inexact);
+      while (true)
         {
           matrix.copy_from(system_matrix);
           rhs = system_rhs;
@@ -89,8 +105,35 @@ namespace dealvem
           solver.solve(matrix, n, x, rhs);
           constraints.distribute(x);
           result.linear_iterations += solver.last_iterations();
+          if (solver.last_solve_inexact())
+            {
+              // the rule on a copy of the state: its next set is taken
+              // unless it would stop (converge, or fail), which only a
+              // solution at the full tolerance may decide
+              auto trial = st;
+              bool stops = true;
+              try
+                {
+                  stops = rule.update(trial, contact, x);
+                }
+              catch (const std::exception &)
+                {
+                  stops = true;
+                }
+              if (!stops)
+                {
+                  st = std::move(trial);
+                  continue;
+                }
+              solver.complete_last_solve(matrix, x, rhs);
+              constraints.distribute(x);
+              result.linear_iterations += solver.last_iterations();
+              ++result.n_completed_solves;
+            }
+          if (rule.update(st, contact, x))
+            break;
         }
-      while (!rule.update(st, contact, x));
+      solver.set_inexact(false);
     };
     iterate(update, state, "active-set iteration");
     result.active               = state.active;

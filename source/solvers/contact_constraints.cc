@@ -456,19 +456,14 @@ namespace dealvem
         known[t.row]  = true;
       }
 
-    // the master DoFs of each slave, and the slaves of each master
+    // the master DoFs of each slave
     std::vector<const std::vector<std::pair<dealii::types::global_dof_index, double>> *> line(n, nullptr);
-    std::unordered_map<unsigned int, std::vector<unsigned int>>                          slaves_of;
     for (const auto &s : slaves)
-      {
-        line[s.second] = constraints.get_constraint_entries(s.second);
-        for (const auto &e : *line[s.second])
-          slaves_of[e.first].push_back(s.second);
-      }
+      line[s.second] = constraints.get_constraint_entries(s.second);
 
     // fill-in: a row coupled to a slave couples to its masters; a master
     // row gets the couplings of its slaves' rows
-    std::unordered_map<unsigned int, std::vector<unsigned int>> extra;
+    std::vector<std::vector<unsigned int>> extra(n);
     const auto add_row_of = [&](const unsigned int target, const unsigned int s) {
       auto &x = extra[target];
       for (auto it = A.begin(s); it != A.end(s); ++it)
@@ -500,34 +495,42 @@ namespace dealvem
       for (const auto &t : test_lines)
         for (const auto &e : t.second)
           add_row_of(e.first, t.first);
-    for (auto &x : extra)
-      {
-        std::sort(x.second.begin(), x.second.end());
-        x.second.erase(std::unique(x.second.begin(), x.second.end()), x.second.end());
-      }
 
+    // the rows: those of K with their fill-in, each sorted and without
+    // repetitions, so that the pattern takes them as they are
     const dealii::SparsityPattern &sp = A.get_sparsity_pattern();
     std::vector<unsigned int>      row_length(n);
     for (unsigned int i = 0; i < n; ++i)
       {
-        unsigned int c = 0;
-        for (auto it = sp.begin(i); it != sp.end(i); ++it)
-          c += (it->column() < n);
-        const auto x  = extra.find(i);
-        row_length[i] = c + (x == extra.end() ? 0 : x->second.size());
+        auto &x = extra[i];
+        if (!x.empty())
+          {
+            for (auto it = sp.begin(i); it != sp.end(i); ++it)
+              if (it->column() < n)
+                x.push_back(it->column());
+            std::sort(x.begin(), x.end());
+            x.erase(std::unique(x.begin(), x.end()), x.end());
+            row_length[i] = x.size();
+          }
+        else
+          for (auto it = sp.begin(i); it != sp.end(i); ++it)
+            row_length[i] += (it->column() < n);
       }
     sparsity.reinit(n, n, row_length);
     std::vector<dealii::types::global_dof_index> cols;
     for (unsigned int i = 0; i < n; ++i)
       {
         cols.clear();
-        for (auto it = sp.begin(i); it != sp.end(i); ++it)
-          if (it->column() < n)
-            cols.push_back(it->column());
-        const auto x = extra.find(i);
-        if (x != extra.end())
-          cols.insert(cols.end(), x->second.begin(), x->second.end());
-        sparsity.add_entries(i, cols.begin(), cols.end(), x == extra.end());
+        if (!extra[i].empty())
+          cols.assign(extra[i].begin(), extra[i].end());
+        else
+          {
+            for (auto it = sp.begin(i); it != sp.end(i); ++it)
+              if (it->column() < n)
+                cols.push_back(it->column());
+            std::sort(cols.begin(), cols.end());
+          }
+        sparsity.add_entries(i, cols.begin(), cols.end(), true);
       }
     sparsity.compress();
 

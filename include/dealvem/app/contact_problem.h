@@ -151,9 +151,9 @@ namespace dealvem
       double       solver_tolerance      = 1e-12;
       /// Iteration limit of an iterative solve (at least 1).
       unsigned int solver_max_iterations = 10000;
-      /// CG-AMG: start each Krylov solve from the condensed displacements
-      /// of the previous one (active-set or Newton iteration, load step)
-      /// instead of from zero.
+      /// CG-AMG: start each Krylov solve from the displacements of the
+      /// previous one (active-set or Newton iteration, load step) instead
+      /// of from zero.
       bool         warm_start            = true;
       /// Number of quasi-static load steps (at least 1): step k = 1, ...,
       /// n_load_steps solves at t = final_time * k / n_load_steps.

@@ -18,6 +18,7 @@ namespace dealvem
   {
     class SparseCholesky;
     class AMGCache;
+    struct CondensedSystem;
   }
 
   /**
@@ -78,10 +79,23 @@ namespace dealvem
       double       relative_tolerance = 1e-12;
       /// Iterative methods: at most this many iterations.
       unsigned int max_iterations     = 2000;
-      /// CG-AMG: start each Krylov iteration from the condensed displacements
-      /// of the previous solve (an active-set or Newton iteration, a load
-      /// step) instead of from zero, when the sizes agree.
+      /// CG-AMG: start each Krylov iteration from the displacements of the
+      /// previous solve (an active-set or Newton iteration, a load step;
+      /// the slave DoFs of the new constraints at their condensed value)
+      /// instead of from zero, when the sizes agree and that start has the
+      /// smaller residual.
       bool warm_start = true;
+      /// CG-AMG: keep the AMG hierarchy of an earlier solve while at most
+      /// this fraction of the rows of the condensed matrix differ from the
+      /// matrix it was built on (an active-set or Newton step that opens,
+      /// closes or releases a few pairs), corrected by an exact solve on
+      /// the changed rows (see solve()); 0 keeps it only for an unchanged
+      /// matrix.
+      double amg_reuse_fraction = 0.05;
+      /// CG-AMG: the relative tolerance of the solves made while
+      /// set_inexact() is on (when it is larger than relative_tolerance;
+      /// 0 switches inexact solves off).
+      double inexact_tolerance = 1e-6;
     };
 
     /// "UMFPACK", "KLU", "GMRES-AMG", "CG-AMG" (or its former name "CG-AMG
@@ -94,7 +108,9 @@ namespace dealvem
     static std::string
     type_name(const Type t);
 
-    /// A solver with @p settings; nothing is factored before solve().
+    /// A solver with @p settings; nothing is factored before solve(). Throws
+    /// if Settings::amg_reuse_fraction is outside [0, 1] or
+    /// Settings::inexact_tolerance outside [0, 1).
     explicit SaddlePointSolver(const Settings &settings);
 
     virtual ~SaddlePointSolver() = default;
@@ -129,14 +145,63 @@ namespace dealvem
       context = text;
     }
 
-    /// Solve A x = b and check the residual (internal::check_residual(); the
-    /// direct solves are refined iteratively first). (DistributedContactSolver
-    /// overrides it.)
+    /**
+     * Solve A x = b and check the residual (internal::check_residual(); the
+     * direct solves are refined iteratively first). (DistributedContactSolver
+     * overrides it.)
+     *
+     * CG-AMG keeps its ML AMG hierarchy between solves. A solve whose
+     * condensed matrix equals the one the hierarchy was built on (pattern
+     * and values) uses it as it is; one whose matrix differs in at most
+     * Settings::amg_reuse_fraction of the rows uses it with an exact solve
+     * on those rows before and after the AMG cycle (a symmetric
+     * multiplicative Schwarz method, symmetric positive definite like the
+     * cycle); if CG then needs more than twice the iterations per decade of
+     * residual reduction of the last fresh hierarchy (and 10 more), the
+     * hierarchy is built again for this matrix and CG goes on from its
+     * iterate. Otherwise the hierarchy is built again.
+     */
     virtual void
     solve(const dealii::SparseMatrix<double> &A,
           const unsigned int                  n_displacements,
           dealii::Vector<double>             &x,
           const dealii::Vector<double>       &b);
+
+    /**
+     * CG-AMG on a symmetric condensed matrix without stick springs: while
+     * @p inexact is true, solve() stops at Settings::inexact_tolerance (when
+     * that is larger than Settings::relative_tolerance) and keeps the
+     * condensed system, so that complete_last_solve() can go on to the full
+     * tolerance. For the iterations of a nonlinear method whose solutions
+     * only choose the next iterate (an active-set iteration whose set still
+     * changes, ActiveSetSolver); the solution it accepts must be completed.
+     * The other solver types, the stick-penalty and the non-symmetric
+     * solves ignore it (last_solve_inexact() is false after them).
+     */
+    void
+    set_inexact(const bool inexact);
+
+    /// Whether the last solve() stopped at Settings::inexact_tolerance
+    /// (see set_inexact()).
+    bool
+    last_solve_inexact() const
+    {
+      return last_inexact;
+    }
+
+    /**
+     * Continue the last solve(), which stopped at the inexact tolerance
+     * (last_solve_inexact()), to Settings::relative_tolerance: CG from its
+     * condensed solution with its condensed matrix and preconditioner.
+     * @p A and @p b must be the matrix and right-hand side of that solve;
+     * @p x (its size) receives the displacements and multipliers, as from
+     * solve(). last_iterations() then counts the iterations of the
+     * continuation. Throws if the last solve was not inexact.
+     */
+    void
+    complete_last_solve(const dealii::SparseMatrix<double> &A,
+                        dealii::Vector<double>             &x,
+                        const dealii::Vector<double>       &b);
 
     /// The method of the settings.
     Type
@@ -188,14 +253,24 @@ namespace dealvem
     /// direct constraints: the factorization (its workspace kept between
     /// active sets)
     std::shared_ptr<internal::SparseCholesky> cholesky;
-    /// CG-AMG: the AMG hierarchy of the last solve, reused while the matrix
-    /// it was built on is the same (pattern and values), e.g. over load steps
-    /// and Newton iterations that keep the closed pairs
+    /// CG-AMG: the AMG hierarchy of an earlier solve with a copy of the
+    /// matrix it was built on: reused as it is for the same matrix (load
+    /// steps, Newton iterations that keep the closed pairs), corrected on
+    /// the changed rows when few differ (see solve())
     std::shared_ptr<internal::AMGCache> amg_cache;
     /// CG-AMG: AMG hierarchies built over the solves.
     unsigned int                        n_amg_setups = 0;
     /// CG-AMG: solves that reused the hierarchy of amg_cache.
     unsigned int                        n_amg_reuses = 0;
+    /// CG-AMG: solves that used the hierarchy of an earlier matrix with the
+    /// exact correction on the changed rows.
+    unsigned int                        n_amg_corrections = 0;
+    /// CG-AMG: corrected solves that converged too slowly and built the
+    /// hierarchy again (counted in n_amg_setups too).
+    unsigned int                        n_amg_slow_corrections = 0;
+    /// CG-AMG: CG iterations per decade of residual reduction of the last
+    /// solve with a freshly built hierarchy (0: none yet).
+    double                              amg_iterations_per_decade = 0;
     /// CG-AMG: the time spent building AMG hierarchies.
     double                              amg_setup_seconds = 0;
     /// direct constraints: the last solve fell back to LU (the condensed
@@ -203,10 +278,29 @@ namespace dealvem
     bool                             used_lu_fallback = false;
     /// the condensed matrix was not symmetric (slipping pairs): GMRES / LU
     bool                             used_gmres = false;
-    /// the condensed displacements of the last iterative solve (warm start)
+    /// the displacements of the last iterative solve (warm start)
     dealii::Vector<double>           previous;
+    /// See set_inexact().
+    bool                             inexact_solves = false;
+    /// See last_solve_inexact().
+    bool                             last_inexact = false;
+    /// The condensed system of the last solve if it was inexact.
+    std::shared_ptr<internal::CondensedSystem> inexact_system;
     /// See set_context().
     std::string                      context;
+
+  private:
+    /// CG (GMRES if not @p symmetric) on K u = f from @p u to
+    /// @p relative_tolerance, preconditioned by the AMG hierarchy of
+    /// @p K_amg (K or its symmetric part) from amg_cache, built, reused or
+    /// corrected as solve() describes; returns the iterations.
+    unsigned int
+    solve_with_amg(const dealii::SparseMatrix<double> &K,
+                   const dealii::SparseMatrix<double> &K_amg,
+                   dealii::Vector<double>             &u,
+                   const dealii::Vector<double>       &f,
+                   const double                        relative_tolerance,
+                   const bool                          symmetric);
   };
 } // namespace dealvem
 
