@@ -94,6 +94,7 @@ namespace dealvem
   bool
   ActiveSetUpdate<dim>::accelerate(const std::vector<bool>   &active,
                                    const std::vector<double> &gaps,
+                                   const std::vector<double> &values,
                                    std::vector<bool>         &next,
                                    std::vector<bool>         &extrapolated) const
   {
@@ -158,10 +159,19 @@ namespace dealvem
                     stack.push_back(k);
                   }
             }
-          double length = 0;
+          double length = 0, tension = 0;
           for (const auto j : run)
-            length += pairs[j].weight;
-          // walk from the run into the pairs that stay active
+            {
+              length += pairs[j].weight;
+              tension = std::max(tension, -values[j]);
+            }
+          // walk from the run into the pairs that stay active, as far as
+          // the run's length and only through pairs whose compression
+          // (p - c g) is no larger than the largest tension in the run: near
+          // the edge of a zone that is too large the decision value runs
+          // about linearly through zero, so the band to release mirrors the
+          // tension band; a pair carrying more is not at that edge (a head
+          // joint that opens beside a bed joint in full compression)
           front.clear();
           for (const auto j : run)
             front.emplace_back(j, 0.);
@@ -170,7 +180,7 @@ namespace dealvem
               const auto [j, distance] = front.back();
               front.pop_back();
               for (const auto k : neighbours[j])
-                if (next[k] && !extra[k])
+                if (next[k] && !extra[k] && values[k] <= tension)
                   {
                     const double d = distance + (pairs[k].slave_location - pairs[j].slave_location).norm();
                     if (d <= length)
@@ -248,10 +258,12 @@ namespace dealvem
     // initial_state(); where every value is round-off the relative test
     // alone follows the noise until the set cycles)
     const double threshold = std::max(1e-10 * scale, 1e-12 * c * length);
+    std::vector<double> values(n_pairs);
     for (unsigned int i = 0; i < n_pairs; ++i)
       {
         const double mu = -multipliers[i];
-        next[i]         = (mu / pairs[i].weight - c * gaps[i] > threshold) && !pairs[i].junction;
+        values[i]       = mu / pairs[i].weight - c * gaps[i];
+        next[i]         = (values[i] > threshold) && !pairs[i].junction;
       }
     if (next == state.active)
       {
@@ -268,7 +280,7 @@ namespace dealvem
     if (settings.accelerate_active_set)
       {
         std::vector<bool> marks(n_pairs, false);
-        if (accelerate(state.active, gaps, next, marks) && !state.extrapolate)
+        if (accelerate(state.active, gaps, values, next, marks) && !state.extrapolate)
           next = proposed; // extrapolation switched off: keep the plain set
         else
           for (unsigned int i = 0; i < n_pairs; ++i)

@@ -8,6 +8,7 @@
 
 #include <dealvem/vem/polygon_geometry.h>
 #include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/virtual_element.h>
 
 namespace dealvem
 {
@@ -50,14 +51,34 @@ namespace dealvem
     AssertThrow(k == 1 || k == 2,
                 dealii::ExcMessage("VEMDoFHandler: the order must be 1 or 2, got " +
                                    std::to_string(k) + "."));
+    distribute_dofs(VEMElementData(k));
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::distribute_dofs(const VirtualElement<dim> &element)
+  {
+    distribute_dofs(element.get_element_data());
+  }
+
+
+
+  template <int dim>
+  void
+  VEMDoFHandler<dim>::distribute_dofs(const VEMElementData &layout)
+  {
+    AssertThrow(mesh != nullptr, dealii::ExcMessage("VEMDoFHandler: no mesh attached; call reinit(mesh) first."));
     AssertThrow(mesh->n_edges() > 0 || mesh->n_cells() == 0,
                 dealii::ExcMessage("VEMDoFHandler: the mesh '" + mesh->name +
                                    "' has no edges; call finalize() first."));
-    degree         = k;
+    data           = layout;
+    degree         = layout.get_degree();
     mesh_revision  = mesh->get_revision();
     n_vertex_nodes = mesh->n_vertices();
-    n_edge_nodes   = (k == 2 ? mesh->n_edges() : 0);
-    const unsigned int n_cell_nodes = (k == 2 ? mesh->n_cells() : 0);
+    n_edge_nodes   = layout.nodes_per_edge() * mesh->n_edges();
+    const unsigned int n_cell_nodes = layout.nodes_per_cell() * mesh->n_cells();
     n_dofs_ = 2 * dealii::types::global_dof_index(n_vertex_nodes + n_edge_nodes + n_cell_nodes);
 
     cell_centroids.resize(mesh->n_cells());
@@ -72,8 +93,7 @@ namespace dealvem
   VEMDoFHandler<dim>::n_dofs_per_cell(const unsigned int c) const
   {
     check_mesh_unchanged();
-    const unsigned int n = mesh->cell(c).vertices.size();
-    return degree == 1 ? 2 * n : 2 * (2 * n + 1);
+    return data.n_dofs_per_cell(mesh->cell(c).vertices.size());
   }
 
 
@@ -82,8 +102,18 @@ namespace dealvem
   unsigned int
   VEMDoFHandler<dim>::edge_node(const unsigned int e) const
   {
-    Assert(degree == 2, dealii::ExcMessage("Edge nodes exist for k = 2 only."));
+    Assert(data.nodes_per_edge() == 1, dealii::ExcMessage("Edge midpoint nodes exist for k = 2 only."));
     return n_vertex_nodes + e;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  VEMDoFHandler<dim>::edge_node(const unsigned int e, const unsigned int j) const
+  {
+    Assert(j < data.nodes_per_edge(), dealii::ExcIndexRange(j, 0, data.nodes_per_edge()));
+    return n_vertex_nodes + e * data.nodes_per_edge() + j;
   }
 
 
@@ -92,8 +122,18 @@ namespace dealvem
   unsigned int
   VEMDoFHandler<dim>::cell_node(const unsigned int c) const
   {
-    Assert(degree == 2, dealii::ExcMessage("Cell nodes exist for k = 2 only."));
+    Assert(data.nodes_per_cell() == 1, dealii::ExcMessage("Cell nodes exist for k = 2 only."));
     return n_vertex_nodes + n_edge_nodes + c;
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  VEMDoFHandler<dim>::cell_node(const unsigned int c, const unsigned int j) const
+  {
+    Assert(j < data.nodes_per_cell(), dealii::ExcIndexRange(j, 0, data.nodes_per_cell()));
+    return n_vertex_nodes + n_edge_nodes + c * data.nodes_per_cell() + j;
   }
 
 
@@ -116,10 +156,13 @@ namespace dealvem
       return mesh->vertex(node);
     if (node < n_vertex_nodes + n_edge_nodes)
       {
-        const auto &e = mesh->edge(node - n_vertex_nodes);
-        return 0.5 * (mesh->vertex(e.vertices[0]) + mesh->vertex(e.vertices[1]));
+        const unsigned int per_edge = data.nodes_per_edge();
+        const auto        &e        = mesh->edge((node - n_vertex_nodes) / per_edge);
+        const double       t        = data.edge_node_positions()[(node - n_vertex_nodes) % per_edge];
+        const auto        &a = mesh->vertex(e.vertices[0]), &b = mesh->vertex(e.vertices[1]);
+        return t == 0.5 ? 0.5 * (a + b) : (1 - t) * a + t * b;
       }
-    return cell_centroids[node - n_vertex_nodes - n_edge_nodes];
+    return cell_centroids[(node - n_vertex_nodes - n_edge_nodes) / data.nodes_per_cell()];
   }
 
 
@@ -131,14 +174,21 @@ namespace dealvem
   {
     const auto        &cell = mesh->cell(c);
     const unsigned int n    = cell.vertices.size();
+    const unsigned int per_edge = data.nodes_per_edge(), per_cell = data.nodes_per_cell();
     for (unsigned int i = 0; i < n; ++i)
       f(i, vertex_node(cell.vertices[i]));
-    if (degree == 2)
+    for (unsigned int i = 0; i < n; ++i)
       {
-        for (unsigned int i = 0; i < n; ++i)
-          f(n + i, edge_node(cell.edges[i]));
-        f(2 * n, cell_node(c));
+        // the cell runs along its edge i from its vertex i; the mesh's edge
+        // may run the other way, and its nodes are counted from its first
+        // vertex
+        const unsigned int e        = cell.edges[i];
+        const bool         reversed = per_edge > 1 && (mesh->edge(e).vertices[0] != cell.vertices[i]);
+        for (unsigned int j = 0; j < per_edge; ++j)
+          f(data.edge_node(n, i, j), edge_node(e, reversed ? per_edge - 1 - j : j));
       }
+    for (unsigned int j = 0; j < per_cell; ++j)
+      f(data.cell_node(n, j), cell_node(c, j));
   }
 
 
@@ -211,8 +261,8 @@ namespace dealvem
           continue;
         nodes.push_back(vertex_node(edge.vertices[0]));
         nodes.push_back(vertex_node(edge.vertices[1]));
-        if (degree == 2)
-          nodes.push_back(edge_node(e));
+        for (unsigned int j = 0; j < data.nodes_per_edge(); ++j)
+          nodes.push_back(edge_node(e, j));
       }
     std::sort(nodes.begin(), nodes.end());
     nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
@@ -261,6 +311,10 @@ namespace dealvem
   VEMDoFHandler<dim>::rigid_body_modes() const
   {
     check_mesh_unchanged();
+    AssertThrow(data.nodes_per_cell() <= 1,
+                dealii::ExcMessage("VEMDoFHandler::rigid_body_modes(): implemented for at most one moment per "
+                                   "cell (k <= 2); the layout has " +
+                                   std::to_string(data.nodes_per_cell()) + "."));
     std::vector<std::vector<double>> modes(3, std::vector<double>(n_dofs_, 0.));
     for (unsigned int node = 0; node < n_nodes(); ++node)
       {

@@ -126,14 +126,16 @@ namespace dealvem
   template <int dim>
   VirtualElement<dim>::VirtualElement(const unsigned int degree)
     : degree(degree)
+    , data([](const unsigned int k) {
+      AssertThrow(k == 1 || k == 2,
+                  dealii::ExcMessage("VirtualElement: the order k must be 1 or 2, got " + std::to_string(k) + "."));
+      return k;
+    }(degree))
     , n_vertices(0)
     , n_dofs(0)
     , geometry(std::make_unique<PolygonGeometry<dim>>())
     , workspace(std::make_unique<Workspace>())
   {
-    AssertThrow(degree == 1 || degree == 2,
-                dealii::ExcMessage("VirtualElement: the order k must be 1 or 2, got " +
-                                   std::to_string(degree) + "."));
     // The vector polynomial basis, rigid-body modes first.
     const unsigned int n_p = n_polynomials();
     coef.resize(n_p);

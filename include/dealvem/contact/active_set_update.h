@@ -206,6 +206,7 @@ namespace dealvem
     bool
     accelerate(const std::vector<bool>   &active,
                const std::vector<double> &gaps,
+               const std::vector<double> &values,
                std::vector<bool>         &next,
                std::vector<bool>         &extrapolated) const;
 

@@ -11,6 +11,7 @@
 #include <deal.II/base/types.h>
 
 #include <dealvem/mesh/polygonal_mesh.h>
+#include <dealvem/vem/vem_element_data.h>
 
 #include <set>
 #include <vector>
@@ -26,6 +27,9 @@ namespace dealii
 
 namespace dealvem
 {
+  template <int dim>
+  class VirtualElement;
+
   /**
    * Enumerates the degrees of freedom of the order-k virtual element space
    * for 2D vector problems (two displacement components) on a
@@ -72,9 +76,32 @@ namespace dealvem
     void
     reinit(const PolygonalMesh<dim> &mesh);
 
-    /// Enumerate the DoFs for order @p degree (1 or 2).
+    /// Enumerate the DoFs for order @p degree (1 or 2): the layout
+    /// VEMElementData(degree).
     void
     distribute_dofs(const unsigned int degree);
+
+    /// Enumerate the DoFs of the space of @p element (its
+    /// get_element_data()), as deal.II's DoFHandler::distribute_dofs(fe).
+    void
+    distribute_dofs(const VirtualElement<dim> &element);
+
+    /**
+     * Enumerate the DoFs of the layout @p data: nodes on the vertices, then
+     * VEMElementData::nodes_per_edge() on every edge (edge by edge, from the
+     * edge's first vertex), then VEMElementData::nodes_per_cell() in every
+     * cell. The other members read the layout from here.
+     */
+    void
+    distribute_dofs(const VEMElementData &data);
+
+    /// The layout of the last distribute_dofs() (that of order 1 before
+    /// it; see get_degree()).
+    const VEMElementData &
+    get_element_data() const
+    {
+      return data;
+    }
 
     /// The attached mesh (asserted in debug mode that there is one).
     const PolygonalMesh<dim> &
@@ -147,10 +174,20 @@ namespace dealvem
     unsigned int
     edge_node(const unsigned int e) const;
 
+    /// Node @p j of the nodes inside edge @p e of the mesh, counted from
+    /// the edge's first vertex (asserted in debug mode that it exists).
+    unsigned int
+    edge_node(const unsigned int e, const unsigned int j) const;
+
     /// Node of the cell moment of cell @p c (k = 2 only; asserted in debug
     /// mode).
     unsigned int
     cell_node(const unsigned int c) const;
+
+    /// Node of moment @p j of cell @p c (asserted in debug mode that it
+    /// exists).
+    unsigned int
+    cell_node(const unsigned int c, const unsigned int j) const;
 
     /// DoF of component @p comp at node @p node.
     static dealii::types::global_dof_index
@@ -207,6 +244,8 @@ namespace dealvem
     /// Revision of the mesh at the last distribute_dofs().
     std::uint64_t                                  mesh_revision = 0;
     unsigned int                                   degree = 0;
+    /// The layout of the last distribute_dofs().
+    VEMElementData                                 data{1};
     dealii::types::global_dof_index                n_dofs_ = 0;
     unsigned int                                   n_vertex_nodes = 0;
     unsigned int                                   n_edge_nodes   = 0;

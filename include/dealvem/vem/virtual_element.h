@@ -13,6 +13,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/vem/polygon_geometry.h>
+#include <dealvem/vem/vem_element_data.h>
 
 #include <array>
 #include <cstdint>
@@ -164,11 +165,20 @@ namespace dealvem
       return degree == 1 ? 6 : 12;
     }
 
+    /// The layout of the DoFs (nodes per vertex, edge and cell, the edge
+    /// nodes' positions, the local order), as deal.II's FiniteElementData;
+    /// VEMDoFHandler::distribute_dofs(element) reads it.
+    const VEMElementData &
+    get_element_data() const
+    {
+      return data;
+    }
+
     /// Number of local DoFs of a polygon with @p n_vertices vertices.
     unsigned int
     n_dofs_per_cell(const unsigned int n_vertices) const
     {
-      return degree == 1 ? 2 * n_vertices : 2 * (2 * n_vertices + 1);
+      return data.n_dofs_per_cell(n_vertices);
     }
 
     /// Number of local DoFs of the polygon of the last reinit().
@@ -182,7 +192,7 @@ namespace dealvem
     unsigned int
     n_nodes(const unsigned int n_vertices) const
     {
-      return degree == 1 ? n_vertices : 2 * n_vertices + 1;
+      return data.n_nodes(n_vertices);
     }
 
     /// (component, node) of local DoF @p i, as
@@ -538,6 +548,8 @@ namespace dealvem
     }
 
     unsigned int                                degree;
+    /// The DoF layout of order degree.
+    VEMElementData                              data;
     unsigned int                                n_vertices;
     unsigned int                                n_dofs;
     std::unique_ptr<PolygonGeometry<dim>>       geometry;

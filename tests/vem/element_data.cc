@@ -1,0 +1,135 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+// The element describes its own DoF layout (VEMElementData) and the DoF
+// handler reads it:
+//   1. the counts of orders 1, 2 and 3 (nodes per vertex, edge and cell,
+//      local nodes and DoFs of an n-gon) and the edge nodes' positions (the
+//      interior Gauss-Lobatto points: 1/2 for k = 2, (1 -+ 1/sqrt 5)/2 for
+//      k = 3);
+//   2. distribute_dofs(element) numbers exactly as distribute_dofs(k) on a
+//      Voronoi mesh (same indices cell by cell, same support points);
+//   3. a layout with two nodes per edge (k = 3) on a Voronoi mesh, where
+//      neighbouring cells run along their shared edges in opposite
+//      directions: every local edge node sits where the cell's own edge
+//      parametrisation puts it (to 4e-15 on the 2 x 1 domain), every global
+//      node is used, n_dofs = 2 (V + 2 E + 3 C);
+//   4. misuse is refused: order 0, VirtualElement of order 3, rigid-body
+//      modes of a layout with three moments per cell.
+#include <deal.II/base/point.h>
+
+#include <dealvem/mesh/generators.h>
+#include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/vem_element_data.h>
+#include <dealvem/vem/virtual_element.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "../tests.h"
+
+using namespace dealvem;
+
+int
+main()
+{
+  // 1. counts and positions
+  {
+    const VEMElementData k1(1), k2(2), k3(3);
+    testing::check(k1.nodes_per_edge() == 0 && k1.nodes_per_cell() == 0 && k1.n_dofs_per_cell(5) == 10,
+                   "k = 1: vertex nodes only, 10 DoFs on a pentagon");
+    testing::check(k2.nodes_per_edge() == 1 && k2.nodes_per_cell() == 1 && k2.n_nodes(5) == 11 &&
+                     k2.n_dofs_per_cell(5) == 22 && k2.edge_node_positions() == std::vector<double>{0.5},
+                   "k = 2: one midpoint per edge, one moment, 22 DoFs on a pentagon");
+    testing::check(k3.nodes_per_edge() == 2 && k3.nodes_per_cell() == 3 && k3.n_nodes(4) == 15 &&
+                     k3.edge_node(4, 1, 1) == 7 && k3.cell_node(4, 2) == 14,
+                   "k = 3: two nodes per edge, three moments; local order vertices, edges, moments");
+    testing::check_near(k3.edge_node_positions()[0], 0.5 * (1 - 1 / std::sqrt(5.)), 1e-15,
+                        "k = 3: first edge node at (1 - 1/sqrt 5)/2");
+    testing::check_near(k3.edge_node_positions()[1], 0.5 * (1 + 1 / std::sqrt(5.)), 1e-15,
+                        "k = 3: second edge node at (1 + 1/sqrt 5)/2");
+    for (const unsigned int k : {1u, 2u})
+      {
+        const VirtualElement<2> element(k);
+        testing::check(element.get_element_data().get_degree() == k &&
+                         element.n_dofs_per_cell(7) == element.get_element_data().n_dofs_per_cell(7),
+                       "VirtualElement(" + std::to_string(k) + ") reports its layout");
+      }
+  }
+
+  PolygonalMesh<2> mesh;
+  PolygonalMeshGenerators::voronoi(mesh, dealii::Point<2>(0, 0), dealii::Point<2>(2, 1), 40, 3, 7);
+
+  // 2. the element's layout numbers as the integer order did
+  for (const unsigned int k : {1u, 2u})
+    {
+      VEMDoFHandler<2> by_order(mesh), by_element(mesh);
+      by_order.distribute_dofs(k);
+      by_element.distribute_dofs(VirtualElement<2>(k));
+      bool same = by_order.n_dofs() == by_element.n_dofs();
+      std::vector<dealii::types::global_dof_index> a, b;
+      for (unsigned int c = 0; c < mesh.n_cells() && same; ++c)
+        {
+          by_order.get_dof_indices(c, a);
+          by_element.get_dof_indices(c, b);
+          same = (a == b);
+        }
+      std::vector<dealii::Point<2>> pa, pb;
+      by_order.map_dofs_to_support_points(pa);
+      by_element.map_dofs_to_support_points(pb);
+      testing::check(same && pa == pb, "k = " + std::to_string(k) +
+                                         ": distribute_dofs(element) gives the numbering and support points of "
+                                         "distribute_dofs(k)");
+    }
+
+  // 3. two nodes per edge: orientation of shared edges
+  {
+    VEMDoFHandler<2> dofs(mesh);
+    const VEMElementData k3(3);
+    dofs.distribute_dofs(k3);
+    testing::check(dofs.n_dofs() == 2 * (mesh.n_vertices() + 2 * mesh.n_edges() + 3 * mesh.n_cells()),
+                   "k = 3 layout: n_dofs = 2 (V + 2 E + 3 C) = " + std::to_string(dofs.n_dofs()));
+    std::vector<unsigned int> nodes;
+    std::vector<bool>         used(dofs.n_nodes(), false);
+    double                    worst    = 0;
+    unsigned int              reversed = 0;
+    bool                      moments_ok = true;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        dofs.get_node_indices(c, nodes);
+        const auto        &cell = mesh.cell(c);
+        const unsigned int n    = cell.vertices.size();
+        for (const auto node : nodes)
+          used[node] = true;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            reversed += (mesh.edge(cell.edges[i]).vertices[0] != cell.vertices[i]);
+            const auto &a = mesh.vertex(cell.vertices[i]), &b = mesh.vertex(cell.vertices[(i + 1) % n]);
+            for (unsigned int j = 0; j < 2; ++j)
+              {
+                const double t = k3.edge_node_positions()[j];
+                worst          = std::max(worst, (dofs.node_location(nodes[k3.edge_node(n, i, j)]) -
+                                         ((1 - t) * a + t * b)).norm());
+              }
+          }
+        for (unsigned int j = 0; j < 3; ++j)
+          moments_ok = moments_ok && dofs.is_moment_node(nodes[k3.cell_node(n, j)]) &&
+                       nodes[k3.cell_node(n, j)] == dofs.cell_node(c, j);
+      }
+    testing::check(moments_ok, "the three moments of each cell are its own moment nodes, in order");
+    testing::check(reversed > 0, "the mesh has cells that run along a shared edge against its direction (" +
+                                   std::to_string(reversed) + " cell edges)");
+    testing::check_small(worst, 4e-15, "every local edge node lies on the cell's own edge parametrisation (2 x 1 "
+                                       "domain)");
+    testing::check(std::find(used.begin(), used.end(), false) == used.end(), "every node belongs to a cell");
+    testing::check_throws([&] { dofs.rigid_body_modes(); }, "at most one moment per cell",
+                          "rigid-body modes of three moments per cell are refused");
+  }
+
+  // 4. misuse
+  testing::check_throws([] { VEMElementData(0); }, "order k must be at least 1", "order 0 is refused");
+  testing::check_throws([] { VirtualElement<2>(3); }, "order k must be 1 or 2, got 3",
+                        "VirtualElement of order 3 is refused");
+  return testing::finish();
+}
