@@ -72,6 +72,18 @@ namespace dealvem
       return false;
     }
 
+    // the state of every contact constraint at a Newton iterate: out of
+    // the system (multiplier zero), a constraint row (active normal
+    // contact, tied, stick), or slip in the positive or negative tangential
+    // direction
+    enum NewtonConstraintState : int
+    {
+      inactive   = 0,
+      constraint = 1,
+      slip_plus  = 2,
+      slip_minus = 3
+    };
+
     bool
     all_finite(const dealii::Vector<double> &v)
     {
@@ -284,6 +296,46 @@ namespace dealvem
 
 
 
+  // The state of one attempt at a load step (attempt_step()), handed from
+  // one of its stages to the next: the step, the iterate (u, lambda), the
+  // trial state of the line search, the Newton system's work vectors, and
+  // the contact data of the step.
+  template <int dim>
+  struct FiniteStrainSolver<dim>::NewtonStep
+  {
+    unsigned int step        = 0;
+    double       load_factor = 0;
+    // the factor of the prescribed values: the load factor, or 1 when the
+    // constraints hold the motion of the step itself
+    double     motion_factor = 0;
+    StepRecord record;
+    // the numbers of DoFs and of contact constraints
+    dealii::types::global_dof_index n = 0;
+    unsigned int                    m = 0;
+
+    dealii::Vector<double>            u, r, rhs, du, u_trial, r_trial, tmp, x;
+    dealii::Vector<double>            lambda, lambda_new, lambda_trial;
+    dealii::AffineConstraints<double> update_constraints;
+    // the largest prescribed value, for the test that the constraints hold
+    double prescribed = 0;
+
+    // contact: the pair weights (the scale of the complementarity
+    // function) and the complementarity constant
+    std::vector<double>                    weight;
+    double                                 c = 0;
+    FiniteStrainConstraints::Linearization lin;
+
+    double      f_ext_norm  = 0;
+    double      last_update = std::numeric_limits<double>::infinity();
+    std::string inversion; // the last inverted cell met in the step
+
+    // the state of every constraint at the iterate (NewtonConstraintState)
+    std::vector<int> active, previous_active;
+  };
+
+
+
+  // (see the header)
   template <int dim>
   void
   FiniteStrainSolver<dim>::attempt_step(const unsigned int step, const double load_factor, const bool extrapolate)
@@ -291,96 +343,134 @@ namespace dealvem
     AssertThrow(std::isfinite(load_factor),
                 dealii::ExcMessage("FiniteStrainSolver: the load factor of step " + std::to_string(step) +
                                    " is not finite."));
-    StepRecord record;
-    record.step        = step;
-    record.load_factor = load_factor;
-    // the factor of the prescribed values: the load factor, or 1 when the
-    // constraints hold the motion of the step itself
-    const double motion_factor = parameters.scale_prescribed_motion ? load_factor : 1.;
-
-    const auto fail = [&](const std::string &reason) {
-      record.converged = false;
-      history.push_back(record);
-      AssertThrow(false,
-                  dealii::ExcMessage("FiniteStrainSolver: load step " + std::to_string(step) + " (load factor " +
-                                     number(load_factor) + ") did not converge: " + reason +
-                                     "\nNewton history of the step:\n" + step_history_text(record) +
-                                     "The solution is kept at the last converged step (load factor " +
-                                     number(current_load_factor) + ")."));
-    };
+    NewtonStep ns;
+    ns.step               = step;
+    ns.load_factor        = load_factor;
+    ns.record.step        = step;
+    ns.record.load_factor = load_factor;
+    ns.motion_factor      = parameters.scale_prescribed_motion ? load_factor : 1.;
 
     // the stabilization scaled at the last converged state (FiniteStrainOperator)
     assembler.freeze_stabilization(solution);
+    start_attempt(ns);
+    check_data_scale(ns);
+    if (extrapolate && n_converged >= 2)
+      extrapolate_first_iterate(ns);
+    ns.active.assign(ns.m, inactive);
+    for (unsigned int it = 0;; ++it)
+      if (newton_iteration(ns, it))
+        break;
+    check_fixed_pairs(ns);
+    accept_step(ns);
+  }
 
-    const auto   n = assembler.get_dof_handler().n_dofs();
-    const auto   m = contact != nullptr ? contact->n_constraints() : 0u;
-    record.with_contact = (contact != nullptr);
 
-    dealii::Vector<double>            u = solution, r, rhs, du, u_trial, r_trial, tmp, x;
-    dealii::Vector<double>            lambda = multipliers, lambda_new, lambda_trial;
-    dealii::AffineConstraints<double> update_constraints;
-    update_constraints.copy_from(constraints);
-    // the largest prescribed value, for the test that the constraints hold
-    double prescribed = 0;
+
+  // The step fails: its record (not converged) goes to the history, and the
+  // error names the reason.
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::fail_step(NewtonStep &ns, const std::string &reason)
+  {
+    ns.record.converged = false;
+    history.push_back(ns.record);
+    AssertThrow(false,
+                dealii::ExcMessage("FiniteStrainSolver: load step " + std::to_string(ns.step) + " (load factor " +
+                                   number(ns.load_factor) + ") did not converge: " + reason +
+                                   "\nNewton history of the step:\n" + step_history_text(ns.record) +
+                                   "The solution is kept at the last converged step (load factor " +
+                                   number(current_load_factor) + ")."));
+  }
+
+
+
+  // The start of an attempt: the sizes, the iterate at the last converged
+  // state, the update's constraints and the contact weights.
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::start_attempt(NewtonStep &ns)
+  {
+    const auto n = assembler.get_dof_handler().n_dofs();
+    const auto m = contact != nullptr ? contact->n_constraints() : 0u;
+    ns.n                   = n;
+    ns.m                   = m;
+    ns.record.with_contact = (contact != nullptr);
+
+    ns.u      = solution;
+    ns.lambda = multipliers;
+    ns.update_constraints.copy_from(constraints);
     for (const auto &line : constraints.get_lines())
-      prescribed = std::max(prescribed, std::abs(motion_factor * line.inhomogeneity));
+      ns.prescribed = std::max(ns.prescribed, std::abs(ns.motion_factor * line.inhomogeneity));
 
-    const auto free_norm = [&](const dealii::Vector<double> &residual) {
-      tmp = residual;
-      homogeneous_constraints.condense(tmp);
-      return tmp.l2_norm();
-    };
-
-    // Contact: the pair weights (the scale of the complementarity
-    // function), the residual with the contact forces, and the
-    // complementarity residual phi.
-    std::vector<double> weight(m, 0.);
-    double              c = 0;
+    ns.weight.assign(m, 0.);
     if (contact != nullptr)
       {
-        c = contact->complementarity_constant();
+        ns.c = contact->complementarity_constant();
         for (unsigned int j = 0; j < m; ++j)
-          weight[j] = contact->weight(j);
+          ns.weight[j] = contact->weight(j);
       }
-    FiniteStrainConstraints::Linearization lin;
-    // r <- r - sum_j lambda_j dg_j/du; returns |phi|_2
-    const auto add_contact = [&](const dealii::Vector<double> &u_at,
-                                 const dealii::Vector<double> &lambda_at,
-                                 dealii::Vector<double>       &residual) {
-      double phi2 = 0;
-      for (unsigned int j = 0; j < m; ++j)
-        {
-          if (contact->is_left_out(j))
-            {
-              phi2 += lambda_at[j] * lambda_at[j];
-              continue;
-            }
-          contact->linearize(j, u_at, lin, false);
-          if (lambda_at[j] != 0)
-            for (unsigned int k = 0; k < lin.dofs.size(); ++k)
-              residual[lin.dofs[k]] -= lambda_at[j] * lin.gradient[k];
-          const double k_j = c * weight[j];
-          double       phi = 0;
-          const auto kind = contact->kind(j);
-          if (kind == FiniteStrainConstraints::Kind::equality)
-            phi = k_j * lin.value;
-          else if (kind == FiniteStrainConstraints::Kind::unilateral)
-            phi = lambda_at[j] - std::min(0., lambda_at[j] + k_j * lin.value);
-          else
-            {
-              // Coulomb: lambda_t = proj_[-b, b](lambda_t + c w s)
-              const unsigned int i     = contact->normal_of(j);
-              const double       bound = contact->friction_coefficient_of(j) * std::max(0., -lambda_at[i]);
-              phi = lambda_at[j] - std::clamp(lambda_at[j] + k_j * lin.value, -bound, bound);
-            }
-          phi2 += phi * phi;
-        }
-      return std::sqrt(phi2);
-    };
+    ns.f_ext_norm = f_ext.l2_norm();
+  }
 
-    const double      f_ext_norm  = f_ext.l2_norm();
-    double            last_update = std::numeric_limits<double>::infinity();
 
+
+  // The norm of the free part of @p residual.
+  template <int dim>
+  double
+  FiniteStrainSolver<dim>::free_norm(NewtonStep &ns, const dealii::Vector<double> &residual) const
+  {
+    ns.tmp = residual;
+    homogeneous_constraints.condense(ns.tmp);
+    return ns.tmp.l2_norm();
+  }
+
+
+
+  // Contact: r <- r - sum_j lambda_j dg_j/du; returns the norm of the
+  // complementarity residual phi.
+  template <int dim>
+  double
+  FiniteStrainSolver<dim>::contact_residual(NewtonStep &ns, const dealii::Vector<double> &u_at, const dealii::Vector<double> &lambda_at,
+                                            dealii::Vector<double> &residual) const
+  {
+    double phi2 = 0;
+    for (unsigned int j = 0; j < ns.m; ++j)
+      {
+        if (contact->is_left_out(j))
+          {
+            phi2 += lambda_at[j] * lambda_at[j];
+            continue;
+          }
+        contact->linearize(j, u_at, ns.lin, false);
+        if (lambda_at[j] != 0)
+          for (unsigned int k = 0; k < ns.lin.dofs.size(); ++k)
+            residual[ns.lin.dofs[k]] -= lambda_at[j] * ns.lin.gradient[k];
+        const double k_j = ns.c * ns.weight[j];
+        double       phi = 0;
+        const auto kind = contact->kind(j);
+        if (kind == FiniteStrainConstraints::Kind::equality)
+          phi = k_j * ns.lin.value;
+        else if (kind == FiniteStrainConstraints::Kind::unilateral)
+          phi = lambda_at[j] - std::min(0., lambda_at[j] + k_j * ns.lin.value);
+        else
+          {
+            // Coulomb: lambda_t = proj_[-b, b](lambda_t + c w s)
+            const unsigned int i     = contact->normal_of(j);
+            const double       bound = contact->friction_coefficient_of(j) * std::max(0., -lambda_at[i]);
+            phi = lambda_at[j] - std::clamp(lambda_at[j] + k_j * ns.lin.value, -bound, bound);
+          }
+        phi2 += phi * phi;
+      }
+    return std::sqrt(phi2);
+  }
+
+
+
+  // Step 1 of an attempt: the data must lie above Newton's round-off floor.
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::check_data_scale(NewtonStep &ns) const
+  {
     // Data below Newton's round-off floor: loads and prescribed motions that
     // the default floor (1e-12 E_min L) cannot tell from none, on a state
     // that is itself that small, would end the step at its first iterate
@@ -389,14 +479,14 @@ namespace dealvem
     if (parameters.absolute_residual_tolerance < 0 && length_scale > 0)
       {
         const double stiffness = assembler.get_material_library().min_characteristic_stiffness() * length_scale;
-        const double load      = std::abs(load_factor) * f_ext_norm / stiffness;
-        const double motion    = prescribed / length_scale;
+        const double load      = std::abs(ns.load_factor) * ns.f_ext_norm / stiffness;
+        const double motion    = ns.prescribed / length_scale;
         const double state     = solution.linfty_norm() / length_scale;
         const double data      = std::max(load, motion);
         AssertThrow(!(data > 0 && std::max(data, state) < 1e-10),
                     dealii::ExcMessage(
-                      "FiniteStrainSolver: load step " + std::to_string(step) + " (load factor " +
-                      number(load_factor) + "): its loads (" + number(load) +
+                      "FiniteStrainSolver: load step " + std::to_string(ns.step) + " (load factor " +
+                      number(ns.load_factor) + "): its loads (" + number(load) +
                       " of the smallest Young's modulus times the size of the mesh) and prescribed displacements (" +
                       number(motion) +
                       " of the size) are all below 1e-10, and so is the state it starts from: Newton's residual "
@@ -405,319 +495,378 @@ namespace dealvem
                       "nearer to the size of the mesh and to its modulus times its size, or solve at small strain, "
                       "where the response is linear in the data."));
       }
-    std::string       inversion; // the last inverted cell met in the step
+  }
 
-    // the first iterate: the extrapolation of the last two converged steps
-    if (extrapolate && n_converged >= 2)
+
+
+  // Step 2: the first iterate, the extrapolation of the last two converged
+  // steps (where it lies in the domain).
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::extrapolate_first_iterate(NewtonStep &ns)
+  {
+    double s = 0;
+    if (current_load_factor != previous_load_factor)
+      s = (ns.load_factor - current_load_factor) / (current_load_factor - previous_load_factor);
+    else if (current_step != previous_step)
+      s = static_cast<double>(static_cast<int>(ns.step) - static_cast<int>(current_step)) /
+          (static_cast<int>(current_step) - static_cast<int>(previous_step));
+    if (std::isfinite(s) && s > 0 && s <= 4)
       {
-        double s = 0;
-        if (current_load_factor != previous_load_factor)
-          s = (load_factor - current_load_factor) / (current_load_factor - previous_load_factor);
-        else if (current_step != previous_step)
-          s = static_cast<double>(static_cast<int>(step) - static_cast<int>(current_step)) /
-              (static_cast<int>(current_step) - static_cast<int>(previous_step));
-        if (std::isfinite(s) && s > 0 && s <= 4)
+        ns.u_trial = solution;
+        ns.u_trial.sadd(1. + s, -s, previous_solution);
+        // (outside the domain, or not finite: start from the last
+        // converged state)
+        std::string reason;
+        if (all_finite(ns.u_trial) &&
+            evaluate_in_domain(
+              [&] {
+                assembler.assemble(ns.u_trial, ns.load_factor, ns.r_trial, ns.update_constraints, nullptr, nullptr);
+              },
+              reason) &&
+            all_finite(ns.r_trial))
           {
-            u_trial = solution;
-            u_trial.sadd(1. + s, -s, previous_solution);
-            // (outside the domain, or not finite: start from the last
-            // converged state)
-            std::string reason;
-            if (all_finite(u_trial) &&
-                evaluate_in_domain(
-                  [&] { assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr); },
-                  reason) &&
-                all_finite(r_trial))
-              {
-                u = u_trial;
-                if (m > 0 && previous_multipliers.size() == m)
-                  lambda.sadd(1. + s, -s, previous_multipliers);
-                record.extrapolated = true;
-              }
+            ns.u = ns.u_trial;
+            if (ns.m > 0 && previous_multipliers.size() == ns.m)
+              ns.lambda.sadd(1. + s, -s, previous_multipliers);
+            ns.record.extrapolated = true;
           }
       }
-    // the state of every constraint at the iterate: out of the system
-    // (multiplier zero), a constraint row (active normal contact, tied,
-    // stick), or slip in the positive or negative tangential direction
-    enum State : int
-    {
-      inactive   = 0,
-      constraint = 1,
-      slip_plus  = 2,
-      slip_minus = 3
-    };
-    std::vector<int> active(m, inactive), previous_active;
-    for (unsigned int it = 0;; ++it)
+  }
+
+
+
+  // Step 3: Newton iteration @p it; true when the iterate has converged.
+  template <int dim>
+  bool
+  FiniteStrainSolver<dim>::newton_iteration(NewtonStep &ns, const unsigned int it)
+  {
+    // the update's constraints: what the iterate misses of
+    // u_i = sum_j a_ij u_j + lambda b_i
+    double mismatch = 0;
+    for (const auto &line : constraints.get_lines())
       {
-        // the update's constraints: what the iterate misses of
-        // u_i = sum_j a_ij u_j + lambda b_i
-        double mismatch = 0;
-        for (const auto &line : constraints.get_lines())
-          {
-            double target = motion_factor * line.inhomogeneity;
-            for (const auto &entry : line.entries)
-              target += entry.second * u[entry.first];
-            const double miss = target - u[line.index];
-            update_constraints.set_inhomogeneity(line.index, miss);
-            mismatch = std::max(mismatch, std::abs(miss));
-          }
-        const bool moves_prescribed = mismatch > 1e-13 * std::max(prescribed, u.linfty_norm());
+        double target = ns.motion_factor * line.inhomogeneity;
+        for (const auto &entry : line.entries)
+          target += entry.second * ns.u[entry.first];
+        const double miss = target - ns.u[line.index];
+        ns.update_constraints.set_inhomogeneity(line.index, miss);
+        mismatch = std::max(mismatch, std::abs(miss));
+      }
+    const bool moves_prescribed = mismatch > 1e-13 * std::max(ns.prescribed, ns.u.linfty_norm());
 
+    assemble_iterate(ns, it);
+    // the force scale at this iterate: the load or the internal forces
+    // (reactions included), whichever is larger
+    ns.tmp = f_ext;
+    ns.tmp *= ns.load_factor;
+    ns.tmp -= ns.r;
+    const double F_ref = std::max(std::abs(ns.load_factor) * ns.f_ext_norm, ns.tmp.l2_norm());
+
+    // contact: the active set of the iterate, the constraint rows and
+    // the geometric stiffness
+    double       phi_norm = 0;
+    unsigned int n_active = 0, n_slip = 0;
+    if (contact != nullptr)
+      phi_norm = contact_rows(ns, n_active, n_slip);
+    const double r_norm = free_norm(ns, ns.r);
+    const double merit  = std::sqrt(r_norm * r_norm + phi_norm * phi_norm);
+
+    IterationRecord iteration;
+    iteration.residual_norm     = r_norm;
+    iteration.relative_residual = F_ref > 0 ? r_norm / F_ref : 0.;
+    iteration.update_norm       = 0;
+    iteration.step_length       = 0;
+    iteration.n_active          = n_active;
+    iteration.n_slip            = n_slip;
+    iteration.contact_residual  = phi_norm;
+    const double tolerance      = std::max(parameters.residual_tolerance * F_ref, absolute_tolerance);
+    // where the stiffest body is 1e3 times the softest, the residual of
+    // the exact discrete solution evaluated in floating point can lie
+    // just above the tolerance: an iterate whose last update changed u
+    // only at round-off (1e-13 of |u|) is accepted with a residual up
+    // to 100 times the tolerance
+    const bool at_roundoff = it > 1 && ns.last_update <= 1e-13 * ns.u.l2_norm() && r_norm <= 100 * tolerance;
+    if (!moves_prescribed && (r_norm <= tolerance || at_roundoff) && phi_norm <= tolerance &&
+        (contact == nullptr || (it > 0 && ns.active == ns.previous_active)) &&
+        ns.last_update <= parameters.update_tolerance * ns.u.l2_norm())
+      {
+        ns.record.iterations.push_back(iteration);
+        ns.record.converged = true;
+        return true;
+      }
+    if (it == parameters.max_iterations)
+      {
+        ns.record.iterations.push_back(iteration);
+        fail_step(ns, "no convergence in " + std::to_string(parameters.max_iterations) + " Newton iterations" +
+             (ns.inversion.empty() ? std::string() :
+                                  " (the line search met states outside the domain of the law, the "
+                                  "last: " + ns.inversion + ")"));
+      }
+
+    newton_direction(ns, iteration, it);
+    const double alpha = line_search(ns, iteration, merit, moves_prescribed);
+    ns.last_update        = alpha * ns.du.l2_norm();
+    iteration.update_norm = ns.last_update;
+    iteration.step_length = alpha;
+    ns.record.iterations.push_back(iteration);
+    ns.u      = ns.u_trial;
+    ns.lambda = ns.lambda_trial;
+    return false;
+  }
+
+
+
+  // Step 3a: the residual and the tangent at the iterate.
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::assemble_iterate(NewtonStep &ns, const unsigned int it)
+  {
+    {
+      // (the iterate is the last converged state or an accepted trial,
+      // both evaluated before; the tangent may still fail)
+      std::string reason;
+      if (!evaluate_in_domain(
+            [&] { assembler.assemble(ns.u, ns.load_factor, ns.r, ns.update_constraints, &tangent, &ns.rhs); }, reason))
+        fail_step(ns, "the iterate of Newton iteration " + std::to_string(it) + " lies outside the domain of the law: " +
+             reason);
+      if (!all_finite(ns.r) || !all_finite(ns.rhs))
+        fail_step(ns, "the internal forces of Newton iteration " + std::to_string(it) +
+             " are not finite (|r| = " + number(ns.r.l2_norm()) +
+             "): the stresses overflow double precision. The loads, prescribed displacements or Young's "
+             "moduli are out of scale with each other or with the size of the mesh.");
+    }
+  }
+
+
+
+  // Step 3b: the active set of the iterate, the constraint rows and the
+  // geometric stiffness of the contact; returns the norm of phi.
+  template <int dim>
+  double
+  FiniteStrainSolver<dim>::contact_rows(NewtonStep &ns, unsigned int &n_active, unsigned int &n_slip)
+  {
+    ns.previous_active = ns.active;
+    double scale    = 0;
+    std::vector<double> g(ns.m, 0.);
+    for (unsigned int j = 0; j < ns.m; ++j)
+      if (!contact->is_left_out(j))
         {
-          // (the iterate is the last converged state or an accepted trial,
-          // both evaluated before; the tangent may still fail)
-          std::string reason;
-          if (!evaluate_in_domain([&] { assembler.assemble(u, load_factor, r, update_constraints, &tangent, &rhs); },
-                                  reason))
-            fail("the iterate of Newton iteration " + std::to_string(it) + " lies outside the domain of the law: " +
-                 reason);
-          if (!all_finite(r) || !all_finite(rhs))
-            fail("the internal forces of Newton iteration " + std::to_string(it) +
-                 " are not finite (|r| = " + number(r.l2_norm()) +
-                 "): the stresses overflow double precision. The loads, prescribed displacements or Young's "
-                 "moduli are out of scale with each other or with the size of the mesh.");
+          g[j]  = contact->value(j, ns.u);
+          scale = std::max({scale, std::abs(ns.lambda[j]) / ns.weight[j], ns.c * std::abs(g[j])});
         }
-        // the force scale at this iterate: the load or the internal forces
-        // (reactions included), whichever is larger
-        tmp = f_ext;
-        tmp *= load_factor;
-        tmp -= r;
-        const double F_ref = std::max(std::abs(load_factor) * f_ext_norm, tmp.l2_norm());
-
-        // contact: the active set of the iterate, the constraint rows and
-        // the geometric stiffness
-        double       phi_norm = 0;
-        unsigned int n_active = 0, n_slip = 0;
-        if (contact != nullptr)
+    // gaps below 1e-12 of the mesh size are closed: a body that only
+    // contact holds, touching with a gap of coordinate round-off
+    // and no force yet, starts supported
+    const double gap_floor = ns.c * 1e-12 * length_scale;
+    for (unsigned int j = 0; j < ns.m; ++j)
+      {
+        ns.active[j] = inactive;
+        if (contact->is_left_out(j))
+          continue;
+        if (contact->kind(j) == FiniteStrainConstraints::Kind::equality)
+          ns.active[j] = constraint;
+        else if (contact->kind(j) == FiniteStrainConstraints::Kind::unilateral)
+          ns.active[j] = (-ns.lambda[j] / ns.weight[j] - ns.c * g[j] > -1e-12 * scale - gap_floor) ? constraint : inactive;
+      }
+    // Coulomb (after the normal states): stick where the trial force
+    // lambda_t + c w s lies within the bound mu |lambda_n|, else slip
+    for (unsigned int j = 0; j < ns.m; ++j)
+      if (contact->kind(j) == FiniteStrainConstraints::Kind::friction && !contact->is_left_out(j))
+        {
+          const unsigned int i = contact->normal_of(j);
+          if (ns.active[i] == inactive)
+            continue;
+          const double bound = contact->friction_coefficient_of(j) * std::max(0., -ns.lambda[i]);
+          const double trial = ns.lambda[j] + ns.c * ns.weight[j] * g[j];
+          if (std::abs(trial) <= bound + 1e-12 * scale * ns.weight[j])
+            ns.active[j] = constraint;
+          else
+            ns.active[j] = trial > 0 ? slip_plus : slip_minus;
+        }
+    for (unsigned int j = 0; j < ns.m; ++j)
+      {
+        if (ns.active[j] == inactive)
           {
-            previous_active = active;
-            double scale    = 0;
-            std::vector<double> g(m, 0.);
-            for (unsigned int j = 0; j < m; ++j)
-              if (!contact->is_left_out(j))
-                {
-                  g[j]  = contact->value(j, u);
-                  scale = std::max({scale, std::abs(lambda[j]) / weight[j], c * std::abs(g[j])});
-                }
-            // gaps below 1e-12 of the mesh size are closed: a body that only
-            // contact holds, touching with a gap of coordinate round-off
-            // and no force yet, starts supported
-            const double gap_floor = c * 1e-12 * length_scale;
-            for (unsigned int j = 0; j < m; ++j)
-              {
-                active[j] = inactive;
-                if (contact->is_left_out(j))
-                  continue;
-                if (contact->kind(j) == FiniteStrainConstraints::Kind::equality)
-                  active[j] = constraint;
-                else if (contact->kind(j) == FiniteStrainConstraints::Kind::unilateral)
-                  active[j] = (-lambda[j] / weight[j] - c * g[j] > -1e-12 * scale - gap_floor) ? constraint : inactive;
-              }
-            // Coulomb (after the normal states): stick where the trial force
-            // lambda_t + c w s lies within the bound mu |lambda_n|, else slip
-            for (unsigned int j = 0; j < m; ++j)
-              if (contact->kind(j) == FiniteStrainConstraints::Kind::friction && !contact->is_left_out(j))
-                {
-                  const unsigned int i = contact->normal_of(j);
-                  if (active[i] == inactive)
-                    continue;
-                  const double bound = contact->friction_coefficient_of(j) * std::max(0., -lambda[i]);
-                  const double trial = lambda[j] + c * weight[j] * g[j];
-                  if (std::abs(trial) <= bound + 1e-12 * scale * weight[j])
-                    active[j] = constraint;
-                  else
-                    active[j] = trial > 0 ? slip_plus : slip_minus;
-                }
-            for (unsigned int j = 0; j < m; ++j)
-              {
-                if (active[j] == inactive)
-                  {
-                    tangent.add(n + j, n + j, c * weight[j]);
-                    continue;
-                  }
-                if (contact->kind(j) != FiniteStrainConstraints::Kind::friction)
-                  ++n_active;
-                else if (active[j] != constraint)
-                  ++n_slip;
-                contact->linearize(j, u, lin, true);
-                const unsigned int                           nd = lin.dofs.size();
-                dealii::FullMatrix<double>                   M(nd + 1, nd + 1);
-                dealii::Vector<double>                       b(nd + 1);
-                std::vector<dealii::types::global_dof_index> indices = lin.dofs;
-                indices.push_back(n + j);
-                const bool slip = (active[j] != constraint);
-                for (unsigned int k = 0; k < nd; ++k)
-                  {
-                    for (unsigned int l = 0; l < nd; ++l)
-                      M(k, l) = lambda[j] * lin.hessian(k, l);
-                    M(k, nd) = lin.gradient[k];
-                    M(nd, k) = slip ? 0. : lin.gradient[k];
-                  }
-                b[nd] = slip ? 0. : -lin.value;
-                // slip: c w (lambda_t + mu sigma lambda_n) = 0 (scaled as
-                // the rows of the inactive constraints)
-                if (slip)
-                  M(nd, nd) = c * weight[j];
-                update_constraints.distribute_local_to_global(M, b, indices, tangent, rhs);
-                if (slip)
-                  {
-                    const unsigned int i     = contact->normal_of(j);
-                    const double       sigma = (active[j] == slip_plus) ? 1. : -1.;
-                    tangent.add(n + j, n + i, c * weight[j] * contact->friction_coefficient_of(j) * sigma);
-                  }
-              }
-            phi_norm = add_contact(u, lambda, r);
+            tangent.add(ns.n + j, ns.n + j, ns.c * ns.weight[j]);
+            continue;
           }
-        const double r_norm = free_norm(r);
-        const double merit  = std::sqrt(r_norm * r_norm + phi_norm * phi_norm);
-
-        IterationRecord iteration;
-        iteration.residual_norm     = r_norm;
-        iteration.relative_residual = F_ref > 0 ? r_norm / F_ref : 0.;
-        iteration.update_norm       = 0;
-        iteration.step_length       = 0;
-        iteration.n_active          = n_active;
-        iteration.n_slip            = n_slip;
-        iteration.contact_residual  = phi_norm;
-        const double tolerance      = std::max(parameters.residual_tolerance * F_ref, absolute_tolerance);
-        // where the stiffest body is 1e3 times the softest, the residual of
-        // the exact discrete solution evaluated in floating point can lie
-        // just above the tolerance: an iterate whose last update changed u
-        // only at round-off (1e-13 of |u|) is accepted with a residual up
-        // to 100 times the tolerance
-        const bool at_roundoff = it > 1 && last_update <= 1e-13 * u.l2_norm() && r_norm <= 100 * tolerance;
-        if (!moves_prescribed && (r_norm <= tolerance || at_roundoff) && phi_norm <= tolerance &&
-            (contact == nullptr || (it > 0 && active == previous_active)) &&
-            last_update <= parameters.update_tolerance * u.l2_norm())
+        if (contact->kind(j) != FiniteStrainConstraints::Kind::friction)
+          ++n_active;
+        else if (ns.active[j] != constraint)
+          ++n_slip;
+        contact->linearize(j, ns.u, ns.lin, true);
+        const unsigned int                           nd = ns.lin.dofs.size();
+        dealii::FullMatrix<double>                   M(nd + 1, nd + 1);
+        dealii::Vector<double>                       b(nd + 1);
+        std::vector<dealii::types::global_dof_index> indices = ns.lin.dofs;
+        indices.push_back(ns.n + j);
+        const bool slip = (ns.active[j] != constraint);
+        for (unsigned int k = 0; k < nd; ++k)
           {
-            record.iterations.push_back(iteration);
-            record.converged = true;
+            for (unsigned int l = 0; l < nd; ++l)
+              M(k, l) = ns.lambda[j] * ns.lin.hessian(k, l);
+            M(k, nd) = ns.lin.gradient[k];
+            M(nd, k) = slip ? 0. : ns.lin.gradient[k];
+          }
+        b[nd] = slip ? 0. : -ns.lin.value;
+        // slip: c w (lambda_t + mu sigma lambda_n) = 0 (scaled as
+        // the rows of the inactive constraints)
+        if (slip)
+          M(nd, nd) = ns.c * ns.weight[j];
+        ns.update_constraints.distribute_local_to_global(M, b, indices, tangent, ns.rhs);
+        if (slip)
+          {
+            const unsigned int i     = contact->normal_of(j);
+            const double       sigma = (ns.active[j] == slip_plus) ? 1. : -1.;
+            tangent.add(ns.n + j, ns.n + i, ns.c * ns.weight[j] * contact->friction_coefficient_of(j) * sigma);
+          }
+      }
+    return contact_residual(ns, ns.u, ns.lambda, ns.r);
+  }
+
+
+
+  // Step 3c: the Newton direction and the new multipliers.
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::newton_direction(NewtonStep &ns, IterationRecord &iteration, const unsigned int it)
+  {
+    // the Newton direction (and the new multipliers)
+    dealii::SparseDirectUMFPACK direct;
+    direct.initialize(tangent);
+    ns.x.reinit(ns.n + ns.m);
+    direct.vmult(ns.x, ns.rhs);
+    ns.update_constraints.distribute(ns.x);
+    if (!all_finite(ns.x))
+      {
+        ns.record.iterations.push_back(iteration);
+        fail_step(ns, "the Newton update of iteration " + std::to_string(it) +
+             " is not finite (the linear solve of the tangent gave |du| = " + number(ns.x.l2_norm()) +
+             "): the tangent is singular or its entries are out of the range of double precision "
+             "(Young's moduli, loads and mesh size far apart in scale).");
+      }
+    ns.du.reinit(ns.n);
+    for (unsigned int i = 0; i < ns.n; ++i)
+      ns.du[i] = ns.x[i];
+    ns.lambda_new.reinit(ns.m);
+    for (unsigned int j = 0; j < ns.m; ++j)
+      ns.lambda_new[j] = (ns.active[j] != inactive) ? ns.x[ns.n + j] : 0.;
+  }
+
+
+
+  // Step 3d: the line search along the Newton direction; returns the step
+  // length of the accepted trial state (ns.u_trial, ns.lambda_trial).
+  template <int dim>
+  double
+  FiniteStrainSolver<dim>::line_search(NewtonStep &ns, IterationRecord &iteration, const double merit, const bool moves_prescribed)
+  {
+    // backtracking: halve alpha while the trial leaves the domain of the
+    // element or the law (an inverted cell, det F <= 0, no plane-stress
+    // state), gives a non-finite residual, or (for an update that keeps
+    // the prescribed DoFs) does not decrease the merit (the free
+    // residual, with contact also phi) enough
+    double      alpha       = 1;
+    bool        accepted    = false;
+    std::string last_failure;
+    const auto  try_step = [&](const double a) {
+      ns.u_trial = ns.u;
+      ns.u_trial.add(a, ns.du);
+      ns.lambda_trial = ns.lambda;
+      if (ns.m > 0) // (deal.II's debug mode refuses sadd() on empty vectors)
+        ns.lambda_trial.sadd(1. - a, a, ns.lambda_new);
+      assembler.assemble(ns.u_trial, ns.load_factor, ns.r_trial, ns.update_constraints, nullptr, nullptr);
+      const double phi = (contact != nullptr) ? contact_residual(ns, ns.u_trial, ns.lambda_trial, ns.r_trial) : 0.;
+      const double rn  = free_norm(ns, ns.r_trial);
+      return std::sqrt(rn * rn + phi * phi);
+    };
+    for (unsigned int h = 0; h <= parameters.max_line_search_halvings; ++h, alpha *= 0.5)
+      {
+        double trial_merit = 0;
+        if (!evaluate_in_domain([&] { trial_merit = try_step(alpha); }, last_failure))
+          {
+            ns.inversion = last_failure;
+            continue;
+          }
+        if (!std::isfinite(trial_merit))
+          {
+            last_failure = "the residual of the trial state is not finite";
+            continue;
+          }
+        if (!parameters.line_search || moves_prescribed || trial_merit <= (1. - 1e-4 * alpha) * merit)
+          {
+            accepted = true;
             break;
           }
-        if (it == parameters.max_iterations)
-          {
-            record.iterations.push_back(iteration);
-            fail("no convergence in " + std::to_string(parameters.max_iterations) + " Newton iterations" +
-                 (inversion.empty() ? std::string() :
-                                      " (the line search met states outside the domain of the law, the "
-                                      "last: " + inversion + ")"));
-          }
-
-        // the Newton direction (and the new multipliers)
-        dealii::SparseDirectUMFPACK direct;
-        direct.initialize(tangent);
-        x.reinit(n + m);
-        direct.vmult(x, rhs);
-        update_constraints.distribute(x);
-        if (!all_finite(x))
-          {
-            record.iterations.push_back(iteration);
-            fail("the Newton update of iteration " + std::to_string(it) +
-                 " is not finite (the linear solve of the tangent gave |du| = " + number(x.l2_norm()) +
-                 "): the tangent is singular or its entries are out of the range of double precision "
-                 "(Young's moduli, loads and mesh size far apart in scale).");
-          }
-        du.reinit(n);
-        for (unsigned int i = 0; i < n; ++i)
-          du[i] = x[i];
-        lambda_new.reinit(m);
-        for (unsigned int j = 0; j < m; ++j)
-          lambda_new[j] = (active[j] != inactive) ? x[n + j] : 0.;
-
-        // backtracking: halve alpha while the trial leaves the domain of the
-        // element or the law (an inverted cell, det F <= 0, no plane-stress
-        // state), gives a non-finite residual, or (for an update that keeps
-        // the prescribed DoFs) does not decrease the merit (the free
-        // residual, with contact also phi) enough
-        double      alpha       = 1;
-        bool        accepted    = false;
-        std::string last_failure;
-        const auto  try_step = [&](const double a) {
-          u_trial = u;
-          u_trial.add(a, du);
-          lambda_trial = lambda;
-          if (m > 0) // (deal.II's debug mode refuses sadd() on empty vectors)
-            lambda_trial.sadd(1. - a, a, lambda_new);
-          assembler.assemble(u_trial, load_factor, r_trial, update_constraints, nullptr, nullptr);
-          const double phi = (contact != nullptr) ? add_contact(u_trial, lambda_trial, r_trial) : 0.;
-          const double rn  = free_norm(r_trial);
-          return std::sqrt(rn * rn + phi * phi);
-        };
-        for (unsigned int h = 0; h <= parameters.max_line_search_halvings; ++h, alpha *= 0.5)
-          {
-            double trial_merit = 0;
-            if (!evaluate_in_domain([&] { trial_merit = try_step(alpha); }, last_failure))
-              {
-                inversion = last_failure;
-                continue;
-              }
-            if (!std::isfinite(trial_merit))
-              {
-                last_failure = "the residual of the trial state is not finite";
-                continue;
-              }
-            if (!parameters.line_search || moves_prescribed || trial_merit <= (1. - 1e-4 * alpha) * merit)
-              {
-                accepted = true;
-                break;
-              }
-            last_failure = "no sufficient decrease of the residual";
-          }
-        if (!accepted)
-          {
-            // no decrease found (e.g. a residual at round-off): take the full
-            // step if it inverts nothing
-            alpha = 1;
-            double trial_merit = 0;
-            if (!evaluate_in_domain([&] { trial_merit = try_step(1.); }, last_failure))
-              inversion = last_failure;
-            else if (std::isfinite(trial_merit))
-              accepted = true;
-          }
-        if (!accepted)
-          {
-            iteration.update_norm = du.l2_norm();
-            record.iterations.push_back(iteration);
-            fail("every step length of the line search, down to 2^-" +
-                 std::to_string(parameters.max_line_search_halvings) +
-                 ", leaves the domain of the element or the law or gives a non-finite residual; the last: " +
-                 last_failure);
-          }
-        last_update           = alpha * du.l2_norm();
-        iteration.update_norm = last_update;
-        iteration.step_length = alpha;
-        record.iterations.push_back(iteration);
-        u      = u_trial;
-        lambda = lambda_trial;
+        last_failure = "no sufficient decrease of the residual";
       }
+    if (!accepted)
+      {
+        // no decrease found (e.g. a residual at round-off): take the full
+        // step if it inverts nothing
+        alpha = 1;
+        double trial_merit = 0;
+        if (!evaluate_in_domain([&] { trial_merit = try_step(1.); }, last_failure))
+          ns.inversion = last_failure;
+        else if (std::isfinite(trial_merit))
+          accepted = true;
+      }
+    if (!accepted)
+      {
+        iteration.update_norm = ns.du.l2_norm();
+        ns.record.iterations.push_back(iteration);
+        fail_step(ns, "every step length of the line search, down to 2^-" +
+             std::to_string(parameters.max_line_search_halvings) +
+             ", leaves the domain of the element or the law or gives a non-finite residual; the last: " +
+             last_failure);
+      }
+    return alpha;
+  }
 
+
+
+  // Step 4: the pairs whose gap the displacement constraints fix.
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::check_fixed_pairs(NewtonStep &ns)
+  {
     // pairs whose gap the displacement constraints fix: the prescribed
     // motion must not make them penetrate (or, tied, move apart)
     if (contact != nullptr && parameters.check_fixed_pairs)
-      for (unsigned int j = 0; j < m; ++j)
+      for (unsigned int j = 0; j < ns.m; ++j)
         {
           const auto kind = contact->kind(j);
           // (the slip of Coulomb friction may be anything)
           if (!contact->is_prescribed(j) || kind == FiniteStrainConstraints::Kind::friction)
             continue;
-          const double g = contact->value(j, u);
+          const double g = contact->value(j, ns.u);
           if ((kind == FiniteStrainConstraints::Kind::equality && std::abs(g) > 1e-10 * length_scale) ||
               (kind == FiniteStrainConstraints::Kind::unilateral && g < -1e-10 * length_scale))
-            fail("the displacement constraints fix both nodes of " + contact->describe(j) + ", and they make its " +
+            fail_step(ns, "the displacement constraints fix both nodes of " + contact->describe(j) + ", and they make its " +
                  "constraint " + std::to_string(j) + " " +
                  (kind == FiniteStrainConstraints::Kind::equality ? "fail (value " : "penetrate (gap ") + number(g) +
                  "): the prescribed motions of the two bodies contradict the contact.");
         }
+  }
+
+
+
+  // Step 5: the converged state becomes the last one.
+  template <int dim>
+  void
+  FiniteStrainSolver<dim>::accept_step(NewtonStep &ns)
+  {
     previous_solution    = solution;
     previous_multipliers = multipliers;
     previous_load_factor = current_load_factor;
     previous_step        = current_step;
-    solution             = u;
-    multipliers          = lambda;
-    current_load_factor  = load_factor;
-    current_step         = step;
+    solution             = ns.u;
+    multipliers          = ns.lambda;
+    current_load_factor  = ns.load_factor;
+    current_step         = ns.step;
     ++n_converged;
-    history.push_back(record);
+    history.push_back(ns.record);
   }
 
 

@@ -17,11 +17,7 @@
 #include <dealvem/elasticity/material_library.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 
-#include <array>
-#include <cstdint>
 #include <functional>
-#include <limits>
-#include <map>
 #include <memory>
 #include <set>
 #include <vector>
@@ -462,10 +458,7 @@ namespace dealvem
 
     /// The original mesh $M_0$.
     const PolygonalMesh<2> &
-    get_original_mesh() const
-    {
-      return original;
-    }
+    get_original_mesh() const;
 
     /// The DoF handler of the last step's mesh.
     const VEMDoFHandler<2> &
@@ -487,29 +480,20 @@ namespace dealvem
     /// The interfaces of the last pairing (pairs in the current
     /// configuration of the start of the last step).
     const std::vector<NodeInsertion::Interface> &
-    get_interfaces() const
-    {
-      return interfaces;
-    }
+    get_interfaces() const;
 
     /// The interfaces the results report (StepRecord::normal_force and
     /// friction_force have one entry each): those given to the
     /// constructor, then, with Parameters::detection, every pair of bodies
     /// that have candidate edges.
     const std::vector<ReportedInterface> &
-    get_reported_interfaces() const
-    {
-      return reported;
-    }
+    get_reported_interfaces() const;
 
     /// The reported interface of a pair of the last step
     /// (ContactNodePair::interface of get_contact()'s pairs indexes the
     /// interfaces of the last pass, get_interfaces()).
     unsigned int
-    reported_interface(const unsigned int pair_interface) const
-    {
-      return pass_interfaces.at(pair_interface).reported;
-    }
+    reported_interface(const unsigned int pair_interface) const;
 
     /// +1 where the slave side of the interface @p pair_interface of the
     /// last pass is the side the results report the force on (the slave of
@@ -518,18 +502,11 @@ namespace dealvem
     /// detected pair of bodies keep their sign when the detection makes
     /// the other side the master.
     double
-    reported_sign(const unsigned int pair_interface) const
-    {
-      const auto &p = pass_interfaces.at(pair_interface);
-      return reported.at(p.reported).detected && p.slave_body != reported.at(p.reported).body_b ? -1. : 1.;
-    }
+    reported_sign(const unsigned int pair_interface) const;
 
     /// One record per converged step.
     const std::vector<StepRecord> &
-    get_history() const
-    {
-      return history;
-    }
+    get_history() const;
 
     /// The energy stored in the bodies at the last converged step
     /// (FiniteStrainAssembler::strain_energy() on the step's mesh; the
@@ -573,225 +550,11 @@ namespace dealvem
     get_constraints() const;
 
   private:
-    /// A mesh with its DoF handler (the handler refers to the mesh).
-    struct Discretization
-    {
-      std::unique_ptr<PolygonalMesh<2>> mesh;
-      std::unique_ptr<VEMDoFHandler<2>> dof_handler;
-      ~Discretization();
-    };
-
-    /// Pair in the configuration @p u_pair (on the current mesh), make the
-    /// new mesh and DoF handler, transfer the states, build the contact
-    /// and the solver. @p first_pass: the step starts from the last
-    /// converged state (else from @p u_pair at the step's own load factor).
-    void
-    prepare_pass(const double time, const double load_factor, const unsigned int step, const bool first_pass,
-                 StepRecord &record);
-
-    /// The state expected at the step's end from the last two converged
-    /// states @p u1 and @p u0 (on @p disc) and the ratio @p s of the new
-    /// step's length to the last one's: per piece of the mesh, its rigid
-    /// motion (rotation about its centroid and translation) continued as a
-    /// rigid motion, the rest linearly.
-    dealii::Vector<double>
-    extrapolate(const Discretization &disc, const dealii::Vector<double> &u1, const dealii::Vector<double> &u0,
-                const double s) const;
-
-    /// Before the first Newton solve of a step: throw, naming the motion,
-    /// where a rigid-body motion of a piece of the bodies is held neither
-    /// by the displacement constraints nor by a contact pair closed where
-    /// the step starts (a multiplier from the last step, or no gap), as
-    /// RigidBodySupport checks at small strain. Cutting the step back does
-    /// not help, so the error ends solve_step() at once.
-    void
-    check_support(const unsigned int step, const double time) const;
-
-    /// The values of the states @p u (on @p from) at the nodes of @p to.
-    dealii::Vector<double>
-    transfer(const Discretization &from, const dealii::Vector<double> &u, const Discretization &to) const;
-
-    /// The tangential offsets and the slip of the pairs at the solution
-    /// (StepRecord::pairing_offset, max_slip) and the forces.
-    void
-    evaluate(StepRecord &record) const;
-
-    PolygonalMesh<2>           original;
-    MaterialLibrary<2>         laws;
-    std::vector<InterfaceData> interface_data;
-    std::vector<ReportedInterface> reported;
-
-    /// An interface of a pass: its ids, its friction and its reported
-    /// interface.
-    struct PassInterface
-    {
-      dealii::types::boundary_id master_id = 0, slave_id = 0;
-      double                     friction_coefficient = 0;
-      unsigned int               reported             = 0;
-      /// The body (material id) of the master side of a detected one.
-      unsigned int master_body = 0;
-      /// The body of its slave side.
-      unsigned int slave_body = 0;
-    };
-    /// The interfaces of the current pass (those of `interfaces`).
-    std::vector<PassInterface> pass_interfaces;
-    /// With Parameters::detection: the body each edge of $M_0$ faced on an
-    /// interface of the current pass (numbers::invalid_unsigned_int: none).
-    std::vector<unsigned int> pass_partner;
-    /// Whether the detection itself put each edge of $M_0$ on its
-    /// interface in the current pass (else a side grew over it).
-    std::vector<bool> pass_detected;
-    /// With Parameters::detection: the interfaces of the first pass of the
-    /// current step, the ids they give to the edges of $M_0$ and their
-    /// sides, which the later passes keep (the decisions of a step only
-    /// change where a pass leaves an edge uncovered: StepRecord::
-    /// n_uncovered; then the next pass detects again, redetect).
-    std::vector<PassInterface>              step_pass;
-    std::vector<dealii::types::boundary_id> step_labels;
-    std::vector<bool>                       step_detected;
-    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> step_sides;
-    bool                                    redetect = false;
-    /// The sides of the given interfaces (original vertices).
-    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> given_sides;
-    /// The interfaces of a pass with the original vertices at @p x: the
-    /// given ones, then those ContactDetection finds among the candidate
-    /// edges (Parameters::detection); @p edge_ids receives the boundary id
-    /// of each edge of $M_0$ there, @p sides the vertices of each side.
-    std::vector<PassInterface>
-    pass_interfaces_at(const std::vector<dealii::Point<2>> &x,
-                       std::vector<dealii::types::boundary_id> &edge_ids_there,
-                       std::vector<bool>                       &detected_there,
-                       std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> &sides) const;
-    /// ContactDetection on @p there (a copy of $M_0$ with moved vertices)
-    /// among the candidate edges, without splits, at @p distance_factor
-    /// times the detection distance.
-    ContactDetection::Result
-    detect_candidates(PolygonalMesh<2> &there, const double distance_factor) const;
-    /// With Parameters::detection: the candidate edges of $M_0$ that face
-    /// another body at the converged state of the pass (within half the
-    /// detection distance) but lay on no interface of the pass.
-    unsigned int
-    uncovered_edges() const;
-    Parameters                 parameters;
-    ConstraintsFunction        constraints_function;
-    LoadsFunction              loads_function;
-    std::function<double(double)> load_factor_function;
-
-    /// The original edges of the interfaces: (a, b, cell) of $M_0$.
-    std::vector<std::array<unsigned int, 3>> interface_edges;
-    /// The neighbours of each vertex of an interface along its side (one
-    /// or two vertices of $M_0$).
-    std::map<unsigned int, std::vector<unsigned int>> side_neighbours;
-    /// The boundary id of each original interface edge (by its vertices).
-    std::map<std::uint64_t, dealii::types::boundary_id> edge_ids;
-    /// The signed curvature (convex > 0) of the arc each original interface
-    /// edge is taken to follow in the reference configuration
-    /// (NodeInsertion::edge_curvatures(): 0 on straight parts and at
-    /// corners), by its vertices.
-    std::map<std::uint64_t, double> arc_kappa;
-
-    /// The point of the reference curve of the original interface edge
-    /// (@p a, @p b) (its arc, or its chord where it is straight) whose foot
-    /// on the chord has the chord parameter @p s; (a, b) in the order of
-    /// the edge's vertices (interface_edges).
-    dealii::Point<2>
-    reference_point(const unsigned int a, const unsigned int b, const double s) const;
-    /// The vertices of $M_0$ inside a straight run of one interface side
-    /// (two collinear edges of one boundary id): their material points may
-    /// move along the side (see prepare_pass()).
-    std::set<unsigned int> movable;
-    /// The original vertices of the master and the slave side of each
-    /// interface of the pass being made.
-    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>> interface_sides;
-
-    /// The neighbours of the vertex @p v along its side (with detection,
-    /// those on a side of the pass, where there are any).
-    std::vector<unsigned int>
-    neighbours_on_sides(const unsigned int v) const;
-    /// neighbours_on_sides() of every vertex of side_neighbours.
-    std::map<unsigned int, std::vector<unsigned int>>
-    neighbours_along_sides() const;
-    /// Move each vertex of a straight side that faces a vertex of the other
-    /// side within 0.05 of the local edge length along the sides onto the
-    /// normal of the other side through that vertex, in the positions @p x
-    /// where the pairs are made.
-    void
-    snap_close_vertices(std::vector<dealii::Point<2>> &x);
-    /// The pairs (vertex, vertex of the other side) snap_close_vertices()
-    /// made in a pass of the current step.
-    std::set<std::pair<unsigned int, unsigned int>> step_snaps;
-
-    /// The pairs of two original vertices (master, slave) merged in a pass
-    /// of the current step (they stay merged, see prepare_pass()).
-    std::set<std::pair<unsigned int, unsigned int>> step_merges;
-
-    /// The original vertices that had a partner in a pass of the current
-    /// step (NodeInsertion::Settings::keep_facing of the later passes).
-    std::set<unsigned int> step_paired;
-
-    /// Whether the residual of the pairing passes grew in the current step
-    /// (the vertices moved along their sides then take half updates, see
-    /// relaxed_pairing_state()).
-    bool step_damped = false;
-
-    /// The discretization of the current pass and that of the start of the
-    /// step (the last converged step's; null before the first step).
-    std::unique_ptr<Discretization>           current, start;
-    std::unique_ptr<FiniteStrainAssembler<2>> assembler;
-    std::unique_ptr<FiniteStrainContact>      contact;
-    std::unique_ptr<FiniteStrainSolver<2>>    solver;
-    std::vector<NodeInsertion::Interface>     interfaces;
-    dealii::AffineConstraints<double>         constraints;
-
-    /// On the current discretization: the state of the last pass (the last
-    /// converged step after a step).
-    dealii::Vector<double> solution, multipliers;
-    /// On the start discretization: the last two converged steps (the
-    /// second for the extrapolation; empty before two steps).
-    dealii::Vector<double> start_solution, start_previous_solution, start_multipliers;
-    /// Whether the last solve_step() failed (the start of the step stays).
-    bool last_failed = false;
-    /// The discretization of the first pass of the step that made its pairs
-    /// where the step is expected to end (an extrapolation, or the end of
-    /// a pass), and that configuration: where the contacts that begin
-    /// within the step are taken to begin (FiniteStrainContact::Options::
-    /// contact_origin).
-    std::unique_ptr<Discretization> first_pass_disc;
-    dealii::Vector<double>          first_pass_pairing;
-    /// The configuration where the pairs of the current pass were made (on
-    /// the current discretization).
-    dealii::Vector<double> pairing_base;
-    /// The acceleration of the pairing passes of a step (Anderson): the
-    /// displacements of the interface vertices where the last passes made
-    /// their pairs, and their changes to the converged states.
-    std::vector<std::vector<double>> anderson_x, anderson_r;
-    /// The vertices moved along their sides in the pass of that history.
-    std::set<unsigned int> anderson_moved;
-    /// With detection: the vertices on the sides of the interfaces of that
-    /// history (the history starts again when they change).
-    std::set<unsigned int> anderson_on_side;
-
-    /// The configuration where the next pass of a step makes its pairs: the
-    /// Anderson extrapolation of the last passes' pairing positions and
-    /// converged states at the interface vertices (see the implementation).
-    dealii::Vector<double>
-    relaxed_pairing_state();
-    /// One attempt at the step from t_start to time, cut in halves where
-    /// it fails (Parameters::max_cutbacks); adds its sub-steps to total.
-    void
-    solve_with_cutbacks(const unsigned int step,
-                        const double       t_start,
-                        const double       time,
-                        const unsigned int depth,
-                        StepRecord        &total);
-    /// One increment to @p time from the last converged state (pairing
-    /// passes and Newton solves); throws where it fails.
-    void
-    solve_increment(const unsigned int step, const double time, StepRecord &record);
-    double                 last_time = 0, previous_time = 0;
-    double                 last_load_factor = 0, previous_load_factor = 0;
-    unsigned int           last_step = 0, previous_step = 0, n_converged = 0;
-    std::vector<StepRecord> history;
+    /// The state of the runs and the steps of the algorithm
+    /// (source/contact/finite_sliding_impl.h).
+    class Impl;
+    /// The state (one object per FiniteSliding).
+    std::unique_ptr<Impl> impl;
   };
 } // namespace dealvem
 

@@ -347,6 +347,41 @@ namespace dealvem
     void
     attempt_step(const unsigned int step, const double load_factor, const bool extrapolate);
 
+    /// The state of one attempt at a step, handed between its stages
+    /// (defined in the source file).
+    struct NewtonStep;
+    /// The stages of attempt_step(), in their order (see the source file).
+    void
+    start_attempt(NewtonStep &ns);
+    void
+    check_data_scale(NewtonStep &ns) const;
+    void
+    extrapolate_first_iterate(NewtonStep &ns);
+    bool
+    newton_iteration(NewtonStep &ns, const unsigned int it);
+    void
+    assemble_iterate(NewtonStep &ns, const unsigned int it);
+    double
+    contact_rows(NewtonStep &ns, unsigned int &n_active, unsigned int &n_slip);
+    void
+    newton_direction(NewtonStep &ns, IterationRecord &iteration, const unsigned int it);
+    double
+    line_search(NewtonStep &ns, IterationRecord &iteration, const double merit, const bool moves_prescribed);
+    void
+    check_fixed_pairs(NewtonStep &ns);
+    void
+    accept_step(NewtonStep &ns);
+    /// The norm of the free part of a residual, and the contact part of the
+    /// residual (returns the norm of the complementarity residual).
+    double
+    free_norm(NewtonStep &ns, const dealii::Vector<double> &residual) const;
+    double
+    contact_residual(NewtonStep &ns, const dealii::Vector<double> &u_at, const dealii::Vector<double> &lambda_at,
+                     dealii::Vector<double> &residual) const;
+    /// A failed step: its record goes to the history, and it throws.
+    void
+    fail_step(NewtonStep &ns, const std::string &reason);
+
     FiniteStrainAssembler<dim>       &assembler;
     dealii::AffineConstraints<double> constraints;
     /// The constraints with zero inhomogeneities: for the free residual.
