@@ -706,6 +706,17 @@ namespace dealvem
     solve(const unsigned int step, const double time);
     void
     process_step(const unsigned int step, const double time);
+    /// The steps of process_step(), in its order.
+    void
+    store_solve_results();
+    StepResult
+    make_pair_results(const unsigned int step, const double time, const std::vector<double> &tangential_force);
+    void
+    make_interface_resultants(StepResult &step_result) const;
+    void
+    check_step_finite(const unsigned int step, const double time, const StepResult &step_result) const;
+    void
+    print_step(const unsigned int step, const double time, const StepResult &step_result) const;
     void
     verify_step(const unsigned int         step,
                 const double               time,
@@ -781,6 +792,12 @@ namespace dealvem
     /// cycle (defined in the .cc file); declared after @p results so that it
     /// is destroyed before the mesh it refers to.
     struct CycleData;
+    /// The steps of parse_parameters(), one per part of the parameter file
+    /// (defined in the .cc file).
+    struct ParameterReader;
+    /// The steps of run_finite_sliding() and their state (defined in the
+    /// .cc file).
+    struct FiniteSlidingRun;
     std::unique_ptr<CycleData> data;
   };
 } // namespace dealvem
