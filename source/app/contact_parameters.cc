@@ -12,6 +12,212 @@ namespace dealvem
 
 
 
+  namespace
+  {
+    // The material entries of body 0 that only contact problems read, and
+    // the sections 'Body 1' to 'Body n_body_sections - 1'.
+    void
+    declare_body_sections(dealii::ParameterHandler &prm, const unsigned int n_body_sections)
+    {
+      using namespace dealii::Patterns;
+      const std::string part_materials_doc =
+        "With 'Mesh/Parts as bodies': the materials of the parts, 'material id : E : nu; ...' (the "
+        "ids of the mesh file), or 'material id : E : nu : name' with a material name for 'Contact/Friction "
+        "between materials'; parts not listed take this section's Young's modulus, Poisson's ratio and name.";
+      const std::string material_name_doc =
+        "A name of this body's material (letters, digits, '_', '-', '.'), for 'Contact/Friction between "
+        "materials'. Empty: none.";
+      prm.enter_subsection("Material");
+      prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
+      prm.declare_entry("Name", "", Anything(), material_name_doc);
+      prm.leave_subsection();
+      for (unsigned int b = 1; b < std::max(n_body_sections, 2u); ++b)
+        {
+          prm.enter_subsection("Body " + std::to_string(b));
+          prm.enter_subsection("Mesh");
+          MeshParameters::declare_parameters(prm);
+          prm.leave_subsection();
+          prm.enter_subsection("Material");
+          prm.declare_entry("Young's modulus", "1000", Double(0), "Young's modulus E (> 0).");
+          prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
+                            "Poisson's ratio nu, -1 < nu < 0.5.");
+          prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
+          prm.declare_entry("Name", "", Anything(), material_name_doc);
+          prm.leave_subsection();
+          prm.enter_subsection("Exact solution");
+          prm.declare_entry("Displacement", "", Anything(),
+                            "Exact displacement 'ux, uy' of this body (muparser in x, y, t with the "
+                            "function constants), compared with the solution of the last load step at "
+                            "t = 'Load steps/Final time' (1 by default). Empty: the top-level 'Exact "
+                            "solution' applies to this body too.");
+          prm.leave_subsection();
+          prm.leave_subsection();
+        }
+    }
+
+    // The section 'Contact'.
+    void
+    declare_contact_section(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.enter_subsection("Contact");
+      prm.declare_entry("Pairs", "", Anything(),
+                        "Contact interfaces 'master id : slave id; ...': boundary parts of two "
+                        "different bodies. The master side gives the normal. With Coulomb friction an "
+                        "entry may give its own friction coefficient: 'master id : slave id : mu'. The "
+                        "entry 'auto' adds the interfaces found by contact detection: boundary edges of "
+                        "different bodies that face each other (normals opposite within 'Detection "
+                        "angle', apart by at most 'Detection distance' times the edge length), except "
+                        "those whose ids carry boundary conditions or explicit pairs; the coarser side "
+                        "is the master. The list is printed; <base name>-resultants.csv gives each interface's bodies, "
+                        "ids, length and contact force. With finite sliding ('Finite strain/Enabled = true') "
+                        "the detection runs in the current configuration at every pairing pass, so contacts "
+                        "that open and close anywhere on the free boundary are found, and the results sum "
+                        "the detected interfaces of each pair of bodies.");
+      prm.declare_entry("Detection distance", "0.5", Double(0, 10),
+                        "Pairs = auto: largest distance (gap or overlap) between facing boundary edges, "
+                        "relative to the longer of the two edges.");
+      prm.declare_entry("Detection angle", "45", Double(1, 89),
+                        "Pairs = auto: largest deviation (degrees) of the outward normals of facing "
+                        "edges from opposite.");
+      prm.declare_entry("Friction between bodies", "", Anything(),
+                        "Coulomb friction coefficients by pairs of bodies, 'body a : body b : mu; ...' "
+                        "(body indices, '*' for any body; a pair of bodies beats a '*' entry, a later "
+                        "entry an earlier one). They apply to detected interfaces and to pairs that give "
+                        "no coefficient of their own; others take 'Friction coefficient'.");
+      prm.declare_entry("Friction between materials", "", Anything(),
+                        "Coulomb friction coefficients by pairs of materials, 'name a : name b : mu; ...' "
+                        "(the names of 'Material/Name' or of 'Part materials', '*' for any material). "
+                        "They apply where 'Friction between bodies' gives nothing; a pair of names beats a "
+                        "'*' entry, a later entry an earlier one.");
+      prm.declare_entry("Normal", "unilateral", Selection("tied|unilateral"),
+                        "tied: g = 0 at every pair (bilateral); unilateral: g >= 0, pressure >= 0, "
+                        "complementarity, by a primal-dual active set.");
+      prm.declare_entry("Tangential", "penalty",
+                        Selection("frictionless|penalty|multipliers|coulomb|coulomb penalty"),
+                        "frictionless; stick by a penalty (see 'Penalty'); stick by Lagrange "
+                        "multipliers (exactly tied); Coulomb friction with exact stick by multipliers "
+                        "(coulomb) or regularised by the penalty (coulomb penalty): each pair is open, "
+                        "sticking or slipping, |tangential traction| <= mu * pressure, solved by a "
+                        "semismooth Newton (active set) method per load step.");
+      prm.declare_entry("Friction coefficient", "0", Double(),
+                        "Coulomb friction coefficient mu >= 0 of the contact pairs that do not give "
+                        "their own in 'Pairs' (only with 'Tangential = coulomb' or 'coulomb penalty').");
+      prm.declare_entry("Penalty", "0", Double(0),
+                        "Tangential stick penalty (stiffness per length and slip, units of E/h). "
+                        "0 selects the default rule 'Penalty factor' * E_min / h_min, with E_min the "
+                        "smallest Young's modulus and h_min the shortest interface sub-edge.");
+      prm.declare_entry("Penalty factor", "1000", Double(0), "Factor of the default penalty rule.");
+      prm.declare_entry("Merge fraction", "0.05", Double(1e-6, 0.49),
+                        "Node insertion: a node whose closest point on the other side lies closer "
+                        "than this times the local edge length to a node of that side is paired with "
+                        "it (the two are merged) instead of splitting the edge: no sub-edge shorter "
+                        "than this fraction is created.");
+      prm.declare_entry("Search distance", "0.25", Double(0),
+                        "Node insertion: largest distance between a node and its partner, relative to "
+                        "the size of the interface (the diagonal of the bounding box of both contact "
+                        "parts). Nodes inside the overlap but farther apart are reported.");
+      prm.declare_entry("Coordinate precision", "auto", Anything(),
+                        "Node insertion: precision of the mesh coordinates; a gap within it is round-off "
+                        "of the mesh files and is closed. 'auto': each contact part's own, the decimal "
+                        "grid its coordinates were written on (a file with six significant digits: a "
+                        "unit of the sixth digit; none for coordinates computed in double precision, for "
+                        "all short binary fractions such as 0.125, and for a grid coarser than 1/100 of "
+                        "the part's shortest edge, a lattice the vertices were placed on), a gap within half the two parts' "
+                        "grids being closed. A number in [0, 0.01) replaces the detection, for data "
+                        "rounded more coarsely than written (coordinates exported in double from a "
+                        "six-digit CAD model): the coordinates are rounded to at most this times the size "
+                        "of the interface (the diagonal of the bounding box of both contact parts); 0 "
+                        "takes them as exact. Double round-off is always allowed for. No tolerance "
+                        "depends on where the model lies.");
+      prm.declare_entry("Close discretisation gaps", "true", Bool(),
+                        "Node insertion: close the gaps between an inserted node and its partner that "
+                        "come from two polygons approximating the same curve (below 1.5 times the "
+                        "chord deviation of the edge, or below the coordinate precision), by moving "
+                        "the inserted node onto its partner. Larger gaps (bodies apart, or surfaces of "
+                        "different curvature as in Hertz contact) are kept. false keeps every gap.");
+      prm.declare_entry("Pairing tolerance", "1e-8", Double(1e-14, 0.1),
+                        "Finite strain ('Finite strain/Enabled = true', finite sliding): the pairs are made again "
+                        "at the converged state of each step until the partners of every active pair are closer "
+                        "than this fraction of the slave sub-edges at the pair.");
+      prm.declare_entry("Maximum pairing passes", "12", Integer(1, 1000),
+                        "Finite strain (finite sliding): at most this many passes (pairing and Newton solve) per "
+                        "load step; a step that does not meet 'Pairing tolerance' then stops the program with the "
+                        "offset of every pass.");
+      prm.declare_entry("Maximum cutbacks", "4", Integer(0, 20),
+                        "Finite strain (finite sliding): a load step whose Newton solve or pairing passes fail is "
+                        "solved again from its start as two half steps, each cut again if it fails, down to "
+                        "2^-(this) of the step; then the program stops naming the sub-step. 0: stop at once.");
+      prm.declare_entry("Maximum active set iterations", "50", Integer(1),
+                        "Iteration limit of the active set (per load step; with Coulomb friction, of the "
+                        "semismooth Newton iteration over open/stick/slip).");
+      prm.declare_entry("Active set acceleration", "true", Bool(),
+                        "Correct the primal-dual active-set update where it crawls: a step that more than "
+                        "doubles the set adds the deeper half of the penetrating pairs; a releasing step "
+                        "also releases, next to each run of released pairs, the active pairs over the run's "
+                        "length, until such a pair penetrates again. The solution is the same; false runs "
+                        "the plain update.");
+      prm.declare_entry("Globalized solve", "true", Bool(),
+                        "Unilateral contact without Coulomb friction: when the active set cycles, reaches its "
+                        "iteration limit or holds no equilibrium, solve again with the primal active-set method, "
+                        "which converges whenever a solution exists and otherwise stops with 'No static "
+                        "equilibrium' and the collapse mechanism that proves it (printed, and written as "
+                        "<prefix>-mechanism.vtu and .svg). false: the active set's failure is the answer.");
+      prm.leave_subsection();
+    }
+
+    // The contact problems' entries of 'Load steps' and 'Output'.
+    void
+    declare_steps_and_output(dealii::ParameterHandler &prm)
+    {
+      using namespace dealii::Patterns;
+      prm.enter_subsection("Load steps");
+      prm.declare_entry("Number of steps", "1", Integer(),
+                        "Contact problems: number of quasi-static load steps. Step k solves at the time "
+                        "t = k * 'Final time' / 'Number of steps' of the load and Dirichlet expressions; "
+                        "Coulomb friction measures the slip against the previous step. With more than one "
+                        "step every step writes its VTU and CSV files (base name + '-step-NNN') and a "
+                        "ParaView time series (base name + '.pvd'). One body with 'Finite strain/Enabled = "
+                        "true': the load steps of the Newton solve at the same times t; where no load or "
+                        "Dirichlet expression uses t, step k applies k/N of the loads and Dirichlet values "
+                        "instead; each step is written to base name + '-step-NNN.vtu' and the series base "
+                        "name + '.pvd'. One body at small strain: the problem is linear and static, so it is "
+                        "solved once at t = 'Final time' (a note says so when the number is above 1).");
+      prm.declare_entry("Final time", "1", Double(),
+                        "The time t of the last load step (> 0), in every problem: step k is at "
+                        "t = k * 'Final time' / 'Number of steps' (the .pvd series and the JSON summary "
+                        "carry these times). A one-body problem at small strain is solved at t = 'Final "
+                        "time', with the exact solution compared there.");
+      prm.leave_subsection();
+      prm.enter_subsection("Output");
+      prm.declare_entry("Write pictures", "true", Bool(),
+                        "Contact problems: write SVG pictures of the deformed bodies (coloured by "
+                        "sigma_yy, inserted nodes marked) and of the contact pressure.");
+      prm.declare_entry("Write CSV", "true", Bool(),
+                        "Contact problems: write the interface results as CSV.");
+      prm.declare_entry("Moment point", "0, 0", Anything(),
+                        "Contact problems: the point 'x, y' (two finite numbers) the moments are taken about, "
+                        "counter-clockwise positive: the moment of each interface's contact forces on its slave "
+                        "body (sum over the node pairs of (x - x0) x f, x the slave node) and of each support's "
+                        "reaction on the bodies (sum over its constrained nodes of (x - x0) x R). A support is a "
+                        "boundary id with Dirichlet data or a roller, or a point constraint; its reaction is the "
+                        "internal force minus the applied loads and the contact forces at the DoFs it constrains. "
+                        "Small strain: the positions of the undeformed configuration; the moments go to "
+                        "<base name>-resultants.csv (column moment), <base name>-reactions.csv (step, time, support, "
+                        "boundary_id, force_x, force_y, moment) and the JSON summary (interfaces.i.moment, "
+                        "reactions.<support>.force_x, force_y, moment; with load steps also per step). Finite "
+                        "sliding: the current positions x = X + u; per step to <base name>-history.csv (columns "
+                        "force_x_i, force_y_i, moment_i per interface, reaction_x_<support>, reaction_y_<support>, "
+                        "reaction_moment_<support> per support, load_x, load_y, load_moment of the applied loads), "
+                        "<base name>-step-NNN-interface.csv (the node pairs) and the JSON summary "
+                        "(steps.N.interfaces.i, steps.N.reactions.<support>, steps.N.loads). The supports are named "
+                        "boundary_<id> and point_<k> (k: the index of the entry in 'Point constraints').");
+      prm.leave_subsection();
+    }
+  } // namespace
+
+
+
   void
   ContactProblem::declare_parameters(dealii::ParameterHandler &prm, const unsigned int n_body_sections)
   {
@@ -21,185 +227,9 @@ namespace dealvem
                       "'Material', bodies 1, 2, ... by the sections 'Body 1', 'Body 2', ... (any number). "
                       "Each body's cells get the body index as material id. A mesh section with "
                       "'Parts as bodies = true' adds one body per part of its file.");
-    const std::string part_materials_doc =
-      "With 'Mesh/Parts as bodies': the materials of the parts, 'material id : E : nu; ...' (the "
-      "ids of the mesh file), or 'material id : E : nu : name' with a material name for 'Contact/Friction "
-      "between materials'; parts not listed take this section's Young's modulus, Poisson's ratio and name.";
-    const std::string material_name_doc =
-      "A name of this body's material (letters, digits, '_', '-', '.'), for 'Contact/Friction between "
-      "materials'. Empty: none.";
-    prm.enter_subsection("Material");
-    prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
-    prm.declare_entry("Name", "", Anything(), material_name_doc);
-    prm.leave_subsection();
-    for (unsigned int b = 1; b < std::max(n_body_sections, 2u); ++b)
-      {
-        prm.enter_subsection("Body " + std::to_string(b));
-        prm.enter_subsection("Mesh");
-        MeshParameters::declare_parameters(prm);
-        prm.leave_subsection();
-        prm.enter_subsection("Material");
-        prm.declare_entry("Young's modulus", "1000", Double(0), "Young's modulus E (> 0).");
-        prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
-                          "Poisson's ratio nu, -1 < nu < 0.5.");
-        prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
-        prm.declare_entry("Name", "", Anything(), material_name_doc);
-        prm.leave_subsection();
-        prm.enter_subsection("Exact solution");
-        prm.declare_entry("Displacement", "", Anything(),
-                          "Exact displacement 'ux, uy' of this body (muparser in x, y, t with the "
-                          "function constants), compared with the solution of the last load step at "
-                          "t = 'Load steps/Final time' (1 by default). Empty: the top-level 'Exact "
-                          "solution' applies to this body too.");
-        prm.leave_subsection();
-        prm.leave_subsection();
-      }
-    prm.enter_subsection("Contact");
-    prm.declare_entry("Pairs", "", Anything(),
-                      "Contact interfaces 'master id : slave id; ...': boundary parts of two "
-                      "different bodies. The master side gives the normal. With Coulomb friction an "
-                      "entry may give its own friction coefficient: 'master id : slave id : mu'. The "
-                      "entry 'auto' adds the interfaces found by contact detection: boundary edges of "
-                      "different bodies that face each other (normals opposite within 'Detection "
-                      "angle', apart by at most 'Detection distance' times the edge length), except "
-                      "those whose ids carry boundary conditions or explicit pairs; the coarser side "
-                      "is the master. The list is printed; <base name>-resultants.csv gives each interface's bodies, "
-                      "ids, length and contact force. With finite sliding ('Finite strain/Enabled = true') "
-                      "the detection runs in the current configuration at every pairing pass, so contacts "
-                      "that open and close anywhere on the free boundary are found, and the results sum "
-                      "the detected interfaces of each pair of bodies.");
-    prm.declare_entry("Detection distance", "0.5", Double(0, 10),
-                      "Pairs = auto: largest distance (gap or overlap) between facing boundary edges, "
-                      "relative to the longer of the two edges.");
-    prm.declare_entry("Detection angle", "45", Double(1, 89),
-                      "Pairs = auto: largest deviation (degrees) of the outward normals of facing "
-                      "edges from opposite.");
-    prm.declare_entry("Friction between bodies", "", Anything(),
-                      "Coulomb friction coefficients by pairs of bodies, 'body a : body b : mu; ...' "
-                      "(body indices, '*' for any body; a pair of bodies beats a '*' entry, a later "
-                      "entry an earlier one). They apply to detected interfaces and to pairs that give "
-                      "no coefficient of their own; others take 'Friction coefficient'.");
-    prm.declare_entry("Friction between materials", "", Anything(),
-                      "Coulomb friction coefficients by pairs of materials, 'name a : name b : mu; ...' "
-                      "(the names of 'Material/Name' or of 'Part materials', '*' for any material). "
-                      "They apply where 'Friction between bodies' gives nothing; a pair of names beats a "
-                      "'*' entry, a later entry an earlier one.");
-    prm.declare_entry("Normal", "unilateral", Selection("tied|unilateral"),
-                      "tied: g = 0 at every pair (bilateral); unilateral: g >= 0, pressure >= 0, "
-                      "complementarity, by a primal-dual active set.");
-    prm.declare_entry("Tangential", "penalty",
-                      Selection("frictionless|penalty|multipliers|coulomb|coulomb penalty"),
-                      "frictionless; stick by a penalty (see 'Penalty'); stick by Lagrange "
-                      "multipliers (exactly tied); Coulomb friction with exact stick by multipliers "
-                      "(coulomb) or regularised by the penalty (coulomb penalty): each pair is open, "
-                      "sticking or slipping, |tangential traction| <= mu * pressure, solved by a "
-                      "semismooth Newton (active set) method per load step.");
-    prm.declare_entry("Friction coefficient", "0", Double(),
-                      "Coulomb friction coefficient mu >= 0 of the contact pairs that do not give "
-                      "their own in 'Pairs' (only with 'Tangential = coulomb' or 'coulomb penalty').");
-    prm.declare_entry("Penalty", "0", Double(0),
-                      "Tangential stick penalty (stiffness per length and slip, units of E/h). "
-                      "0 selects the default rule 'Penalty factor' * E_min / h_min, with E_min the "
-                      "smallest Young's modulus and h_min the shortest interface sub-edge.");
-    prm.declare_entry("Penalty factor", "1000", Double(0), "Factor of the default penalty rule.");
-    prm.declare_entry("Merge fraction", "0.05", Double(1e-6, 0.49),
-                      "Node insertion: a node whose closest point on the other side lies closer "
-                      "than this times the local edge length to a node of that side is paired with "
-                      "it (the two are merged) instead of splitting the edge: no sub-edge shorter "
-                      "than this fraction is created.");
-    prm.declare_entry("Search distance", "0.25", Double(0),
-                      "Node insertion: largest distance between a node and its partner, relative to "
-                      "the size of the interface (the diagonal of the bounding box of both contact "
-                      "parts). Nodes inside the overlap but farther apart are reported.");
-    prm.declare_entry("Coordinate precision", "auto", Anything(),
-                      "Node insertion: precision of the mesh coordinates; a gap within it is round-off "
-                      "of the mesh files and is closed. 'auto': each contact part's own, the decimal "
-                      "grid its coordinates were written on (a file with six significant digits: a "
-                      "unit of the sixth digit; none for coordinates computed in double precision, for "
-                      "all short binary fractions such as 0.125, and for a grid coarser than 1/100 of "
-                      "the part's shortest edge, a lattice the vertices were placed on), a gap within half the two parts' "
-                      "grids being closed. A number in [0, 0.01) replaces the detection, for data "
-                      "rounded more coarsely than written (coordinates exported in double from a "
-                      "six-digit CAD model): the coordinates are rounded to at most this times the size "
-                      "of the interface (the diagonal of the bounding box of both contact parts); 0 "
-                      "takes them as exact. Double round-off is always allowed for. No tolerance "
-                      "depends on where the model lies.");
-    prm.declare_entry("Close discretisation gaps", "true", Bool(),
-                      "Node insertion: close the gaps between an inserted node and its partner that "
-                      "come from two polygons approximating the same curve (below 1.5 times the "
-                      "chord deviation of the edge, or below the coordinate precision), by moving "
-                      "the inserted node onto its partner. Larger gaps (bodies apart, or surfaces of "
-                      "different curvature as in Hertz contact) are kept. false keeps every gap.");
-    prm.declare_entry("Pairing tolerance", "1e-8", Double(1e-14, 0.1),
-                      "Finite strain ('Finite strain/Enabled = true', finite sliding): the pairs are made again "
-                      "at the converged state of each step until the partners of every active pair are closer "
-                      "than this fraction of the slave sub-edges at the pair.");
-    prm.declare_entry("Maximum pairing passes", "12", Integer(1, 1000),
-                      "Finite strain (finite sliding): at most this many passes (pairing and Newton solve) per "
-                      "load step; a step that does not meet 'Pairing tolerance' then stops the program with the "
-                      "offset of every pass.");
-    prm.declare_entry("Maximum cutbacks", "4", Integer(0, 20),
-                      "Finite strain (finite sliding): a load step whose Newton solve or pairing passes fail is "
-                      "solved again from its start as two half steps, each cut again if it fails, down to "
-                      "2^-(this) of the step; then the program stops naming the sub-step. 0: stop at once.");
-    prm.declare_entry("Maximum active set iterations", "50", Integer(1),
-                      "Iteration limit of the active set (per load step; with Coulomb friction, of the "
-                      "semismooth Newton iteration over open/stick/slip).");
-    prm.declare_entry("Active set acceleration", "true", Bool(),
-                      "Correct the primal-dual active-set update where it crawls: a step that more than "
-                      "doubles the set adds the deeper half of the penetrating pairs; a releasing step "
-                      "also releases, next to each run of released pairs, the active pairs over the run's "
-                      "length, until such a pair penetrates again. The solution is the same; false runs "
-                      "the plain update.");
-    prm.declare_entry("Globalized solve", "true", Bool(),
-                      "Unilateral contact without Coulomb friction: when the active set cycles, reaches its "
-                      "iteration limit or holds no equilibrium, solve again with the primal active-set method, "
-                      "which converges whenever a solution exists and otherwise stops with 'No static "
-                      "equilibrium' and the collapse mechanism that proves it (printed, and written as "
-                      "<prefix>-mechanism.vtu and .svg). false: the active set's failure is the answer.");
-    prm.leave_subsection();
-    prm.enter_subsection("Load steps");
-    prm.declare_entry("Number of steps", "1", Integer(),
-                      "Contact problems: number of quasi-static load steps. Step k solves at the time "
-                      "t = k * 'Final time' / 'Number of steps' of the load and Dirichlet expressions; "
-                      "Coulomb friction measures the slip against the previous step. With more than one "
-                      "step every step writes its VTU and CSV files (base name + '-step-NNN') and a "
-                      "ParaView time series (base name + '.pvd'). One body with 'Finite strain/Enabled = "
-                      "true': the load steps of the Newton solve at the same times t; where no load or "
-                      "Dirichlet expression uses t, step k applies k/N of the loads and Dirichlet values "
-                      "instead; each step is written to base name + '-step-NNN.vtu' and the series base "
-                      "name + '.pvd'. One body at small strain: the problem is linear and static, so it is "
-                      "solved once at t = 'Final time' (a note says so when the number is above 1).");
-    prm.declare_entry("Final time", "1", Double(),
-                      "The time t of the last load step (> 0), in every problem: step k is at "
-                      "t = k * 'Final time' / 'Number of steps' (the .pvd series and the JSON summary "
-                      "carry these times). A one-body problem at small strain is solved at t = 'Final "
-                      "time', with the exact solution compared there.");
-    prm.leave_subsection();
-    prm.enter_subsection("Output");
-    prm.declare_entry("Write pictures", "true", Bool(),
-                      "Contact problems: write SVG pictures of the deformed bodies (coloured by "
-                      "sigma_yy, inserted nodes marked) and of the contact pressure.");
-    prm.declare_entry("Write CSV", "true", Bool(),
-                      "Contact problems: write the interface results as CSV.");
-    prm.declare_entry("Moment point", "0, 0", Anything(),
-                      "Contact problems: the point 'x, y' (two finite numbers) the moments are taken about, "
-                      "counter-clockwise positive: the moment of each interface's contact forces on its slave "
-                      "body (sum over the node pairs of (x - x0) x f, x the slave node) and of each support's "
-                      "reaction on the bodies (sum over its constrained nodes of (x - x0) x R). A support is a "
-                      "boundary id with Dirichlet data or a roller, or a point constraint; its reaction is the "
-                      "internal force minus the applied loads and the contact forces at the DoFs it constrains. "
-                      "Small strain: the positions of the undeformed configuration; the moments go to "
-                      "<base name>-resultants.csv (column moment), <base name>-reactions.csv (step, time, support, "
-                      "boundary_id, force_x, force_y, moment) and the JSON summary (interfaces.i.moment, "
-                      "reactions.<support>.force_x, force_y, moment; with load steps also per step). Finite "
-                      "sliding: the current positions x = X + u; per step to <base name>-history.csv (columns "
-                      "force_x_i, force_y_i, moment_i per interface, reaction_x_<support>, reaction_y_<support>, "
-                      "reaction_moment_<support> per support, load_x, load_y, load_moment of the applied loads), "
-                      "<base name>-step-NNN-interface.csv (the node pairs) and the JSON summary "
-                      "(steps.N.interfaces.i, steps.N.reactions.<support>, steps.N.loads). The supports are named "
-                      "boundary_<id> and point_<k> (k: the index of the entry in 'Point constraints').");
-    prm.leave_subsection();
+    declare_body_sections(prm, n_body_sections);
+    declare_contact_section(prm);
+    declare_steps_and_output(prm);
   }
 
 
@@ -489,8 +519,8 @@ namespace dealvem
                                            "problem at small strain, without the Newton controls of finite "
                                            "strain.");
     }
-    if (MaterialLaws::is_hyperelastic(law) && !opt.finite_strain && p.root)
-      std::cout << "note: 'Material/Law = " << MaterialLaws::name(law)
+    if (MaterialLaws::is_hyperelastic(law) && !opt.finite_strain)
+      p.pcout << "note: 'Material/Law = " << MaterialLaws::name(law)
                 << "': contact problems are solved at small strain, with the law's linearization at F = I "
                    "(the linear law of the same E and nu) for every body."
                 << std::endl;
@@ -661,6 +691,8 @@ namespace dealvem
         bodies[added[i]].name  = "body " + std::to_string(added[i]) + " (material id " +
                                 std::to_string(ids[i]) + " of " + body.mesh.file_name + ")";
       }
+    // (every process parses the file and prints this line, outside run():
+    // not through pcout, which would newly quiet the processes > 0 here)
     std::cout << "  " << prefix << "Mesh: " << added.size() << " parts of '" << body.mesh.file_name
               << "' are bodies " << added.front() << " to " << added.back() << std::endl;
   }
@@ -674,10 +706,7 @@ namespace dealvem
     prm.enter_subsection("Discretization");
     opt.degree               = prm.get_integer("Order");
     opt.stabilization_factor = prm.get_double("Stabilization factor");
-    opt.stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
-                         prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
-                     prm.get("Stabilization") == "boundary" ? Stabilization::boundary :
-                                                                  Stabilization::automatic);
+    opt.stabilization        = InputParsing::parse_stabilization(prm.get("Stabilization"));
     prm.leave_subsection();
     bc.set_physical_names(names);
     bc.parse_parameters(prm);
@@ -697,11 +726,11 @@ namespace dealvem
     const std::string tangential_name = prm.get("Tangential");
     prm.leave_subsection();
     const auto &cs = opt.contact;
-    if (p.root && cs.tangential != ContactSettings::Tangential::penalty &&
+    if (cs.tangential != ContactSettings::Tangential::penalty &&
         cs.tangential != ContactSettings::Tangential::coulomb_penalty)
       for (const auto &e : InputParsing::changed_entries(prm, "Contact"))
         if (e == "Contact/Penalty" || e == "Contact/Penalty factor")
-          std::cout << "warning: the parameter file sets '" << e << "', but 'Contact/Tangential' is '"
+          p.pcout << "warning: the parameter file sets '" << e << "', but 'Contact/Tangential' is '"
                     << tangential_name << "', which uses no stick penalty; the setting has no effect." << std::endl;
   }
 
@@ -888,9 +917,7 @@ namespace dealvem
     prm.enter_subsection("Load steps");
     {
       const long steps = prm.get_integer("Number of steps");
-      AssertThrow(steps >= 1 && steps <= 100000,
-                  dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(steps) +
-                                     ": it must be at least 1 (and at most 100000)."));
+      InputParsing::check_number_of_load_steps(steps);
       opt.n_load_steps = steps;
     }
     opt.final_time = prm.get_double("Final time");

@@ -18,6 +18,7 @@ namespace dealvem
     , distributed(parallelism == ElasticityProblem::Parallelism::distributed ||
                   (parallelism == ElasticityProblem::Parallelism::automatic && n_processes > 1))
     , root(!dealii::Utilities::MPI::job_supports_mpi() || dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    , pcout(std::cout, root)
   {
     AssertThrow(!distributed || dealii::Utilities::MPI::job_supports_mpi(),
                 dealii::ExcMessage("ContactProblem: the distributed path needs MPI to be initialised "
@@ -36,48 +37,34 @@ namespace dealvem
     // detected interfaces are known: insert_nodes())
     contact_settings = opt.contact;
     // with several MPI processes every process computes the same
-    // postprocessing from the gathered solution; process 0 alone prints and
-    // writes (the flags and std::cout are restored on the way out, also
-    // after an error)
-    struct Silence
+    // postprocessing from the gathered solution; process 0 alone prints
+    // (pcout) and writes: the other processes' write flags are off during
+    // the run (restored on the way out, also after an error)
+    struct QuietFiles
     {
-      struct NullBuffer : std::streambuf
-      {
-        int
-        overflow(const int c) override
-        {
-          return c;
-        }
-      };
-      NullBuffer              sink;
-      std::streambuf         *old = nullptr;
-      ContactProblem         &p;
-      std::array<bool, 4>     flags;
-      Silence(ContactProblem &p)
+      ContactProblem     &p;
+      std::array<bool, 4> flags;
+      QuietFiles(ContactProblem &p)
         : p(p)
         , flags{{p.opt.write_vtu, p.opt.write_csv, p.opt.write_json, p.opt.write_pictures}}
       {
-        if (p.root)
-          return;
-        old = std::cout.rdbuf(&sink);
-        p.opt.write_vtu = p.opt.write_csv = p.opt.write_json = p.opt.write_pictures = false;
+        if (!p.root)
+          p.opt.write_vtu = p.opt.write_csv = p.opt.write_json = p.opt.write_pictures = false;
       }
-      ~Silence()
+      ~QuietFiles()
       {
-        if (old != nullptr)
-          std::cout.rdbuf(old);
         p.opt.write_vtu      = flags[0];
         p.opt.write_csv      = flags[1];
         p.opt.write_json     = flags[2];
         p.opt.write_pictures = flags[3];
       }
-    } silence(*this);
+    } quiet_files(*this);
     if (root)
       std::filesystem::create_directories(opt.output_folder);
     // the files under the output prefix belong to this run only: those of
     // an earlier run go first (process 0 writes every file)
     RunFiles run_files(opt.output_folder, opt.base_name, root, opt.write_vtu || opt.write_csv || opt.write_json || opt.write_pictures);
-    std::cout << run_files.removal_note(run_files.start());
+    pcout << run_files.removal_note(run_files.start());
     try
       {
         if (opt.finite_strain)
@@ -108,13 +95,13 @@ namespace dealvem
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
       {
         if (n_cycles > 1)
-          std::cout << "Cycle " << cycle << ":" << std::endl;
+          pcout << "Cycle " << cycle << ":" << std::endl;
         run_cycle(cycle);
         convergence.push_back(results.errors);
         for (unsigned int b = 0; b < bodies.size(); ++b)
           {
             if (cycle > 0 && results.dofs_per_body[b] <= dofs_per_cycle[b].back())
-              std::cout << "warning: body " << b << " has " << results.dofs_per_body[b]
+              pcout << "warning: body " << b << " has " << results.dofs_per_body[b]
                         << " DoFs in cycle " << cycle << ", no more than in cycle " << cycle - 1
                         << ": the meshes of a convergence study must be refined from cycle to cycle (are "
                            "two cycles reading the same mesh file?); the convergence rate of this cycle is "
@@ -160,8 +147,9 @@ namespace dealvem
                 for (const char *c : {"L2", "H1", "energy"})
                   add_convergence_rates(t, c, errors[c], dofs);
               }
-            std::cout << "Relative errors of body " << b << " (against its exact solution):" << std::endl;
-            t.write_text(std::cout, dealii::TableHandler::org_mode_table);
+            pcout << "Relative errors of body " << b << " (against its exact solution):" << std::endl;
+            if (pcout.is_active())
+              t.write_text(pcout.get_stream(), dealii::TableHandler::org_mode_table);
           }
   }
 
@@ -249,7 +237,7 @@ namespace dealvem
           excluded.insert({p.first, p.second});
         results.detection = ContactDetection::detect(mesh, excluded, ContactDetection::first_free_id(mesh),
                                                      opt.detection);
-        std::cout << ContactDetection::describe(results.detection);
+        pcout << ContactDetection::describe(results.detection);
         AssertThrow(!results.detection.interfaces.empty() || !contact_pairs.empty(),
                     dealii::ExcMessage("Contact/Pairs = auto: no boundary parts of different bodies face each "
                                        "other within 'Contact/Detection distance' (" +
@@ -401,7 +389,7 @@ namespace dealvem
                 << ": above this size CG-AMG on the condensed stiffness is faster than its factorization "
                    "(measured, doc/benchmarks.md)";
           }
-        std::cout << "  solver (Solver/Type = automatic): " << SaddlePointSolver::type_name(settings.type) << ", "
+        pcout << "  solver (Solver/Type = automatic): " << SaddlePointSolver::type_name(settings.type) << ", "
                     << why.str() << std::endl;
       }
     else
@@ -547,11 +535,11 @@ namespace dealvem
           }
         if (opt.n_load_steps > 1)
           {
-            std::cout << "  load step " << step << " of " << opt.n_load_steps << " (t = " << time
+            pcout << "  load step " << step << " of " << opt.n_load_steps << " (t = " << time
                       << ") failed; the results of the " << step - 1 << " converged step(s) are kept";
             if (opt.write_vtu || opt.write_csv)
-              std::cout << " (" << d.prefix << "-step-*, " << d.prefix << ".pvd)";
-            std::cout << "." << std::endl;
+              pcout << " (" << d.prefix << "-step-*, " << d.prefix << ".pvd)";
+            pcout << "." << std::endl;
             if (opt.write_json)
               {
                 JsonSummary json;
@@ -592,12 +580,12 @@ namespace dealvem
     dealii::Vector<double> field(dh.n_dofs());
     for (unsigned int i = 0; i < dh.n_dofs() && i < mechanism->displacement.size(); ++i)
       field[i] = mechanism->displacement[i];
-    std::cout << "  collapse mechanism: " << mechanism->failing_condition;
+    pcout << "  collapse mechanism: " << mechanism->failing_condition;
     if (opt.write_vtu)
       {
         StressRecovery<2> zero(dh, d.materials, field);
         write_vtu_file(d.prefix + "-mechanism.vtu", dh, field, zero);
-        std::cout << "; " << d.prefix << "-mechanism.vtu";
+        pcout << "; " << d.prefix << "-mechanism.vtu";
       }
     if (opt.write_pictures)
       {
@@ -626,8 +614,8 @@ namespace dealvem
           body[c] = mesh.cell(c).material_id;
         SVGPlots::write_mesh(d.prefix + "-mechanism.svg", mesh, motion, 0.1 * (hi - lo).norm(), body, "body",
                              marked, "Collapse mechanism (" + mechanism->failing_condition + ")");
-        std::cout << "; " << d.prefix << "-mechanism.svg";
+        pcout << "; " << d.prefix << "-mechanism.svg";
       }
-    std::cout << std::endl;
+    pcout << std::endl;
   }
 } // namespace dealvem

@@ -119,11 +119,14 @@ namespace dealvem
       void
       write_reactions_csv(const std::string &filename, const std::vector<ContactProblem::StepResult> &steps);
 
-      // One line per support on the terminal: its reaction and moment about
+      // One line per support on @p out: its reaction and moment about
       // @p point (the first @p max ones, then their number).
       void
-      print_reactions(const std::vector<SupportReactions::Reaction> &reactions, const dealii::Point<2> &point,
-                      const std::string &indent, const unsigned int max = 12);
+      print_reactions(const dealii::ConditionalOStream                &out,
+                      const std::vector<SupportReactions::Reaction> &reactions,
+                      const dealii::Point<2>                        &point,
+                      const std::string                             &indent,
+                      const unsigned int                             max = 12);
 
       // The number of nodes node insertion added on all interfaces.
       unsigned int

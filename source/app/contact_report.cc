@@ -76,15 +76,18 @@ namespace dealvem
       // One line per support on the terminal: its reaction and moment about
       // @p point (the first @p max ones, then their number).
       void
-      print_reactions(const std::vector<SupportReactions::Reaction> &reactions, const dealii::Point<2> &point,
-                      const std::string &indent, const unsigned int max)
+      print_reactions(const dealii::ConditionalOStream                &out,
+                      const std::vector<SupportReactions::Reaction> &reactions,
+                      const dealii::Point<2>                        &point,
+                      const std::string                             &indent,
+                      const unsigned int                             max)
       {
         for (unsigned int k = 0; k < reactions.size() && k < max; ++k)
-          std::cout << indent << "reaction on " << reactions[k].name << ": force (" << reactions[k].force[0] << ", "
+          out << indent << "reaction on " << reactions[k].name << ": force (" << reactions[k].force[0] << ", "
                     << reactions[k].force[1] << "), moment " << reactions[k].moment << " about (" << point[0]
                     << ", " << point[1] << ")" << std::endl;
         if (reactions.size() > max)
-          std::cout << indent << "... " << reactions.size() - max << " more supports (-reactions.csv)" << std::endl;
+          out << indent << "... " << reactions.size() - max << " more supports (-reactions.csv)" << std::endl;
       }
 
     } // namespace ContactProblemImplementation
@@ -138,7 +141,8 @@ namespace dealvem
     // warnings of all): inserted and merged nodes, closed gaps, unpaired
     // nodes, gaps that cannot be told from discretisation gaps.
     void
-    print_interfaces(const std::vector<NodeInsertion::Interface> &interfaces,
+    print_interfaces(const dealii::ConditionalOStream             &out,
+                     const std::vector<NodeInsertion::Interface> &interfaces,
                      const std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> &cycle_pairs)
     {
       // (an assembly of many interfaces: the first ones, and the warnings of all)
@@ -147,27 +151,27 @@ namespace dealvem
         {
           const auto &r = interfaces[i].report;
           if (i == n_listed)
-            std::cout << "    ... " << interfaces.size() - n_listed << " more interfaces (-resultants.csv)"
+            out << "    ... " << interfaces.size() - n_listed << " more interfaces (-resultants.csv)"
                       << std::endl;
           if (i >= n_listed && r.unpaired.empty())
             continue;
-          std::cout << "    interface " << i << " (" << cycle_pairs[i].first << " : " << cycle_pairs[i].second
+          out << "    interface " << i << " (" << cycle_pairs[i].first << " : " << cycle_pairs[i].second
                     << "): " << r.n_inserted_master << " + " << r.n_inserted_slave << " inserted, " << r.n_merged
                     << " merged; " << r.n_closed_gaps << " pairs coincide (largest discretisation gap closed: "
                     << r.max_closed_gap << ")";
-          std::cout << std::endl;
+          out << std::endl;
           if (!r.unpaired.empty())
             {
-              std::cout << "  warning: " << r.unpaired.size() << " node(s) of interface " << i
+              out << "  warning: " << r.unpaired.size() << " node(s) of interface " << i
                         << " inside the overlap of its parts have no partner:" << std::endl;
               for (unsigned int k = 0; k < std::min<std::size_t>(r.unpaired.size(), 5); ++k)
                 {
                   const auto &u = r.unpaired[k];
-                  std::cout << "    " << (u.on_master ? "master" : "slave") << " vertex " << u.vertex << " at ("
+                  out << "    " << (u.on_master ? "master" : "slave") << " vertex " << u.vertex << " at ("
                             << u.location[0] << ", " << u.location[1] << "): " << u.reason << std::endl;
                 }
               if (r.unpaired.size() > 5)
-                std::cout << "    ... (" << r.unpaired.size() - 5 << " more)" << std::endl;
+                out << "    ... (" << r.unpaired.size() - 5 << " more)" << std::endl;
             }
           for (const bool closed : {false, true})
             {
@@ -181,7 +185,7 @@ namespace dealvem
               for (const auto &g : list)
                 deviation = std::max(deviation, g.chord_deviation);
               if (!closed)
-                std::cout << "  warning: interface " << i << " has real gaps or overlaps (up to " << r.max_kept_gap
+                out << "  warning: interface " << i << " has real gaps or overlaps (up to " << r.max_kept_gap
                           << ") and keeps them all as measured, but at " << list.size()
                           << " pair(s) the gap (largest " << worst->gap << " at (" << worst->location[0] << ", "
                           << worst->location[1] << ")) is no larger than the chord deviation of the meshes there (up to "
@@ -191,7 +195,7 @@ namespace dealvem
                              "with h^2); to keep every gap without this check, set Close discretisation gaps = false."
                           << std::endl;
               else
-                std::cout << "  warning: interface " << i << " has no real gap, so its sides are taken to sample one "
+                out << "  warning: interface " << i << " has no real gap, so its sides are taken to sample one "
                           << "curve and every gap is closed, but " << list.size()
                           << " gap(s) next to an inflection exceed the curvature band there (largest " << worst->gap
                           << " at (" << worst->location[0] << ", " << worst->location[1]
@@ -207,25 +211,25 @@ namespace dealvem
     // The active-set iterations of the last solve, and the globalized solve
     // if it took over.
     void
-    print_active_set(const ActiveSetSolver<2>::Result &as)
+    print_active_set(const dealii::ConditionalOStream &out, const ActiveSetSolver<2>::Result &as)
     {
-      std::cout
+      out
                 << "  active set: " << as.n_iterations << " iteration(s), active pairs per iteration:";
       for (const auto a : as.n_active_history)
-        std::cout << " " << a;
+        out << " " << a;
       if (as.n_closed_for_support > 0)
-        std::cout << " (the first set closes the " << as.n_closed_for_support
+        out << " (the first set closes the " << as.n_closed_for_support
                   << " pair(s) of smallest initial gap, so that every body is held)";
       if (as.n_accelerated > 0)
-        std::cout << " (" << as.n_accelerated << " step(s) corrected by the active-set acceleration)";
+        out << " (" << as.n_accelerated << " step(s) corrected by the active-set acceleration)";
       if (!as.fast_path_failure.empty())
         {
-          std::cout << "\n  globalized solve: the active-set iteration gave up ("
+          out << "\n  globalized solve: the active-set iteration gave up ("
                     << as.fast_path_failure.substr(0, as.fast_path_failure.find(':')) << "); the primal active-set "
                     << "method converged in " << as.n_globalized_solves << " solve(s) and "
                     << as.n_globalized_rigid_steps << " rigid step(s)";
           if (as.n_polish_iterations > 0 || as.convex_stick_model)
-            std::cout << (as.convex_stick_model ?
+            out << (as.convex_stick_model ?
                             ", convex stick model kept (open pairs tied tangentially: the polish to stick at "
                             "closed pairs only did not converge)" :
                             ", polished to stick at closed pairs only in " + std::to_string(as.n_polish_iterations) +
@@ -236,11 +240,11 @@ namespace dealvem
     // The range of the contact pressure and of the cell stresses, the
     // verification of the steps and the total contact force.
     void
-    print_ranges(const ContactProblem::Results &results)
+    print_ranges(const dealii::ConditionalOStream &out, const ContactProblem::Results &results)
     {
       const auto [pmin, pmax] = pressure_range(results.pairs);
       if (pmax >= pmin)
-        std::cout << "  contact pressure on active pairs: min " << pmin << ", max " << pmax << std::endl;
+        out << "  contact pressure on active pairs: min " << pmin << ", max " << pmax << std::endl;
       {
         std::array<double, 3> lo{{1e300, 1e300, 1e300}}, hi{{-1e300, -1e300, -1e300}};
         for (const auto &st : results.cell_stress)
@@ -249,7 +253,7 @@ namespace dealvem
               lo[i] = std::min(lo[i], st[i]);
               hi[i] = std::max(hi[i], st[i]);
             }
-        std::cout << "  cell stresses: sigma_xx in [" << lo[0] << ", " << hi[0] << "], sigma_yy in ["
+        out << "  cell stresses: sigma_xx in [" << lo[0] << ", " << hi[0] << "], sigma_yy in ["
                   << lo[1] << ", " << hi[1] << "], sigma_xy in [" << lo[2] << ", " << hi[2] << "]"
                   << std::endl;
       }
@@ -264,11 +268,11 @@ namespace dealvem
               tolerance       = std::min(tolerance, b.tolerance);
               condition       = std::max(condition, b.condition);
             }
-        std::cout << "  verification: every body in equilibrium after every step (largest relative imbalance "
+        out << "  verification: every body in equilibrium after every step (largest relative imbalance "
                   << worst_imbalance << ", residual " << worst_residual << "; smallest tolerance " << tolerance
                   << "; condition up to " << condition << ")" << std::endl;
       }
-      std::cout << "  total contact force on the slave side: (" << results.total_contact_force[0]
+      out << "  total contact force on the slave side: (" << results.total_contact_force[0]
                 << ", " << results.total_contact_force[1] << ")" << std::endl;
     }
 
@@ -451,16 +455,16 @@ namespace dealvem
         write_interface_csv(data->prefix + "-interface.csv", results.pairs);
         write_resultants_csv(data->prefix + "-resultants.csv", results.interface_results);
         write_reactions_csv(data->prefix + "-reactions.csv", results.steps);
-        std::cout << "  interface results: " << data->prefix << "-interface.csv (node pairs), " << data->prefix
+        pcout << "  interface results: " << data->prefix << "-interface.csv (node pairs), " << data->prefix
                   << "-resultants.csv (force per interface), " << data->prefix
                   << "-reactions.csv (force and moment per support)" << std::endl;
       }
     if (opt.write_vtu)
       {
         write_vtu_file(data->prefix + ".vtu", data->dof_handler, results.solution, *data->stresses);
-        std::cout << "  ParaView file (all bodies, field body_id): " << data->prefix << ".vtu" << std::endl;
+        pcout << "  ParaView file (all bodies, field body_id): " << data->prefix << ".vtu" << std::endl;
         if (opt.n_load_steps > 1)
-          std::cout << "  load steps: " << data->prefix << "-step-NNN.vtu, -interface.csv; time series " << data->prefix
+          pcout << "  load steps: " << data->prefix << "-step-NNN.vtu, -interface.csv; time series " << data->prefix
                     << ".pvd" << std::endl;
       }
     if (opt.write_pictures)
@@ -485,7 +489,7 @@ namespace dealvem
     const auto &n          = d.n;
     const auto &m          = d.m;
     const unsigned int n_inserted = inserted_nodes(results.insertion_reports);
-    std::cout << "Contact problem: " << bodies.size() << " bodies, " << mesh.n_cells() << " cells, "
+    pcout << "Contact problem: " << bodies.size() << " bodies, " << mesh.n_cells() << " cells, "
               << n << " DoFs, " << m << " multipliers" << std::endl
               << "  node insertion: " << n_inserted << " nodes inserted, " << pairs.size() << " node pairs"
               << (results.n_junction_pairs > 0 ?
@@ -493,39 +497,39 @@ namespace dealvem
                       " where three bodies meet repeat two others and stay open)" :
                     std::string())
               << std::endl;
-    print_interfaces(interfaces, cycle_pairs);
+    print_interfaces(pcout, interfaces, cycle_pairs);
     for (const auto &d : contact.get_dropped_constraints())
-      std::cout << "  note: the " << (d.tangential ? "tangential" : "normal") << " constraint of the pair at ("
+      pcout << "  note: the " << (d.tangential ? "tangential" : "normal") << " constraint of the pair at ("
                 << d.location[0] << ", " << d.location[1]
                 << ") is already imposed by the displacement constraints (value " << d.imposed_value
                 << "); its multiplier is dropped." << std::endl;
     for (const auto &r : results.pairs)
       if (r.active && r.at_open_end)
         {
-          std::cout << "  warning: the contact pair at (" << r.location[0] << ", " << r.location[1]
+          pcout << "  warning: the contact pair at (" << r.location[0] << ", " << r.location[1]
                     << ") of interface " << r.interface
                     << " is active and ends the paired part of the interface where the bodies' boundaries "
                        "go on: the contact zone may be cut off. Enlarge the contact parts (boundary ids) "
                        "or the 'Search distance'."
                     << std::endl;
         }
-    print_active_set(as);
-    std::cout << std::endl << "  solver: " << d.solver->description();
+    print_active_set(pcout, as);
+    pcout << std::endl << "  solver: " << d.solver->description();
     if (as.linear_iterations > as.n_iterations)
-      std::cout << ", " << as.linear_iterations << " linear iterations in all";
-    std::cout << std::endl;
+      pcout << ", " << as.linear_iterations << " linear iterations in all";
+    pcout << std::endl;
     if (distributed)
-      std::cout << "  MPI: " << n_processes << " processes, cells per process:" << [&] {
+      pcout << "  MPI: " << n_processes << " processes, cells per process:" << [&] {
         std::string list;
         for (const auto c : d.partition->cells_per_part())
           list += " " + std::to_string(c);
         return list;
       }() << "; " << results.n_rows_across_processes
                 << " contact constraint row(s) couple DoFs of different processes" << std::endl;
-    print_ranges(results);
+    print_ranges(pcout, results);
     // (with load steps the progress line of each step lists them)
     if (!results.steps.empty() && opt.n_load_steps == 1 && d.friction_solver == nullptr)
-      print_reactions(results.steps.back().reactions, opt.moment_point, "  ");
+      print_reactions(pcout, results.steps.back().reactions, opt.moment_point, "  ");
   }
 
 
@@ -583,7 +587,7 @@ namespace dealvem
                              std::to_string(bodies.size()) + " bodies, " +
                                std::to_string(results.interface_results.size()) +
                                " interfaces: contact force on the slave body at the centre of pressure");
-    std::cout << "  pictures: " << prefix << "-stress.svg, " << prefix << "-pressure.svg, " << prefix
+    pcout << "  pictures: " << prefix << "-stress.svg, " << prefix << "-pressure.svg, " << prefix
               << "-assembly.svg" << std::endl;
   }
 
@@ -668,6 +672,6 @@ namespace dealvem
     for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
       json.set("timings." + s.first, s.second);
     json.write(prefix + ".json");
-    std::cout << "  summary: " << prefix << ".json" << std::endl;
+    pcout << "  summary: " << prefix << ".json" << std::endl;
   }
 } // namespace dealvem

@@ -321,9 +321,7 @@ namespace dealvem
     }
     InputParsing::check_range(opt.detection.distance, 0, 10, "Contact/Detection distance");
     InputParsing::check_range(opt.detection.max_angle, 1, 89, "Contact/Detection angle");
-    AssertThrow(opt.n_load_steps >= 1 && opt.n_load_steps <= 100000,
-                dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(opt.n_load_steps) +
-                                   ": it must be at least 1 (and at most 100000)."));
+    InputParsing::check_number_of_load_steps(opt.n_load_steps);
     InputParsing::check_range(opt.final_time, 0, 1e300, "Load steps/Final time", true, false,
                               "The load steps run from t = 0 to the final time.");
     InputParsing::check_range(opt.solver_tolerance, 0, 1, "Solver/Relative tolerance", true, true);

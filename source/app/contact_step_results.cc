@@ -298,37 +298,37 @@ namespace dealvem
     const auto &as       = data->as;
     const auto &fr       = data->fr;
     const bool  friction = (data->friction_solver != nullptr);
-    std::cout << "  load step " << step << " of " << opt.n_load_steps << ", t = " << time << ": "
+    pcout << "  load step " << step << " of " << opt.n_load_steps << ", t = " << time << ": "
               << as.n_iterations << (friction ? " Newton" : " active-set") << " iteration(s), "
               << step_result.n_open << " open / " << step_result.n_stick
               << (friction ? " stick / " : " closed") ;
     if (friction)
       {
-        std::cout << step_result.n_slip << " slip, dissipated energy " << step_result.dissipated_energy;
+        pcout << step_result.n_slip << " slip, dissipated energy " << step_result.dissipated_energy;
         if (fr.history.size() > 1)
           {
             // the states each iteration solved with
-            std::cout << " (open/stick/slip per iteration:";
+            pcout << " (open/stick/slip per iteration:";
             for (const auto &h : fr.history)
-              std::cout << " " << h[0] << "/" << h[1] << "/" << h[2];
-            std::cout << ")";
+              pcout << " " << h[0] << "/" << h[1] << "/" << h[2];
+            pcout << ")";
           }
         if (!fr.continuation_factors.empty())
           {
             // the plain Newton iteration failed; the continuation in the
             // friction coefficient passed these factors of mu
-            std::cout << "; continuation in the friction coefficient, " << fr.n_failed_attempts
+            pcout << "; continuation in the friction coefficient, " << fr.n_failed_attempts
                       << " failed attempt(s), converged with mu times";
             for (const double f : fr.continuation_factors)
-              std::cout << " " << f;
+              pcout << " " << f;
           }
         else if (fr.globalized_start)
-          std::cout << "; the Newton iteration failed, solved as a fixed point of "
+          pcout << "; the Newton iteration failed, solved as a fixed point of "
                     << fr.n_fixed_point_iterations << " Tresca problem(s) (globally convergent; "
                     << fr.n_globalized_solves << " solves with the stick solve)";
       }
-    std::cout << std::endl;
-    print_reactions(step_result.reactions, opt.moment_point, "    ");
+    pcout << std::endl;
+    print_reactions(pcout, step_result.reactions, opt.moment_point, "    ");
   }
 
 

@@ -55,9 +55,59 @@ namespace dealvem
   void
   ElasticityProblem::output_results(const unsigned int cycle)
   {
-    // a displacement far beyond the size of the body means loads far too
-    // large for the stiffness (or a prescribed value out of scale): say so
-    // before the stresses or the error integrals overflow and take the blame
+    check_displacement_scale(cycle);
+    const std::vector<ForceBalance::Body> balance = verify_balance(cycle);
+    // the cells this process computes: all, or (distributed) its own, with
+    // the ghost layer for the nodal stress averages
+    std::vector<unsigned int> stress_cells;
+    if (distributed)
+      {
+        std::set_union(partition.locally_owned_cells().begin(), partition.locally_owned_cells().end(),
+                       partition.ghost_cells().begin(), partition.ghost_cells().end(),
+                       std::back_inserter(stress_cells));
+      }
+    const StressRecovery<2> stresses = distributed ? StressRecovery<2>(dof_handler, materials, solution, stress_cells) :
+                                                     StressRecovery<2>(dof_handler, materials, solution);
+    ErrorNorms              errors;
+    if (exact)
+      {
+        dealii::TimerOutput::Scope t(*timer, "errors");
+        if (distributed)
+          errors = sum_over_processes(compute_errors(dof_handler, materials, solution, *exact,
+                                                     partition.locally_owned_cells()),
+                                      mpi_communicator);
+        else
+          errors = compute_errors(dof_handler, materials, solution, *exact);
+      }
+    check_finite_results(cycle, stresses, errors);
+    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
+    const std::string vtu    = prefix + (distributed ? ".pvtu" : finite_strain.enabled ? ".pvd" : ".vtu");
+    write_vtu_output(prefix, vtu, stresses);
+
+    const auto [hmin, hmax] = mesh.cell_diameter_range();
+    double max_vm           = 0;
+    if (distributed)
+      {
+        for (const unsigned int c : partition.locally_owned_cells())
+          max_vm = std::max(max_vm, stresses.cell_von_mises(c));
+        max_vm = dealii::Utilities::MPI::max(max_vm, mpi_communicator);
+      }
+    else
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        max_vm = std::max(max_vm, stresses.cell_von_mises(c));
+    print_cycle(cycle, hmax, max_vm, balance);
+    record_cycle(cycle, hmin, hmax, max_vm, balance, vtu, errors);
+    finish_cycle(cycle);
+  }
+
+
+
+  // A displacement far beyond the size of the body means loads far too
+  // large for the stiffness (or a prescribed value out of scale): say so
+  // before the stresses or the error integrals overflow and take the blame.
+  void
+  ElasticityProblem::check_displacement_scale(const unsigned int cycle) const
+  {
     {
       const double size = mesh.extent();
       std::vector<dealii::types::global_dof_index> dofs;
@@ -85,11 +135,17 @@ namespace dealvem
         for (unsigned int c = 0; c < mesh.n_cells(); ++c)
           check_cell(c);
     }
+  }
 
-    // the verification of the solve: residual and the force and moment
-    // balance of the body (every edge-connected piece is part of it)
-    // (at finite strain the Newton solver's residual test is the check:
-    // the linear balance does not hold for the deformed body)
+
+
+  // The verification of the solve: residual and the force and moment
+  // balance of the body (every edge-connected piece is part of it). At
+  // finite strain the Newton solver's residual test is the check (the
+  // linear balance does not hold for the deformed body): none here.
+  std::vector<ForceBalance::Body>
+  ElasticityProblem::verify_balance(const unsigned int cycle) const
+  {
     std::vector<ForceBalance::Body> balance;
     if (!finite_strain.enabled)
     {
@@ -103,30 +159,18 @@ namespace dealvem
                                                     tolerance);
       ForceBalance::check(balance, "cycle " + std::to_string(cycle) + " (solver " + solver_description + ")");
     }
+    return balance;
+  }
 
-    // the cells this process computes: all, or (distributed) its own, with
-    // the ghost layer for the nodal stress averages
-    std::vector<unsigned int> stress_cells;
-    if (distributed)
-      {
-        std::set_union(partition.locally_owned_cells().begin(), partition.locally_owned_cells().end(),
-                       partition.ghost_cells().begin(), partition.ghost_cells().end(),
-                       std::back_inserter(stress_cells));
-      }
-    const StressRecovery<2> stresses = distributed ? StressRecovery<2>(dof_handler, materials, solution, stress_cells) :
-                                                     StressRecovery<2>(dof_handler, materials, solution);
-    ErrorNorms              errors;
-    if (exact)
-      {
-        dealii::TimerOutput::Scope t(*timer, "errors");
-        if (distributed)
-          errors = sum_over_processes(compute_errors(dof_handler, materials, solution, *exact,
-                                                     partition.locally_owned_cells()),
-                                      mpi_communicator);
-        else
-          errors = compute_errors(dof_handler, materials, solution, *exact);
-      }
-    // nothing non-finite is reported or written
+
+
+  // Nothing non-finite is reported or written: the stresses of the cells
+  // this process owns and the errors against the exact solution.
+  void
+  ElasticityProblem::check_finite_results(const unsigned int       cycle,
+                                          const StressRecovery<2> &stresses,
+                                          const ErrorNorms        &errors) const
+  {
     {
       std::vector<unsigned int> own_cells;
       if (distributed)
@@ -169,9 +213,16 @@ namespace dealvem
               AssertThrow(false, dealii::ExcMessage(msg.str()));
             }
     }
-    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
-    const std::string vtu    = prefix + (distributed ? ".pvtu" : finite_strain.enabled ? ".pvd" : ".vtu");
-    // (finite strain: every load step wrote its file and the series)
+  }
+
+
+
+  // The VTU file of the cycle (distributed: one piece per process and the
+  // record that joins them); at finite strain every load step wrote its
+  // file and the series already.
+  void
+  ElasticityProblem::write_vtu_output(const std::string &prefix, const std::string &vtu, const StressRecovery<2> &stresses)
+  {
     if (write_vtu && !finite_strain.enabled)
       {
         dealii::TimerOutput::Scope t(*timer, "output");
@@ -197,17 +248,18 @@ namespace dealvem
           write_vtu_file(vtu, dof_handler, solution, stresses);
       }
 
-    const auto [hmin, hmax] = mesh.cell_diameter_range();
-    double max_vm           = 0;
-    if (distributed)
-      {
-        for (const unsigned int c : partition.locally_owned_cells())
-          max_vm = std::max(max_vm, stresses.cell_von_mises(c));
-        max_vm = dealii::Utilities::MPI::max(max_vm, mpi_communicator);
-      }
-    else
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        max_vm = std::max(max_vm, stresses.cell_von_mises(c));
+  }
+
+
+
+  // The cycle's lines on the terminal: size, solver, largest stress, the
+  // verification and (distributed) the partition.
+  void
+  ElasticityProblem::print_cycle(const unsigned int                     cycle,
+                                 const double                           hmax,
+                                 const double                           max_vm,
+                                 const std::vector<ForceBalance::Body> &balance) const
+  {
     pcout << "Cycle " << cycle << ": " << mesh.n_cells() << " cells, " << dof_handler.n_dofs()
           << " DoFs, h = " << hmax << ", solver " << solver_description;
     if (solver_iterations > 1)
@@ -234,6 +286,21 @@ namespace dealvem
               << ", " << partition.n_cut_edges() << " edges between processes" << std::endl;
       }
 
+  }
+
+
+
+  // The cycle's line of the convergence table and its entries of the JSON
+  // summary.
+  void
+  ElasticityProblem::record_cycle(const unsigned int                     cycle,
+                                  const double                           hmin,
+                                  const double                           hmax,
+                                  const double                           max_vm,
+                                  const std::vector<ForceBalance::Body> &balance,
+                                  const std::string                     &vtu,
+                                  const ErrorNorms                      &errors)
+  {
     table.add_value("cycle", cycle);
     table.add_value("cells", mesh.n_cells());
     table.add_value("dofs", dof_handler.n_dofs());
@@ -276,6 +343,16 @@ namespace dealvem
         json.set(key + "errors.energy", errors.energy);
         last_errors = {errors.l2, errors.h1_seminorm, errors.energy};
       }
+  }
+
+
+
+  // After a cycle: a warning for a mesh not finer than the last one, the
+  // results kept for the program (DoFs, timings, the gathered solution),
+  // the JSON summary written.
+  void
+  ElasticityProblem::finish_cycle(const unsigned int cycle)
+  {
     if (!cycle_dofs.empty() && dof_handler.n_dofs() <= cycle_dofs.back())
       pcout << "warning: cycle " << cycle << " has " << dof_handler.n_dofs() << " DoFs, no more than cycle "
             << cycle - 1 << " (" << cycle_dofs.back()

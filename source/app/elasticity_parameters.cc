@@ -165,120 +165,15 @@ namespace dealvem
   ElasticityProblem::parse_parameters(dealii::ParameterHandler &prm, const std::string &dir)
   {
     prm_directory = dir;
-    // the sections that only contact problems (Number of bodies > 1) read:
-    // a file that sets them describes another problem than this one
-    {
-      // (the sections with a changed entry, from one listing)
-      std::set<std::string> body_sections;
-      for (const auto &path : InputParsing::changed_entries(prm, ""))
-        if (path.compare(0, 5, "Body ") == 0)
-          body_sections.insert(path.substr(0, path.find('/')));
-      for (const auto &section : body_sections)
-        InputParsing::check_section_unused(prm, section,
-                                           "'Number of bodies' is 1: section '" + section +
-                                             "' is read only with 'Number of bodies' at least " +
-                                             std::to_string(std::stoi(section.substr(5)) + 1) + ".");
-    }
-    InputParsing::check_section_unused(prm, "Contact",
-                                       "'Number of bodies' is 1, and contact needs at least two bodies.");
-    finite_strain.parse_parameters(prm);
-    // the load steps, as contact problems read them: step n of N at the
-    // time t = n * Final time / N of the expressions. At finite strain the
-    // Newton solve runs them (solve_finite_strain()); the linear static
-    // problem is solved once, at t = Final time
-    // (a ParameterHandler without the section, declared by
-    // ContactProblem::declare_parameters() as the program does, means one
-    // step to t = 1; finite strain needs it)
-    AssertThrow(!finite_strain.enabled || prm.subsection_path_exists({"Load steps"}),
-                dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the section 'Load steps' "
-                                   "(its number of load steps) is not declared: call "
-                                   "ContactProblem::declare_parameters() on the ParameterHandler too, as "
-                                   "the program does."));
-    n_load_steps = 1;
-    final_time   = 1;
-    if (prm.subsection_path_exists({"Load steps"}))
-      {
-        prm.enter_subsection("Load steps");
-        const long steps = prm.get_integer("Number of steps");
-        final_time       = prm.get_double("Final time");
-        prm.leave_subsection();
-        AssertThrow(steps >= 1 && steps <= 100000,
-                    dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(steps) +
-                                       ": it must be at least 1 (and at most 100000)."));
-        n_load_steps = steps;
-        InputParsing::check_range(final_time, 0, 1e300, "Load steps/Final time", true, false,
-                                  "It is the time t of the last load step.");
-      }
-    if (finite_strain.enabled)
-      {
-        AssertThrow(!distributed,
-                    dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the run has " +
-                                       std::to_string(n_processes) +
-                                       " MPI processes: the finite-strain solve runs in one process (run "
-                                       "the program without mpirun)."));
-      }
-    else
-      {
-        InputParsing::check_section_unused(prm, "Finite strain",
-                                           "'Finite strain/Enabled' is false: the Newton controls, the "
-                                           "pressure load and the monitor point are read only at finite "
-                                           "strain.");
-        if (n_load_steps > 1)
-          pcout << "note: 'Load steps/Number of steps' is " << n_load_steps
-                << ": the one-body problem at small strain is linear and static, and its solution at t = "
-                   "'Final time' does not depend on the steps before; the program solves it once, with every "
-                   "expression at t = "
-                << final_time << "." << std::endl;
-      }
-    for (const auto &e : InputParsing::changed_entries(prm, "Output"))
-      if (e == "Output/Write pictures" || e == "Output/Write CSV")
-        pcout << "warning: the parameter file sets '" << e
-              << "', which only contact problems read; it has no effect on this one-body problem." << std::endl;
+    check_contact_sections(prm);
+    parse_load_steps(prm);
 
-    prm.enter_subsection("Mesh");
-    mesh_parameters.parse_parameters(prm, "Mesh");
-    prm.leave_subsection();
-    // the physical names of a gmsh file name ids in the other sections
-    mesh_parameters.load_physical_names(dir);
-    bc.set_physical_names(mesh_parameters.physical_names);
-    AssertThrow(!mesh_parameters.parts_as_bodies,
-                dealii::ExcMessage("Parameter 'Mesh/Parts as bodies' is true: the parts of the mesh file are "
-                                   "bodies in contact, which ContactProblem solves (the program does so)."));
-    for (const auto &e : InputParsing::changed_entries(prm, "Material"))
-      AssertThrow(e != "Material/Part materials",
-                  dealii::ExcMessage("Parameter 'Material/Part materials' is set, but it is read only with "
-                                     "'Mesh/Parts as bodies = true' (a contact problem)."));
-
-    prm.enter_subsection("Material");
-    youngs_modulus = prm.get_double("Young's modulus");
-    poissons_ratio = prm.get_double("Poisson's ratio");
-    model          = ElasticMaterial::parse_model(prm.get("Model"));
-    law            = MaterialLaws::parse(prm.get("Law"), "Material/Law");
-    prm.leave_subsection();
-    InputParsing::check_range(youngs_modulus, ElasticMaterial::min_youngs_modulus,
-                              ElasticMaterial::max_youngs_modulus, "Material/Young's modulus", false,
-                              false, "Choose units that bring E nearer to 1.");
-    AssertThrow(!finite_strain.enabled || MaterialLaws::is_hyperelastic(law),
-                dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': "
-                                   "the linear law has no finite-strain response. Set 'Material/Law' to "
-                                   "'neo-hooke' or 'saint venant-kirchhoff', or 'Finite strain/Enabled' to "
-                                   "false."));
-    // validates E and nu
-    (void)MaterialLaws::make_law(law, youngs_modulus, poissons_ratio, model);
-    if (MaterialLaws::is_hyperelastic(law) && !finite_strain.enabled)
-      pcout << "note: 'Material/Law = " << MaterialLaws::name(law)
-            << "' at small strain ('Finite strain/Enabled = false'): the program solves linear elasticity with "
-               "the law's linearization at F = I, the linear law of the same E and nu. Set 'Finite "
-               "strain/Enabled = true' for the hyperelastic response."
-            << std::endl;
+    parse_mesh_and_material(prm, dir);
 
     prm.enter_subsection("Discretization");
     degree = prm.get_integer("Order");
     gamma  = prm.get_double("Stabilization factor");
-    stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
-                     prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
-                     prm.get("Stabilization") == "boundary" ? Stabilization::boundary :
-                                                              Stabilization::automatic);
+    stabilization = InputParsing::parse_stabilization(prm.get("Stabilization"));
     prm.leave_subsection();
     InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
 
@@ -337,5 +232,135 @@ namespace dealvem
     write_json    = prm.get_bool("Write JSON");
     prm.leave_subsection();
     check_output_names(output_folder, base_name);
+  }
+
+
+
+  // The sections that only contact problems (Number of bodies > 1) read: a
+  // file that sets them describes another problem than this one.
+  void
+  ElasticityProblem::check_contact_sections(dealii::ParameterHandler &prm) const
+  {
+    {
+      // (the sections with a changed entry, from one listing)
+      std::set<std::string> body_sections;
+      for (const auto &path : InputParsing::changed_entries(prm, ""))
+        if (path.compare(0, 5, "Body ") == 0)
+          body_sections.insert(path.substr(0, path.find('/')));
+      for (const auto &section : body_sections)
+        InputParsing::check_section_unused(prm, section,
+                                           "'Number of bodies' is 1: section '" + section +
+                                             "' is read only with 'Number of bodies' at least " +
+                                             std::to_string(std::stoi(section.substr(5)) + 1) + ".");
+    }
+    InputParsing::check_section_unused(prm, "Contact",
+                                       "'Number of bodies' is 1, and contact needs at least two bodies.");
+  }
+
+
+
+  // 'Finite strain' and 'Load steps' (the steps as contact problems read
+  // them), with the notes and warnings on entries this problem does not
+  // use.
+  void
+  ElasticityProblem::parse_load_steps(dealii::ParameterHandler &prm)
+  {
+    finite_strain.parse_parameters(prm);
+    // the load steps, as contact problems read them: step n of N at the
+    // time t = n * Final time / N of the expressions. At finite strain the
+    // Newton solve runs them (solve_finite_strain()); the linear static
+    // problem is solved once, at t = Final time
+    // (a ParameterHandler without the section, declared by
+    // ContactProblem::declare_parameters() as the program does, means one
+    // step to t = 1; finite strain needs it)
+    AssertThrow(!finite_strain.enabled || prm.subsection_path_exists({"Load steps"}),
+                dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the section 'Load steps' "
+                                   "(its number of load steps) is not declared: call "
+                                   "ContactProblem::declare_parameters() on the ParameterHandler too, as "
+                                   "the program does."));
+    n_load_steps = 1;
+    final_time   = 1;
+    if (prm.subsection_path_exists({"Load steps"}))
+      {
+        prm.enter_subsection("Load steps");
+        const long steps = prm.get_integer("Number of steps");
+        final_time       = prm.get_double("Final time");
+        prm.leave_subsection();
+        InputParsing::check_number_of_load_steps(steps);
+        n_load_steps = steps;
+        InputParsing::check_range(final_time, 0, 1e300, "Load steps/Final time", true, false,
+                                  "It is the time t of the last load step.");
+      }
+    if (finite_strain.enabled)
+      {
+        AssertThrow(!distributed,
+                    dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the run has " +
+                                       std::to_string(n_processes) +
+                                       " MPI processes: the finite-strain solve runs in one process (run "
+                                       "the program without mpirun)."));
+      }
+    else
+      {
+        InputParsing::check_section_unused(prm, "Finite strain",
+                                           "'Finite strain/Enabled' is false: the Newton controls, the "
+                                           "pressure load and the monitor point are read only at finite "
+                                           "strain.");
+        if (n_load_steps > 1)
+          pcout << "note: 'Load steps/Number of steps' is " << n_load_steps
+                << ": the one-body problem at small strain is linear and static, and its solution at t = "
+                   "'Final time' does not depend on the steps before; the program solves it once, with every "
+                   "expression at t = "
+                << final_time << "." << std::endl;
+      }
+    for (const auto &e : InputParsing::changed_entries(prm, "Output"))
+      if (e == "Output/Write pictures" || e == "Output/Write CSV")
+        pcout << "warning: the parameter file sets '" << e
+              << "', which only contact problems read; it has no effect on this one-body problem." << std::endl;
+
+  }
+
+
+
+  // 'Mesh' (with the physical names of a gmsh file) and 'Material'.
+  void
+  ElasticityProblem::parse_mesh_and_material(dealii::ParameterHandler &prm, const std::string &dir)
+  {
+    prm.enter_subsection("Mesh");
+    mesh_parameters.parse_parameters(prm, "Mesh");
+    prm.leave_subsection();
+    // the physical names of a gmsh file name ids in the other sections
+    mesh_parameters.load_physical_names(dir);
+    bc.set_physical_names(mesh_parameters.physical_names);
+    AssertThrow(!mesh_parameters.parts_as_bodies,
+                dealii::ExcMessage("Parameter 'Mesh/Parts as bodies' is true: the parts of the mesh file are "
+                                   "bodies in contact, which ContactProblem solves (the program does so)."));
+    for (const auto &e : InputParsing::changed_entries(prm, "Material"))
+      AssertThrow(e != "Material/Part materials",
+                  dealii::ExcMessage("Parameter 'Material/Part materials' is set, but it is read only with "
+                                     "'Mesh/Parts as bodies = true' (a contact problem)."));
+
+    prm.enter_subsection("Material");
+    youngs_modulus = prm.get_double("Young's modulus");
+    poissons_ratio = prm.get_double("Poisson's ratio");
+    model          = ElasticMaterial::parse_model(prm.get("Model"));
+    law            = MaterialLaws::parse(prm.get("Law"), "Material/Law");
+    prm.leave_subsection();
+    InputParsing::check_range(youngs_modulus, ElasticMaterial::min_youngs_modulus,
+                              ElasticMaterial::max_youngs_modulus, "Material/Young's modulus", false,
+                              false, "Choose units that bring E nearer to 1.");
+    AssertThrow(!finite_strain.enabled || MaterialLaws::is_hyperelastic(law),
+                dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': "
+                                   "the linear law has no finite-strain response. Set 'Material/Law' to "
+                                   "'neo-hooke' or 'saint venant-kirchhoff', or 'Finite strain/Enabled' to "
+                                   "false."));
+    // validates E and nu
+    (void)MaterialLaws::make_law(law, youngs_modulus, poissons_ratio, model);
+    if (MaterialLaws::is_hyperelastic(law) && !finite_strain.enabled)
+      pcout << "note: 'Material/Law = " << MaterialLaws::name(law)
+            << "' at small strain ('Finite strain/Enabled = false'): the program solves linear elasticity with "
+               "the law's linearization at F = I, the linear law of the same E and nu. Set 'Finite "
+               "strain/Enabled = true' for the hyperelastic response."
+            << std::endl;
+
   }
 } // namespace dealvem

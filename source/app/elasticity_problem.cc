@@ -533,48 +533,14 @@ namespace dealvem
     // in contact problems); else the data are fixed and step n applies n/N
     // of the loads and prescribed displacements (the load factor).
     const bool timed = bc.uses_time();
-    {
-      dealii::Vector<double> f_ext;
-      assembler.assemble_load_vector(f_ext);
-      for (unsigned int i = 0; i < f_ext.size(); ++i)
-        check_load_entry(i, f_ext[i]);
-    }
-    // the scales of modulus, size and loads, before Newton squares them
-    // (the loads at the time the functions are set to: the final time)
-    {
-      std::ostringstream when;
-      when << "at t = " << final_time;
-      dealii::Vector<double> f_ext;
-      assembler.assemble_load_vector(f_ext);
-      ScaleCheck::check(dof_handler, f_ext,
-                        {{mesh_parameters.material_id, "the body", "Material/Young's modulus", youngs_modulus}},
-                        when.str(), true);
-    }
+    check_finite_strain_loads(assembler);
     FiniteStrainSolver<2>::Parameters parameters = finite_strain.solver;
     parameters.n_load_steps                     = n_load_steps;
     parameters.scale_prescribed_motion          = !timed;
     FiniteStrainSolver<2> solver(assembler, constraints, parameters);
 
     // the monitor point: a vertex of the mesh
-    unsigned int monitor = dealii::numbers::invalid_unsigned_int;
-    if (finite_strain.has_monitor_point)
-      {
-        double nearest = 1e300;
-        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-          {
-            const double d = mesh.vertex(v).distance(finite_strain.monitor_point);
-            if (d < nearest)
-              {
-                nearest = d;
-                monitor = v;
-              }
-          }
-        std::ostringstream msg;
-        msg << "Parameter 'Finite strain/Monitor point' = (" << finite_strain.monitor_point
-            << ") is not a vertex of the mesh of cycle " << cycle << ": the nearest vertex (" << mesh.vertex(monitor)
-            << ") is " << nearest << " away. Give the coordinates of a vertex (a corner of the domain, say).";
-        AssertThrow(nearest <= 1e-8 * mesh.extent(), dealii::ExcMessage(msg.str()));
-      }
+    const unsigned int monitor = monitor_vertex(cycle);
 
     const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
     const std::string key    = "cycles." + std::to_string(cycle) + ".finite_strain.";
@@ -657,27 +623,7 @@ namespace dealvem
         const FiniteStrainFields fields = compute_finite_strain_fields(dof_handler, laws, solution);
         max_cauchy_norm                 = fields.max_cell_cauchy_norm;
         json.set(key + "steps." + std::to_string(n) + ".max_cauchy_norm", max_cauchy_norm);
-        pcout << "  load step " << n << " of " << n_load_steps << " (load factor " << load_factor << ", t = " << time
-              << "): " << r.iterations.size() - 1 << " Newton update" << (r.iterations.size() == 2 ? "" : "s")
-              << ", residual " << r.iterations.back().residual_norm << " (relative "
-              << r.iterations.back().relative_residual << "), max |Cauchy stress| " << max_cauchy_norm;
-        if (monitor != dealii::numbers::invalid_unsigned_int)
-          {
-            const unsigned int node = dof_handler.vertex_node(monitor);
-            const double       ux   = solution(VEMDoFHandler<2>::node_dof(node, 0));
-            const double       uy   = solution(VEMDoFHandler<2>::node_dof(node, 1));
-            pcout << ", u(" << mesh.vertex(monitor) << ") = (" << ux << ", " << uy << ")";
-            json.set(key + "steps." + std::to_string(n) + ".monitor_ux", ux);
-            json.set(key + "steps." + std::to_string(n) + ".monitor_uy", uy);
-            if (n == n_load_steps)
-              {
-                json.set(key + "monitor_point.x", mesh.vertex(monitor)[0]);
-                json.set(key + "monitor_point.y", mesh.vertex(monitor)[1]);
-                json.set(key + "monitor_point.ux", ux);
-                json.set(key + "monitor_point.uy", uy);
-              }
-          }
-        pcout << std::endl;
+        report_load_step(n, load_factor, time, r, monitor, key);
         if (write_vtu)
           {
             const std::string       file = prefix + step_suffix(n) + ".vtu";
@@ -704,4 +650,94 @@ namespace dealvem
     solver_iterations  = newton_updates;
     used_solver_type   = "UMFPACK";
   }
+
+
+  // The finite-strain loads: every entry of the load vector finite, and the
+  // scales of modulus, size and loads checked before Newton squares them
+  // (the loads at the time the functions are set to: the final time).
+  void
+  ElasticityProblem::check_finite_strain_loads(FiniteStrainAssembler<2> &assembler) const
+  {
+    {
+      dealii::Vector<double> f_ext;
+      assembler.assemble_load_vector(f_ext);
+      for (unsigned int i = 0; i < f_ext.size(); ++i)
+        check_load_entry(i, f_ext[i]);
+    }
+    {
+      std::ostringstream when;
+      when << "at t = " << final_time;
+      dealii::Vector<double> f_ext;
+      assembler.assemble_load_vector(f_ext);
+      ScaleCheck::check(dof_handler, f_ext,
+                        {{mesh_parameters.material_id, "the body", "Material/Young's modulus", youngs_modulus}},
+                        when.str(), true);
+    }
+  }
+
+
+
+  // The vertex of 'Finite strain/Monitor point' (invalid_unsigned_int when
+  // none is given); a point that is no vertex of the mesh is an error.
+  unsigned int
+  ElasticityProblem::monitor_vertex(const unsigned int cycle) const
+  {
+    unsigned int monitor = dealii::numbers::invalid_unsigned_int;
+    if (finite_strain.has_monitor_point)
+      {
+        double nearest = 1e300;
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          {
+            const double d = mesh.vertex(v).distance(finite_strain.monitor_point);
+            if (d < nearest)
+              {
+                nearest = d;
+                monitor = v;
+              }
+          }
+        std::ostringstream msg;
+        msg << "Parameter 'Finite strain/Monitor point' = (" << finite_strain.monitor_point
+            << ") is not a vertex of the mesh of cycle " << cycle << ": the nearest vertex (" << mesh.vertex(monitor)
+            << ") is " << nearest << " away. Give the coordinates of a vertex (a corner of the domain, say).";
+        AssertThrow(nearest <= 1e-8 * mesh.extent(), dealii::ExcMessage(msg.str()));
+      }
+    return monitor;
+  }
+
+
+
+  // The line of a converged load step on the terminal (Newton updates,
+  // residual, largest Cauchy stress, the displacement of the monitor
+  // point) and the monitor point's entries of the JSON summary.
+  void
+  ElasticityProblem::report_load_step(const unsigned int                        n,
+                                      const double                              load_factor,
+                                      const double                              time,
+                                      const FiniteStrainSolver<2>::StepRecord &r,
+                                      const unsigned int                        monitor,
+                                      const std::string                        &key)
+  {
+    pcout << "  load step " << n << " of " << n_load_steps << " (load factor " << load_factor << ", t = " << time
+          << "): " << r.iterations.size() - 1 << " Newton update" << (r.iterations.size() == 2 ? "" : "s")
+          << ", residual " << r.iterations.back().residual_norm << " (relative "
+          << r.iterations.back().relative_residual << "), max |Cauchy stress| " << max_cauchy_norm;
+    if (monitor != dealii::numbers::invalid_unsigned_int)
+      {
+        const unsigned int node = dof_handler.vertex_node(monitor);
+        const double       ux   = solution(VEMDoFHandler<2>::node_dof(node, 0));
+        const double       uy   = solution(VEMDoFHandler<2>::node_dof(node, 1));
+        pcout << ", u(" << mesh.vertex(monitor) << ") = (" << ux << ", " << uy << ")";
+        json.set(key + "steps." + std::to_string(n) + ".monitor_ux", ux);
+        json.set(key + "steps." + std::to_string(n) + ".monitor_uy", uy);
+        if (n == n_load_steps)
+          {
+            json.set(key + "monitor_point.x", mesh.vertex(monitor)[0]);
+            json.set(key + "monitor_point.y", mesh.vertex(monitor)[1]);
+            json.set(key + "monitor_point.ux", ux);
+            json.set(key + "monitor_point.uy", uy);
+          }
+      }
+    pcout << std::endl;
+  }
+
 } // namespace dealvem

@@ -458,13 +458,13 @@ namespace dealvem
     json.set("moment_point.x", opt.moment_point[0]);
     json.set("moment_point.y", opt.moment_point[1]);
     if (opt.write_pictures)
-      std::cout << "note: finite sliding writes no SVG pictures ('Output/Write pictures' applies to the "
+      p.pcout << "note: finite sliding writes no SVG pictures ('Output/Write pictures' applies to the "
                    "small-strain path); the bodies of every step are in the VTU files, the forces in the history "
                    "CSV"
                 << std::endl;
     const auto &reported = sliding->get_reported_interfaces();
     n_reported           = reported.size();
-    std::cout << "Finite strain with finite sliding: " << bodies.size() << " bodies, " << interfaces.size()
+    p.pcout << "Finite strain with finite sliding: " << bodies.size() << " bodies, " << interfaces.size()
               << " named interface" << (interfaces.size() == 1 ? "" : "s")
               << (opt.detect_pairs ? ", the others detected in the current configuration at every pairing pass" : "")
               << ", k = " << opt.degree << ", " << opt.n_load_steps << " load step"
@@ -475,7 +475,7 @@ namespace dealvem
         const auto  name = [&](const unsigned int b) {
           return b < bodies.size() ? bodies[b].name : "material id " + std::to_string(b);
         };
-        std::cout << "  interface " << i << ": "
+        p.pcout << "  interface " << i << ": "
                   << (r.detected ? "between " + name(r.body_a) + " and " + name(r.body_b) + " (detected)" :
                                    "boundary ids " + std::to_string(int(r.master_id)) + " : " +
                                      std::to_string(int(r.slave_id)))
@@ -539,21 +539,21 @@ namespace dealvem
   {
     for (const auto &pass : r.newton)
       updates += pass.iterations.empty() ? 0 : pass.iterations.size() - 1;
-    std::cout << "  step " << n << " (t = " << time << "): " << r.n_passes << " pairing pass"
+    p.pcout << "  step " << n << " (t = " << time << "): " << r.n_passes << " pairing pass"
               << (r.n_passes == 1 ? "" : "es") << ", " << updates << " Newton updates, " << r.n_active
               << " active pairs (" << r.n_slipping << " slipping), offset " << r.pairing_offset;
     if (opt.detect_pairs)
-      std::cout << ", " << r.n_detected << " interface" << (r.n_detected == 1 ? "" : "s") << " detected";
+      p.pcout << ", " << r.n_detected << " interface" << (r.n_detected == 1 ? "" : "s") << " detected";
     for (unsigned int i = 0; i < n_reported; ++i)
-      std::cout << "; interface " << i << ": normal force (" << r.normal_force[i] << "), friction force ("
+      p.pcout << "; interface " << i << ": normal force (" << r.normal_force[i] << "), friction force ("
                 << r.friction_force[i] << ")";
-    std::cout << std::endl;
+    p.pcout << std::endl;
     const auto outputs = finite_sliding_step_outputs(*sliding, n_reported, time, bc, opt.moment_point);
     for (unsigned int i = 0; i < n_reported; ++i)
-      std::cout << "    interface " << i << ": force on the slave side (" << outputs.force[i][0] << ", "
+      p.pcout << "    interface " << i << ": force on the slave side (" << outputs.force[i][0] << ", "
                 << outputs.force[i][1] << "), moment " << outputs.moment[i] << " about ("
                 << opt.moment_point[0] << ", " << opt.moment_point[1] << ")" << std::endl;
-    print_reactions(outputs.reactions, opt.moment_point, "    ");
+    print_reactions(p.pcout, outputs.reactions, opt.moment_point, "    ");
     return outputs;
   }
 

@@ -5,6 +5,7 @@
 #ifndef dealvem_app_contact_problem_h
 #define dealvem_app_contact_problem_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -788,6 +789,9 @@ namespace dealvem
     bool                       distributed = false;
     /// Process 0 prints and writes files; the others compute silently.
     bool                       root = true;
+    /// The terminal output of the run: std::cout on process 0, nothing on
+    /// the others (the same policy as ElasticityProblem).
+    dealii::ConditionalOStream pcout;
     /// The DoF handler, assembler, matrices and solvers of the current
     /// cycle (defined in the .cc file); declared after @p results so that it
     /// is destroyed before the mesh it refers to.
