@@ -58,299 +58,6 @@ namespace dealvem
 
 
 
-  void
-  ElasticityProblem::declare_parameters(dealii::ParameterHandler &prm)
-  {
-    using namespace dealii::Patterns;
-    prm.declare_entry("Allow large runs", "false", Bool(),
-                      "Before a run starts, its size is estimated from the mesh parameters and the "
-                      "refinement cycles; runs estimated above 2e7 DoFs, 1e7 Voronoi cells, 1e5 Lloyd "
-                      "iterations or 1e8 Lloyd iterations x cells (summed over the cycles) are refused unless this is true. "
-                      "Mesh files enter with the counts in their header (read before the file). So are "
-                      "runs whose estimated memory with the chosen solver exceeds 'Memory limit'.");
-    prm.declare_entry("Memory limit", "0", Double(0),
-                      "Memory (GB) a run may use, for the size check before the run; 0: 80 % of the "
-                      "smallest of the physical memory, the process limits (ulimit -v, -d) and the "
-                      "control group's limit.");
-    prm.enter_subsection("Mesh");
-    MeshParameters::declare_parameters(prm);
-    prm.leave_subsection();
-
-    prm.enter_subsection("Material");
-    prm.declare_entry("Young's modulus", "1000", Double(0), "Young's modulus E, 1e-200 <= E <= 1e200.");
-    prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
-                      "Poisson's ratio nu, -1 < nu < 0.5.");
-    prm.declare_entry("Model", "plane strain", Selection("plane strain|plane stress"),
-                      "2D model of the material.");
-    prm.declare_entry("Law", "linear", Anything(), MaterialLaws::law_documentation);
-    prm.leave_subsection();
-
-    prm.enter_subsection("Discretization");
-    prm.declare_entry("Order", "2", Integer(1, 2), "Order k of the virtual elements (1 or 2).");
-    prm.declare_entry("Stabilization", "automatic", Selection("automatic|diagonal|trace|boundary"),
-                      "Stabilization of the element stiffness: 'automatic' (trace for k = 1, diagonal "
-                      "for k = 2; trace for both at finite strain, where the diagonal rule is too weak), "
-                      "'diagonal' (the D-recipe, "
-                      "gamma c_k (I-Pi)^T diag(max(K_c,aa, 1e-3 tau)) (I-Pi), c_1 = 1, c_2 = 1/5, K_c,aa half "
-                      "the trace of node a's 2 x 2 block of the consistency stiffness, for both components: "
-                      "every node stabilized like its own consistency stiffness, in any orientation), 'trace' "
-                      "(dofi-dofi, gamma tau (I-Pi)^T (I-Pi), tau = trace(K_c)/n_dofs) or 'boundary' "
-                      "(gamma tau (I-Pi)^T S (I-Pi), S the tangential derivatives along the edges, each "
-                      "edge weighted by the mean edge length over its own: robust to short edges; the "
-                      "default of finite sliding, whose node insertion makes them).");
-    prm.declare_entry("Stabilization factor", "1.0", Double(1e-8),
-                      "Factor gamma of the stabilization; 1e-6 <= gamma <= 1e6.");
-    prm.leave_subsection();
-
-    BoundaryConditionParameters::declare_parameters(prm);
-
-    prm.enter_subsection("Exact solution");
-    prm.declare_entry("Displacement", "", Anything(),
-                      "Exact displacement 'ux, uy' (muparser expressions in x, y and t with "
-                      "the function constants; one body: t = 1; contact problems: the time of the "
-                      "last load step, 'Load steps/Final time'). Empty: no error computation.");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Solver");
-    prm.declare_entry("Type", "automatic",
-                      Selection("automatic|UMFPACK|KLU|CG-AMG|direct constraints|GMRES-AMG|CG-AMG constraints"),
-                      "Each name is one algorithm, in one process and under mpirun alike. "
-                      "automatic: the choice and its reason are printed; one body: UMFPACK up to 1e4 DoFs "
-                      "(where it fits into 'Memory limit'), CG-AMG above; contact: direct constraints up "
-                      "to 1.2e5 DoFs, CG-AMG above (with or without Coulomb friction); the crossovers are "
-                      "measured in doc/benchmarks.md. "
-                      "UMFPACK / KLU: a direct LU factorization (SuiteSparse / Trilinos Amesos) of the "
-                      "stiffness, with contact of the whole saddle-point matrix (one process only). "
-                      "CG-AMG: deal.II's SolverCG preconditioned by Trilinos ML algebraic multigrid with "
-                      "the rigid-body modes as near-null space (for k = 2 by default a two-level "
-                      "p-multigrid: Chebyshev smoothing on k = 2, ML AMG on the Galerkin k = 1 level); with "
-                      "contact on the stiffness condensed by the active contact constraints (each becomes "
-                      "an affine constraint on one slave DoF, multipliers recovered from the residual); "
-                      "'CG-AMG constraints' is its former name. direct constraints: the same condensed "
-                      "stiffness factored directly (CHOLMOD's Cholesky in one process, a fresh ordering "
-                      "per active set; Amesos KLU under mpirun); one body: UMFPACK. GMRES-AMG: contact "
-                      "only, GMRES on the whole saddle point with a block preconditioner (AMG on the "
-                      "displacement block, exact approximate Schur complement), one process only; one "
-                      "body: CG-AMG. With Coulomb friction, slipping pairs make the condensed matrix "
-                      "non-symmetric (Petrov-Galerkin condensation): CG-AMG then runs GMRES, direct "
-                      "constraints UMFPACK's LU (Amesos KLU under mpirun).");
-    prm.declare_entry("Warm start", "true", Bool(),
-                      "Contact, CG-AMG: start each Krylov solve from the displacements of the previous one "
-                      "(active-set or Newton iteration, load step) instead of from zero.");
-    prm.declare_entry("Preconditioner", "automatic", Selection("automatic|AMG|p-multigrid"),
-                      "Preconditioner of CG for one body (serial and distributed): automatic (the "
-                      "p-multigrid for k = 2, ML AMG for k = 1), AMG (one ML V-cycle on the whole "
-                      "matrix) or p-multigrid (k = 2 only).");
-    prm.declare_entry("Relative tolerance", "1e-12", Double(1e-16, 1),
-                      "Relative residual tolerance of the iterative solver, 0 < tolerance < 1.");
-    prm.declare_entry("Maximum iterations", "10000", Integer(1), "Iteration limit of the iterative solver.");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Convergence study");
-    prm.declare_entry("Refinement cycles", "1", Integer(1, 8),
-                      "Number of meshes: each cycle doubles the subdivisions (four times the "
-                      "Voronoi cells). With an exact solution a convergence table is printed.");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Output");
-    prm.declare_entry("Folder", "output", Anything(),
-                      "Output folder (relative to the working directory, not empty), created if "
-                      "needed.");
-    prm.declare_entry("Base name", "solution", Anything(),
-                      "Base name of the output files (not empty, no '/'). With several refinement "
-                      "cycles the files of cycle c are <base name>-cycle<c>.*.");
-    prm.declare_entry("Write VTU", "true", Bool(),
-                      "Write <base name>.vtu (one cycle) or <base name>-cycle<c>.vtu for ParaView.");
-    prm.declare_entry("Write JSON", "true", Bool(),
-                      "Write the summary <base name>.json (one body: all cycles in one file, "
-                      "rewritten after each cycle).");
-    prm.leave_subsection();
-
-    FiniteStrainParameters::declare_parameters(prm);
-  }
-
-
-
-  void
-  ElasticityProblem::parse_parameters(dealii::ParameterHandler &prm, const std::string &dir)
-  {
-    prm_directory = dir;
-    // the sections that only contact problems (Number of bodies > 1) read:
-    // a file that sets them describes another problem than this one
-    {
-      // (the sections with a changed entry, from one listing)
-      std::set<std::string> body_sections;
-      for (const auto &path : InputParsing::changed_entries(prm, ""))
-        if (path.compare(0, 5, "Body ") == 0)
-          body_sections.insert(path.substr(0, path.find('/')));
-      for (const auto &section : body_sections)
-        InputParsing::check_section_unused(prm, section,
-                                           "'Number of bodies' is 1: section '" + section +
-                                             "' is read only with 'Number of bodies' at least " +
-                                             std::to_string(std::stoi(section.substr(5)) + 1) + ".");
-    }
-    InputParsing::check_section_unused(prm, "Contact",
-                                       "'Number of bodies' is 1, and contact needs at least two bodies.");
-    finite_strain.parse_parameters(prm);
-    // the load steps, as contact problems read them: step n of N at the
-    // time t = n * Final time / N of the expressions. At finite strain the
-    // Newton solve runs them (solve_finite_strain()); the linear static
-    // problem is solved once, at t = Final time
-    // (a ParameterHandler without the section, declared by
-    // ContactProblem::declare_parameters() as the program does, means one
-    // step to t = 1; finite strain needs it)
-    AssertThrow(!finite_strain.enabled || prm.subsection_path_exists({"Load steps"}),
-                dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the section 'Load steps' "
-                                   "(its number of load steps) is not declared: call "
-                                   "ContactProblem::declare_parameters() on the ParameterHandler too, as "
-                                   "the program does."));
-    n_load_steps = 1;
-    final_time   = 1;
-    if (prm.subsection_path_exists({"Load steps"}))
-      {
-        prm.enter_subsection("Load steps");
-        const long steps = prm.get_integer("Number of steps");
-        final_time       = prm.get_double("Final time");
-        prm.leave_subsection();
-        AssertThrow(steps >= 1 && steps <= 100000,
-                    dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(steps) +
-                                       ": it must be at least 1 (and at most 100000)."));
-        n_load_steps = steps;
-        InputParsing::check_range(final_time, 0, 1e300, "Load steps/Final time", true, false,
-                                  "It is the time t of the last load step.");
-      }
-    if (finite_strain.enabled)
-      {
-        AssertThrow(!distributed,
-                    dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but the run has " +
-                                       std::to_string(n_processes) +
-                                       " MPI processes: the finite-strain solve runs in one process (run "
-                                       "the program without mpirun)."));
-      }
-    else
-      {
-        InputParsing::check_section_unused(prm, "Finite strain",
-                                           "'Finite strain/Enabled' is false: the Newton controls, the "
-                                           "pressure load and the monitor point are read only at finite "
-                                           "strain.");
-        if (n_load_steps > 1)
-          pcout << "note: 'Load steps/Number of steps' is " << n_load_steps
-                << ": the one-body problem at small strain is linear and static, and its solution at t = "
-                   "'Final time' does not depend on the steps before; the program solves it once, with every "
-                   "expression at t = "
-                << final_time << "." << std::endl;
-      }
-    for (const auto &e : InputParsing::changed_entries(prm, "Output"))
-      if (e == "Output/Write pictures" || e == "Output/Write CSV")
-        pcout << "warning: the parameter file sets '" << e
-              << "', which only contact problems read; it has no effect on this one-body problem." << std::endl;
-
-    prm.enter_subsection("Mesh");
-    mesh_parameters.parse_parameters(prm, "Mesh");
-    prm.leave_subsection();
-    // the physical names of a gmsh file name ids in the other sections
-    mesh_parameters.load_physical_names(dir);
-    bc.set_physical_names(mesh_parameters.physical_names);
-    AssertThrow(!mesh_parameters.parts_as_bodies,
-                dealii::ExcMessage("Parameter 'Mesh/Parts as bodies' is true: the parts of the mesh file are "
-                                   "bodies in contact, which ContactProblem solves (the program does so)."));
-    for (const auto &e : InputParsing::changed_entries(prm, "Material"))
-      AssertThrow(e != "Material/Part materials",
-                  dealii::ExcMessage("Parameter 'Material/Part materials' is set, but it is read only with "
-                                     "'Mesh/Parts as bodies = true' (a contact problem)."));
-
-    prm.enter_subsection("Material");
-    youngs_modulus = prm.get_double("Young's modulus");
-    poissons_ratio = prm.get_double("Poisson's ratio");
-    model          = ElasticMaterial::parse_model(prm.get("Model"));
-    law            = MaterialLaws::parse(prm.get("Law"), "Material/Law");
-    prm.leave_subsection();
-    InputParsing::check_range(youngs_modulus, ElasticMaterial::min_youngs_modulus,
-                              ElasticMaterial::max_youngs_modulus, "Material/Young's modulus", false,
-                              false, "Choose units that bring E nearer to 1.");
-    AssertThrow(!finite_strain.enabled || MaterialLaws::is_hyperelastic(law),
-                dealii::ExcMessage("Parameter 'Finite strain/Enabled' is true, but 'Material/Law' is 'linear': "
-                                   "the linear law has no finite-strain response. Set 'Material/Law' to "
-                                   "'neo-hooke' or 'saint venant-kirchhoff', or 'Finite strain/Enabled' to "
-                                   "false."));
-    // validates E and nu
-    (void)MaterialLaws::make_law(law, youngs_modulus, poissons_ratio, model);
-    if (MaterialLaws::is_hyperelastic(law) && !finite_strain.enabled)
-      pcout << "note: 'Material/Law = " << MaterialLaws::name(law)
-            << "' at small strain ('Finite strain/Enabled = false'): the program solves linear elasticity with "
-               "the law's linearization at F = I, the linear law of the same E and nu. Set 'Finite "
-               "strain/Enabled = true' for the hyperelastic response."
-            << std::endl;
-
-    prm.enter_subsection("Discretization");
-    degree = prm.get_integer("Order");
-    gamma  = prm.get_double("Stabilization factor");
-    stabilization = (prm.get("Stabilization") == "trace"    ? Stabilization::trace :
-                     prm.get("Stabilization") == "diagonal" ? Stabilization::diagonal :
-                     prm.get("Stabilization") == "boundary" ? Stabilization::boundary :
-                                                              Stabilization::automatic);
-    prm.leave_subsection();
-    InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
-
-    bc.parse_parameters(prm);
-
-    prm.enter_subsection("Exact solution");
-    exact_displacement = prm.get("Displacement");
-    prm.leave_subsection();
-    // an expression in t: at finite strain the steps solve at their times;
-    // the linear problem is solved at t = Final time (and its exact
-    // solution compared there)
-    bc.set_time(final_time);
-
-    if (finite_strain.enabled)
-      for (const auto &e : InputParsing::changed_entries(prm, "Solver"))
-        pcout << "warning: the parameter file sets '" << e
-              << "', but with 'Finite strain/Enabled = true' every Newton update is solved by UMFPACK; "
-                 "the setting has no effect."
-              << std::endl;
-    prm.enter_subsection("Solver");
-    solver_type           = prm.get("Type");
-    if (solver_type == "GMRES-AMG" || solver_type == "CG-AMG constraints")
-      solver_type = "CG-AMG";
-    if (solver_type == "direct constraints")
-      solver_type = "UMFPACK";
-    solver_tolerance      = prm.get_double("Relative tolerance");
-    solver_max_iterations = prm.get_integer("Maximum iterations");
-    solver_preconditioner = prm.get("Preconditioner");
-    AssertThrow(solver_preconditioner != "p-multigrid" || degree == 2,
-                dealii::ExcMessage("Solver/Preconditioner = p-multigrid needs Discretization/Order = 2 (the "
-                                   "coarse level is the order-1 space on the same polygons)."));
-    prm.leave_subsection();
-    InputParsing::check_range(solver_tolerance, 0, 1, "Solver/Relative tolerance", true, true);
-
-    prm.enter_subsection("Convergence study");
-    n_cycles = prm.get_integer("Refinement cycles");
-    prm.leave_subsection();
-    memory_limit_GB = prm.get_double("Memory limit");
-    const auto size = InputParsing::check_run_size({&mesh_parameters}, n_cycles, degree, prm.get_bool("Allow large runs"),
-                                 prm_directory,
-                                 solver_type == "automatic" ? InputParsing::SolverKind::automatic :
-                                 solver_type == "CG-AMG"    ? InputParsing::SolverKind::iterative :
-                                                              InputParsing::SolverKind::direct,
-                                 memory_limit_GB);
-    // a direct solver asked for far above the crossover: it fits, but slowly
-    if ((solver_type == "UMFPACK" || solver_type == "KLU") && size.dofs > 1e6)
-      pcout << "warning: 'Solver/Type = " << solver_type << "' with about " << std::setprecision(3) << size.dofs
-            << " DoFs in the last cycle: the factorization takes minutes (UMFPACK is 4.5x slower than CG at "
-               "2e5 DoFs already, doc/benchmarks.md); 'Solver/Type = automatic' or 'CG-AMG' would be faster."
-            << std::setprecision(6) << std::endl;
-
-    prm.enter_subsection("Output");
-    output_folder = prm.get("Folder");
-    base_name     = prm.get("Base name");
-    write_vtu     = prm.get_bool("Write VTU");
-    write_json    = prm.get_bool("Write JSON");
-    prm.leave_subsection();
-    check_output_names(output_folder, base_name);
-  }
-
-
-
   // One cycle: the mesh of the cycle; its cells must carry the material id
   // the parameter file defines, its boundary the ids the conditions name.
   void
@@ -628,268 +335,6 @@ namespace dealvem
 
 
 
-  // Stresses, errors against the exact solution (if given), the VTU file,
-  // a line of the convergence table and of the JSON summary; the summary
-  // is rewritten after every cycle, so that a later failure keeps it.
-  void
-  ElasticityProblem::output_results(const unsigned int cycle)
-  {
-    // a displacement far beyond the size of the body means loads far too
-    // large for the stiffness (or a prescribed value out of scale): say so
-    // before the stresses or the error integrals overflow and take the blame
-    {
-      const double size = mesh.extent();
-      std::vector<dealii::types::global_dof_index> dofs;
-      const auto check_cell = [&](const unsigned int c) {
-        dof_handler.get_dof_indices(c, dofs);
-        for (const auto i : dofs)
-          if (!(std::abs(solution[i]) <= BoundaryConditionParameters::max_displacement_ratio * size))
-            {
-              std::ostringstream msg;
-              msg << "Cycle " << cycle << ": the displacement of DoF " << i << " (cell " << c << ") is "
-                  << solution[i] << ", more than " << BoundaryConditionParameters::max_displacement_ratio
-                  << " times the size of the mesh (" << size
-                  << "): far outside the small-displacement model, and the stresses and error integrals "
-                     "would overflow. The loads and prescribed displacements are out of scale with the "
-                     "stiffness: check 'Boundary conditions and loads' (Traction, Pressure, Body force, "
-                     "Rigid boundary, Dirichlet, Point constraints) against 'Material/Young's modulus' = "
-                  << youngs_modulus << ".";
-              AssertThrow(false, dealii::ExcMessage(msg.str()));
-            }
-      };
-      if (distributed)
-        for (const unsigned int c : partition.locally_owned_cells())
-          check_cell(c);
-      else
-        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-          check_cell(c);
-    }
-
-    // the verification of the solve: residual and the force and moment
-    // balance of the body (every edge-connected piece is part of it)
-    // (at finite strain the Newton solver's residual test is the check:
-    // the linear balance does not hold for the deformed body)
-    std::vector<ForceBalance::Body> balance;
-    if (!finite_strain.enabled)
-    {
-      ElasticityAssembler<2> assembler(dof_handler, materials, gamma, stabilization);
-      bc.add_loads(assembler);
-      const double tolerance =
-        (LinearSolver::parse_type(used_solver_type) == LinearSolver::Type::cg_amg ? solver_tolerance : 0.);
-      balance = distributed ? ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(),
-                                                    tolerance, &partition.locally_owned_cells(), mpi_communicator) :
-                              ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(),
-                                                    tolerance);
-      ForceBalance::check(balance, "cycle " + std::to_string(cycle) + " (solver " + solver_description + ")");
-    }
-
-    // the cells this process computes: all, or (distributed) its own, with
-    // the ghost layer for the nodal stress averages
-    std::vector<unsigned int> stress_cells;
-    if (distributed)
-      {
-        std::set_union(partition.locally_owned_cells().begin(), partition.locally_owned_cells().end(),
-                       partition.ghost_cells().begin(), partition.ghost_cells().end(),
-                       std::back_inserter(stress_cells));
-      }
-    const StressRecovery<2> stresses = distributed ? StressRecovery<2>(dof_handler, materials, solution, stress_cells) :
-                                                     StressRecovery<2>(dof_handler, materials, solution);
-    ErrorNorms              errors;
-    if (exact)
-      {
-        dealii::TimerOutput::Scope t(*timer, "errors");
-        if (distributed)
-          errors = sum_over_processes(compute_errors(dof_handler, materials, solution, *exact,
-                                                     partition.locally_owned_cells()),
-                                      mpi_communicator);
-        else
-          errors = compute_errors(dof_handler, materials, solution, *exact);
-      }
-    // nothing non-finite is reported or written
-    {
-      std::vector<unsigned int> own_cells;
-      if (distributed)
-        own_cells = partition.locally_owned_cells();
-      else
-        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-          own_cells.push_back(c);
-      for (const unsigned int c : own_cells)
-        if (!std::isfinite(stresses.cell_von_mises(c)))
-          {
-            std::ostringstream msg;
-            msg << "Cycle " << cycle << ": the von Mises stress of cell " << c << " (first vertex at ("
-                << mesh.vertex(mesh.cell(c).vertices[0])[0] << ", " << mesh.vertex(mesh.cell(c).vertices[0])[1]
-                << ")) is " << stresses.cell_von_mises(c)
-                << ": the displacements or the stresses overflow double precision. Check the loads, the "
-                   "Dirichlet values and 'Material/Young's modulus' for values far from 1 in the units of the "
-                   "problem.";
-            AssertThrow(false, dealii::ExcMessage(msg.str()));
-          }
-      if (exact)
-        for (const auto &[name, v] : std::vector<std::pair<std::string, double>>{
-               {"L2", errors.l2}, {"H1 seminorm", errors.h1_seminorm}, {"energy", errors.energy}})
-          if (!std::isfinite(v) || !std::isfinite(errors.l2_exact) || !std::isfinite(errors.h1_exact))
-            {
-              dealii::Point<2> lo = mesh.vertex(0), hi = mesh.vertex(0);
-              for (const auto &p : mesh.get_vertices())
-                for (unsigned int d = 0; d < 2; ++d)
-                  {
-                    lo[d] = std::min(lo[d], p[d]);
-                    hi[d] = std::max(hi[d], p[d]);
-                  }
-              std::ostringstream msg;
-              msg << "Cycle " << cycle << ": the " << name << " error against 'Exact solution/Displacement' = '"
-                  << exact_displacement << "' is " << v << " (norms of the exact solution: L2 " << errors.l2_exact
-                  << ", H1 " << errors.h1_exact
-                  << "). The integrals of the error overflow double precision: the mesh spans (" << lo[0] << ", "
-                  << lo[1] << ") to (" << hi[0] << ", " << hi[1]
-                  << "); give the coordinates, loads and the exact solution in units that bring them nearer "
-                     "to 1.";
-              AssertThrow(false, dealii::ExcMessage(msg.str()));
-            }
-    }
-    const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
-    const std::string vtu    = prefix + (distributed ? ".pvtu" : finite_strain.enabled ? ".pvd" : ".vtu");
-    // (finite strain: every load step wrote its file and the series)
-    if (write_vtu && !finite_strain.enabled)
-      {
-        dealii::TimerOutput::Scope t(*timer, "output");
-        if (distributed)
-          {
-            // one piece per process, named <prefix>.<process>.vtu, and the
-            // record that joins them (process 0)
-            const std::string stem = std::filesystem::path(prefix).filename().string();
-            write_vtu_piece(prefix + "." + std::to_string(this_process) + ".vtu", dof_handler, solution, stresses,
-                            partition.locally_owned_cells(), this_process);
-            if (this_process == 0)
-              {
-                std::vector<std::string> pieces;
-                for (unsigned int p = 0; p < n_processes; ++p)
-                  pieces.push_back(stem + "." + std::to_string(p) + ".vtu");
-                write_pvtu_record(vtu, pieces);
-                // the pieces of the other processes belong to the run too
-                for (const auto &piece : pieces)
-                  RunFiles::record(output_folder + "/" + piece);
-              }
-          }
-        else
-          write_vtu_file(vtu, dof_handler, solution, stresses);
-      }
-
-    const auto [hmin, hmax] = mesh.cell_diameter_range();
-    double max_vm           = 0;
-    if (distributed)
-      {
-        for (const unsigned int c : partition.locally_owned_cells())
-          max_vm = std::max(max_vm, stresses.cell_von_mises(c));
-        max_vm = dealii::Utilities::MPI::max(max_vm, mpi_communicator);
-      }
-    else
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        max_vm = std::max(max_vm, stresses.cell_von_mises(c));
-    pcout << "Cycle " << cycle << ": " << mesh.n_cells() << " cells, " << dof_handler.n_dofs()
-          << " DoFs, h = " << hmax << ", solver " << solver_description;
-    if (solver_iterations > 1)
-      pcout << " (" << solver_iterations << " iterations)";
-    if (finite_strain.enabled)
-      pcout << ", max |Cauchy stress| " << max_cauchy_norm << std::endl;
-    else
-      pcout << ", max von Mises " << max_vm << std::endl;
-    if (!balance.empty())
-    {
-      const auto [imbalance, residual] = ForceBalance::worst(balance);
-      pcout << "  verification: in equilibrium (relative imbalance " << imbalance << ", residual " << residual
-            << ", tolerance " << balance.front().tolerance << "; condition " << balance.front().condition << ")"
-            << std::endl;
-    }
-    if (distributed)
-      {
-        const auto per_part = partition.cells_per_part();
-        const auto owned    = dealii::Utilities::MPI::all_gather(mpi_communicator, locally_owned_dofs.n_elements());
-        pcout << "  partition (METIS on the cell graph): cells per process "
-              << *std::min_element(per_part.begin(), per_part.end()) << " to "
-              << *std::max_element(per_part.begin(), per_part.end()) << ", owned DoFs per process "
-              << *std::min_element(owned.begin(), owned.end()) << " to " << *std::max_element(owned.begin(), owned.end())
-              << ", " << partition.n_cut_edges() << " edges between processes" << std::endl;
-      }
-
-    table.add_value("cycle", cycle);
-    table.add_value("cells", mesh.n_cells());
-    table.add_value("dofs", dof_handler.n_dofs());
-    table.add_value("h", hmax);
-    const std::string key = "cycles." + std::to_string(cycle) + ".";
-    json.set(key + "cells", double(mesh.n_cells()));
-    json.set(key + "dofs", double(dof_handler.n_dofs()));
-    json.set(key + "h_max", hmax);
-    json.set(key + "h_min", hmin);
-    if (finite_strain.enabled)
-      json.set(key + "max_cauchy_norm", max_cauchy_norm);
-    else
-      json.set(key + "max_von_mises", max_vm);
-    json.set(key + "solver", solver_description);
-    json.set(key + "solver_iterations", double(solver_iterations));
-    json.set(key + "solver_setup_seconds", solver_setup_time);
-    json.set(key + "mpi_processes", double(distributed ? n_processes : 1));
-    for (const auto &b : balance)
-      {
-        const std::string k = key + "verification.body" + std::to_string(b.body) + ".";
-        json.set(k + "imbalance", b.imbalance);
-        json.set(k + "residual", b.residual);
-        json.set(k + "tolerance", b.tolerance);
-        json.set(k + "condition", b.condition);
-      }
-    if (write_vtu)
-      json.set(key + "vtu", vtu);
-    for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
-      json.set(key + "timings." + s.first, s.second);
-    if (exact)
-      {
-        table.add_value("L2", errors.l2);
-        table.add_value("H1", errors.h1_seminorm);
-        table.add_value("energy", errors.energy);
-        cycle_errors["L2"].push_back(errors.l2);
-        cycle_errors["H1"].push_back(errors.h1_seminorm);
-        cycle_errors["energy"].push_back(errors.energy);
-        json.set(key + "errors.L2", errors.l2);
-        json.set(key + "errors.H1_seminorm", errors.h1_seminorm);
-        json.set(key + "errors.energy", errors.energy);
-        last_errors = {errors.l2, errors.h1_seminorm, errors.energy};
-      }
-    if (!cycle_dofs.empty() && dof_handler.n_dofs() <= cycle_dofs.back())
-      pcout << "warning: cycle " << cycle << " has " << dof_handler.n_dofs() << " DoFs, no more than cycle "
-            << cycle - 1 << " (" << cycle_dofs.back()
-            << "): the meshes of a convergence study must be refined from cycle to cycle (are two cycles "
-               "reading the same mesh file?); the convergence rate of this cycle is not defined."
-            << std::endl;
-    cycle_dofs.push_back(dof_handler.n_dofs());
-    last_n_dofs = dof_handler.n_dofs();
-    last_timings.clear();
-    for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
-      last_timings[s.first] = s.second;
-    if (gather_solution)
-      {
-        if (distributed)
-          {
-            dealii::TrilinosWrappers::MPI::Vector all(locally_owned_dofs, dealii::complete_index_set(dof_handler.n_dofs()),
-                                                      mpi_communicator);
-            all = distributed_solution;
-            last_solution.reinit(dof_handler.n_dofs());
-            for (dealii::types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-              last_solution[i] = all(i);
-          }
-        else
-          last_solution = solution;
-      }
-    if (write_json && this_process == 0)
-      {
-        json.set("status", cycle + 1 < n_cycles ? "running" : "complete");
-        json.write(output_folder + "/" + base_name + ".json");
-        json_written = true;
-      }
-  }
-
-
-
   void
   ElasticityProblem::run()
   {
@@ -1088,48 +533,14 @@ namespace dealvem
     // in contact problems); else the data are fixed and step n applies n/N
     // of the loads and prescribed displacements (the load factor).
     const bool timed = bc.uses_time();
-    {
-      dealii::Vector<double> f_ext;
-      assembler.assemble_load_vector(f_ext);
-      for (unsigned int i = 0; i < f_ext.size(); ++i)
-        check_load_entry(i, f_ext[i]);
-    }
-    // the scales of modulus, size and loads, before Newton squares them
-    // (the loads at the time the functions are set to: the final time)
-    {
-      std::ostringstream when;
-      when << "at t = " << final_time;
-      dealii::Vector<double> f_ext;
-      assembler.assemble_load_vector(f_ext);
-      ScaleCheck::check(dof_handler, f_ext,
-                        {{mesh_parameters.material_id, "the body", "Material/Young's modulus", youngs_modulus}},
-                        when.str(), true);
-    }
+    check_finite_strain_loads(assembler);
     FiniteStrainSolver<2>::Parameters parameters = finite_strain.solver;
     parameters.n_load_steps                     = n_load_steps;
     parameters.scale_prescribed_motion          = !timed;
     FiniteStrainSolver<2> solver(assembler, constraints, parameters);
 
     // the monitor point: a vertex of the mesh
-    unsigned int monitor = dealii::numbers::invalid_unsigned_int;
-    if (finite_strain.has_monitor_point)
-      {
-        double nearest = 1e300;
-        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-          {
-            const double d = mesh.vertex(v).distance(finite_strain.monitor_point);
-            if (d < nearest)
-              {
-                nearest = d;
-                monitor = v;
-              }
-          }
-        std::ostringstream msg;
-        msg << "Parameter 'Finite strain/Monitor point' = (" << finite_strain.monitor_point
-            << ") is not a vertex of the mesh of cycle " << cycle << ": the nearest vertex (" << mesh.vertex(monitor)
-            << ") is " << nearest << " away. Give the coordinates of a vertex (a corner of the domain, say).";
-        AssertThrow(nearest <= 1e-8 * mesh.extent(), dealii::ExcMessage(msg.str()));
-      }
+    const unsigned int monitor = monitor_vertex(cycle);
 
     const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
     const std::string key    = "cycles." + std::to_string(cycle) + ".finite_strain.";
@@ -1212,27 +623,7 @@ namespace dealvem
         const FiniteStrainFields fields = compute_finite_strain_fields(dof_handler, laws, solution);
         max_cauchy_norm                 = fields.max_cell_cauchy_norm;
         json.set(key + "steps." + std::to_string(n) + ".max_cauchy_norm", max_cauchy_norm);
-        pcout << "  load step " << n << " of " << n_load_steps << " (load factor " << load_factor << ", t = " << time
-              << "): " << r.iterations.size() - 1 << " Newton update" << (r.iterations.size() == 2 ? "" : "s")
-              << ", residual " << r.iterations.back().residual_norm << " (relative "
-              << r.iterations.back().relative_residual << "), max |Cauchy stress| " << max_cauchy_norm;
-        if (monitor != dealii::numbers::invalid_unsigned_int)
-          {
-            const unsigned int node = dof_handler.vertex_node(monitor);
-            const double       ux   = solution(VEMDoFHandler<2>::node_dof(node, 0));
-            const double       uy   = solution(VEMDoFHandler<2>::node_dof(node, 1));
-            pcout << ", u(" << mesh.vertex(monitor) << ") = (" << ux << ", " << uy << ")";
-            json.set(key + "steps." + std::to_string(n) + ".monitor_ux", ux);
-            json.set(key + "steps." + std::to_string(n) + ".monitor_uy", uy);
-            if (n == n_load_steps)
-              {
-                json.set(key + "monitor_point.x", mesh.vertex(monitor)[0]);
-                json.set(key + "monitor_point.y", mesh.vertex(monitor)[1]);
-                json.set(key + "monitor_point.ux", ux);
-                json.set(key + "monitor_point.uy", uy);
-              }
-          }
-        pcout << std::endl;
+        report_load_step(n, load_factor, time, r, monitor, key);
         if (write_vtu)
           {
             const std::string       file = prefix + step_suffix(n) + ".vtu";
@@ -1259,4 +650,94 @@ namespace dealvem
     solver_iterations  = newton_updates;
     used_solver_type   = "UMFPACK";
   }
+
+
+  // The finite-strain loads: every entry of the load vector finite, and the
+  // scales of modulus, size and loads checked before Newton squares them
+  // (the loads at the time the functions are set to: the final time).
+  void
+  ElasticityProblem::check_finite_strain_loads(FiniteStrainAssembler<2> &assembler) const
+  {
+    {
+      dealii::Vector<double> f_ext;
+      assembler.assemble_load_vector(f_ext);
+      for (unsigned int i = 0; i < f_ext.size(); ++i)
+        check_load_entry(i, f_ext[i]);
+    }
+    {
+      std::ostringstream when;
+      when << "at t = " << final_time;
+      dealii::Vector<double> f_ext;
+      assembler.assemble_load_vector(f_ext);
+      ScaleCheck::check(dof_handler, f_ext,
+                        {{mesh_parameters.material_id, "the body", "Material/Young's modulus", youngs_modulus}},
+                        when.str(), true);
+    }
+  }
+
+
+
+  // The vertex of 'Finite strain/Monitor point' (invalid_unsigned_int when
+  // none is given); a point that is no vertex of the mesh is an error.
+  unsigned int
+  ElasticityProblem::monitor_vertex(const unsigned int cycle) const
+  {
+    unsigned int monitor = dealii::numbers::invalid_unsigned_int;
+    if (finite_strain.has_monitor_point)
+      {
+        double nearest = 1e300;
+        for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+          {
+            const double d = mesh.vertex(v).distance(finite_strain.monitor_point);
+            if (d < nearest)
+              {
+                nearest = d;
+                monitor = v;
+              }
+          }
+        std::ostringstream msg;
+        msg << "Parameter 'Finite strain/Monitor point' = (" << finite_strain.monitor_point
+            << ") is not a vertex of the mesh of cycle " << cycle << ": the nearest vertex (" << mesh.vertex(monitor)
+            << ") is " << nearest << " away. Give the coordinates of a vertex (a corner of the domain, say).";
+        AssertThrow(nearest <= 1e-8 * mesh.extent(), dealii::ExcMessage(msg.str()));
+      }
+    return monitor;
+  }
+
+
+
+  // The line of a converged load step on the terminal (Newton updates,
+  // residual, largest Cauchy stress, the displacement of the monitor
+  // point) and the monitor point's entries of the JSON summary.
+  void
+  ElasticityProblem::report_load_step(const unsigned int                        n,
+                                      const double                              load_factor,
+                                      const double                              time,
+                                      const FiniteStrainSolver<2>::StepRecord &r,
+                                      const unsigned int                        monitor,
+                                      const std::string                        &key)
+  {
+    pcout << "  load step " << n << " of " << n_load_steps << " (load factor " << load_factor << ", t = " << time
+          << "): " << r.iterations.size() - 1 << " Newton update" << (r.iterations.size() == 2 ? "" : "s")
+          << ", residual " << r.iterations.back().residual_norm << " (relative "
+          << r.iterations.back().relative_residual << "), max |Cauchy stress| " << max_cauchy_norm;
+    if (monitor != dealii::numbers::invalid_unsigned_int)
+      {
+        const unsigned int node = dof_handler.vertex_node(monitor);
+        const double       ux   = solution(VEMDoFHandler<2>::node_dof(node, 0));
+        const double       uy   = solution(VEMDoFHandler<2>::node_dof(node, 1));
+        pcout << ", u(" << mesh.vertex(monitor) << ") = (" << ux << ", " << uy << ")";
+        json.set(key + "steps." + std::to_string(n) + ".monitor_ux", ux);
+        json.set(key + "steps." + std::to_string(n) + ".monitor_uy", uy);
+        if (n == n_load_steps)
+          {
+            json.set(key + "monitor_point.x", mesh.vertex(monitor)[0]);
+            json.set(key + "monitor_point.y", mesh.vertex(monitor)[1]);
+            json.set(key + "monitor_point.ux", ux);
+            json.set(key + "monitor_point.uy", uy);
+          }
+      }
+    pcout << std::endl;
+  }
+
 } // namespace dealvem

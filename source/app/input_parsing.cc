@@ -33,6 +33,27 @@ namespace dealvem
 {
   namespace InputParsing
   {
+    Stabilization
+    parse_stabilization(const std::string &name)
+    {
+      return (name == "trace"    ? Stabilization::trace :
+              name == "diagonal" ? Stabilization::diagonal :
+              name == "boundary" ? Stabilization::boundary :
+                                   Stabilization::automatic);
+    }
+
+
+
+    void
+    check_number_of_load_steps(const long steps)
+    {
+      AssertThrow(steps >= 1 && steps <= long(max_load_steps),
+                  dealii::ExcMessage("Parameter 'Load steps/Number of steps' is " + std::to_string(steps) +
+                                     ": it must be at least 1 (and at most 100000)."));
+    }
+
+
+
     std::string
     trim(const std::string &s)
     {

@@ -5,6 +5,7 @@
 #ifndef dealvem_app_contact_problem_h
 #define dealvem_app_contact_problem_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -706,6 +707,17 @@ namespace dealvem
     solve(const unsigned int step, const double time);
     void
     process_step(const unsigned int step, const double time);
+    /// The steps of process_step(), in its order.
+    void
+    store_solve_results();
+    StepResult
+    make_pair_results(const unsigned int step, const double time, const std::vector<double> &tangential_force);
+    void
+    make_interface_resultants(StepResult &step_result) const;
+    void
+    check_step_finite(const unsigned int step, const double time, const StepResult &step_result) const;
+    void
+    print_step(const unsigned int step, const double time, const StepResult &step_result) const;
     void
     verify_step(const unsigned int         step,
                 const double               time,
@@ -777,10 +789,19 @@ namespace dealvem
     bool                       distributed = false;
     /// Process 0 prints and writes files; the others compute silently.
     bool                       root = true;
+    /// The terminal output of the run: std::cout on process 0, nothing on
+    /// the others (the same policy as ElasticityProblem).
+    dealii::ConditionalOStream pcout;
     /// The DoF handler, assembler, matrices and solvers of the current
     /// cycle (defined in the .cc file); declared after @p results so that it
     /// is destroyed before the mesh it refers to.
     struct CycleData;
+    /// The steps of parse_parameters(), one per part of the parameter file
+    /// (defined in the .cc file).
+    struct ParameterReader;
+    /// The steps of run_finite_sliding() and their state (defined in the
+    /// .cc file).
+    struct FiniteSlidingRun;
     std::unique_ptr<CycleData> data;
   };
 } // namespace dealvem

@@ -21,11 +21,13 @@
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/elasticity/elasticity_operator.h>
+#include <dealvem/elasticity/force_balance.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/elasticity/material_library.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
+#include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/vem/partitioning.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
@@ -151,6 +153,13 @@ namespace dealvem
     /// files of an earlier run were removed.
     void
     run_cycles();
+    /// The steps of parse_parameters(), in its order.
+    void
+    check_contact_sections(dealii::ParameterHandler &prm) const;
+    void
+    parse_load_steps(dealii::ParameterHandler &prm);
+    void
+    parse_mesh_and_material(dealii::ParameterHandler &prm, const std::string &dir);
     /// The solver type of this cycle: 'Solver/Type', or for 'automatic'
     /// the choice by the size (printed with the reason).
     std::string
@@ -180,11 +189,47 @@ namespace dealvem
     solve_distributed();
     void
     output_results(const unsigned int cycle);
+    /// The steps of output_results(), in its order.
+    void
+    check_displacement_scale(const unsigned int cycle) const;
+    std::vector<ForceBalance::Body>
+    verify_balance(const unsigned int cycle) const;
+    void
+    check_finite_results(const unsigned int cycle, const StressRecovery<2> &stresses, const ErrorNorms &errors) const;
+    void
+    write_vtu_output(const std::string &prefix, const std::string &vtu, const StressRecovery<2> &stresses);
+    void
+    print_cycle(const unsigned int                     cycle,
+                const double                           hmax,
+                const double                           max_vm,
+                const std::vector<ForceBalance::Body> &balance) const;
+    void
+    record_cycle(const unsigned int                     cycle,
+                 const double                           hmin,
+                 const double                           hmax,
+                 const double                           max_vm,
+                 const std::vector<ForceBalance::Body> &balance,
+                 const std::string                     &vtu,
+                 const ErrorNorms                      &errors);
+    void
+    finish_cycle(const unsigned int cycle);
     /// The finite-strain solve of one cycle: Newton with load steps, the
     /// files of every converged step and the JSON record of every step
     /// (a failed step is recorded before its error is passed on).
     void
     solve_finite_strain(const unsigned int cycle);
+    /// The steps of solve_finite_strain().
+    void
+    check_finite_strain_loads(FiniteStrainAssembler<2> &assembler) const;
+    unsigned int
+    monitor_vertex(const unsigned int cycle) const;
+    void
+    report_load_step(const unsigned int                        n,
+                     const double                              load_factor,
+                     const double                              time,
+                     const FiniteStrainSolver<2>::StepRecord &r,
+                     const unsigned int                        monitor,
+                     const std::string                        &key);
 
     MeshParameters         mesh_parameters;
     double                 youngs_modulus = 1000, poissons_ratio = 0.3;

@@ -8,6 +8,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
 
+#include <dealvem/elasticity/elasticity_operator.h>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -47,6 +49,21 @@ namespace dealvem
     /// Trim white space at both ends.
     std::string
     trim(const std::string &s);
+
+    /// The stabilization rule 'Discretization/Stabilization' names: "trace",
+    /// "diagonal", "boundary", or else (the entry's pattern leaves only
+    /// "automatic") Stabilization::automatic. Both programs read the entry
+    /// with it.
+    Stabilization
+    parse_stabilization(const std::string &name);
+
+    /// The largest number of load steps ('Load steps/Number of steps').
+    constexpr unsigned int max_load_steps = 100000;
+
+    /// Throw unless 1 <= @p steps <= max_load_steps, naming 'Load
+    /// steps/Number of steps' (the check of both programs).
+    void
+    check_number_of_load_steps(const long steps);
 
     /// Parse "a=1, b=2.5" into a map; throws naming @p parameter on errors.
     std::map<std::string, double>
