@@ -417,7 +417,7 @@ namespace dealvem
     const std::string        &prm_directory;
     /// 'Material/Model' and 'Material/Law' (the same for every body).
     ElasticMaterial::Model    model = ElasticMaterial::Model::plane_strain;
-    MaterialLaws::Law         law   = MaterialLaws::Law::linear;
+    MaterialLaws::Law         law   = "linear";
     /// The exact solution of body 0 (the default of the other bodies).
     std::string               exact0;
     /// The physical names of the bodies' gmsh files: boundary ids by name

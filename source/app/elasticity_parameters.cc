@@ -72,7 +72,7 @@ namespace dealvem
                       "Poisson's ratio nu, -1 < nu < 0.5.");
     prm.declare_entry("Model", "plane strain", Selection("plane strain|plane stress"),
                       "2D model of the material.");
-    prm.declare_entry("Law", "linear", Anything(), MaterialLaws::law_documentation);
+    prm.declare_entry("Law", "linear", Anything(), MaterialLaws::law_documentation());
     prm.leave_subsection();
 
     prm.enter_subsection("Discretization");

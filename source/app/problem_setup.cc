@@ -6,6 +6,7 @@
 #include <dealvem/base/output_file.h>
 #include <dealvem/elasticity/boundary_conditions.h>
 #include <dealvem/elasticity/hyperelastic_material.h>
+#include <dealvem/elasticity/law_factory.h>
 
 #include <deal.II/base/function.h>
 
@@ -677,76 +678,40 @@ namespace dealvem
 
   namespace MaterialLaws
   {
-    const char *const law_documentation =
-      "Constitutive law: 'linear' (isotropic linear elasticity), 'neo-hooke' (compressible Neo-Hooke, "
-      "psi = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2) or 'saint venant-kirchhoff' (psi = lambda/2 "
-      "(tr E)^2 + mu E:E, E the Green-Lagrange strain), each with this section's Young's modulus and "
-      "Poisson's ratio (mu = E/(2(1+nu)), lambda = E nu/((1+nu)(1-2nu))). The hyperelastic laws need "
-      "'Model = plane strain'. Their finite-strain response is used with 'Finite strain/Enabled = true' "
-      "(one body); at small strain (the default, and always in contact problems, where this entry applies "
-      "to every body) the program solves linear elasticity with the law's linearization at F = I, which "
-      "is the linear law of the same E and nu.";
-
-    Law
-    parse(const std::string &value, const std::string &parameter)
+    std::string
+    law_documentation()
     {
-      // lower case, runs of white space as one blank
-      std::string v;
-      for (const char c : InputParsing::trim(value))
-        {
-          const char l = std::tolower(static_cast<unsigned char>(c));
-          if (std::isspace(static_cast<unsigned char>(l)))
-            {
-              if (!v.empty() && v.back() != ' ')
-                v += ' ';
-            }
-          else
-            v += l;
-        }
-      if (v == "linear")
-        return Law::linear;
-      if (v == "neo-hooke" || v == "neo-hookean")
-        return Law::neo_hooke;
-      if (v == "saint venant-kirchhoff")
-        return Law::saint_venant_kirchhoff;
-      AssertThrow(false, dealii::ExcMessage("Parameter '" + parameter + "' = '" + value +
-                                            "' is not a law of the program: use 'linear', 'neo-hooke' or "
-                                            "'saint venant-kirchhoff'."));
-      return Law::linear;
+      return "Constitutive law: " + LawFactory::documentation() +
+             ", each with this section's Young's modulus and "
+             "Poisson's ratio (mu = E/(2(1+nu)), lambda = E nu/((1+nu)(1-2nu))). The hyperelastic laws need "
+             "'Model = plane strain'. Their finite-strain response is used with 'Finite strain/Enabled = true' "
+             "(one body); at small strain (the default, and always in contact problems, where this entry applies "
+             "to every body) the program solves linear elasticity with the law's linearization at F = I, which "
+             "is the linear law of the same E and nu.";
     }
 
 
 
-    std::string
-    name(const Law law)
+    Law
+    parse(const std::string &value, const std::string &parameter)
     {
-      switch (law)
-        {
-          case Law::linear:
-            return "linear";
-          case Law::neo_hooke:
-            return "neo-hooke";
-          case Law::saint_venant_kirchhoff:
-            return "saint venant-kirchhoff";
-        }
-      return "";
+      return LawFactory::find(value, parameter).name;
+    }
+
+
+
+    bool
+    is_hyperelastic(const Law &law)
+    {
+      return LawFactory::find(law, "Material/Law").hyperelastic;
     }
 
 
 
     std::shared_ptr<const ConstitutiveLaw<2>>
-    make_law(const Law law, const double E, const double nu, const ElasticMaterial::Model model)
+    make_law(const Law &law, const double E, const double nu, const ElasticMaterial::Model model)
     {
-      switch (law)
-        {
-          case Law::neo_hooke:
-            return std::make_shared<const NeoHookeMaterial>(E, nu, model);
-          case Law::saint_venant_kirchhoff:
-            return std::make_shared<const SaintVenantKirchhoffMaterial>(E, nu, model);
-          case Law::linear:
-            break;
-        }
-      return std::make_shared<const ElasticMaterial>(E, nu, model);
+      return LawFactory::create(law, "Material/Law", E, nu, model);
     }
   } // namespace MaterialLaws
 

@@ -235,7 +235,7 @@ namespace dealvem
     double                 youngs_modulus = 1000, poissons_ratio = 0.3;
     ElasticMaterial::Model model = ElasticMaterial::Model::plane_strain;
     /// 'Material/Law'.
-    MaterialLaws::Law      law = MaterialLaws::Law::linear;
+    MaterialLaws::Law      law = "linear";
     /// The section 'Finite strain'.
     FiniteStrainParameters finite_strain;
     /// 'Load steps/Number of steps' and 'Final time' (the time t of the
