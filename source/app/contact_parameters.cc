@@ -691,9 +691,8 @@ namespace dealvem
         bodies[added[i]].name  = "body " + std::to_string(added[i]) + " (material id " +
                                 std::to_string(ids[i]) + " of " + body.mesh.file_name + ")";
       }
-    // (every process parses the file and prints this line, outside run():
-    // not through pcout, which would newly quiet the processes > 0 here)
-    std::cout << "  " << prefix << "Mesh: " << added.size() << " parts of '" << body.mesh.file_name
+    // (every process parses the file; process 0 prints)
+    p.pcout << "  " << prefix << "Mesh: " << added.size() << " parts of '" << body.mesh.file_name
               << "' are bodies " << added.front() << " to " << added.back() << std::endl;
   }
 

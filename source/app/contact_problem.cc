@@ -59,26 +59,20 @@ namespace dealvem
         p.opt.write_pictures = flags[3];
       }
     } quiet_files(*this);
-    if (root)
-      std::filesystem::create_directories(opt.output_folder);
     // the files under the output prefix belong to this run only: those of
     // an earlier run go first (process 0 writes every file)
-    RunFiles run_files(opt.output_folder, opt.base_name, root, opt.write_vtu || opt.write_csv || opt.write_json || opt.write_pictures);
-    pcout << run_files.removal_note(run_files.start());
-    try
-      {
-        if (opt.finite_strain)
-          run_finite_sliding();
-        else
-          run_cycles();
-      }
-    catch (...)
-      {
-        // the program prints the list after the error
-        run_files.failed();
-        throw;
-      }
-    run_files.complete();
+    RunOutput output;
+    output.folder       = opt.output_folder;
+    output.base_name    = opt.base_name;
+    output.writer       = root;
+    output.writes_files = opt.write_vtu || opt.write_csv || opt.write_json || opt.write_pictures;
+    run_with_files(output, [this](const std::string &note) { pcout << note; },
+                   [this]() {
+                     if (opt.finite_strain)
+                       run_finite_sliding();
+                     else
+                       run_cycles();
+                   });
   }
 
 
@@ -408,21 +402,12 @@ namespace dealvem
       }
     else
       d.solver = std::make_unique<SaddlePointSolver>(settings);
-    if (settings.type != SaddlePointSolver::Type::umfpack && settings.type != SaddlePointSolver::Type::klu &&
-        settings.type != SaddlePointSolver::Type::direct_constraints)
+    if (SaddlePointSolver::is_iterative(settings.type))
       d.solver->set_near_null_space(d.dof_handler.rigid_body_modes());
-    d.active_set = std::make_unique<ActiveSetSolver<2>>(*d.contact, d.constraints, *d.solver, contact_settings,
-                                                        d.complementarity);
-    d.active_set->set_support(d.support.get());
-    d.active_set->set_pair_neighbours(ActiveSetSolver<2>::pair_neighbours(results.interfaces));
-    d.reference.assign(d.pairs.size(), 0.);
-    if (contact_settings.is_coulomb())
-      {
-        d.friction_solver = std::make_unique<FrictionSolver<2>>(*d.contact, d.constraints, *d.solver,
-                                                                contact_settings, d.complementarity);
-        d.friction_solver->set_support(d.support.get());
-        d.state = d.friction_solver->initial_state();
-      }
+    d.contact_solver = ContactSolver<2>::create(*d.contact, d.constraints, *d.solver, contact_settings,
+                                                d.complementarity);
+    d.contact_solver->set_support(d.support.get());
+    d.contact_solver->set_pair_neighbours(ActiveSetSolver<2>::pair_neighbours(results.interfaces));
   }
 
 
@@ -505,29 +490,11 @@ namespace dealvem
     try
       {
         dealii::TimerOutput::Scope t(d.timer, "solve");
-        if (d.friction_solver)
-          {
-            d.fr        = d.friction_solver->solve(d.system_matrix, d.system_rhs, d.work_matrix, d.x, d.state,
-                                            d.reference);
-            d.state     = d.fr.state;
-            d.reference = d.fr.reference;
-            d.as        = typename ActiveSetSolver<2>::Result();
-            d.as.n_iterations      = d.fr.n_iterations;
-            d.as.linear_iterations = d.fr.linear_iterations;
-            for (const auto &h : d.fr.history)
-              d.as.n_active_history.push_back(h[1] + h[2]);
-            for (const auto s : d.fr.state)
-              d.as.active.push_back(s != PairState::open);
-          }
-        else
-          d.as = d.active_set->solve(d.system_matrix, d.system_rhs, d.work_matrix, d.x);
+        d.solve_result = d.contact_solver->solve_step(d.system_matrix, d.system_rhs, d.work_matrix, d.x);
       }
     catch (...)
       {
-        const CollapseMechanism *found =
-          d.friction_solver ? d.friction_solver->last_mechanism() :
-          d.active_set      ? d.active_set->last_mechanism() :
-                              nullptr;
+        const CollapseMechanism *found = d.contact_solver ? d.contact_solver->last_mechanism() : nullptr;
         if (found != nullptr)
           {
             mechanism = std::make_shared<const CollapseMechanism>(*found);

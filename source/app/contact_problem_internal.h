@@ -23,6 +23,7 @@
 #include <dealvem/contact/finite_strain_contact.h>
 #include <dealvem/contact/contact_pressure.h>
 #include <dealvem/contact/distributed_contact_solver.h>
+#include <dealvem/contact/contact_solver.h>
 #include <dealvem/contact/friction_solver.h>
 #include <dealvem/contact/interface_tractions.h>
 #include <dealvem/contact/rigid_body_support.h>
@@ -92,12 +93,10 @@ namespace dealvem
     dealii::SparseMatrix<double>                          system_matrix, work_matrix;
     dealii::Vector<double>                                system_rhs, x;
     std::unique_ptr<SaddlePointSolver>                    solver;
-    std::unique_ptr<ActiveSetSolver<2>>                   active_set;
-    std::unique_ptr<FrictionSolver<2>>                    friction_solver;
-    std::vector<PairState>                                state;
-    std::vector<double>                                   reference;
-    typename ActiveSetSolver<2>::Result                   as;
-    typename FrictionSolver<2>::Result                    fr;
+    /// The contact solver the settings ask for (ContactSolver::create()).
+    std::unique_ptr<ContactSolver<2>>                     contact_solver;
+    /// What the last load step's contact solve reported.
+    ContactSolveResult                                    solve_result;
     std::unique_ptr<StressRecovery<2>>                    stresses;
     std::string                                           prefix;
   };

@@ -211,7 +211,7 @@ namespace dealvem
     // The active-set iterations of the last solve, and the globalized solve
     // if it took over.
     void
-    print_active_set(const dealii::ConditionalOStream &out, const ActiveSetSolver<2>::Result &as)
+    print_active_set(const dealii::ConditionalOStream &out, const ContactSolveResult &as)
     {
       out
                 << "  active set: " << as.n_iterations << " iteration(s), active pairs per iteration:";
@@ -485,7 +485,7 @@ namespace dealvem
     const auto &interfaces = results.interfaces;
     const auto &pairs      = d.pairs;
     const auto &contact    = *d.contact;
-    const auto &as         = d.as;
+    const auto &as         = d.solve_result;
     const auto &n          = d.n;
     const auto &m          = d.m;
     const unsigned int n_inserted = inserted_nodes(results.insertion_reports);
@@ -528,7 +528,7 @@ namespace dealvem
                 << " contact constraint row(s) couple DoFs of different processes" << std::endl;
     print_ranges(pcout, results);
     // (with load steps the progress line of each step lists them)
-    if (!results.steps.empty() && opt.n_load_steps == 1 && d.friction_solver == nullptr)
+    if (!results.steps.empty() && opt.n_load_steps == 1 && !contact_settings.is_coulomb())
       print_reactions(pcout, results.steps.back().reactions, opt.moment_point, "  ");
   }
 
@@ -601,11 +601,11 @@ namespace dealvem
     const CycleData &d     = *data;
     const auto &mesh       = results.mesh;
     const auto &pairs      = d.pairs;
-    const auto &as         = d.as;
+    const auto &as         = d.solve_result;
     const auto &n          = d.n;
     const auto &m          = d.m;
     const auto &prefix     = d.prefix;
-    const bool  friction   = (d.friction_solver != nullptr);
+    const bool  friction   = contact_settings.is_coulomb();
     const double penalty  = results.penalty;
     const unsigned int n_inserted = inserted_nodes(results.insertion_reports);
     const auto [pmin, pmax] = pressure_range(results.pairs);

@@ -22,7 +22,7 @@ namespace dealvem
   ContactProblem::process_step(const unsigned int step, const double time)
   {
     const CycleData &d        = *data;
-    const bool       friction = (d.friction_solver != nullptr);
+    const bool       friction = contact_settings.is_coulomb();
     store_solve_results();
 
     // the tangential nodal force on the slave node, along t
@@ -30,12 +30,12 @@ namespace dealvem
     {
       const auto ft = friction ? std::vector<double>() : d.contact->tangential_forces(d.x);
       for (unsigned int i = 0; i < d.pairs.size(); ++i)
-        tangential_force[i] = (friction ? -d.fr.tangential_multiplier[i] : ft[i]);
+        tangential_force[i] = (friction ? -d.solve_result.tangential_multiplier[i] : ft[i]);
     }
     StepResult step_result = make_pair_results(step, time, tangential_force);
     make_interface_resultants(step_result);
     results.interface_results       = step_result.interfaces;
-    step_result.dissipated_energy   = (friction ? d.fr.dissipated_energy : 0.);
+    step_result.dissipated_energy   = (friction ? d.solve_result.dissipated_energy : 0.);
     step_result.total_contact_force = results.total_contact_force;
     step_result.pairs               = results.pairs;
     results.dissipated_energy += step_result.dissipated_energy;
@@ -60,7 +60,7 @@ namespace dealvem
     const CycleData &d = *data;
     const auto      &n = d.n;
     const auto      &x  = d.x;
-    const auto      &as = d.as;
+    const auto      &as = d.solve_result;
     results.solution.reinit(n);
     for (unsigned int i = 0; i < n; ++i)
       results.solution[i] = x[i];
@@ -88,11 +88,11 @@ namespace dealvem
     const CycleData &d        = *data;
     const auto      &n        = d.n;
     const auto      &x        = d.x;
-    const auto      &as       = d.as;
-    const auto      &fr       = d.fr;
-    const auto      &state    = d.state;
+    const auto      &as       = d.solve_result;
+    const auto      &fr       = d.solve_result;
+    const auto      &state    = d.solve_result.state;
     const auto      &pairs    = d.pairs;
-    const bool       friction = (d.friction_solver != nullptr);
+    const bool       friction = contact_settings.is_coulomb();
     const auto       gaps     = d.contact->gaps(x);
     const auto       slips    = d.contact->slips(x);
     // the normal nodal forces -lambda and the tangential ones, recovered as
@@ -295,9 +295,9 @@ namespace dealvem
   void
   ContactProblem::print_step(const unsigned int step, const double time, const StepResult &step_result) const
   {
-    const auto &as       = data->as;
-    const auto &fr       = data->fr;
-    const bool  friction = (data->friction_solver != nullptr);
+    const auto &as       = data->solve_result;
+    const auto &fr       = data->solve_result;
+    const bool  friction = contact_settings.is_coulomb();
     pcout << "  load step " << step << " of " << opt.n_load_steps << ", t = " << time << ": "
               << as.n_iterations << (friction ? " Newton" : " active-set") << " iteration(s), "
               << step_result.n_open << " open / " << step_result.n_stick
@@ -349,8 +349,8 @@ namespace dealvem
     const auto      &pairs = d.pairs;
     std::ostringstream where;
     where << (opt.n_load_steps > 1 ? "load step " + std::to_string(step) + " of " + std::to_string(opt.n_load_steps) : "the contact problem")
-          << " (t = " << time << ", " << d.as.n_iterations
-          << (d.friction_solver ? " Newton" : " active-set") << " iteration(s), solver " << d.solver->description()
+          << " (t = " << time << ", " << d.solve_result.n_iterations
+          << (contact_settings.is_coulomb() ? " Newton" : " active-set") << " iteration(s), solver " << d.solver->description()
           << ")";
     // the nodal contact forces: on the slave node -lambda_n n + f_t t, the
     // opposite on the master node (as the reported contact force)
@@ -359,7 +359,7 @@ namespace dealvem
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const auto                 dofs = d.contact->pair_dofs(i);
-        const bool                 transmits = d.as.active[i] || d.as.convex_stick_model;
+        const bool                 transmits = d.solve_result.active[i] || d.solve_result.convex_stick_model;
         if (transmits)
           for (unsigned int c = 0; c < 2; ++c)
             couplings.emplace_back(dofs[c], dofs[2 + c]);
@@ -374,8 +374,9 @@ namespace dealvem
     dealii::Vector<double> u(n);
     for (unsigned int i = 0; i < n; ++i)
       u[i] = x[i];
-    const bool   direct    = (d.solver->get_type() == SaddlePointSolver::Type::umfpack ||
-                         d.solver->get_type() == SaddlePointSolver::Type::klu);
+    // (a factorization of the whole saddle point)
+    const bool   direct    = !SaddlePointSolver::is_iterative(d.solver->get_type()) &&
+                         !SaddlePointSolver::is_condensed(d.solver->get_type());
     const double tolerance = direct ? 0. : opt.solver_tolerance;
     dealii::Vector<double> unbalanced;
     const auto             balance =
@@ -405,7 +406,7 @@ namespace dealvem
         for (unsigned int i = 0; i < pairs.size(); ++i)
           largest = std::max(largest, std::abs(x[n + i]) / pairs[i].weight);
         for (unsigned int i = 0; i < pairs.size(); ++i)
-          if (d.as.active[i] && -x[n + i] / pairs[i].weight < -1e-8 * largest)
+          if (d.solve_result.active[i] && -x[n + i] / pairs[i].weight < -1e-8 * largest)
             {
               std::ostringstream msg;
               msg << "Verification failed after the solve of " << where.str() << ": the active contact pair at ("

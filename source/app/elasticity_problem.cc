@@ -338,41 +338,42 @@ namespace dealvem
   void
   ElasticityProblem::run()
   {
-    check_output_names(output_folder, base_name);
-    if (this_process == 0 || !distributed)
-      create_output_folder(output_folder);
     // the files under the output prefix belong to this run only: those of
     // an earlier run go first (process 0, before any process writes)
-    RunFiles run_files(output_folder, base_name, this_process == 0, write_vtu || write_json);
-    pcout << run_files.removal_note(run_files.start());
-    if (distributed)
-      {
-        const int ierr = MPI_Barrier(mpi_communicator);
-        AssertThrowMPI(ierr);
-      }
-    try
-      {
-        run_cycles();
-      }
-    catch (...)
-      {
-        // the JSON summary (if any was written) and the manifest say
-        // "failed"; the user learns which files the run wrote
+    RunOutput output;
+    output.folder       = output_folder;
+    output.base_name    = base_name;
+    output.writer       = (this_process == 0);
+    output.writes_files = write_vtu || write_json;
+    run_with_files(
+      output, [this](const std::string &note) { pcout << note; }, [this]() { run_cycles(); },
+      // the JSON summary (if any was written) says "failed"; the manifest
+      // too, and the user learns which files the run wrote
+      [this]() {
         if (write_json && this_process == 0 && json_written)
           {
             json.set("status", "failed");
-            try
-              {
-                json.write(output_folder + "/" + base_name + ".json");
-              }
-            catch (...)
-              {}
+            json.write(output_folder + "/" + base_name + ".json");
           }
-        // the program prints the list after the error
-        run_files.failed();
-        throw;
-      }
-    run_files.complete();
+      },
+      [this]() {
+        if (distributed)
+          {
+            const int ierr = MPI_Barrier(mpi_communicator);
+            AssertThrowMPI(ierr);
+          }
+      });
+  }
+
+
+
+  void
+  ElasticityProblem::print_newton_history(const FiniteStrainSolver<2> &solver, const unsigned int cycle) const
+  {
+    if (!pcout.is_active())
+      return;
+    pcout << "Newton history (cycle " << cycle << "):" << std::endl;
+    solver.print_history(pcout.get_stream());
   }
 
 
@@ -466,8 +467,8 @@ namespace dealvem
           for (const std::string c : {"L2", "H1", "energy"})
             add_convergence_rates(table, c, cycle_errors[c], cycle_dofs);
         pcout << std::endl;
-        if (this_process == 0)
-          table.write_text(std::cout, dealii::TableHandler::org_mode_table);
+        if (pcout.is_active())
+          table.write_text(pcout.get_stream(), dealii::TableHandler::org_mode_table);
       }
 
     // peak resident memory of each process (the replicated mesh makes it
@@ -609,11 +610,7 @@ namespace dealvem
               }
             catch (...)
               {}
-            if (this_process == 0)
-              {
-                std::cout << "Newton history (cycle " << cycle << "):" << std::endl;
-                solver.print_history(std::cout);
-              }
+            print_newton_history(solver, cycle);
             throw;
           }
         const auto &r = solver.get_history().back();
@@ -640,11 +637,7 @@ namespace dealvem
         json.set(key + "final_residual", solver.get_history().back().iterations.back().residual_norm);
         json.set(key + "final_relative_residual", solver.get_history().back().iterations.back().relative_residual);
       }
-    if (this_process == 0)
-      {
-        std::cout << "Newton history (cycle " << cycle << "):" << std::endl;
-        solver.print_history(std::cout);
-      }
+    print_newton_history(solver, cycle);
     solver_description = "Newton with UMFPACK, " + std::to_string(n_load_steps) + " load step" +
                          (n_load_steps > 1 ? "s" : "");
     solver_iterations  = newton_updates;

@@ -4,6 +4,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
+#include <dealvem/base/output_file.h>
 #include <dealvem/base/run_files.h>
 
 #include <algorithm>
@@ -233,5 +234,41 @@ namespace dealvem
   {
     if (active_run != nullptr)
       active_run->add(filename);
+  }
+
+
+  void
+  run_with_files(const RunOutput                                &output,
+                 const std::function<void(const std::string &)> &print,
+                 const std::function<void()>                    &body,
+                 const std::function<void()>                    &on_failure,
+                 const std::function<void()>                    &synchronize)
+  {
+    check_output_names(output.folder, output.base_name);
+    if (output.writer)
+      create_output_folder(output.folder);
+    RunFiles run_files(output.folder, output.base_name, output.writer, output.writes_files);
+    const std::string note = run_files.removal_note(run_files.start());
+    if (print)
+      print(note);
+    if (synchronize)
+      synchronize();
+    try
+      {
+        body();
+      }
+    catch (...)
+      {
+        if (on_failure)
+          try
+            {
+              on_failure();
+            }
+          catch (...)
+            {}
+        run_files.failed();
+        throw;
+      }
+    run_files.complete();
   }
 } // namespace dealvem

@@ -14,11 +14,7 @@ namespace dealvem
                                         SaddlePointSolver                       &solver,
                                         const ContactSettings                   &settings,
                                         const double                             c)
-    : contact(contact)
-    , constraints(constraints)
-    , solver(solver)
-    , settings(settings)
-    , c(c)
+    : ContactSolver<dim>(contact, constraints, solver, settings, c)
   {
     AssertThrow(c > 0, dealii::ExcMessage("The active-set constant must be positive."));
   }
@@ -211,6 +207,30 @@ namespace dealvem
       }
     return result;
   }
+
+  template <int dim>
+  const typename ActiveSetSolver<dim>::Result &
+  ActiveSetSolver<dim>::solve_step(const dealii::SparseMatrix<double> &system_matrix,
+                                   const dealii::Vector<double>       &system_rhs,
+                                   dealii::SparseMatrix<double>       &matrix,
+                                   dealii::Vector<double>             &x)
+  {
+    this->result = Result();
+    this->result = solve(system_matrix, system_rhs, matrix, x);
+    this->complete_common_fields(this->result);
+    return this->result;
+  }
+
+
+
+  template <int dim>
+  std::string
+  ActiveSetSolver<dim>::name() const
+  {
+    return settings.normal == ContactSettings::Normal::tied ? "tied" : "active set";
+  }
+
+
 
   template class ActiveSetSolver<2>;
 } // namespace dealvem

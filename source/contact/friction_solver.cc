@@ -21,11 +21,7 @@ namespace dealvem
                                       SaddlePointSolver                       &solver,
                                       const ContactSettings                   &settings,
                                       const double                             c)
-    : contact(contact)
-    , constraints(constraints)
-    , solver(solver)
-    , settings(settings)
-    , c(c)
+    : ContactSolver<dim>(contact, constraints, solver, settings, c)
   {
     AssertThrow(c > 0, dealii::ExcMessage("The constant of the friction complementarity functions must be positive."));
     AssertThrow(settings.is_coulomb(),
@@ -488,6 +484,52 @@ namespace dealvem
     result.dissipated_energy     = step.dissipated_energy;
     return result;
   }
+
+  template <int dim>
+  void
+  FrictionSolver<dim>::set_start(const std::vector<PairState> &state, const std::vector<double> &reference)
+  {
+    AssertThrow(state.size() == contact.n_pairs() && reference.size() == contact.n_pairs(),
+                dealii::ExcMessage("FrictionSolver::set_start(): one state and one reference per contact pair "
+                                   "are needed (" + std::to_string(contact.n_pairs()) + " pairs, " +
+                                   std::to_string(state.size()) + " states, " + std::to_string(reference.size()) +
+                                   " references)."));
+    start_state     = state;
+    start_reference = reference;
+  }
+
+
+
+  template <int dim>
+  const typename FrictionSolver<dim>::Result &
+  FrictionSolver<dim>::solve_step(const dealii::SparseMatrix<double> &system_matrix,
+                                  const dealii::Vector<double>       &system_rhs,
+                                  dealii::SparseMatrix<double>       &matrix,
+                                  dealii::Vector<double>             &x)
+  {
+    if (start_state.empty())
+      {
+        start_state = initial_state();
+        start_reference.assign(contact.n_pairs(), 0.);
+      }
+    this->result = Result();
+    this->result = solve(system_matrix, system_rhs, matrix, x, start_state, start_reference);
+    this->complete_common_fields(this->result);
+    start_state     = this->result.state;
+    start_reference = this->result.reference;
+    return this->result;
+  }
+
+
+
+  template <int dim>
+  std::string
+  FrictionSolver<dim>::name() const
+  {
+    return "Coulomb friction";
+  }
+
+
 
   template class FrictionSolver<2>;
 } // namespace dealvem

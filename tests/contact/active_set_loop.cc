@@ -31,6 +31,7 @@
 #include <dealvem/contact/active_set_solver.h>
 #include <dealvem/contact/active_set_update.h>
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/contact_solver.h>
 #include <dealvem/contact/friction_solver.h>
 #include <dealvem/contact/friction_state_update.h>
 #include <dealvem/contact/node_insertion.h>
@@ -214,6 +215,24 @@ namespace
                    name + ": the same converged set, accelerated steps and pairs closed for support");
     testing::check_small(relative_difference(x, x_library), 1e-12, name + ": max |x_loop - x_solver| / max |x|");
     testing::check_small(state.residual, 1e-10 * 50, name + ": complementarity residual at convergence");
+
+    // the same solve through the common seam (ContactSolver::create(),
+    // solve_step()): the factory picks the active set for this model and
+    // the result is that of solve(), with the pair states filled
+    RecordingSolver seam_solver;
+    const auto      seam = ContactSolver<2>::create(*pb.contact, pb.constraints, seam_solver, s, c);
+    seam->set_support(pb.support.get());
+    seam->set_pair_neighbours(neighbours);
+    dealii::Vector<double> x_seam;
+    const auto            &r = seam->solve_step(pb.system_matrix, pb.system_rhs, matrix, x_seam);
+    bool                   states_match = (r.state.size() == r.active.size());
+    for (unsigned int i = 0; states_match && i < r.state.size(); ++i)
+      states_match = ((r.state[i] != PairState::open) == r.active[i]);
+    testing::check(dynamic_cast<ActiveSetSolver<2> *>(seam.get()) != nullptr && seam->name() == "active set" &&
+                     r.n_iterations == result.n_iterations && r.active == result.active &&
+                     seam_solver.sets == library_solver.sets && &r == &seam->last_result() && states_match,
+                   name + ": ContactSolver::create() gives the active set; solve_step() = solve(), states filled");
+    testing::check_small(relative_difference(x_seam, x_library), 0., name + ": max |x_seam - x_solver| / max |x|");
   }
 
   void
@@ -266,6 +285,32 @@ namespace
       dr = std::max(dr, std::abs(step.reference[i] - result.reference[i]));
     testing::check_small(dr + std::abs(step.dissipated_energy - result.dissipated_energy), 1e-12,
                          "friction: the same references and dissipated energy");
+
+    // through the common seam: the factory picks the friction solver, the
+    // first step starts from the initial states, and the second step starts
+    // from the states and references the first ended in (carried by the
+    // solver) -- the same as passing them to solve() by hand
+    RecordingSolver seam_solver;
+    const auto      seam = ContactSolver<2>::create(*pb.contact, pb.constraints, seam_solver, s, c);
+    seam->set_support(pb.support.get());
+    dealii::Vector<double> x_seam;
+    const auto            &first = seam->solve_step(pb.system_matrix, pb.system_rhs, matrix, x_seam);
+    testing::check(dynamic_cast<FrictionSolver<2> *>(seam.get()) != nullptr && seam->name() == "Coulomb friction" &&
+                     first.state == result.state && first.history == result.history &&
+                     first.n_active_history.size() == first.history.size() &&
+                     first.active.size() == first.state.size(),
+                   "friction: ContactSolver::create() gives the friction solver; its first step = solve()");
+    testing::check_small(relative_difference(x_seam, x_library), 0., "friction: max |x_seam - x_solver| / max |x|");
+    const auto             first_state = first.state;
+    const auto             first_reference = first.reference;
+    const auto            &second = seam->solve_step(pb.system_matrix, pb.system_rhs, matrix, x_seam);
+    dealii::Vector<double> x_second;
+    const auto             by_hand = driver.solve(pb.system_matrix, pb.system_rhs, matrix, x_second, first_state,
+                                      first_reference);
+    testing::check(second.state == by_hand.state && second.n_iterations == by_hand.n_iterations &&
+                     second.reference == by_hand.reference,
+                   "friction: the second solve_step() starts from the first one's states and references");
+    testing::check_small(relative_difference(x_seam, x_second), 0., "friction: second step, seam vs by hand");
   }
 } // namespace
 

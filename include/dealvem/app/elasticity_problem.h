@@ -230,6 +230,8 @@ namespace dealvem
                      const FiniteStrainSolver<2>::StepRecord &r,
                      const unsigned int                        monitor,
                      const std::string                        &key);
+    void
+    print_newton_history(const FiniteStrainSolver<2> &solver, const unsigned int cycle) const;
 
     MeshParameters         mesh_parameters;
     double                 youngs_modulus = 1000, poissons_ratio = 0.3;

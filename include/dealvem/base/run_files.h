@@ -5,6 +5,7 @@
 #ifndef dealvem_base_run_files_h
 #define dealvem_base_run_files_h
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -124,6 +125,50 @@ namespace dealvem
     bool                     finished = false;
     std::vector<std::string> files;
   };
+
+
+  /**
+   * Where and how a program's run writes its files, for run_with_files().
+   */
+  struct RunOutput
+  {
+    /// 'Output/Folder' (not empty), created by the writer if needed.
+    std::string folder;
+    /// 'Output/Base name' (not empty, no '/').
+    std::string base_name;
+    /// Whether this process writes (process 0 of an MPI run, or the only
+    /// one): it creates the folder, removes the files of earlier runs and
+    /// keeps the manifest.
+    bool writer = true;
+    /// Whether the run writes any file at all (false: every output is
+    /// switched off and the folder is left as it is).
+    bool writes_files = true;
+  };
+
+  /**
+   * The frame the programs (ElasticityProblem::run() and
+   * ContactProblem::run()) run in, in one place:
+   * 1. the output names are checked (check_output_names()) and the writer
+   *    creates the folder;
+   * 2. RunFiles removes the files of an earlier run under the same prefix
+   *    and starts the manifest; the note about removed files (empty if none)
+   *    goes to @p print;
+   * 3. @p synchronize is called if given (an MPI barrier, so that no
+   *    process writes before the earlier files are gone);
+   * 4. @p body runs; if it returns, the manifest says "complete";
+   * 5. if it throws, @p on_failure is called if given (for example to mark
+   *    a JSON summary failed; anything it throws is dropped so that the
+   *    original error is the one reported), the manifest says "failed" and
+   *    the exception goes on to the caller (the program prints the list of
+   *    files the run wrote after its error message:
+   *    RunFiles::last_failure_report()).
+   */
+  void
+  run_with_files(const RunOutput                                &output,
+                 const std::function<void(const std::string &)> &print,
+                 const std::function<void()>                    &body,
+                 const std::function<void()>                    &on_failure  = {},
+                 const std::function<void()>                    &synchronize = {});
 } // namespace dealvem
 
 #endif

@@ -11,6 +11,7 @@
 
 #include <dealvem/contact/active_set_update.h>
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/contact_solver.h>
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/contact/primal_active_set.h>
 #include <dealvem/contact/rigid_body_support.h>
@@ -124,46 +125,12 @@ namespace dealvem
    * calls ActiveSetUpdate directly and gets the same iterates.
    */
   template <int dim>
-  class ActiveSetSolver
+  class ActiveSetSolver : public ContactSolver<dim>
   {
   public:
-    /// What solve() returns besides the solution.
-    struct Result
-    {
-      /// The converged active set, per pair (true: normal constraint
-      /// enforced, the pair is closed).
-      std::vector<bool>         active;
-      /// Active-set iterations, i.e. saddle-point solves.
-      unsigned int              n_iterations = 0;
-      /// Per iteration, the number of active pairs of the set solved with.
-      std::vector<unsigned int> n_active_history;
-      /// Iterations of the linear solver summed over all saddle-point
-      /// solves (SaddlePointSolver::last_iterations(): 1 per direct solve),
-      /// the completions of inexact solves included.
-      unsigned int              linear_iterations = 0;
-      /// Inexact solves continued to the full tolerance because the rule
-      /// would stop on them (see "Inexact solves" in the class
-      /// documentation).
-      unsigned int              n_completed_solves = 0;
-      /// Pairs with an open initial gap closed for the first iteration so
-      /// that every body is held.
-      unsigned int              n_closed_for_support = 0;
-      /// Steps whose proposed set the acceleration corrected.
-      unsigned int              n_accelerated = 0;
-      /// Why the fast path (the active-set iteration above) gave up, when
-      /// the globalized solve took over; empty otherwise.
-      std::string               fast_path_failure;
-      /// Saddle-point solves of the globalized solve (0: not needed).
-      unsigned int              n_globalized_solves = 0;
-      /// Rigid steps of the globalized solve.
-      unsigned int              n_globalized_rigid_steps = 0;
-      /// Iterations of the polish after the globalized solve (stick models).
-      unsigned int              n_polish_iterations = 0;
-      /// Whether the result is the convex stick model of the globalized
-      /// solve (open pairs tied tangentially) because the polish to the
-      /// model of the fast path did not converge.
-      bool                      convex_stick_model = false;
-    };
+    /// What solve() returns besides the solution (the fields of
+    /// ContactSolveResult's first two groups).
+    using Result = ContactSolveResult;
 
     /// @p c is the constant of the active-set update, units of E/h.
     ActiveSetSolver(const ContactAssembler<dim>             &contact,
@@ -171,24 +138,6 @@ namespace dealvem
                     SaddlePointSolver                       &solver,
                     const ContactSettings                   &settings,
                     const double                             c);
-
-    /// Check every active set against the rigid-body motions (see above).
-    void
-    set_support(const RigidBodySupport *support)
-    {
-      this->support = support;
-    }
-
-    /**
-     * The neighbours of each pair along its interface (pairs of one
-     * sub-edge, vertex - midpoint - vertex for k = 2), for the acceleration
-     * above. pair_neighbours() builds them from node insertion's segments.
-     */
-    void
-    set_pair_neighbours(const std::vector<std::vector<unsigned int>> &neighbours)
-    {
-      this->neighbours = neighbours;
-    }
 
     /// Neighbours along the interfaces of the concatenated pair lists of
     /// @p interfaces (in the order given).
@@ -207,28 +156,27 @@ namespace dealvem
           dealii::SparseMatrix<double>       &matrix,
           dealii::Vector<double>             &x);
 
-    /**
-     * The collapse mechanism of the last solve() that found no equilibrium
-     * (the globalized solve's proof), or nullptr. solve() throws "No static
-     * equilibrium" with its description; a program catches the exception
-     * and writes the mechanism (ContactProblem: a VTU field and an SVG
-     * picture).
-     */
-    const CollapseMechanism *
-    last_mechanism() const
-    {
-      return mechanism.get();
-    }
+    /// Solve one load step: solve(), with the result kept (last_result())
+    /// and its state filled.
+    const Result &
+    solve_step(const dealii::SparseMatrix<double> &system_matrix,
+               const dealii::Vector<double>       &system_rhs,
+               dealii::SparseMatrix<double>       &matrix,
+               dealii::Vector<double>             &x) override;
+
+    /// "active set" (or "tied" for tied normal contact).
+    std::string
+    name() const override;
 
   private:
-    const ContactAssembler<dim>             &contact;
-    const dealii::AffineConstraints<double> &constraints;
-    SaddlePointSolver                       &solver;
-    ContactSettings                          settings;
-    double                                   c;
-    const RigidBodySupport                  *support = nullptr;
-    std::vector<std::vector<unsigned int>>   neighbours;
-    std::unique_ptr<CollapseMechanism>       mechanism;
+    using ContactSolver<dim>::contact;
+    using ContactSolver<dim>::constraints;
+    using ContactSolver<dim>::solver;
+    using ContactSolver<dim>::settings;
+    using ContactSolver<dim>::c;
+    using ContactSolver<dim>::support;
+    using ContactSolver<dim>::neighbours;
+    using ContactSolver<dim>::mechanism;
   };
 } // namespace dealvem
 

@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/contact_solver.h>
 #include <dealvem/contact/friction_state_update.h>
 #include <dealvem/contact/primal_active_set.h>
 #include <dealvem/contact/rigid_body_support.h>
@@ -168,60 +169,12 @@ namespace dealvem
    * strain can call from its own loop.
    */
   template <int dim>
-  class FrictionSolver
+  class FrictionSolver : public ContactSolver<dim>
   {
   public:
-    /// What solve() returns for one load step besides the solution.
-    struct Result
-    {
-      /// The converged state of each pair (open, stick, slip along +t or
-      /// -t); the states to start the next load step from.
-      std::vector<PairState> state;
-      /// Newton (active-set) iterations, i.e. saddle-point solves.
-      unsigned int                              n_iterations = 0;
-      /// Per iteration, the numbers of open, sticking and slipping pairs of
-      /// the states it solved with.
-      std::vector<std::array<unsigned int, 3>> history;
-      /// Iterations of the linear solver summed over all saddle-point
-      /// solves (SaddlePointSolver::last_iterations(): 1 per direct solve).
-      unsigned int                              linear_iterations = 0;
-      /// @var std::vector<double> slip
-      /// Per pair, the relative tangential displacement
-      /// $s_i = (u_B-u_A)\cdot t_i$ at the end of the step (length units).
-      /// @var std::vector<double> slip_increment
-      /// Per pair, the slip of this step against the reference of the last
-      /// one: $s_i$ minus the reference with multipliers, the increment of
-      /// the plastic slip with the penalty variant; zero for open pairs.
-      /// @var std::vector<double> tangential_multiplier
-      /// Per pair, the friction nodal force $\lambda_{t,i}$ (the slave node
-      /// receives $-\lambda_{t,i} t_i$).
-      /// @var std::vector<double> reference
-      /// Per pair, the reference for the next step, to pass to its solve():
-      /// the relative tangential displacement, or the plastic slip with the
-      /// penalty variant.
-      std::vector<double> slip, slip_increment, tangential_multiplier, reference;
-      /// Energy dissipated by friction in this step,
-      /// $\sum_{\text{slip}} \lambda_{t,i}\,\Delta s_i$ (with the penalty, the
-      /// plastic slip increment).
-      double dissipated_energy = 0;
-      /// The factors of the friction coefficients at which the continuation
-      /// converged, in order, ending with 1; empty when the plain iteration
-      /// converged.
-      std::vector<double> continuation_factors;
-      /// Semismooth Newton iterations that did not converge (the plain one
-      /// and those of the continuation); their saddle-point solves are
-      /// counted in n_iterations.
-      unsigned int n_failed_attempts = 0;
-      /// Saddle-point solves of the globalized stick solve that started
-      /// the iteration again after the plain one failed (0: not needed).
-      unsigned int n_globalized_solves = 0;
-      /// Whether the step was solved by the globalized path after the plain
-      /// iteration failed: the Tresca fixed point (or Newton from its
-      /// settled states), without continuation.
-      bool globalized_start = false;
-      /// Tresca problems solved in the fixed point (0: not needed).
-      unsigned int n_fixed_point_iterations = 0;
-    };
+    /// What solve() returns for one load step besides the solution (the
+    /// fields of ContactSolveResult's first and last groups).
+    using Result = ContactSolveResult;
 
     /// The parameters of the continuation in the friction coefficient (see
     /// the class documentation).
@@ -247,13 +200,6 @@ namespace dealvem
                    SaddlePointSolver                       &solver,
                    const ContactSettings                   &settings,
                    const double                             c);
-
-    /// Check every set of states against the rigid-body motions.
-    void
-    set_support(const RigidBodySupport *support)
-    {
-      this->support = support;
-    }
 
     /**
      * The states of a first load step: pairs whose initial gap is closed
@@ -282,15 +228,29 @@ namespace dealvem
           const std::vector<PairState>       &state,
           const std::vector<double>          &reference);
 
-    /// The collapse mechanism of the last solve() that found no
-    /// equilibrium: even with sticking joints, or (failing condition
-    /// "friction") with the friction bounds of the Tresca fixed point (see
-    /// the class documentation); nullptr after a solve() that converged.
-    const CollapseMechanism *
-    last_mechanism() const
-    {
-      return mechanism.get();
-    }
+    /**
+     * Set the states and reference slips the next solve_step() starts
+     * from (by default the first starts from initial_state() and zero
+     * references, and each later one from where the last ended).
+     */
+    void
+    set_start(const std::vector<PairState> &state, const std::vector<double> &reference);
+
+    /// Solve one load step from the carried states and references
+    /// (set_start()), then carry the converged ones to the next step. The
+    /// collapse mechanism of a step that found no equilibrium, even with
+    /// sticking joints, or (failing condition "friction") with the friction
+    /// bounds of the Tresca fixed point (see the class documentation), is
+    /// last_mechanism().
+    const Result &
+    solve_step(const dealii::SparseMatrix<double> &system_matrix,
+               const dealii::Vector<double>       &system_rhs,
+               dealii::SparseMatrix<double>       &matrix,
+               dealii::Vector<double>             &x) override;
+
+    /// "Coulomb friction".
+    std::string
+    name() const override;
 
   private:
     /**
@@ -309,13 +269,18 @@ namespace dealvem
             const std::vector<double>          &reference,
             Result                             &result) const;
 
-    const ContactAssembler<dim>             &contact;
-    const dealii::AffineConstraints<double> &constraints;
-    SaddlePointSolver                       &solver;
-    ContactSettings                          settings;
-    double                                   c;
-    const RigidBodySupport                  *support = nullptr;
-    std::shared_ptr<CollapseMechanism>       mechanism;
+    using ContactSolver<dim>::contact;
+    using ContactSolver<dim>::constraints;
+    using ContactSolver<dim>::solver;
+    using ContactSolver<dim>::settings;
+    using ContactSolver<dim>::c;
+    using ContactSolver<dim>::support;
+    using ContactSolver<dim>::mechanism;
+    /// The states and references the next solve_step() starts from
+    /// (empty: initial_state() and zeros).
+    std::vector<PairState> start_state;
+    /// See start_state.
+    std::vector<double>    start_reference;
     /// At most this many Tresca problems in the fixed point of solve().
     static constexpr unsigned int            max_fixed_point_iterations = 60;
     Continuation                             continuation;

@@ -237,6 +237,15 @@ namespace dealvem
       return t == Type::cg_amg_constraints || t == Type::direct_constraints;
     }
 
+    /// Whether @p t is an iterative method (with an AMG preconditioner,
+    /// which wants the near-null space: set_near_null_space()); the others
+    /// factorize and solve to round-off.
+    static bool
+    is_iterative(const Type t)
+    {
+      return t == Type::gmres_amg || t == Type::cg_amg_constraints;
+    }
+
   protected:
     /// The settings of the constructor.
     Settings                         settings;
