@@ -200,16 +200,27 @@ namespace dealvem
 
 
 
-  void
-  ElasticityProblem::solve()
+  // The settings of the linear solve, serial or distributed: the method
+  // chosen (recorded for the report), its tolerance, limit and preconditioner.
+  LinearSolver::Settings
+  ElasticityProblem::linear_solver_settings()
   {
-    dealii::TimerOutput::Scope t(*timer, "solve");
-    LinearSolver::Settings     settings;
+    LinearSolver::Settings settings;
     settings.type               = LinearSolver::parse_type(used_solver_type = chosen_solver_type());
     settings.relative_tolerance = solver_tolerance;
     settings.max_iterations     = solver_max_iterations;
     settings.preconditioner     = LinearSolver::parse_preconditioner(solver_preconditioner);
-    LinearSolver solver(settings);
+    return settings;
+  }
+
+
+
+  void
+  ElasticityProblem::solve()
+  {
+    dealii::TimerOutput::Scope t(*timer, "solve");
+    const LinearSolver::Settings settings = linear_solver_settings();
+    LinearSolver                 solver(settings);
     // k = 2 with CG: the k = 1 space on the same polygons as the coarse
     // level (p-multigrid)
     dealii::SparsityPattern          prolongation_sparsity;
@@ -299,12 +310,8 @@ namespace dealvem
   {
     {
       dealii::TimerOutput::Scope t(*timer, "solve");
-      LinearSolver::Settings     settings;
-      settings.type               = LinearSolver::parse_type(used_solver_type = chosen_solver_type());
-      settings.relative_tolerance = solver_tolerance;
-      settings.max_iterations     = solver_max_iterations;
-      settings.preconditioner     = LinearSolver::parse_preconditioner(solver_preconditioner);
-      ParallelLinearSolver solver(settings);
+      const LinearSolver::Settings settings = linear_solver_settings();
+      ParallelLinearSolver         solver(settings);
       if (settings.type == LinearSolver::Type::cg_amg)
         solver.set_near_null_space(dof_handler.rigid_body_modes(), locally_owned_dofs);
       // k = 2 with CG: the p-multigrid, as on the serial path

@@ -28,6 +28,7 @@
 #include <dealvem/postprocessing/error_norms.h>
 #include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/postprocessing/stress_recovery.h>
+#include <dealvem/solvers/linear_solver.h>
 #include <dealvem/vem/partitioning.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
@@ -230,6 +231,10 @@ namespace dealvem
                      const FiniteStrainSolver<2>::StepRecord &r,
                      const unsigned int                        monitor,
                      const std::string                        &key);
+    /// The settings of the linear solve (serial and distributed), the
+    /// method recorded for the report.
+    LinearSolver::Settings
+    linear_solver_settings();
     void
     print_newton_history(const FiniteStrainSolver<2> &solver, const unsigned int cycle) const;
 
