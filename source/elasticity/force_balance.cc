@@ -16,33 +16,38 @@
 
 namespace dealvem
 {
-  std::vector<ForceBalance::Body>
-  ForceBalance::compute(const ElasticityAssembler<2>            &assembler,
-                        const dealii::AffineConstraints<double> &constraints,
-                        const dealii::Vector<double>            &u,
-                        const dealii::Vector<double>            &contact_forces,
-                        const double                             solver_tolerance,
-                        const std::vector<unsigned int>         *cells,
-                        const MPI_Comm                           comm,
-                        const std::vector<std::pair<dealii::types::global_dof_index,
-                                                    dealii::types::global_dof_index>> &couplings,
-                        dealii::Vector<double>                                           *unbalanced)
+  namespace
   {
-    const auto        &dof_handler = assembler.get_dof_handler();
-    const auto        &mesh        = dof_handler.get_mesh();
-    const unsigned int n           = dof_handler.n_dofs();
-    AssertThrow(u.size() == n && (contact_forces.size() == 0 || contact_forces.size() == n),
-                dealii::ExcMessage("ForceBalance::compute(): the vectors must have n_dofs() entries."));
-    const bool parallel = dealii::Utilities::MPI::job_supports_mpi() &&
-                          dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
-    const bool first    = !parallel || dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-
-    // f, K u and |K||u| of the cells of this process, then summed; the
-    // range of the stiffnesses of the laws
-    dealii::Vector<double> f(n), Ku(n), Ku_abs(n);
-    double                 stiffness_min = std::numeric_limits<double>::infinity(), stiffness_max = 0;
+    // The sums over the cells that ForceBalance::compute() needs: the load
+    // vector f, K u and the sum of the magnitudes |K_ij u_j| of its terms,
+    // and the range of the characteristic stiffnesses of the laws.
+    struct CellSums
     {
-      VEMValues<2> vem_values(dof_handler);
+      dealii::Vector<double> f, Ku, Ku_abs;
+      double                 stiffness_min = std::numeric_limits<double>::infinity();
+      double                 stiffness_max = 0;
+    };
+
+
+
+    // compute(), step 1: f, K u and |K||u| of the cells @p cells (all cells
+    // if nullptr) of this process, the nodal loads once (by the first
+    // process), then summed over the processes of @p comm if @p parallel.
+    CellSums
+    sum_over_cells(const ElasticityAssembler<2> &assembler, const dealii::Vector<double> &u,
+                   const std::vector<unsigned int> *cells, const MPI_Comm comm, const bool parallel, const bool first)
+    {
+      const auto        &dof_handler = assembler.get_dof_handler();
+      const auto        &mesh        = dof_handler.get_mesh();
+      const unsigned int n           = dof_handler.n_dofs();
+      CellSums           sums;
+      dealii::Vector<double> &f = sums.f, &Ku = sums.Ku, &Ku_abs = sums.Ku_abs;
+      f.reinit(n);
+      Ku.reinit(n);
+      Ku_abs.reinit(n);
+      double &stiffness_min = sums.stiffness_min, &stiffness_max = sums.stiffness_max;
+
+      VEMValues<2>           vem_values(dof_handler);
       ElasticityOperator<2>  elasticity;
       dealii::Vector<double> F;
       const auto             add_cell = [&](const unsigned int c) {
@@ -86,14 +91,138 @@ namespace dealvem
           stiffness_min = dealii::Utilities::MPI::min(stiffness_min, comm);
           stiffness_max = dealii::Utilities::MPI::max(stiffness_max, comm);
         }
+      return sums;
     }
-    const bool moderate_stiffness_ratio = stiffness_max <= max_stiffness_ratio * stiffness_min;
+
+
+
+    // compute(), step 3: one Body for each material id, in the order of
+    // the cells, with its area centroid and size (the largest distance of
+    // a vertex from the centroid); @p node_body gets the index of the body
+    // of each node.
+    std::vector<ForceBalance::Body>
+    find_bodies(const VEMDoFHandler<2> &dof_handler, std::vector<unsigned int> &node_body)
+    {
+      const auto                                        &mesh = dof_handler.get_mesh();
+      std::map<dealii::types::material_id, unsigned int> index;
+      std::vector<ForceBalance::Body>                    bodies;
+      std::vector<double>                                area;
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          const auto id = mesh.cell(c).material_id;
+          if (index.count(id) == 0)
+            {
+              index[id] = bodies.size();
+              bodies.emplace_back();
+              bodies.back().body = id;
+              area.push_back(0);
+            }
+          auto       &b  = bodies[index[id]];
+          const auto &vs = mesh.cell(c).vertices;
+          for (unsigned int i = 0; i < vs.size(); ++i)
+            {
+              const auto  &x0    = mesh.vertex(vs[i]);
+              const auto  &x1    = mesh.vertex(vs[(i + 1) % vs.size()]);
+              const double cross = x0[0] * x1[1] - x1[0] * x0[1];
+              area[index[id]] += 0.5 * cross;
+              b.centroid[0] += (x0[0] + x1[0]) * cross / 6.;
+              b.centroid[1] += (x0[1] + x1[1]) * cross / 6.;
+            }
+        }
+      for (unsigned int k = 0; k < bodies.size(); ++k)
+        if (area[k] != 0)
+          bodies[k].centroid /= area[k];
+      std::vector<unsigned int> nodes;
+      node_body.assign(dof_handler.n_nodes(), 0);
+      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+        {
+          dof_handler.get_node_indices(c, nodes);
+          for (const auto nd : nodes)
+            node_body[nd] = index[mesh.cell(c).material_id];
+        }
+      for (unsigned int v = 0; v < mesh.n_vertices() && v < node_body.size(); ++v)
+        bodies[node_body[v]].size =
+          std::max(bodies[node_body[v]].size, mesh.vertex(v).distance(bodies[node_body[v]].centroid));
+      return bodies;
+    }
+
+
+
+    // compute(), step 5: the relative imbalance, residual, condition and
+    // tolerance of body @p b from the sums over its nodes: the @p loads
+    // |f|, the @p magnitude of the terms of its equations and the
+    // @p residual |rho + P|.
+    void
+    judge_body(ForceBalance::Body &b, const double loads, const double magnitude, const double residual,
+               const bool moderate_stiffness_ratio, const double solver_tolerance, const unsigned int n,
+               const double external_norm)
+    {
+      const double eps = std::numeric_limits<double>::epsilon();
+      const auto   F   = b.applied + b.reaction + b.contact;
+      const double M   = b.applied_moment + b.reaction_moment + b.contact_moment;
+      // zero forces: no applied load, and the reactions and contact
+      // forces no larger than the rounding of the body's magnitudes (the
+      // exact forces are zero; the computed ones are the rounding of K u
+      // for a rigid u, and of the partner's)
+      b.zero_forces      = loads == 0 && moderate_stiffness_ratio && magnitude > 0 &&
+                      b.forces <= ForceBalance::zero_force_factor * eps * magnitude;
+      const double scale = b.zero_forces ? ForceBalance::zero_force_factor * eps * magnitude :
+                                           std::max(b.forces, std::numeric_limits<double>::min());
+      b.imbalance        = (std::abs(F[0]) + std::abs(F[1]) + std::abs(M) / std::max(b.size, 1e-300)) / scale;
+      b.residual         = residual / scale;
+      b.condition        = b.zero_forces ? 0. : magnitude / scale;
+      b.tolerance        = (ForceBalance::rounding_factor * eps * magnitude +
+                     ForceBalance::iterative_factor * solver_tolerance * std::sqrt(double(n)) * external_norm) /
+                    scale;
+      // zero forces within the rounding: the balance holds as exactly as
+      // the arithmetic allows, and there is no force to relate it to
+      if (b.zero_forces && b.imbalance <= b.tolerance && b.residual <= b.tolerance)
+        b.imbalance = b.residual = 0;
+      // a body on which nothing acts: nothing to balance
+      if (b.forces == 0)
+        {
+          b.imbalance = b.residual = 0;
+          if (magnitude == 0)
+            b.condition = 0;
+        }
+    }
+  } // namespace
+
+
+
+  std::vector<ForceBalance::Body>
+  ForceBalance::compute(const ElasticityAssembler<2>            &assembler,
+                        const dealii::AffineConstraints<double> &constraints,
+                        const dealii::Vector<double>            &u,
+                        const dealii::Vector<double>            &contact_forces,
+                        const double                             solver_tolerance,
+                        const std::vector<unsigned int>         *cells,
+                        const MPI_Comm                           comm,
+                        const std::vector<std::pair<dealii::types::global_dof_index,
+                                                    dealii::types::global_dof_index>> &couplings,
+                        dealii::Vector<double>                                           *unbalanced)
+  {
+    const auto        &dof_handler = assembler.get_dof_handler();
+    const unsigned int n           = dof_handler.n_dofs();
+    AssertThrow(u.size() == n && (contact_forces.size() == 0 || contact_forces.size() == n),
+                dealii::ExcMessage("ForceBalance::compute(): the vectors must have n_dofs() entries."));
+    const bool parallel = dealii::Utilities::MPI::job_supports_mpi() &&
+                          dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
+    const bool first    = !parallel || dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+
+    // step 1: f, K u and |K||u| of the cells of this process, then summed;
+    // the range of the stiffnesses of the laws
+    const CellSums                sums   = sum_over_cells(assembler, u, cells, comm, parallel, first);
+    const dealii::Vector<double> &f      = sums.f;
+    const dealii::Vector<double> &Ku     = sums.Ku;
+    const dealii::Vector<double> &Ku_abs = sums.Ku_abs;
+    const bool moderate_stiffness_ratio = sums.stiffness_max <= max_stiffness_ratio * sums.stiffness_min;
     dealii::Vector<double> e(n);
     if (contact_forces.size() == n)
       e = contact_forces;
 
-    // rho = f + e - K u; the reactions P of the constraint lines; the
-    // residual r = rho + P of the condensed equations
+    // step 2: rho = f + e - K u; the reactions P of the constraint lines;
+    // the residual r = rho + P of the condensed equations
     dealii::Vector<double> rho(n), P(n);
     for (unsigned int i = 0; i < n; ++i)
       rho[i] = f[i] + e[i] - Ku[i];
@@ -108,51 +237,17 @@ namespace dealvem
               P[entry.first] += entry.second * rho[line.index];
         }
 
-    // bodies: area centroid and size
-    std::map<dealii::types::material_id, unsigned int> index;
-    std::vector<Body>                                  bodies;
-    std::vector<double>                                area;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      {
-        const auto id = mesh.cell(c).material_id;
-        if (index.count(id) == 0)
-          {
-            index[id] = bodies.size();
-            bodies.emplace_back();
-            bodies.back().body = id;
-            area.push_back(0);
-          }
-        auto       &b  = bodies[index[id]];
-        const auto &vs = mesh.cell(c).vertices;
-        for (unsigned int i = 0; i < vs.size(); ++i)
-          {
-            const auto  &x0    = mesh.vertex(vs[i]);
-            const auto  &x1    = mesh.vertex(vs[(i + 1) % vs.size()]);
-            const double cross = x0[0] * x1[1] - x1[0] * x0[1];
-            area[index[id]] += 0.5 * cross;
-            b.centroid[0] += (x0[0] + x1[0]) * cross / 6.;
-            b.centroid[1] += (x0[1] + x1[1]) * cross / 6.;
-          }
-      }
-    for (unsigned int k = 0; k < bodies.size(); ++k)
-      if (area[k] != 0)
-        bodies[k].centroid /= area[k];
-    std::vector<unsigned int> node_body(dof_handler.n_nodes(), 0), nodes;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      {
-        dof_handler.get_node_indices(c, nodes);
-        for (const auto nd : nodes)
-          node_body[nd] = index[mesh.cell(c).material_id];
-      }
-    for (unsigned int v = 0; v < mesh.n_vertices() && v < node_body.size(); ++v)
-      bodies[node_body[v]].size =
-        std::max(bodies[node_body[v]].size, mesh.vertex(v).distance(bodies[node_body[v]].centroid));
+    // step 3: bodies, their area centroid and size
+    std::vector<unsigned int> node_body;
+    std::vector<Body>         bodies = find_bodies(dof_handler, node_body);
 
     double external_norm = 0;
     for (unsigned int i = 0; i < n; ++i)
       external_norm += (f[i] + e[i] + P[i]) * (f[i] + e[i] + P[i]);
     external_norm = std::sqrt(external_norm);
 
+    // step 4: the forces and moments on each body, and the sums behind its
+    // scale
     std::vector<double> residual(bodies.size(), 0.), magnitude(bodies.size(), 0.), loads(bodies.size(), 0.);
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -179,38 +274,11 @@ namespace dealvem
           magnitude[node_body[i / 2]] += Ku_abs[j];
           magnitude[node_body[j / 2]] += Ku_abs[i];
         }
-    const double eps = std::numeric_limits<double>::epsilon();
+
+    // step 5: the balance of each body relative to its forces
     for (unsigned int k = 0; k < bodies.size(); ++k)
-      {
-        auto        &b     = bodies[k];
-        const auto   F     = b.applied + b.reaction + b.contact;
-        const double M     = b.applied_moment + b.reaction_moment + b.contact_moment;
-        // zero forces: no applied load, and the reactions and contact
-        // forces no larger than the rounding of the body's magnitudes (the
-        // exact forces are zero; the computed ones are the rounding of K u
-        // for a rigid u, and of the partner's)
-        b.zero_forces      = loads[k] == 0 && moderate_stiffness_ratio && magnitude[k] > 0 &&
-                        b.forces <= zero_force_factor * eps * magnitude[k];
-        const double scale = b.zero_forces ? zero_force_factor * eps * magnitude[k] :
-                                             std::max(b.forces, std::numeric_limits<double>::min());
-        b.imbalance        = (std::abs(F[0]) + std::abs(F[1]) + std::abs(M) / std::max(b.size, 1e-300)) / scale;
-        b.residual         = residual[k] / scale;
-        b.condition        = b.zero_forces ? 0. : magnitude[k] / scale;
-        b.tolerance        = (rounding_factor * eps * magnitude[k] +
-                       iterative_factor * solver_tolerance * std::sqrt(double(n)) * external_norm) /
-                      scale;
-        // zero forces within the rounding: the balance holds as exactly as
-        // the arithmetic allows, and there is no force to relate it to
-        if (b.zero_forces && b.imbalance <= b.tolerance && b.residual <= b.tolerance)
-          b.imbalance = b.residual = 0;
-        // a body on which nothing acts: nothing to balance
-        if (b.forces == 0)
-          {
-            b.imbalance = b.residual = 0;
-            if (magnitude[k] == 0)
-              b.condition = 0;
-          }
-      }
+      judge_body(bodies[k], loads[k], magnitude[k], residual[k], moderate_stiffness_ratio, solver_tolerance, n,
+                 external_norm);
     return bodies;
   }
 

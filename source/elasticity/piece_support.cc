@@ -14,6 +14,172 @@
 
 namespace dealvem
 {
+  namespace
+  {
+    using Row = PieceSupport::Row;
+
+    // whether a 3x3 Gram matrix of the rows of a piece has rank 3 (the
+    // rows hold all three rigid motions of the piece)
+    bool
+    full_rank(const Eigen::Matrix3d &g)
+    {
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(g);
+      return eig.eigenvalues()(2) > 0 && eig.eigenvalues()(0) > 1e-10 * eig.eigenvalues()(2);
+    }
+
+
+
+    // The rows of the free_motions() check sorted by the pieces they
+    // touch (a column 3 p + k of a row is motion k of piece p), and which
+    // pieces the rows hold.
+    struct PieceRows
+    {
+      PieceRows(const std::vector<const Row *> &rows, const unsigned int n_pieces);
+
+      // the Gram matrix of piece @p p's own rows plus its part of the rows
+      // that touch it and otherwise only held pieces
+      Eigen::Matrix3d
+      restricted_gram(const unsigned int p) const;
+
+      // step 1b: pieces held through held pieces (see free_motions())
+      void
+      hold_through_held_pieces();
+
+      const std::vector<const Row *>        &rows;
+      std::vector<Eigen::Matrix3d>           own;     // the Gram matrix of the rows of each piece alone
+      std::vector<bool>                      single;  // whether a row touches one piece only
+      std::vector<bool>                      held;    // whether a piece is held
+      std::vector<std::vector<unsigned int>> rows_of; // the rows that touch a piece and another one
+    };
+
+
+
+    // step 1: the pieces held by the rows that touch them alone
+    PieceRows::PieceRows(const std::vector<const Row *> &rows, const unsigned int n_pieces)
+      : rows(rows)
+      , own(n_pieces, Eigen::Matrix3d::Zero())
+      , single(rows.size(), true)
+      , held(n_pieces, false)
+      , rows_of(n_pieces)
+    {
+      for (unsigned int r = 0; r < rows.size(); ++r)
+        {
+          const auto &row = *rows[r];
+          for (const auto &e : row)
+            single[r] = single[r] && (e.first / 3 == row.front().first / 3);
+          if (single[r] && !row.empty())
+            {
+              const unsigned int p = row.front().first / 3;
+              Eigen::Vector3d    v = Eigen::Vector3d::Zero();
+              for (const auto &e : row)
+                v(e.first % 3) += e.second;
+              own[p] += v * v.transpose();
+            }
+        }
+      for (unsigned int p = 0; p < n_pieces; ++p)
+        held[p] = full_rank(own[p]);
+      for (unsigned int r = 0; r < rows.size(); ++r)
+        if (!single[r])
+          for (const auto &e : *rows[r])
+            if (rows_of[e.first / 3].empty() || rows_of[e.first / 3].back() != r)
+              rows_of[e.first / 3].push_back(r);
+    }
+
+
+
+    Eigen::Matrix3d
+    PieceRows::restricted_gram(const unsigned int p) const
+    {
+      Eigen::Matrix3d g = own[p];
+      for (const unsigned int r : rows_of[p])
+        {
+          Eigen::Vector3d v      = Eigen::Vector3d::Zero();
+          bool            others = false;
+          for (const auto &e : *rows[r])
+            if (e.first / 3 == p)
+              v(e.first % 3) += e.second;
+            else
+              others = others || !held[e.first / 3];
+          if (!others)
+            g += v * v.transpose();
+        }
+      return g;
+    }
+
+
+
+    void
+    PieceRows::hold_through_held_pieces()
+    {
+      const unsigned int        n_pieces = held.size();
+      std::vector<unsigned int> work;
+      std::vector<bool>         queued(n_pieces, false);
+      const auto                queue_neighbours = [&](const unsigned int p) {
+        for (const unsigned int r : rows_of[p])
+          for (const auto &e : *rows[r])
+            if (const unsigned int q = e.first / 3; !held[q] && !queued[q])
+              {
+                queued[q] = true;
+                work.push_back(q);
+              }
+      };
+      for (unsigned int p = 0; p < n_pieces; ++p)
+        if (held[p])
+          queue_neighbours(p);
+      while (!work.empty())
+        {
+          const unsigned int p = work.back();
+          work.pop_back();
+          queued[p] = false;
+          if (held[p])
+            continue;
+          if (full_rank(restricted_gram(p)))
+            {
+              held[p] = true;
+              queue_neighbours(p);
+            }
+        }
+    }
+
+
+
+    // step 3: the free motions of the unheld pieces @p rest that rows
+    // couple to one another (@p column: the index of each piece in
+    // @p rest), from the null space of the dense Gram matrix of the rows
+    // with the columns of the other pieces dropped; appended to @p motions.
+    void
+    add_coupled_motions(const std::vector<const Row *> &rows, const std::vector<unsigned int> &rest,
+                        const std::vector<unsigned int> &column, std::vector<std::vector<unsigned int>> &motions)
+    {
+      const unsigned int N    = 3 * rest.size();
+      Eigen::MatrixXd    gram = Eigen::MatrixXd::Zero(N, N);
+      std::vector<std::pair<unsigned int, double>> reduced;
+      for (unsigned int r = 0; r < rows.size(); ++r)
+        {
+          reduced.clear();
+          for (const auto &e : *rows[r])
+            if (const unsigned int p = e.first / 3; column[p] != dealii::numbers::invalid_unsigned_int)
+              reduced.emplace_back(3 * column[p] + e.first % 3, e.second);
+          for (const auto &a : reduced)
+            for (const auto &b : reduced)
+              gram(a.first, b.first) += a.second * b.second;
+        }
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
+      const double vmax = std::max(eig.eigenvalues().maxCoeff(), 0.);
+      for (unsigned int k = 0; k < N; ++k)
+        if (vmax == 0 || eig.eigenvalues()(k) <= 1e-10 * vmax)
+          {
+            std::vector<unsigned int> m;
+            for (unsigned int j = 0; j < N; ++j)
+              if (std::abs(eig.eigenvectors()(j, k)) > 1e-3)
+                m.push_back(3 * rest[j / 3] + j % 3);
+            motions.push_back(m);
+          }
+    }
+  } // namespace
+
+
+
   PieceSupport::PieceSupport(const VEMDoFHandler<2> &dof_handler)
     : pieces(dof_handler.get_mesh())
     , dof_handler(dof_handler)
@@ -94,29 +260,7 @@ namespace dealvem
   {
     const unsigned int n_pieces = pieces.n_pieces();
     // 1. pieces held by the rows that touch them alone
-    std::vector<Eigen::Matrix3d> own(n_pieces, Eigen::Matrix3d::Zero());
-    std::vector<bool>            single(rows.size(), true);
-    for (unsigned int r = 0; r < rows.size(); ++r)
-      {
-        const auto &row = *rows[r];
-        for (const auto &e : row)
-          single[r] = single[r] && (e.first / 3 == row.front().first / 3);
-        if (single[r] && !row.empty())
-          {
-            const unsigned int p = row.front().first / 3;
-            Eigen::Vector3d    v = Eigen::Vector3d::Zero();
-            for (const auto &e : row)
-              v(e.first % 3) += e.second;
-            own[p] += v * v.transpose();
-          }
-      }
-    const auto full_rank = [](const Eigen::Matrix3d &g) {
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(g);
-      return eig.eigenvalues()(2) > 0 && eig.eigenvalues()(0) > 1e-10 * eig.eigenvalues()(2);
-    };
-    std::vector<bool> held(n_pieces, false);
-    for (unsigned int p = 0; p < n_pieces; ++p)
-      held[p] = full_rank(own[p]);
+    PieceRows piece_rows(rows, n_pieces);
     // 1b. held through held pieces: a piece whose part of the rows that
     // touch it and otherwise only held pieces has rank 3 is held too (any
     // free motion vanishes on the held pieces, so these rows restrict the
@@ -124,59 +268,9 @@ namespace dealvem
     // a row of many bodies resting on one another costs time linear in the
     // rows, and the dense test of step 3 only sees pieces held through one
     // another in a loop
-    // the rows that touch each piece and another one, and a piece's own
-    // rows plus its part of those rows whose other pieces are all held
-    std::vector<std::vector<unsigned int>> rows_of(n_pieces);
-    for (unsigned int r = 0; r < rows.size(); ++r)
-      if (!single[r])
-        for (const auto &e : *rows[r])
-          if (rows_of[e.first / 3].empty() || rows_of[e.first / 3].back() != r)
-            rows_of[e.first / 3].push_back(r);
-    const auto restricted_gram = [&](const unsigned int p) {
-      Eigen::Matrix3d g = own[p];
-      for (const unsigned int r : rows_of[p])
-        {
-          Eigen::Vector3d v      = Eigen::Vector3d::Zero();
-          bool            others = false;
-          for (const auto &e : *rows[r])
-            if (e.first / 3 == p)
-              v(e.first % 3) += e.second;
-            else
-              others = others || !held[e.first / 3];
-          if (!others)
-            g += v * v.transpose();
-        }
-      return g;
-    };
-    {
-      std::vector<unsigned int> work;
-      std::vector<bool>         queued(n_pieces, false);
-      const auto                queue_neighbours = [&](const unsigned int p) {
-        for (const unsigned int r : rows_of[p])
-          for (const auto &e : *rows[r])
-            if (const unsigned int q = e.first / 3; !held[q] && !queued[q])
-              {
-                queued[q] = true;
-                work.push_back(q);
-              }
-      };
-      for (unsigned int p = 0; p < n_pieces; ++p)
-        if (held[p])
-          queue_neighbours(p);
-      while (!work.empty())
-        {
-          const unsigned int p = work.back();
-          work.pop_back();
-          queued[p] = false;
-          if (held[p])
-            continue;
-          if (full_rank(restricted_gram(p)))
-            {
-              held[p] = true;
-              queue_neighbours(p);
-            }
-        }
-    }
+    piece_rows.hold_through_held_pieces();
+    const std::vector<bool> &held   = piece_rows.held;
+    const std::vector<bool> &single = piece_rows.single;
     // 2. an unheld piece that no row couples to another: its own null space
     std::vector<bool> coupled(n_pieces, false);
     for (unsigned int r = 0; r < rows.size(); ++r)
@@ -198,7 +292,7 @@ namespace dealvem
         {
           // (the rows of held partners fix nothing of this piece beyond its
           // own rows: add its part of the rows that touch held pieces too)
-          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(restricted_gram(p));
+          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(piece_rows.restricted_gram(p));
           const double vmax = std::max(eig.eigenvalues()(2), 0.);
           for (unsigned int k = 0; k < 3; ++k)
             if (vmax == 0 || eig.eigenvalues()(k) <= 1e-10 * vmax)
@@ -228,30 +322,7 @@ namespace dealvem
                                    "is held only by contacts that this iteration left open or slipping: hold "
                                    "more of them by Dirichlet, roller or point constraints, or by contacts that "
                                    "stick."));
-    const unsigned int N = 3 * rest.size();
-    Eigen::MatrixXd    gram = Eigen::MatrixXd::Zero(N, N);
-    std::vector<std::pair<unsigned int, double>> reduced;
-    for (unsigned int r = 0; r < rows.size(); ++r)
-      {
-        reduced.clear();
-        for (const auto &e : *rows[r])
-          if (const unsigned int p = e.first / 3; column[p] != dealii::numbers::invalid_unsigned_int)
-            reduced.emplace_back(3 * column[p] + e.first % 3, e.second);
-        for (const auto &a : reduced)
-          for (const auto &b : reduced)
-            gram(a.first, b.first) += a.second * b.second;
-      }
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
-    const double vmax = std::max(eig.eigenvalues().maxCoeff(), 0.);
-    for (unsigned int k = 0; k < N; ++k)
-      if (vmax == 0 || eig.eigenvalues()(k) <= 1e-10 * vmax)
-        {
-          std::vector<unsigned int> m;
-          for (unsigned int j = 0; j < N; ++j)
-            if (std::abs(eig.eigenvectors()(j, k)) > 1e-3)
-              m.push_back(3 * rest[j / 3] + j % 3);
-          motions.push_back(m);
-        }
+    add_coupled_motions(rows, rest, column, motions);
     return motions;
   }
 

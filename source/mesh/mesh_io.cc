@@ -231,6 +231,333 @@ namespace dealvem
         std::string   current;
         std::size_t   pos = 0;
       };
+
+
+
+      // read_vtk(), step 1: the header line, ASCII and DATASET
+      // UNSTRUCTURED_GRID.
+      void
+      read_vtk_header(Tokens &t, const std::string &name)
+      {
+        AssertThrow(t.n_lines >= 1 && t.header.find("# vtk DataFile") == 0,
+                    ExcInvalidMesh(name + ":1: not a legacy VTK file (the first line must start with "
+                                          "'# vtk DataFile')."));
+        AssertThrow(t.n_lines >= 2 && !t.done(), ExcInvalidMesh(name + ": the file is truncated after its header."));
+        {
+          const std::size_t l   = t.line();
+          const std::string fmt = t.next("ASCII");
+          AssertThrow(fmt == "ASCII", ExcInvalidMesh(t.at(l) + "only ASCII VTK files are supported, found '" +
+                                                     fmt + "'."));
+        }
+        t.expect("DATASET");
+        {
+          const std::size_t l  = t.line();
+          const std::string ds = t.next("UNSTRUCTURED_GRID");
+          AssertThrow(ds == "UNSTRUCTURED_GRID",
+                      ExcInvalidMesh(t.at(l) + "expected DATASET UNSTRUCTURED_GRID, found '" + ds + "'."));
+        }
+      }
+
+
+
+      // read_vtk(), step 2: the POINTS (three numbers each) as the vertices
+      // of @p mesh, which is cleared first; returns their number.
+      template <int dim>
+      long long
+      read_vtk_points(Tokens &t, PolygonalMesh<dim> &mesh, const std::string &name)
+      {
+        t.expect("POINTS");
+        const std::size_t points_line = t.line();
+        const long long n_points = t.count("the number of points", 3 * bytes_per_number, 1);
+        t.next("the point data type");
+        mesh.clear();
+        mesh.name = name;
+        for (long long i = 0; i < n_points; ++i)
+          {
+            const double x = t.coordinate("x of point " + std::to_string(i));
+            const double y = t.coordinate("y of point " + std::to_string(i));
+            t.coordinate("z of point " + std::to_string(i));
+            mesh.add_vertex(dealii::Point<dim>(x, y));
+          }
+        // a mesh far below the scale of double precision: the areas below
+        // (products of coordinates) underflow and every cell would look
+        // degenerate; say what is wrong instead
+        if (n_points > 0)
+          {
+            dealii::Point<dim> lo = mesh.vertex(0), hi = mesh.vertex(0);
+            for (const auto &p : mesh.get_vertices())
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  lo[d] = std::min(lo[d], p[d]);
+                  hi[d] = std::max(hi[d], p[d]);
+                }
+            const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+            if (extent > 0 && extent < 1e-100)
+              {
+                std::ostringstream msg;
+                msg << t.at(points_line) << "the points span only " << extent
+                    << "; meshes smaller than 1e-100 are not supported, because areas and geometric "
+                       "tolerances (products of coordinate differences) underflow. Give the coordinates in "
+                       "a length unit nearer to the size of the mesh.";
+                AssertThrow(false, ExcInvalidMesh(msg.str()));
+              }
+          }
+        return n_points;
+      }
+
+
+
+      // The cells of a VTK file as read: points, type and ids of each, and
+      // the lines of the file for the messages.
+      struct VtkCells
+      {
+        long long                              n_cells    = 0;
+        std::size_t                            cells_line = 0; // the line of CELLS
+        std::vector<std::vector<unsigned int>> conn;           // the point indices of each cell
+        std::vector<std::size_t>               cell_line;      // the line of each cell
+        std::vector<int>                       types;          // the VTK type of each cell
+        long long                              n_line_cells = 0;
+        std::vector<int>                       material, boundary; // ids from CELL_DATA
+      };
+
+
+
+      // read_vtk(), step 3: CELLS, a count and at least one point index
+      // each.
+      void
+      read_vtk_cells(Tokens &t, const long long n_points, const bool size_known, VtkCells &cells)
+      {
+        t.expect("CELLS");
+        cells.cells_line          = t.line();
+        const std::size_t cells_line = cells.cells_line;
+        const long long   n_cells    = t.count("the number of cells", 2 * bytes_per_number, 1);
+        const long long   list_size  = t.count("the size of the cell list", bytes_per_number, 2 * n_cells);
+        cells.n_cells                = n_cells;
+        // the counts are bounded by the size of the file: reserving is safe
+        std::vector<std::vector<unsigned int>> &conn      = cells.conn;
+        std::vector<std::size_t>               &cell_line = cells.cell_line;
+        if (size_known)
+          {
+            conn.reserve(n_cells);
+            cell_line.reserve(n_cells);
+          }
+        long long n_numbers = 0;
+        for (long long c = 0; c < n_cells; ++c)
+          {
+            cell_line.push_back(t.line());
+            conn.emplace_back();
+            const std::size_t l = t.line();
+            const long long   n = t.integer("the point count of cell " + std::to_string(c));
+            AssertThrow(n >= 1 && n < 100000,
+                        ExcInvalidMesh(t.at(l) + "invalid point count " + std::to_string(n) + " of cell " +
+                                       std::to_string(c) + " (expected 1 to 99999)."));
+            n_numbers += n + 1;
+            AssertThrow(n_numbers <= list_size,
+                        ExcInvalidMesh(t.at(l) + "cell " + std::to_string(c) + " goes beyond the size " +
+                                       std::to_string(list_size) + " of the cell list given on line " +
+                                       std::to_string(cells_line) + "."));
+            for (long long k = 0; k < n; ++k)
+              {
+                const std::size_t lv = t.line();
+                const long long   v  = t.integer("a point index of cell " + std::to_string(c));
+                AssertThrow(v >= 0 && v < n_points,
+                            ExcInvalidMesh(t.at(lv) + "cell " + std::to_string(c) + " refers to point " +
+                                           std::to_string(v) + ", but the points are numbered 0 to " +
+                                           std::to_string(n_points - 1) + "."));
+                conn[c].push_back(v);
+              }
+          }
+        AssertThrow(n_numbers == list_size,
+                    ExcInvalidMesh(t.at(cells_line) + "the size of the cell list is given as " +
+                                   std::to_string(list_size) + ", but the " + std::to_string(n_cells) +
+                                   " cells hold " + std::to_string(n_numbers) + " numbers."));
+      }
+
+
+
+      // read_vtk(), step 4: CELL_TYPES, one of line, triangle, polygon or
+      // quad for each cell, with as many points as the type has.
+      void
+      read_vtk_cell_types(Tokens &t, VtkCells &cells)
+      {
+        const long long n_cells = cells.n_cells;
+        t.expect("CELL_TYPES");
+        {
+          const std::size_t l       = t.line();
+          const long long   n_types = t.count("the number of cell types", bytes_per_number);
+          AssertThrow(n_types == n_cells, ExcInvalidMesh(t.at(l) + "CELL_TYPES gives " + std::to_string(n_types) +
+                                                         " types for " + std::to_string(n_cells) + " cells."));
+        }
+        cells.types.assign(n_cells, 0);
+        for (long long c = 0; c < n_cells; ++c)
+          {
+            const std::size_t l    = t.line();
+            const long long   type = t.integer("the type of cell " + std::to_string(c));
+            AssertThrow(type == 3 || type == 5 || type == 7 || type == 9,
+                        ExcInvalidMesh(t.at(l) + "cell " + std::to_string(c) + " has the unsupported VTK cell type " +
+                                       std::to_string(type) + " (supported: 3 line, 5 triangle, 7 polygon, 9 quad)."));
+            cells.types[c]          = type;
+            const std::size_t n     = cells.conn[c].size();
+            const std::size_t n_req = (type == 3 ? 2 : type == 5 ? 3 : type == 9 ? 4 : 0);
+            AssertThrow(n_req == 0 || n == n_req,
+                        ExcInvalidMesh(t.at(cells.cell_line[c]) + "cell " + std::to_string(c) + " of VTK type " +
+                                       std::to_string(type) + " must have " + std::to_string(n_req) +
+                                       " points, found " + std::to_string(n) + "."));
+            AssertThrow(type != 7 || n >= 3,
+                        ExcInvalidMesh(t.at(cells.cell_line[c]) + "polygon cell " + std::to_string(c) + " has " +
+                                       std::to_string(n) + " points; a polygon needs at least 3."));
+            cells.n_line_cells += (type == 3);
+          }
+        AssertThrow(cells.n_line_cells < n_cells,
+                    ExcInvalidMesh(t.at(cells.cells_line) + "the file has no polygon cells, only lines."));
+      }
+
+
+
+      // read_vtk(), step 5b: one SCALARS field of CELL_DATA (the keyword
+      // SCALARS read on line @p l); material_id goes to the polygons,
+      // boundary_id to the lines, other fields are read and dropped.
+      void
+      read_vtk_scalars(Tokens &t, const std::size_t l, std::set<std::string> &fields, VtkCells &cells)
+      {
+        const long long   n_cells = cells.n_cells;
+        const std::string field   = t.next("a field name");
+        AssertThrow(fields.insert(field).second,
+                    ExcInvalidMesh(t.at(l) + "the field '" + field + "' is given twice."));
+        t.next("a data type");
+        // an optional number of components (must be 1), then LOOKUP_TABLE
+        {
+          const std::size_t lw = t.line();
+          std::string       w  = t.next("LOOKUP_TABLE");
+          if (w != "LOOKUP_TABLE")
+            {
+              AssertThrow(w == "1", ExcInvalidMesh(t.at(lw) + "the field '" + field +
+                                                   "' must have 1 component, found '" + w + "'."));
+              w = t.next("LOOKUP_TABLE");
+            }
+          AssertThrow(w == "LOOKUP_TABLE", ExcInvalidMesh(t.at(lw) + "expected LOOKUP_TABLE, found '" + w + "'."));
+        }
+        t.next("a lookup table name");
+        const bool is_material = (field == "material_id"), is_boundary = (field == "boundary_id");
+        for (long long c = 0; c < n_cells; ++c)
+          {
+            const std::size_t lv = t.line();
+            const double      v  = t.real("value " + std::to_string(c) + " of field " + field + " (" +
+                                          std::to_string(n_cells) + " values, one per cell)");
+            // ids count where they are used: material ids on polygons,
+            // boundary ids on lines
+            const bool used = (is_material && cells.types[c] != 3) || (is_boundary && cells.types[c] == 3);
+            if (used)
+              {
+                const double max = is_material ? PolygonalMeshGenerators::max_material_id : 254;
+                AssertThrow(v == std::floor(v) && v >= 0 && v <= max,
+                            ExcInvalidMesh(t.at(lv) + field + " of cell " + std::to_string(c) + " is '" + t.last +
+                                           "'; " + (is_material ? "material" : "boundary") +
+                                           " ids must be integers from 0 to " + std::to_string(int(max)) + "."));
+                (is_material ? cells.material : cells.boundary)[c] = int(v);
+              }
+          }
+      }
+
+
+
+      // read_vtk(), step 5: the rest of the file, CELL_DATA with SCALARS
+      // material_id (polygons) and boundary_id (lines).
+      void
+      read_vtk_cell_data(Tokens &t, VtkCells &cells)
+      {
+        const long long n_cells = cells.n_cells;
+        cells.material.assign(n_cells, 0);
+        cells.boundary.assign(n_cells, 0);
+        std::set<std::string> fields;
+        std::size_t           cell_data_line = 0;
+        while (!t.done())
+          {
+            const std::size_t l  = t.line();
+            const std::string kw = t.next("a data section");
+            if (kw == "CELL_DATA")
+              {
+                AssertThrow(cell_data_line == 0,
+                            ExcInvalidMesh(t.at(l) + "a second CELL_DATA section (the first is on line " +
+                                           std::to_string(cell_data_line) + ")."));
+                cell_data_line    = l;
+                const long long n = t.count("the number of cell data values", bytes_per_number);
+                AssertThrow(n == n_cells, ExcInvalidMesh(t.at(l) + "CELL_DATA " + std::to_string(n) +
+                                                         " does not match the " + std::to_string(n_cells) +
+                                                         " cells."));
+              }
+            else if (kw == "SCALARS")
+              {
+                AssertThrow(cell_data_line > 0,
+                            ExcInvalidMesh(t.at(l) + "SCALARS before CELL_DATA (point data is not supported)."));
+                read_vtk_scalars(t, l, fields, cells);
+              }
+            else
+              AssertThrow(false, ExcInvalidMesh(t.at(l) + "unsupported section '" + kw +
+                                                "' (supported after CELL_TYPES: CELL_DATA with SCALARS "
+                                                "material_id and boundary_id)."));
+          }
+        AssertThrow(cell_data_line == 0 || !fields.empty(),
+                    ExcInvalidMesh(t.at(cell_data_line) + "CELL_DATA is announced, but no SCALARS field "
+                                   "follows; the file is truncated."));
+        // Line cells exist only to carry boundary ids (write_vtk always writes
+        // them with CELL_DATA material_id and boundary_id): without the ids
+        // the file has lost its end.
+        AssertThrow(cells.n_line_cells == 0 || fields.count("boundary_id") == 1,
+                    ExcInvalidMesh(t.at(t.n_lines) + "the file has " + std::to_string(cells.n_line_cells) +
+                                   " line cells (boundary edges), but no CELL_DATA field boundary_id for them; the "
+                                   "file is truncated or incomplete."));
+      }
+
+
+
+      // read_vtk(), step 6: every line cell must be an edge of a polygon;
+      // then the polygons (counter-clockwise, checked here where the line
+      // of the file is known) and the boundary ids of the lines go into
+      // @p mesh.
+      template <int dim>
+      void
+      add_vtk_cells(Tokens &t, const VtkCells &cells, PolygonalMesh<dim> &mesh)
+      {
+        const long long n_cells = cells.n_cells;
+        const auto     &conn    = cells.conn;
+        const auto     &types   = cells.types;
+        std::set<std::pair<unsigned int, unsigned int>> polygon_edges;
+        for (long long c = 0; c < n_cells; ++c)
+          if (types[c] != 3)
+            for (std::size_t i = 0; i < conn[c].size(); ++i)
+              {
+                const unsigned int a = conn[c][i], b = conn[c][(i + 1) % conn[c].size()];
+                polygon_edges.insert({std::min(a, b), std::max(a, b)});
+              }
+        for (long long c = 0; c < n_cells; ++c)
+          if (types[c] == 3)
+            AssertThrow(polygon_edges.count({std::min(conn[c][0], conn[c][1]), std::max(conn[c][0], conn[c][1])}) ==
+                          1,
+                        ExcInvalidMesh(t.at(cells.cell_line[c]) + "line cell " + std::to_string(c) + " from point " +
+                                       std::to_string(conn[c][0]) + " to point " + std::to_string(conn[c][1]) +
+                                       " is not an edge of any polygon."));
+
+        for (long long c = 0; c < n_cells; ++c)
+          if (types[c] != 3)
+            {
+              // reject clockwise polygons here, where the file line is known
+              double            a = 0;
+              const std::size_t n = conn[c].size();
+              for (std::size_t i = 0; i < n; ++i)
+                {
+                  const auto &p = mesh.vertex(conn[c][i]), &q = mesh.vertex(conn[c][(i + 1) % n]);
+                  a += p[0] * q[1] - q[0] * p[1];
+                }
+              AssertThrow(a > 0, ExcInvalidMesh(t.at(cells.cell_line[c]) + "cell " + std::to_string(c) +
+                                                (a < 0 ? " is clockwise" : " has zero area") +
+                                                "; polygons must be counter-clockwise."));
+              mesh.add_cell(conn[c], dealii::types::material_id(cells.material[c]));
+            }
+        for (long long c = 0; c < n_cells; ++c)
+          if (types[c] == 3)
+            mesh.set_boundary_id(conn[c][0], conn[c][1], dealii::types::boundary_id(cells.boundary[c]));
+      }
     } // namespace
 
 
@@ -242,251 +569,13 @@ namespace dealvem
       const std::uintmax_t size = remaining_bytes(in);
       Tokens               t(in, name, size);
       const bool           size_known = size != std::numeric_limits<std::uintmax_t>::max();
-      AssertThrow(t.n_lines >= 1 && t.header.find("# vtk DataFile") == 0,
-                  ExcInvalidMesh(name + ":1: not a legacy VTK file (the first line must start with "
-                                        "'# vtk DataFile')."));
-      AssertThrow(t.n_lines >= 2 && !t.done(), ExcInvalidMesh(name + ": the file is truncated after its header."));
-      {
-        const std::size_t l   = t.line();
-        const std::string fmt = t.next("ASCII");
-        AssertThrow(fmt == "ASCII", ExcInvalidMesh(t.at(l) + "only ASCII VTK files are supported, found '" +
-                                                   fmt + "'."));
-      }
-      t.expect("DATASET");
-      {
-        const std::size_t l  = t.line();
-        const std::string ds = t.next("UNSTRUCTURED_GRID");
-        AssertThrow(ds == "UNSTRUCTURED_GRID",
-                    ExcInvalidMesh(t.at(l) + "expected DATASET UNSTRUCTURED_GRID, found '" + ds + "'."));
-      }
-
-      // points: three numbers each
-      t.expect("POINTS");
-      const std::size_t points_line = t.line();
-      const long long n_points = t.count("the number of points", 3 * bytes_per_number, 1);
-      t.next("the point data type");
-      mesh.clear();
-      mesh.name = name;
-      for (long long i = 0; i < n_points; ++i)
-        {
-          const double x = t.coordinate("x of point " + std::to_string(i));
-          const double y = t.coordinate("y of point " + std::to_string(i));
-          t.coordinate("z of point " + std::to_string(i));
-          mesh.add_vertex(dealii::Point<dim>(x, y));
-        }
-      // a mesh far below the scale of double precision: the areas below
-      // (products of coordinates) underflow and every cell would look
-      // degenerate; say what is wrong instead
-      if (n_points > 0)
-        {
-          dealii::Point<dim> lo = mesh.vertex(0), hi = mesh.vertex(0);
-          for (const auto &p : mesh.get_vertices())
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                lo[d] = std::min(lo[d], p[d]);
-                hi[d] = std::max(hi[d], p[d]);
-              }
-          const double extent = std::max(hi[0] - lo[0], hi[1] - lo[1]);
-          if (extent > 0 && extent < 1e-100)
-            {
-              std::ostringstream msg;
-              msg << t.at(points_line) << "the points span only " << extent
-                  << "; meshes smaller than 1e-100 are not supported, because areas and geometric "
-                     "tolerances (products of coordinate differences) underflow. Give the coordinates in "
-                     "a length unit nearer to the size of the mesh.";
-              AssertThrow(false, ExcInvalidMesh(msg.str()));
-            }
-        }
-
-      // cells: a count and at least one index each
-      t.expect("CELLS");
-      const std::size_t cells_line = t.line();
-      const long long   n_cells    = t.count("the number of cells", 2 * bytes_per_number, 1);
-      const long long   list_size  = t.count("the size of the cell list", bytes_per_number, 2 * n_cells);
-      // the counts are bounded by the size of the file: reserving is safe
-      std::vector<std::vector<unsigned int>> conn;
-      std::vector<std::size_t>               cell_line;
-      if (size_known)
-        {
-          conn.reserve(n_cells);
-          cell_line.reserve(n_cells);
-        }
-      long long n_numbers = 0;
-      for (long long c = 0; c < n_cells; ++c)
-        {
-          cell_line.push_back(t.line());
-          conn.emplace_back();
-          const std::size_t l = t.line();
-          const long long   n = t.integer("the point count of cell " + std::to_string(c));
-          AssertThrow(n >= 1 && n < 100000,
-                      ExcInvalidMesh(t.at(l) + "invalid point count " + std::to_string(n) + " of cell " +
-                                     std::to_string(c) + " (expected 1 to 99999)."));
-          n_numbers += n + 1;
-          AssertThrow(n_numbers <= list_size,
-                      ExcInvalidMesh(t.at(l) + "cell " + std::to_string(c) + " goes beyond the size " +
-                                     std::to_string(list_size) + " of the cell list given on line " +
-                                     std::to_string(cells_line) + "."));
-          for (long long k = 0; k < n; ++k)
-            {
-              const std::size_t lv = t.line();
-              const long long   v  = t.integer("a point index of cell " + std::to_string(c));
-              AssertThrow(v >= 0 && v < n_points,
-                          ExcInvalidMesh(t.at(lv) + "cell " + std::to_string(c) + " refers to point " +
-                                         std::to_string(v) + ", but the points are numbered 0 to " +
-                                         std::to_string(n_points - 1) + "."));
-              conn[c].push_back(v);
-            }
-        }
-      AssertThrow(n_numbers == list_size,
-                  ExcInvalidMesh(t.at(cells_line) + "the size of the cell list is given as " +
-                                 std::to_string(list_size) + ", but the " + std::to_string(n_cells) +
-                                 " cells hold " + std::to_string(n_numbers) + " numbers."));
-
-      // cell types
-      t.expect("CELL_TYPES");
-      {
-        const std::size_t l       = t.line();
-        const long long   n_types = t.count("the number of cell types", bytes_per_number);
-        AssertThrow(n_types == n_cells, ExcInvalidMesh(t.at(l) + "CELL_TYPES gives " + std::to_string(n_types) +
-                                                       " types for " + std::to_string(n_cells) + " cells."));
-      }
-      std::vector<int> types(n_cells);
-      long long        n_line_cells = 0;
-      for (long long c = 0; c < n_cells; ++c)
-        {
-          const std::size_t l    = t.line();
-          const long long   type = t.integer("the type of cell " + std::to_string(c));
-          AssertThrow(type == 3 || type == 5 || type == 7 || type == 9,
-                      ExcInvalidMesh(t.at(l) + "cell " + std::to_string(c) + " has the unsupported VTK cell type " +
-                                     std::to_string(type) + " (supported: 3 line, 5 triangle, 7 polygon, 9 quad)."));
-          types[c]                = type;
-          const std::size_t n     = conn[c].size();
-          const std::size_t n_req = (type == 3 ? 2 : type == 5 ? 3 : type == 9 ? 4 : 0);
-          AssertThrow(n_req == 0 || n == n_req,
-                      ExcInvalidMesh(t.at(cell_line[c]) + "cell " + std::to_string(c) + " of VTK type " +
-                                     std::to_string(type) + " must have " + std::to_string(n_req) + " points, found " +
-                                     std::to_string(n) + "."));
-          AssertThrow(type != 7 || n >= 3,
-                      ExcInvalidMesh(t.at(cell_line[c]) + "polygon cell " + std::to_string(c) + " has " +
-                                     std::to_string(n) + " points; a polygon needs at least 3."));
-          n_line_cells += (type == 3);
-        }
-      AssertThrow(n_line_cells < n_cells,
-                  ExcInvalidMesh(t.at(cells_line) + "the file has no polygon cells, only lines."));
-
-      // cell data: SCALARS material_id (polygons) and boundary_id (lines)
-      std::vector<int>      material(n_cells, 0), boundary(n_cells, 0);
-      std::set<std::string> fields;
-      std::size_t           cell_data_line = 0;
-      while (!t.done())
-        {
-          const std::size_t l  = t.line();
-          const std::string kw = t.next("a data section");
-          if (kw == "CELL_DATA")
-            {
-              AssertThrow(cell_data_line == 0,
-                          ExcInvalidMesh(t.at(l) + "a second CELL_DATA section (the first is on line " +
-                                         std::to_string(cell_data_line) + ")."));
-              cell_data_line  = l;
-              const long long n = t.count("the number of cell data values", bytes_per_number);
-              AssertThrow(n == n_cells, ExcInvalidMesh(t.at(l) + "CELL_DATA " + std::to_string(n) +
-                                                       " does not match the " + std::to_string(n_cells) +
-                                                       " cells."));
-            }
-          else if (kw == "SCALARS")
-            {
-              AssertThrow(cell_data_line > 0,
-                          ExcInvalidMesh(t.at(l) + "SCALARS before CELL_DATA (point data is not supported)."));
-              const std::string field = t.next("a field name");
-              AssertThrow(fields.insert(field).second,
-                          ExcInvalidMesh(t.at(l) + "the field '" + field + "' is given twice."));
-              t.next("a data type");
-              // an optional number of components (must be 1), then LOOKUP_TABLE
-              {
-                const std::size_t lw = t.line();
-                std::string       w  = t.next("LOOKUP_TABLE");
-                if (w != "LOOKUP_TABLE")
-                  {
-                    AssertThrow(w == "1", ExcInvalidMesh(t.at(lw) + "the field '" + field +
-                                                         "' must have 1 component, found '" + w + "'."));
-                    w = t.next("LOOKUP_TABLE");
-                  }
-                AssertThrow(w == "LOOKUP_TABLE",
-                            ExcInvalidMesh(t.at(lw) + "expected LOOKUP_TABLE, found '" + w + "'."));
-              }
-              t.next("a lookup table name");
-              const bool is_material = (field == "material_id"), is_boundary = (field == "boundary_id");
-              for (long long c = 0; c < n_cells; ++c)
-                {
-                  const std::size_t lv = t.line();
-                  const double      v  = t.real("value " + std::to_string(c) + " of field " + field + " (" +
-                                                std::to_string(n_cells) + " values, one per cell)");
-                  // ids count where they are used: material ids on polygons,
-                  // boundary ids on lines
-                  const bool used = (is_material && types[c] != 3) || (is_boundary && types[c] == 3);
-                  if (used)
-                    {
-                      const double max = is_material ? PolygonalMeshGenerators::max_material_id : 254;
-                      AssertThrow(v == std::floor(v) && v >= 0 && v <= max,
-                                  ExcInvalidMesh(t.at(lv) + field + " of cell " + std::to_string(c) + " is '" +
-                                                 t.last + "'; " + (is_material ? "material" : "boundary") +
-                                                 " ids must be integers from 0 to " + std::to_string(int(max)) +
-                                                 "."));
-                      (is_material ? material : boundary)[c] = int(v);
-                    }
-                }
-            }
-          else
-            AssertThrow(false, ExcInvalidMesh(t.at(l) + "unsupported section '" + kw +
-                                              "' (supported after CELL_TYPES: CELL_DATA with SCALARS "
-                                              "material_id and boundary_id)."));
-        }
-      AssertThrow(cell_data_line == 0 || !fields.empty(),
-                  ExcInvalidMesh(t.at(cell_data_line) + "CELL_DATA is announced, but no SCALARS field "
-                                 "follows; the file is truncated."));
-      // Line cells exist only to carry boundary ids (write_vtk always writes
-      // them with CELL_DATA material_id and boundary_id): without the ids
-      // the file has lost its end.
-      AssertThrow(n_line_cells == 0 || fields.count("boundary_id") == 1,
-                  ExcInvalidMesh(t.at(t.n_lines) + "the file has " + std::to_string(n_line_cells) +
-                                 " line cells (boundary edges), but no CELL_DATA field boundary_id for them; the "
-                                 "file is truncated or incomplete."));
-
-      // every line cell must be an edge of a polygon
-      std::set<std::pair<unsigned int, unsigned int>> polygon_edges;
-      for (long long c = 0; c < n_cells; ++c)
-        if (types[c] != 3)
-          for (std::size_t i = 0; i < conn[c].size(); ++i)
-            {
-              const unsigned int a = conn[c][i], b = conn[c][(i + 1) % conn[c].size()];
-              polygon_edges.insert({std::min(a, b), std::max(a, b)});
-            }
-      for (long long c = 0; c < n_cells; ++c)
-        if (types[c] == 3)
-          AssertThrow(polygon_edges.count({std::min(conn[c][0], conn[c][1]), std::max(conn[c][0], conn[c][1])}) == 1,
-                      ExcInvalidMesh(t.at(cell_line[c]) + "line cell " + std::to_string(c) + " from point " +
-                                     std::to_string(conn[c][0]) + " to point " + std::to_string(conn[c][1]) +
-                                     " is not an edge of any polygon."));
-
-      for (long long c = 0; c < n_cells; ++c)
-        if (types[c] != 3)
-          {
-            // reject clockwise polygons here, where the file line is known
-            double            a = 0;
-            const std::size_t n = conn[c].size();
-            for (std::size_t i = 0; i < n; ++i)
-              {
-                const auto &p = mesh.vertex(conn[c][i]), &q = mesh.vertex(conn[c][(i + 1) % n]);
-                a += p[0] * q[1] - q[0] * p[1];
-              }
-            AssertThrow(a > 0, ExcInvalidMesh(t.at(cell_line[c]) + "cell " + std::to_string(c) +
-                                              (a < 0 ? " is clockwise" : " has zero area") +
-                                              "; polygons must be counter-clockwise."));
-            mesh.add_cell(conn[c], dealii::types::material_id(material[c]));
-          }
-      for (long long c = 0; c < n_cells; ++c)
-        if (types[c] == 3)
-          mesh.set_boundary_id(conn[c][0], conn[c][1], dealii::types::boundary_id(boundary[c]));
+      read_vtk_header(t, name);
+      const long long n_points = read_vtk_points(t, mesh, name);
+      VtkCells        cells;
+      read_vtk_cells(t, n_points, size_known, cells);
+      read_vtk_cell_types(t, cells);
+      read_vtk_cell_data(t, cells);
+      add_vtk_cells(t, cells, mesh);
       mesh.finalize();
     }
 

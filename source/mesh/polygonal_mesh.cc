@@ -155,6 +155,243 @@ namespace dealvem
               f(item);
       }
     };
+
+
+
+    // validate(), for each cell: no edge of the loop crosses, touches or
+    // folds back onto another one (@p cname names the cell in messages).
+    void
+    check_loop_is_simple(const std::string &cname, const std::vector<P> &vertices,
+                         const std::vector<unsigned int> &loop)
+    {
+      const unsigned int n = loop.size();
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const P &a = vertices[loop[i]], &b = vertices[loop[(i + 1) % n]];
+          for (unsigned int j = i + 1; j < n; ++j)
+            {
+              const P   &c2 = vertices[loop[j]], &d = vertices[loop[(j + 1) % n]];
+              const bool adjacent = (j == i + 1) || (i == 0 && j == n - 1);
+              bool       bad      = segments_overlap(a, b, c2, d);
+              if (!adjacent)
+                {
+                  bad = bad || segments_cross(a, b, c2, d);
+                  // a vertex of one edge on the other edge
+                  const double L = std::max(a.distance(b), c2.distance(d));
+                  auto on = [&](const P &p, const P &s0, const P &s1) {
+                    const double len = s0.distance(s1);
+                    const double s   = (p - s0) * (s1 - s0) / (len * len);
+                    return s > 1e-12 && s < 1 - 1e-12 && std::abs(cross(s0, s1, p)) <= 1e-12 * L * len;
+                  };
+                  bad = bad || on(c2, a, b) || on(d, a, b) || on(a, c2, d) || on(b, c2, d);
+                }
+              AssertThrow(!bad, ExcInvalidMesh(cname + " is self-intersecting (edges " + std::to_string(i) +
+                                               " and " + std::to_string(j) + " of its loop intersect)."));
+            }
+        }
+    }
+
+
+
+    // validate(), step 1: cell @p c (vertex loop @p loop) has at least 3
+    // vertices, finite coordinates, no repeated vertex, a simple loop and a
+    // positive area. Returns its diameter; widens the box [@p lo, @p hi].
+    double
+    check_cell(const std::string &mesh_name, const std::vector<P> &vertices, const unsigned int c,
+               const std::vector<unsigned int> &loop, P &lo, P &hi)
+    {
+      const unsigned int n     = loop.size();
+      const std::string  cname = "mesh '" + mesh_name + "': cell " + std::to_string(c);
+      AssertThrow(n >= 3, ExcInvalidMesh(cname + " has fewer than 3 vertices."));
+      double h = 0, area = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const P &p = vertices[loop[i]];
+          check_coordinates(mesh_name, loop[i], p);
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              lo[d] = std::min(lo[d], p[d]);
+              hi[d] = std::max(hi[d], p[d]);
+            }
+          for (unsigned int j = i + 1; j < n; ++j)
+            h = std::max(h, p.distance(vertices[loop[j]]));
+          area += cross(vertices[loop[0]], p, vertices[loop[(i + 1) % n]]);
+        }
+      area *= 0.5;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = i + 1; j < n; ++j)
+          AssertThrow(loop[i] != loop[j] && vertices[loop[i]].distance(vertices[loop[j]]) > 1e-12 * h,
+                      ExcInvalidMesh(cname + " has a repeated vertex (" + std::to_string(loop[i]) + " and " +
+                                     std::to_string(loop[j]) + " at " + point_string(vertices[loop[j]]) + ")."));
+      {
+        // all vertices on one line: zero area (reported before the
+        // self-intersection that such a loop also has)
+        unsigned int far = 0;
+        for (unsigned int i = 1; i < n; ++i)
+          if (vertices[loop[i]].distance(vertices[loop[0]]) > vertices[loop[far]].distance(vertices[loop[0]]))
+            far = i;
+        bool collinear = true;
+        for (unsigned int i = 0; i < n; ++i)
+          collinear = collinear && std::abs(cross(vertices[loop[0]], vertices[loop[far]], vertices[loop[i]])) <=
+                                     1e-12 * h * h;
+        AssertThrow(!collinear, ExcInvalidMesh(cname + " has zero area (its vertices are collinear)."));
+      }
+      // self-intersection: non-adjacent edges crossing or touching, or
+      // adjacent edges folding back onto each other
+      check_loop_is_simple(cname, vertices, loop);
+      AssertThrow(std::abs(area) > 1e-14 * h * h,
+                  ExcInvalidMesh(cname + " has zero area (its vertices are collinear)."));
+      AssertThrow(area > 0, ExcInvalidMesh(cname + " is clockwise (signed area " + std::to_string(area) +
+                                           "); cells must be counter-clockwise vertex loops."));
+      return h;
+    }
+
+
+
+    // validate(), step 2: no two distinct vertices of one body at the same
+    // point (within 1e-10 of the smaller diameter @p diam of the cells
+    // around them): the body would be cut there (a slit) where the mesh
+    // looks connected. Found through a bucket grid of the vertices.
+    template <typename CellType>
+    void
+    check_no_slits(const std::string &mesh_name, const std::vector<P> &vertices, const std::vector<CellType> &cells,
+                   const std::vector<std::vector<unsigned int>> &vertex_cells, const std::vector<double> &diam,
+                   const P &lo, const P &hi)
+    {
+      std::vector<double> vertex_h(vertices.size(), 0);
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        for (const unsigned int c : vertex_cells[v])
+          vertex_h[v] = (vertex_h[v] == 0 ? diam[c] : std::min(vertex_h[v], diam[c]));
+      Grid vertex_grid(lo, hi, vertices.size());
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        if (!vertex_cells[v].empty())
+          vertex_grid.insert_box(vertices[v], vertices[v], v);
+      const auto same_body = [&](const unsigned int v, const unsigned int w) {
+        for (const unsigned int c : vertex_cells[v])
+          for (const unsigned int d : vertex_cells[w])
+            if (cells[c].material_id == cells[d].material_id)
+              return true;
+        return false;
+      };
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        {
+          if (vertex_cells[v].empty())
+            continue;
+          const P                   &p   = vertices[v];
+          const double               tol = 1e-10 * vertex_h[v];
+          const dealii::Tensor<1, 2> r({tol, tol});
+          vertex_grid.query_box(p - r, p + r, [&](const unsigned int w) {
+            if (w <= v || p.distance(vertices[w]) > 1e-10 * std::min(vertex_h[v], vertex_h[w]) || !same_body(v, w))
+              return;
+            AssertThrow(false,
+                        ExcInvalidMesh("mesh '" + mesh_name + "': the distinct vertices " + std::to_string(v) +
+                                       " and " + std::to_string(w) + " lie at the same point " + point_string(p) +
+                                       " (cell " + std::to_string(vertex_cells[v][0]) + " uses the first, cell " +
+                                       std::to_string(vertex_cells[w][0]) +
+                                       " the second), so the body is cut there although its cells touch. "
+                                       "Merge the duplicated vertex (node) in the mesh."));
+          });
+        }
+    }
+
+
+
+    // validate(), step 3: no two edges of cells of one body (one material
+    // id) cross or overlap unless they share a vertex.
+    template <typename CellType, typename EdgeType>
+    void
+    check_no_crossing_edges(const std::string &mesh_name, const std::vector<P> &vertices,
+                            const std::vector<CellType> &cells, const std::vector<EdgeType> &edges, const P &lo,
+                            const P &hi)
+    {
+      Grid edge_grid(lo, hi, edges.size());
+      for (unsigned int e = 0; e < edges.size(); ++e)
+        edge_grid.insert_box(vertices[edges[e].vertices[0]], vertices[edges[e].vertices[1]], e);
+      std::vector<unsigned int> stamp(edges.size(), dealii::numbers::invalid_unsigned_int);
+      for (unsigned int e = 0; e < edges.size(); ++e)
+        {
+          const auto &E = edges[e];
+          const P    &a = vertices[E.vertices[0]], &b = vertices[E.vertices[1]];
+          const auto  m = cells[E.cells[0]].material_id;
+          edge_grid.query_box(a, b, [&](const unsigned int f) {
+            if (f <= e || stamp[f] == e)
+              return;
+            stamp[f]      = e;
+            const auto &F = edges[f];
+            if (cells[F.cells[0]].material_id != m)
+              return;
+            if (F.vertices[0] == E.vertices[0] || F.vertices[0] == E.vertices[1] || F.vertices[1] == E.vertices[0] ||
+                F.vertices[1] == E.vertices[1])
+              return;
+            const P &c2 = vertices[F.vertices[0]], &d = vertices[F.vertices[1]];
+            AssertThrow(!segments_cross(a, b, c2, d) && !segments_overlap(a, b, c2, d),
+                        ExcInvalidMesh("mesh '" + mesh_name + "': overlapping cells " + std::to_string(E.cells[0]) +
+                                       " and " + std::to_string(F.cells[0]) + " (their edges cross near " +
+                                       point_string(a) + ")."));
+          });
+        }
+    }
+
+
+
+    // validate(), step 4: no vertex lies strictly inside a cell of its own
+    // body that does not use it (by the winding number).
+    template <typename CellType>
+    void
+    check_no_vertex_inside_cells(const std::string &mesh_name, const std::vector<P> &vertices,
+                                 const std::vector<CellType>                  &cells,
+                                 const std::vector<std::vector<unsigned int>> &vertex_cells,
+                                 const std::vector<double> &diam, const P &lo, const P &hi)
+    {
+      Grid cell_grid(lo, hi, cells.size());
+      for (unsigned int c = 0; c < cells.size(); ++c)
+        {
+          P clo(1e300, 1e300), chi(-1e300, -1e300);
+          for (const auto v : cells[c].vertices)
+            for (unsigned int d = 0; d < 2; ++d)
+              {
+                clo[d] = std::min(clo[d], vertices[v][d]);
+                chi[d] = std::max(chi[d], vertices[v][d]);
+              }
+          cell_grid.insert_box(clo, chi, c);
+        }
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        {
+          if (vertex_cells[v].empty())
+            continue;
+          const P   &p = vertices[v];
+          const auto m = cells[vertex_cells[v][0]].material_id;
+          cell_grid.query_box(p, p, [&](const unsigned int c) {
+            if (cells[c].material_id != m)
+              return;
+            const auto &loop = cells[c].vertices;
+            if (std::find(loop.begin(), loop.end(), v) != loop.end())
+              return;
+            // strictly inside: winding number != 0 and not on the boundary
+            const unsigned int n       = loop.size();
+            int                winding = 0;
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const P     &a = vertices[loop[i]], &b = vertices[loop[(i + 1) % n]];
+                const double L = a.distance(b);
+                const double s = (p - a) * (b - a) / (L * L);
+                if (s >= -1e-12 && s <= 1 + 1e-12 && std::abs(cross(a, b, p)) <= 1e-10 * L * diam[c])
+                  return; // on the boundary
+                if (a[1] <= p[1])
+                  {
+                    if (b[1] > p[1] && cross(a, b, p) > 0)
+                      ++winding;
+                  }
+                else if (b[1] <= p[1] && cross(a, b, p) < 0)
+                  --winding;
+              }
+            AssertThrow(winding == 0,
+                        ExcInvalidMesh("mesh '" + mesh_name + "': overlapping cells: vertex " + std::to_string(v) +
+                                       " " + point_string(p) + " of cell " + std::to_string(vertex_cells[v][0]) +
+                                       " lies inside cell " + std::to_string(c) + "."));
+          });
+        }
+    }
   } // namespace
 
 
@@ -510,79 +747,7 @@ namespace dealvem
     std::vector<double> diam(cells.size());
     P                   lo(1e300, 1e300), hi(-1e300, -1e300);
     for (unsigned int c = 0; c < cells.size(); ++c)
-      {
-        const auto        &loop = cells[c].vertices;
-        const unsigned int n    = loop.size();
-        const std::string  cname = "mesh '" + name + "': cell " + std::to_string(c);
-        AssertThrow(n >= 3, ExcInvalidMesh(cname + " has fewer than 3 vertices."));
-        double h = 0, area = 0;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const P &p = vertices[loop[i]];
-            check_coordinates(name, loop[i], p);
-            for (unsigned int d = 0; d < 2; ++d)
-              {
-                lo[d] = std::min(lo[d], p[d]);
-                hi[d] = std::max(hi[d], p[d]);
-              }
-            for (unsigned int j = i + 1; j < n; ++j)
-              h = std::max(h, p.distance(vertices[loop[j]]));
-            area += cross(vertices[loop[0]], p, vertices[loop[(i + 1) % n]]);
-          }
-        area *= 0.5;
-        diam[c] = h;
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = i + 1; j < n; ++j)
-            AssertThrow(loop[i] != loop[j] && vertices[loop[i]].distance(vertices[loop[j]]) > 1e-12 * h,
-                        ExcInvalidMesh(cname + " has a repeated vertex (" + std::to_string(loop[i]) +
-                                       " and " + std::to_string(loop[j]) + " at " +
-                                       point_string(vertices[loop[j]]) + ")."));
-        {
-          // all vertices on one line: zero area (reported before the
-          // self-intersection that such a loop also has)
-          unsigned int far = 0;
-          for (unsigned int i = 1; i < n; ++i)
-            if (vertices[loop[i]].distance(vertices[loop[0]]) > vertices[loop[far]].distance(vertices[loop[0]]))
-              far = i;
-          bool collinear = true;
-          for (unsigned int i = 0; i < n; ++i)
-            collinear = collinear && std::abs(cross(vertices[loop[0]], vertices[loop[far]], vertices[loop[i]])) <=
-                                       1e-12 * h * h;
-          AssertThrow(!collinear, ExcInvalidMesh(cname + " has zero area (its vertices are collinear)."));
-        }
-        // self-intersection: non-adjacent edges crossing or touching, or
-        // adjacent edges folding back onto each other
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const P &a = vertices[loop[i]], &b = vertices[loop[(i + 1) % n]];
-            for (unsigned int j = i + 1; j < n; ++j)
-              {
-                const P &c2 = vertices[loop[j]], &d = vertices[loop[(j + 1) % n]];
-                const bool adjacent = (j == i + 1) || (i == 0 && j == n - 1);
-                bool       bad      = segments_overlap(a, b, c2, d);
-                if (!adjacent)
-                  {
-                    bad = bad || segments_cross(a, b, c2, d);
-                    // a vertex of one edge on the other edge
-                    const double L = std::max(a.distance(b), c2.distance(d));
-                    auto on = [&](const P &p, const P &s0, const P &s1) {
-                      const double len = s0.distance(s1);
-                      const double s   = (p - s0) * (s1 - s0) / (len * len);
-                      return s > 1e-12 && s < 1 - 1e-12 &&
-                             std::abs(cross(s0, s1, p)) <= 1e-12 * L * len;
-                    };
-                    bad = bad || on(c2, a, b) || on(d, a, b) || on(a, c2, d) || on(b, c2, d);
-                  }
-                AssertThrow(!bad, ExcInvalidMesh(cname + " is self-intersecting (edges " + std::to_string(i) +
-                                                 " and " + std::to_string(j) + " of its loop intersect)."));
-              }
-          }
-        AssertThrow(std::abs(area) > 1e-14 * h * h,
-                    ExcInvalidMesh(cname + " has zero area (its vertices are collinear)."));
-        AssertThrow(area > 0,
-                    ExcInvalidMesh(cname + " is clockwise (signed area " + std::to_string(area) +
-                                   "); cells must be counter-clockwise vertex loops."));
-      }
+      diam[c] = check_cell(name, vertices, c, cells[c].vertices, lo, hi);
     if (cells.size() < 2)
       return;
 
@@ -591,124 +756,11 @@ namespace dealvem
       for (const auto v : cells[c].vertices)
         vertex_cells[v].push_back(c);
 
-    // two distinct vertices of one body at the same point (within 1e-10 of
-    // the smaller diameter of the cells around them): the cells on either
-    // side use different vertices there, so the body is cut (a slit) where
-    // the mesh looks connected. Found through a bucket grid of the vertices.
-    {
-      std::vector<double> vertex_h(vertices.size(), 0);
-      for (unsigned int v = 0; v < vertices.size(); ++v)
-        for (const unsigned int c : vertex_cells[v])
-          vertex_h[v] = (vertex_h[v] == 0 ? diam[c] : std::min(vertex_h[v], diam[c]));
-      Grid vertex_grid(lo, hi, vertices.size());
-      for (unsigned int v = 0; v < vertices.size(); ++v)
-        if (!vertex_cells[v].empty())
-          vertex_grid.insert_box(vertices[v], vertices[v], v);
-      const auto same_body = [&](const unsigned int v, const unsigned int w) {
-        for (const unsigned int c : vertex_cells[v])
-          for (const unsigned int d : vertex_cells[w])
-            if (cells[c].material_id == cells[d].material_id)
-              return true;
-        return false;
-      };
-      for (unsigned int v = 0; v < vertices.size(); ++v)
-        {
-          if (vertex_cells[v].empty())
-            continue;
-          const P                   &p   = vertices[v];
-          const double               tol = 1e-10 * vertex_h[v];
-          const dealii::Tensor<1, 2> r({tol, tol});
-          vertex_grid.query_box(p - r, p + r, [&](const unsigned int w) {
-            if (w <= v || p.distance(vertices[w]) > 1e-10 * std::min(vertex_h[v], vertex_h[w]) ||
-                !same_body(v, w))
-              return;
-            AssertThrow(false,
-                        ExcInvalidMesh("mesh '" + name + "': the distinct vertices " + std::to_string(v) + " and " +
-                                       std::to_string(w) + " lie at the same point " + point_string(p) +
-                                       " (cell " + std::to_string(vertex_cells[v][0]) + " uses the first, cell " +
-                                       std::to_string(vertex_cells[w][0]) +
-                                       " the second), so the body is cut there although its cells touch. "
-                                       "Merge the duplicated vertex (node) in the mesh."));
-          });
-        }
-    }
-
+    check_no_slits(name, vertices, cells, vertex_cells, diam, lo, hi);
     // overlapping cells of one body: crossing edges, or a vertex strictly
     // inside another cell
-    Grid edge_grid(lo, hi, edges.size());
-    for (unsigned int e = 0; e < edges.size(); ++e)
-      edge_grid.insert_box(vertices[edges[e].vertices[0]], vertices[edges[e].vertices[1]], e);
-    std::vector<unsigned int> stamp(edges.size(), dealii::numbers::invalid_unsigned_int);
-    for (unsigned int e = 0; e < edges.size(); ++e)
-      {
-        const auto &E  = edges[e];
-        const P    &a  = vertices[E.vertices[0]], &b = vertices[E.vertices[1]];
-        const auto  m  = cells[E.cells[0]].material_id;
-        edge_grid.query_box(a, b, [&](const unsigned int f) {
-          if (f <= e || stamp[f] == e)
-            return;
-          stamp[f]     = e;
-          const auto &F = edges[f];
-          if (cells[F.cells[0]].material_id != m)
-            return;
-          if (F.vertices[0] == E.vertices[0] || F.vertices[0] == E.vertices[1] ||
-              F.vertices[1] == E.vertices[0] || F.vertices[1] == E.vertices[1])
-            return;
-          const P &c2 = vertices[F.vertices[0]], &d = vertices[F.vertices[1]];
-          AssertThrow(!segments_cross(a, b, c2, d) && !segments_overlap(a, b, c2, d),
-                      ExcInvalidMesh("mesh '" + name + "': overlapping cells " + std::to_string(E.cells[0]) +
-                                     " and " + std::to_string(F.cells[0]) + " (their edges cross near " +
-                                     point_string(a) + ")."));
-        });
-      }
-    Grid cell_grid(lo, hi, cells.size());
-    for (unsigned int c = 0; c < cells.size(); ++c)
-      {
-        P clo(1e300, 1e300), chi(-1e300, -1e300);
-        for (const auto v : cells[c].vertices)
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              clo[d] = std::min(clo[d], vertices[v][d]);
-              chi[d] = std::max(chi[d], vertices[v][d]);
-            }
-        cell_grid.insert_box(clo, chi, c);
-      }
-    for (unsigned int v = 0; v < vertices.size(); ++v)
-      {
-        if (vertex_cells[v].empty())
-          continue;
-        const P   &p = vertices[v];
-        const auto m = cells[vertex_cells[v][0]].material_id;
-        cell_grid.query_box(p, p, [&](const unsigned int c) {
-          if (cells[c].material_id != m)
-            return;
-          const auto &loop = cells[c].vertices;
-          if (std::find(loop.begin(), loop.end(), v) != loop.end())
-            return;
-          // strictly inside: winding number != 0 and not on the boundary
-          const unsigned int n       = loop.size();
-          int                winding = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const P &a = vertices[loop[i]], &b = vertices[loop[(i + 1) % n]];
-              const double L = a.distance(b);
-              const double s = (p - a) * (b - a) / (L * L);
-              if (s >= -1e-12 && s <= 1 + 1e-12 && std::abs(cross(a, b, p)) <= 1e-10 * L * diam[c])
-                return; // on the boundary
-              if (a[1] <= p[1])
-                {
-                  if (b[1] > p[1] && cross(a, b, p) > 0)
-                    ++winding;
-                }
-              else if (b[1] <= p[1] && cross(a, b, p) < 0)
-                --winding;
-            }
-          AssertThrow(winding == 0,
-                      ExcInvalidMesh("mesh '" + name + "': overlapping cells: vertex " + std::to_string(v) +
-                                     " " + point_string(p) + " of cell " + std::to_string(vertex_cells[v][0]) +
-                                     " lies inside cell " + std::to_string(c) + "."));
-        });
-      }
+    check_no_crossing_edges(name, vertices, cells, edges, lo, hi);
+    check_no_vertex_inside_cells(name, vertices, cells, vertex_cells, diam, lo, hi);
   }
 
 

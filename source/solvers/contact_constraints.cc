@@ -179,6 +179,389 @@ namespace dealvem
         lines.push_back(std::move(l));
       }
     };
+
+
+
+    using SparseRow = std::vector<std::pair<unsigned int, double>>;
+
+    // The multiplier rows of a saddle-point matrix, by kind (see
+    // classify_multiplier_rows()).
+    struct MultiplierRows
+    {
+      std::vector<SparseRow> bt;        // the columns of B^T, from the displacement rows
+      std::vector<SparseRow> rows;      // the displacement entries of each multiplier row
+      std::vector<SparseRow> couplings; // the entries of each row to other multipliers
+      std::vector<double>    diagonal;  // the diagonal entry of each row
+      std::vector<double>    bmax;      // the largest displacement entry of each row
+    };
+
+
+
+    // reinit(), step 1: the columns of B^T, and the multiplier rows
+    // classified: constraint rows (displacement entries, no D entries),
+    // known rows (diagonal only) and tied rows (diagonal and couplings to
+    // other multipliers).
+    MultiplierRows
+    classify_multiplier_rows(const dealii::SparseMatrix<double> &A, const unsigned int n, const unsigned int m)
+    {
+      MultiplierRows mr;
+      auto          &bt = mr.bt, &rows = mr.rows, &couplings = mr.couplings;
+      auto          &diagonal = mr.diagonal, &bmax = mr.bmax;
+      // the columns of B^T, from the displacement rows
+      bt.resize(m);
+      for (unsigned int i = 0; i < n; ++i)
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          if (it->column() >= n && it->value() != 0.)
+            bt[it->column() - n].emplace_back(i, it->value());
+
+      rows.resize(m);
+      couplings.resize(m);
+      diagonal.assign(m, 0.);
+      bmax.assign(m, 0.);
+      for (unsigned int r = 0; r < m; ++r)
+        {
+          const unsigned int i = n + r;
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            {
+              const auto j = it->column();
+              if (it->value() == 0.)
+                continue;
+              if (j < n)
+                {
+                  rows[r].emplace_back(j, it->value());
+                  bmax[r] = std::max(bmax[r], std::abs(it->value()));
+                }
+              else if (j == i)
+                diagonal[r] = it->value();
+              else
+                couplings[r].emplace_back(j - n, it->value());
+            }
+          std::sort(rows[r].begin(), rows[r].end());
+          const std::string which = "multiplier row " + std::to_string(r) + " (unknown " + std::to_string(i) + ")";
+          if (rows[r].empty())
+            {
+              AssertThrow(diagonal[r] != 0.,
+                          dealii::ExcMessage("Condensed contact constraints: " + which +
+                                             (couplings[r].empty() ? " is zero" : " has no diagonal entry") +
+                                             ": the saddle-point matrix is singular."));
+            }
+          else
+            {
+              AssertThrow(diagonal[r] == 0. && couplings[r].empty(),
+                          dealii::ExcMessage("Condensed contact constraints: " + which +
+                                             " has both displacement entries and entries of the multiplier block: "
+                                             "not a constraint row."));
+            }
+        }
+      return mr;
+    }
+
+
+
+    // reinit(), step 2: the known rows (their value into @p inactive), the
+    // tied rows (into @p tied) and the test columns: B^T's own, plus the
+    // columns of the tied multipliers that depend on it (a slipping pair's
+    // friction force -mu sigma lambda_n acts along the tangent).
+    std::vector<std::map<unsigned int, double>>
+    known_and_tied_rows(const MultiplierRows &mr, const dealii::Vector<double> &b, const unsigned int n,
+                        std::vector<std::pair<unsigned int, double>> &inactive,
+                        std::vector<ContactConstraints::Tied>        &tied)
+    {
+      const auto        &rows = mr.rows, &couplings = mr.couplings, &bt = mr.bt;
+      const auto        &diagonal = mr.diagonal;
+      const unsigned int m        = rows.size();
+      std::vector<double> known(m, 0.);
+      std::vector<bool>   is_known(m, false);
+      for (unsigned int r = 0; r < m; ++r)
+        if (rows[r].empty() && couplings[r].empty())
+          {
+            known[r]    = b[n + r] / diagonal[r];
+            is_known[r] = true;
+            inactive.emplace_back(r, known[r]);
+          }
+      std::vector<std::map<unsigned int, double>> test(m);
+      for (unsigned int r = 0; r < m; ++r)
+        if (!rows[r].empty())
+          for (const auto &e : bt[r])
+            test[r][e.first] += e.second;
+      for (unsigned int r = 0; r < m; ++r)
+        if (rows[r].empty() && !couplings[r].empty())
+          {
+            ContactConstraints::Tied t;
+            t.row   = r;
+            t.value = b[n + r] / diagonal[r];
+            for (const auto &c : couplings[r])
+              {
+                const double factor = -c.second / diagonal[r];
+                if (is_known[c.first])
+                  t.value += factor * known[c.first];
+                else
+                  {
+                    AssertThrow(!rows[c.first].empty(),
+                                dealii::ExcMessage("Condensed contact constraints: multiplier row " +
+                                                   std::to_string(r) + " couples to the multiplier of row " +
+                                                   std::to_string(c.first) +
+                                                   ", which is itself coupled to further multipliers: only one "
+                                                   "level of multiplier couplings (a friction force proportional "
+                                                   "to a normal force) can be condensed."));
+                    t.entries.emplace_back(c.first, factor);
+                    for (const auto &e : bt[r])
+                      test[c.first][e.first] += factor * e.second;
+                  }
+              }
+            tied.push_back(std::move(t));
+          }
+      return test;
+    }
+
+
+
+    // reinit(), step 4, a row that depends on the rows before it (its
+    // reduced entries vanish): its right-hand side must vanish too (to the
+    // rounding of the values of size @p scale that entered it), and it must
+    // carry no friction force.
+    void
+    check_dependent_row(const unsigned int r, const std::set<unsigned int> &origin, const double rhs,
+                        const double scale, const double abs_floor, const bool row_symmetric)
+    {
+      std::string on;
+      for (const auto o : origin)
+        on += (on.empty() ? "" : ", ") + std::to_string(o);
+      AssertThrow(std::abs(rhs) <= 1e-10 * scale + abs_floor,
+                  dealii::ExcMessage(
+                    "Inconsistent redundant contact constraints: multiplier row " + std::to_string(r) +
+                    " is a linear combination of the constraint rows {" + on +
+                    "} (ContactAssembler numbers the normal constraint of pair i as row i and the "
+                    "tangential one, if any, as row n_pairs + i; the rows include the Dirichlet/roller constraints condensed into them), but its "
+                    "right-hand side differs from theirs by " + internal::number_string(rhs) + " (values of size " +
+                    internal::number_string(scale) + " entered it): the contact gaps and the prescribed displacements "
+                    "cannot all hold. Check the Dirichlet, roller and point constraints on the nodes of "
+                    "these contact pairs."));
+      AssertThrow(row_symmetric,
+                  dealii::ExcMessage("Condensed contact constraints: multiplier row " + std::to_string(r) +
+                                     " is a linear combination of the constraint rows {" + on +
+                                     "} and carries a friction force (a slipping pair): the condensed "
+                                     "solvers cannot split its force among the dependent rows. Use "
+                                     "Solver/Type = UMFPACK or KLU for this model."));
+    }
+
+
+
+    // reinit(), step 5: the lines of the eliminations as the constraints
+    // (and, for non-symmetric rows, the test constraints and the lines
+    // where they differ from the trial ones).
+    void
+    lines_to_constraints(
+      const Elimination &trial, const Elimination &test_elimination, const bool symmetric,
+      dealii::AffineConstraints<double> &constraints, dealii::AffineConstraints<double> &test_constraints,
+      std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>> &test_lines)
+    {
+      for (const auto &l : trial.lines)
+        {
+          constraints.add_line(l.slave);
+          for (const auto &e : l.entries)
+            constraints.add_entry(l.slave, e.first, e.second);
+          constraints.set_inhomogeneity(l.slave, l.inhomogeneity);
+        }
+      constraints.close();
+      if (!symmetric)
+        {
+          for (const auto &l : test_elimination.lines)
+            {
+              test_constraints.add_line(l.slave);
+              for (const auto &e : l.entries)
+                test_constraints.add_entry(l.slave, e.first, e.second);
+              // the difference to the trial line: where the Petrov-Galerkin
+              // condensation departs from the symmetric one
+              std::map<unsigned int, double> difference(l.entries.begin(), l.entries.end());
+              for (const auto &e : trial.lines[trial.line_of.at(l.slave)].entries)
+                difference[e.first] -= e.second;
+              std::vector<std::pair<unsigned int, double>> d;
+              for (const auto &e : difference)
+                if (e.second != 0.)
+                  d.emplace_back(e.first, e.second);
+              if (!d.empty())
+                test_lines.emplace_back(l.slave, std::move(d));
+            }
+          test_constraints.close();
+        }
+    }
+
+
+
+    using MasterLine = std::vector<std::pair<dealii::types::global_dof_index, double>>;
+    using TestLines  = std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>;
+
+    // condense(), step 1: the fill-in of each displacement row: a row
+    // coupled to a slave couples to its masters; a master row gets the
+    // couplings of its slaves' rows (@p line: the master line of each
+    // slave, nullptr for the other DoFs); with the test lines
+    // (Petrov-Galerkin) unless @p symmetric_part, the test masters of a
+    // slave get its row too.
+    std::vector<std::vector<unsigned int>>
+    fill_in(const dealii::SparseMatrix<double> &A, const unsigned int n,
+            const std::vector<std::pair<unsigned int, unsigned int>> &slaves,
+            const std::vector<const MasterLine *> &line, const TestLines &test_lines, const bool symmetric_part)
+    {
+      std::vector<std::vector<unsigned int>> extra(n);
+      const auto add_row_of = [&](const unsigned int target, const unsigned int s) {
+        auto &x = extra[target];
+        for (auto it = A.begin(s); it != A.end(s); ++it)
+          {
+            const auto j = it->column();
+            if (j >= n)
+              continue;
+            if (line[j] == nullptr)
+              x.push_back(j);
+            else
+              for (const auto &e : *line[j])
+                x.push_back(e.first);
+          }
+      };
+      for (const auto &s : slaves)
+        {
+          for (auto it = A.begin(s.second); it != A.end(s.second); ++it)
+            {
+              const auto i = it->column();
+              if (i < n && line[i] == nullptr)
+                for (const auto &e : *line[s.second])
+                  extra[i].push_back(e.first);
+            }
+          for (const auto &e : *line[s.second])
+            add_row_of(e.first, s.second);
+        }
+      // Petrov-Galerkin: the test masters of a slave get its row too
+      if (!symmetric_part)
+        for (const auto &t : test_lines)
+          for (const auto &e : t.second)
+            add_row_of(e.first, t.first);
+      return extra;
+    }
+
+
+
+    // condense(), step 2: the pattern of the condensed matrix: the rows of
+    // K with their fill-in @p extra, each sorted and without repetitions,
+    // so that the pattern takes them as they are.
+    void
+    condensed_pattern(const dealii::SparseMatrix<double> &A, const unsigned int n,
+                      std::vector<std::vector<unsigned int>> &extra, dealii::SparsityPattern &sparsity)
+    {
+      const dealii::SparsityPattern &sp = A.get_sparsity_pattern();
+      std::vector<unsigned int>      row_length(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          auto &x = extra[i];
+          if (!x.empty())
+            {
+              for (auto it = sp.begin(i); it != sp.end(i); ++it)
+                if (it->column() < n)
+                  x.push_back(it->column());
+              std::sort(x.begin(), x.end());
+              x.erase(std::unique(x.begin(), x.end()), x.end());
+              row_length[i] = x.size();
+            }
+          else
+            for (auto it = sp.begin(i); it != sp.end(i); ++it)
+              row_length[i] += (it->column() < n);
+        }
+      sparsity.reinit(n, n, row_length);
+      std::vector<dealii::types::global_dof_index> cols;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          cols.clear();
+          if (!extra[i].empty())
+            cols.assign(extra[i].begin(), extra[i].end());
+          else
+            {
+              for (auto it = sp.begin(i); it != sp.end(i); ++it)
+                if (it->column() < n)
+                  cols.push_back(it->column());
+              std::sort(cols.begin(), cols.end());
+            }
+          sparsity.add_entries(i, cols.begin(), cols.end(), true);
+        }
+      sparsity.compress();
+    }
+
+
+
+    // condense(), step 3: K and f = b - B^T lambda (the forces of the
+    // @p known multipliers @p lambda) before the condensation; both rows
+    // list the diagonal first and then ascending columns, and the new row
+    // contains the old one.
+    void
+    copy_stiffness(const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &b, const unsigned int n,
+                   const std::vector<bool> &known, const std::vector<double> &lambda,
+                   const dealii::SparsityPattern &sparsity, dealii::SparseMatrix<double> &K,
+                   dealii::Vector<double> &f)
+    {
+      K.reinit(sparsity);
+      f.reinit(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          f[i]    = b[i];
+          auto kt = K.begin(i);
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            {
+              const auto j = it->column();
+              if (j >= n)
+                {
+                  if (known[j - n])
+                    f[i] -= it->value() * lambda[j - n];
+                  continue;
+                }
+              while (kt->column() != j)
+                ++kt;
+              kt->value() = it->value();
+            }
+        }
+    }
+
+
+
+    // condense(), step 5: Z^T K C = C^T K C + (Z - C)^T K C: the test lines
+    // that differ from the trial lines (slipping pairs) add their
+    // difference times the slave's row of K C (and of f - K c) to the
+    // masters.
+    void
+    add_test_line_differences(const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &b,
+                              const unsigned int n, const std::vector<bool> &known,
+                              const std::vector<double> &lambda, const std::vector<const MasterLine *> &line,
+                              const dealii::AffineConstraints<double> &constraints, const TestLines &test_lines,
+                              dealii::SparseMatrix<double> &K, dealii::Vector<double> &f)
+    {
+      for (const auto &t : test_lines)
+        {
+          const unsigned int             s = t.first;
+          std::map<unsigned int, double> row;
+          double                         rs = b[s];
+          for (auto it = A.begin(s); it != A.end(s); ++it)
+            {
+              const auto j = it->column();
+              if (j >= n)
+                {
+                  if (known[j - n])
+                    rs -= it->value() * lambda[j - n];
+                  continue;
+                }
+              if (line[j] == nullptr)
+                row[j] += it->value();
+              else
+                {
+                  for (const auto &e : *line[j])
+                    row[e.first] += it->value() * e.second;
+                  rs -= it->value() * constraints.get_inhomogeneity(j);
+                }
+            }
+          for (const auto &d : t.second)
+            {
+              for (const auto &e : row)
+                K.add(d.first, e.first, d.second * e.second);
+              f[d.first] += d.second * rs;
+            }
+        }
+    }
   } // namespace
 
 
@@ -206,97 +589,13 @@ namespace dealvem
     tied.clear();
     symmetric = true;
 
-    // the columns of B^T, from the displacement rows
-    std::vector<std::vector<std::pair<unsigned int, double>>> bt(m);
-    for (unsigned int i = 0; i < n; ++i)
-      for (auto it = A.begin(i); it != A.end(i); ++it)
-        if (it->column() >= n && it->value() != 0.)
-          bt[it->column() - n].emplace_back(i, it->value());
-
-    // classify the multiplier rows: constraint rows (displacement entries,
-    // no D entries), known rows (diagonal only) and tied rows (diagonal and
-    // couplings to other multipliers)
-    std::vector<std::vector<std::pair<unsigned int, double>>> rows(m), couplings(m);
-    std::vector<double>                                       diagonal(m, 0.), bmax(m, 0.);
-    for (unsigned int r = 0; r < m; ++r)
-      {
-        const unsigned int i = n + r;
-        for (auto it = A.begin(i); it != A.end(i); ++it)
-          {
-            const auto j = it->column();
-            if (it->value() == 0.)
-              continue;
-            if (j < n)
-              {
-                rows[r].emplace_back(j, it->value());
-                bmax[r] = std::max(bmax[r], std::abs(it->value()));
-              }
-            else if (j == i)
-              diagonal[r] = it->value();
-            else
-              couplings[r].emplace_back(j - n, it->value());
-          }
-        std::sort(rows[r].begin(), rows[r].end());
-        const std::string which = "multiplier row " + std::to_string(r) + " (unknown " + std::to_string(i) + ")";
-        if (rows[r].empty())
-          {
-            AssertThrow(diagonal[r] != 0.,
-                        dealii::ExcMessage("Condensed contact constraints: " + which +
-                                           (couplings[r].empty() ? " is zero" : " has no diagonal entry") +
-                                           ": the saddle-point matrix is singular."));
-          }
-        else
-          {
-            AssertThrow(diagonal[r] == 0. && couplings[r].empty(),
-                        dealii::ExcMessage("Condensed contact constraints: " + which +
-                                           " has both displacement entries and entries of the multiplier block: "
-                                           "not a constraint row."));
-          }
-      }
-    std::vector<double> known(m, 0.);
-    std::vector<bool>   is_known(m, false);
-    for (unsigned int r = 0; r < m; ++r)
-      if (rows[r].empty() && couplings[r].empty())
-        {
-          known[r]    = b[n + r] / diagonal[r];
-          is_known[r] = true;
-          inactive.emplace_back(r, known[r]);
-        }
-    // the test columns: B^T's own, plus the columns of the tied multipliers
-    // that depend on it (a slipping pair's friction force -mu sigma lambda_n
-    // acts along the tangent)
-    std::vector<std::map<unsigned int, double>> test(m);
-    for (unsigned int r = 0; r < m; ++r)
-      if (!rows[r].empty())
-        for (const auto &e : bt[r])
-          test[r][e.first] += e.second;
-    for (unsigned int r = 0; r < m; ++r)
-      if (rows[r].empty() && !couplings[r].empty())
-        {
-          Tied t;
-          t.row   = r;
-          t.value = b[n + r] / diagonal[r];
-          for (const auto &c : couplings[r])
-            {
-              const double factor = -c.second / diagonal[r];
-              if (is_known[c.first])
-                t.value += factor * known[c.first];
-              else
-                {
-                  AssertThrow(!rows[c.first].empty(),
-                              dealii::ExcMessage("Condensed contact constraints: multiplier row " +
-                                                 std::to_string(r) + " couples to the multiplier of row " +
-                                                 std::to_string(c.first) +
-                                                 ", which is itself coupled to further multipliers: only one "
-                                                 "level of multiplier couplings (a friction force proportional "
-                                                 "to a normal force) can be condensed."));
-                  t.entries.emplace_back(c.first, factor);
-                  for (const auto &e : bt[r])
-                    test[c.first][e.first] += factor * e.second;
-                }
-            }
-          tied.push_back(std::move(t));
-        }
+    // step 1: the multiplier rows by kind
+    const MultiplierRows mr   = classify_multiplier_rows(A, n, m);
+    const auto          &rows = mr.rows;
+    const auto          &bmax = mr.bmax;
+    // step 2: the known and tied rows, and the test columns
+    const std::vector<std::map<unsigned int, double>> test = known_and_tied_rows(mr, b, n, inactive, tied);
+    // step 3: which constraint rows equal their test columns
     std::vector<bool> row_symmetric(m, true);
     for (unsigned int r = 0; r < m; ++r)
       if (!rows[r].empty())
@@ -309,7 +608,6 @@ namespace dealvem
           symmetric        = symmetric && same;
           constraint_rows.push_back(r);
         }
-    bt.clear();
 
     // a DoF can be a slave if its row of K couples to other DoFs (DoFs
     // condensed by the displacement constraints have decoupled rows)
@@ -322,7 +620,7 @@ namespace dealvem
       return false;
     };
 
-    // Gauss-Jordan elimination with partial pivoting per row; with
+    // step 4: Gauss-Jordan elimination with partial pivoting per row; with
     // non-symmetric rows the test rows are eliminated alongside with the
     // same slaves (Petrov-Galerkin condensation)
     Elimination  trial, test_elimination;
@@ -365,25 +663,7 @@ namespace dealvem
             }
         if (best <= dependency_tolerance * bmax[r])
           {
-            std::string on;
-            for (const auto o : origin)
-              on += (on.empty() ? "" : ", ") + std::to_string(o);
-            AssertThrow(std::abs(rhs) <= 1e-10 * scale + abs_floor,
-                        dealii::ExcMessage(
-                          "Inconsistent redundant contact constraints: multiplier row " + std::to_string(r) +
-                          " is a linear combination of the constraint rows {" + on +
-                          "} (ContactAssembler numbers the normal constraint of pair i as row i and the "
-                          "tangential one, if any, as row n_pairs + i; the rows include the Dirichlet/roller constraints condensed into them), but its "
-                          "right-hand side differs from theirs by " + internal::number_string(rhs) + " (values of size " +
-                          internal::number_string(scale) + " entered it): the contact gaps and the prescribed displacements "
-                          "cannot all hold. Check the Dirichlet, roller and point constraints on the nodes of "
-                          "these contact pairs."));
-            AssertThrow(row_symmetric[r],
-                        dealii::ExcMessage("Condensed contact constraints: multiplier row " + std::to_string(r) +
-                                           " is a linear combination of the constraint rows {" + on +
-                                           "} and carries a friction force (a slipping pair): the condensed "
-                                           "solvers cannot split its force among the dependent rows. Use "
-                                           "Solver/Type = UMFPACK or KLU for this model."));
+            check_dependent_row(r, origin, rhs, scale, abs_floor, row_symmetric[r]);
             dependent_rows.push_back(r);
             continue;
           }
@@ -399,35 +679,8 @@ namespace dealvem
         slaves.emplace_back(r, pivot);
       }
 
-    for (const auto &l : trial.lines)
-      {
-        constraints.add_line(l.slave);
-        for (const auto &e : l.entries)
-          constraints.add_entry(l.slave, e.first, e.second);
-        constraints.set_inhomogeneity(l.slave, l.inhomogeneity);
-      }
-    constraints.close();
-    if (!symmetric)
-      {
-        for (const auto &l : test_elimination.lines)
-          {
-            test_constraints.add_line(l.slave);
-            for (const auto &e : l.entries)
-              test_constraints.add_entry(l.slave, e.first, e.second);
-            // the difference to the trial line: where the Petrov-Galerkin
-            // condensation departs from the symmetric one
-            std::map<unsigned int, double> difference(l.entries.begin(), l.entries.end());
-            for (const auto &e : trial.lines[trial.line_of.at(l.slave)].entries)
-              difference[e.first] -= e.second;
-            std::vector<std::pair<unsigned int, double>> d;
-            for (const auto &e : difference)
-              if (e.second != 0.)
-                d.emplace_back(e.first, e.second);
-            if (!d.empty())
-              test_lines.emplace_back(l.slave, std::move(d));
-          }
-        test_constraints.close();
-      }
+    // step 5: the constraints from the lines of the eliminations
+    lines_to_constraints(trial, test_elimination, symmetric, constraints, test_constraints, test_lines);
   }
 
 
@@ -461,138 +714,17 @@ namespace dealvem
     for (const auto &s : slaves)
       line[s.second] = constraints.get_constraint_entries(s.second);
 
-    // fill-in: a row coupled to a slave couples to its masters; a master
-    // row gets the couplings of its slaves' rows
-    std::vector<std::vector<unsigned int>> extra(n);
-    const auto add_row_of = [&](const unsigned int target, const unsigned int s) {
-      auto &x = extra[target];
-      for (auto it = A.begin(s); it != A.end(s); ++it)
-        {
-          const auto j = it->column();
-          if (j >= n)
-            continue;
-          if (line[j] == nullptr)
-            x.push_back(j);
-          else
-            for (const auto &e : *line[j])
-              x.push_back(e.first);
-        }
-    };
-    for (const auto &s : slaves)
-      {
-        for (auto it = A.begin(s.second); it != A.end(s.second); ++it)
-          {
-            const auto i = it->column();
-            if (i < n && line[i] == nullptr)
-              for (const auto &e : *line[s.second])
-                extra[i].push_back(e.first);
-          }
-        for (const auto &e : *line[s.second])
-          add_row_of(e.first, s.second);
-      }
-    // Petrov-Galerkin: the test masters of a slave get its row too
-    if (!symmetric_part)
-      for (const auto &t : test_lines)
-        for (const auto &e : t.second)
-          add_row_of(e.first, t.first);
-
-    // the rows: those of K with their fill-in, each sorted and without
-    // repetitions, so that the pattern takes them as they are
-    const dealii::SparsityPattern &sp = A.get_sparsity_pattern();
-    std::vector<unsigned int>      row_length(n);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        auto &x = extra[i];
-        if (!x.empty())
-          {
-            for (auto it = sp.begin(i); it != sp.end(i); ++it)
-              if (it->column() < n)
-                x.push_back(it->column());
-            std::sort(x.begin(), x.end());
-            x.erase(std::unique(x.begin(), x.end()), x.end());
-            row_length[i] = x.size();
-          }
-        else
-          for (auto it = sp.begin(i); it != sp.end(i); ++it)
-            row_length[i] += (it->column() < n);
-      }
-    sparsity.reinit(n, n, row_length);
-    std::vector<dealii::types::global_dof_index> cols;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        cols.clear();
-        if (!extra[i].empty())
-          cols.assign(extra[i].begin(), extra[i].end());
-        else
-          {
-            for (auto it = sp.begin(i); it != sp.end(i); ++it)
-              if (it->column() < n)
-                cols.push_back(it->column());
-            std::sort(cols.begin(), cols.end());
-          }
-        sparsity.add_entries(i, cols.begin(), cols.end(), true);
-      }
-    sparsity.compress();
-
-    // copy K: both rows list the diagonal first and then ascending columns,
-    // and the new row contains the old one
-    K.reinit(sparsity);
-    f.reinit(n);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        f[i]    = b[i];
-        auto kt = K.begin(i);
-        for (auto it = A.begin(i); it != A.end(i); ++it)
-          {
-            const auto j = it->column();
-            if (j >= n)
-              {
-                if (known[j - n])
-                  f[i] -= it->value() * lambda[j - n];
-                continue;
-              }
-            while (kt->column() != j)
-              ++kt;
-            kt->value() = it->value();
-          }
-      }
+    // step 1: the fill-in
+    std::vector<std::vector<unsigned int>> extra = fill_in(A, n, slaves, line, test_lines, symmetric_part);
+    // step 2: the pattern of the condensed matrix
+    condensed_pattern(A, n, extra, sparsity);
+    // step 3: copy K; step 4: condense it
+    copy_stiffness(A, b, n, known, lambda, sparsity, K, f);
     constraints.condense(K, f);
-
-    // Z^T K C = C^T K C + (Z - C)^T K C: the test lines that differ from
-    // the trial lines (slipping pairs) add their difference times the
-    // slave's row of K C (and of f - K c) to the masters
+    // step 5: the Petrov-Galerkin difference of the test lines
     if (symmetric_part)
       return;
-    for (const auto &t : test_lines)
-      {
-        const unsigned int             s = t.first;
-        std::map<unsigned int, double> row;
-        double                         rs = b[s];
-        for (auto it = A.begin(s); it != A.end(s); ++it)
-          {
-            const auto j = it->column();
-            if (j >= n)
-              {
-                if (known[j - n])
-                  rs -= it->value() * lambda[j - n];
-                continue;
-              }
-            if (line[j] == nullptr)
-              row[j] += it->value();
-            else
-              {
-                for (const auto &e : *line[j])
-                  row[e.first] += it->value() * e.second;
-                rs -= it->value() * constraints.get_inhomogeneity(j);
-              }
-          }
-        for (const auto &d : t.second)
-          {
-            for (const auto &e : row)
-              K.add(d.first, e.first, d.second * e.second);
-            f[d.first] += d.second * rs;
-          }
-      }
+    add_test_line_differences(A, b, n, known, lambda, line, constraints, test_lines, K, f);
   }
 
 

@@ -725,6 +725,183 @@ namespace dealvem
 
 
   void
+  SaddlePointSolver::solve_condensed(const dealii::SparseMatrix<double> &A,
+                                     const unsigned int                  n_displacements,
+                                     dealii::Vector<double>             &x,
+                                     const dealii::Vector<double>       &b)
+  {
+    // a length scale for the consistency test of redundant constraints:
+    // the coordinates in the rotation mode
+    double length = 0;
+    if (modes.size() == 3)
+      for (const double v : modes[2])
+        length = std::max(length, std::abs(v));
+    auto  system  = std::make_shared<internal::CondensedSystem>();
+    auto &contact = system->contact;
+    auto &K       = system->K;
+    auto &f       = system->f;
+    auto &u       = system->u;
+    system->size  = A.m();
+    contact.reinit(A, n_displacements, b, length);
+    n_dropped = contact.get_dependent_rows().size();
+    contact.condense(A, b, system->sparsity, K, f);
+    used_gmres = !contact.is_symmetric();
+    u.reinit(n_displacements);
+    if (settings.type == Type::direct_constraints)
+      {
+        // Cholesky of the symmetric condensed stiffness; LU where it is
+        // not positive definite, or not symmetric (slipping pairs)
+        if (!cholesky)
+          cholesky = std::make_shared<internal::SparseCholesky>();
+        used_lu_fallback = used_gmres || !cholesky->factorize(K);
+        if (used_lu_fallback)
+          internal::solve_direct(K, u, f, false);
+        else
+          cholesky->solve(u, f);
+        iterations = 1;
+      }
+    else
+      solve_condensed_iteratively(*system, A, b, length);
+    stick_rows.clear();
+    for (unsigned int i = 0; i < n_displacements; ++i)
+      x[i] = u[i];
+    contact.distribute_and_recover_multipliers(A, b, x);
+    if (settings.type == Type::cg_amg_constraints)
+      {
+        previous.reinit(n_displacements);
+        for (unsigned int i = 0; i < n_displacements; ++i)
+          previous[i] = x[i];
+      }
+    if (last_inexact)
+      inexact_system = system;
+  }
+
+
+
+  void
+  SaddlePointSolver::solve_condensed_iteratively(internal::CondensedSystem          &system,
+                                                 const dealii::SparseMatrix<double> &A,
+                                                 const dealii::Vector<double>       &b,
+                                                 const double                        length)
+  {
+    const unsigned int            n_displacements = system.u.size();
+    auto                         &contact         = system.contact;
+    const auto                   &K               = system.K;
+    const dealii::Vector<double> &f               = system.f;
+    dealii::Vector<double>       &u               = system.u;
+    // the start: the displacements of the previous solve, with the
+    // slave DoFs of this one at their condensed value (their rows
+    // are decoupled: f_s / K_ss, zero); zero instead where that is
+    // closer (after a large change of the set, e.g. from a first
+    // set that only holds the bodies, the old displacements
+    // penetrate far across the newly closed pairs)
+    if (settings.warm_start && previous.size() == n_displacements)
+      {
+        u = previous;
+        for (const auto &sl : contact.get_slaves())
+          u[sl.second] = (K.diag_element(sl.second) != 0 ? f[sl.second] / K.diag_element(sl.second) : 0.);
+        dealii::Vector<double> r(n_displacements);
+        if (K.residual(r, u, f) >= f.l2_norm())
+          u = 0.;
+      }
+    // an inexact solve stops early (plain CG on the symmetric
+    // condensed stiffness only: complete_last_solve() goes on from
+    // there)
+    last_inexact = inexact_solves && stick_rows.empty() && !used_gmres &&
+                   settings.inexact_tolerance > settings.relative_tolerance;
+    const double tolerance = (last_inexact ? settings.inexact_tolerance : settings.relative_tolerance);
+    if (!stick_rows.empty())
+      {
+        // CG (GMRES when slipping pairs make the condensed matrix
+        // non-symmetric) with the two-subspace preconditioner of the
+        // stick springs
+        const StickPreconditioner stick(K, contact.get_constraints(), stick_rows, modes, length);
+        used_stick_preconditioner = true;
+        dealii::SolverControl control(settings.max_iterations, tolerance * f.l2_norm());
+        try
+          {
+            if (used_gmres)
+              {
+                dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(200, true);
+                dealii::SolverGMRES<dealii::Vector<double>> gmres(control, data);
+                gmres.solve(K, u, f, stick);
+              }
+            else
+              {
+                dealii::SolverCG<dealii::Vector<double>> cg(control);
+                cg.solve(K, u, f, stick);
+              }
+          }
+        catch (const dealii::SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        dealii::ExcMessage(std::string(used_gmres ? "GMRES" : "CG") +
+                                           "-AMG on the condensed contact problem (stick penalty) did not "
+                                           "converge: residual " +
+                                           std::to_string(e.last_residual) + " after " +
+                                           std::to_string(e.last_step) + " iterations (target " +
+                                           std::to_string(control.tolerance()) + ")."));
+          }
+        iterations = control.last_step();
+      }
+    else if (used_gmres)
+      {
+        // GMRES with AMG on the symmetric part C^T K C: it needs
+        // fewer iterations with it than with AMG on Z^T K C itself
+        // (measured: 96-108 against 100-144 per Newton iteration on
+        // a 56k-DoF sliding patch test)
+        dealii::SparsityPattern      sp_sym;
+        dealii::SparseMatrix<double> K_sym;
+        dealii::Vector<double>       f_sym;
+        contact.condense(A, b, sp_sym, K_sym, f_sym, true);
+        iterations = solve_with_amg(K, K_sym, u, f, tolerance, false);
+      }
+    else
+      iterations = solve_with_amg(K, K, u, f, tolerance, true);
+    internal::check_residual(K, u, f, tolerance, description() + (context.empty() ? "" : ", " + context));
+  }
+
+
+
+  void
+  SaddlePointSolver::solve_block_gmres(const dealii::SparseMatrix<double> &A,
+                                       const unsigned int                  n_displacements,
+                                       dealii::Vector<double>             &x,
+                                       const dealii::Vector<double>       &b)
+  {
+    dealii::BlockSparsityPattern      pattern;
+    dealii::BlockSparseMatrix<double> blocks;
+    split_into_blocks(A, n_displacements, pattern, blocks);
+    const BlockPreconditioner preconditioner(blocks, modes);
+    const std::vector<dealii::types::global_dof_index> sizes{n_displacements,
+                                                             A.m() - n_displacements};
+    dealii::BlockVector<double>                        xb(sizes), bb(sizes);
+    for (unsigned int i = 0; i < b.size(); ++i)
+      bb[i] = b[i];
+    dealii::SolverControl control(settings.max_iterations,
+                                  settings.relative_tolerance * b.l2_norm());
+    dealii::SolverGMRES<dealii::BlockVector<double>>::AdditionalData data(200, true);
+    dealii::SolverGMRES<dealii::BlockVector<double>> gmres(control, data);
+    try
+      {
+        gmres.solve(blocks, xb, bb, preconditioner.linear_operator(blocks));
+      }
+    catch (const dealii::SolverControl::NoConvergence &e)
+      {
+        AssertThrow(false,
+                    dealii::ExcMessage("GMRES-AMG did not converge: residual " +
+                                       std::to_string(e.last_residual) + " after " +
+                                       std::to_string(e.last_step) + " iterations (target " +
+                                       std::to_string(control.tolerance()) + ")."));
+      }
+    iterations = control.last_step();
+    for (unsigned int i = 0; i < x.size(); ++i)
+      x[i] = xb[i];
+  }
+
+
+
+  void
   SaddlePointSolver::solve(const dealii::SparseMatrix<double> &A,
                            const unsigned int                  n_displacements,
                            dealii::Vector<double>             &x,
@@ -737,159 +914,14 @@ namespace dealvem
     last_inexact              = false;
     inexact_system.reset();
     if (is_condensed(settings.type))
-      {
-        // a length scale for the consistency test of redundant constraints:
-        // the coordinates in the rotation mode
-        double length = 0;
-        if (modes.size() == 3)
-          for (const double v : modes[2])
-            length = std::max(length, std::abs(v));
-        auto  system  = std::make_shared<internal::CondensedSystem>();
-        auto &contact = system->contact;
-        auto &K       = system->K;
-        auto &f       = system->f;
-        auto &u       = system->u;
-        system->size  = A.m();
-        contact.reinit(A, n_displacements, b, length);
-        n_dropped = contact.get_dependent_rows().size();
-        contact.condense(A, b, system->sparsity, K, f);
-        used_gmres = !contact.is_symmetric();
-        u.reinit(n_displacements);
-        if (settings.type == Type::direct_constraints)
-          {
-            // Cholesky of the symmetric condensed stiffness; LU where it is
-            // not positive definite, or not symmetric (slipping pairs)
-            if (!cholesky)
-              cholesky = std::make_shared<internal::SparseCholesky>();
-            used_lu_fallback = used_gmres || !cholesky->factorize(K);
-            if (used_lu_fallback)
-              internal::solve_direct(K, u, f, false);
-            else
-              cholesky->solve(u, f);
-            iterations = 1;
-          }
-        else
-          {
-            // the start: the displacements of the previous solve, with the
-            // slave DoFs of this one at their condensed value (their rows
-            // are decoupled: f_s / K_ss, zero); zero instead where that is
-            // closer (after a large change of the set, e.g. from a first
-            // set that only holds the bodies, the old displacements
-            // penetrate far across the newly closed pairs)
-            if (settings.warm_start && previous.size() == n_displacements)
-              {
-                u = previous;
-                for (const auto &sl : contact.get_slaves())
-                  u[sl.second] = (K.diag_element(sl.second) != 0 ? f[sl.second] / K.diag_element(sl.second) : 0.);
-                dealii::Vector<double> r(n_displacements);
-                if (K.residual(r, u, f) >= f.l2_norm())
-                  u = 0.;
-              }
-            // an inexact solve stops early (plain CG on the symmetric
-            // condensed stiffness only: complete_last_solve() goes on from
-            // there)
-            last_inexact = inexact_solves && stick_rows.empty() && !used_gmres &&
-                           settings.inexact_tolerance > settings.relative_tolerance;
-            const double tolerance = (last_inexact ? settings.inexact_tolerance : settings.relative_tolerance);
-            if (!stick_rows.empty())
-              {
-                // CG (GMRES when slipping pairs make the condensed matrix
-                // non-symmetric) with the two-subspace preconditioner of the
-                // stick springs
-                const StickPreconditioner stick(K, contact.get_constraints(), stick_rows, modes, length);
-                used_stick_preconditioner = true;
-                dealii::SolverControl control(settings.max_iterations, tolerance * f.l2_norm());
-                try
-                  {
-                    if (used_gmres)
-                      {
-                        dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(200, true);
-                        dealii::SolverGMRES<dealii::Vector<double>> gmres(control, data);
-                        gmres.solve(K, u, f, stick);
-                      }
-                    else
-                      {
-                        dealii::SolverCG<dealii::Vector<double>> cg(control);
-                        cg.solve(K, u, f, stick);
-                      }
-                  }
-                catch (const dealii::SolverControl::NoConvergence &e)
-                  {
-                    AssertThrow(false,
-                                dealii::ExcMessage(std::string(used_gmres ? "GMRES" : "CG") +
-                                                   "-AMG on the condensed contact problem (stick penalty) did not "
-                                                   "converge: residual " +
-                                                   std::to_string(e.last_residual) + " after " +
-                                                   std::to_string(e.last_step) + " iterations (target " +
-                                                   std::to_string(control.tolerance()) + ")."));
-                  }
-                iterations = control.last_step();
-              }
-            else if (used_gmres)
-              {
-                // GMRES with AMG on the symmetric part C^T K C: it needs
-                // fewer iterations with it than with AMG on Z^T K C itself
-                // (measured: 96-108 against 100-144 per Newton iteration on
-                // a 56k-DoF sliding patch test)
-                dealii::SparsityPattern      sp_sym;
-                dealii::SparseMatrix<double> K_sym;
-                dealii::Vector<double>       f_sym;
-                contact.condense(A, b, sp_sym, K_sym, f_sym, true);
-                iterations = solve_with_amg(K, K_sym, u, f, tolerance, false);
-              }
-            else
-              iterations = solve_with_amg(K, K, u, f, tolerance, true);
-            internal::check_residual(K, u, f, tolerance, description() + (context.empty() ? "" : ", " + context));
-          }
-        stick_rows.clear();
-        for (unsigned int i = 0; i < n_displacements; ++i)
-          x[i] = u[i];
-        contact.distribute_and_recover_multipliers(A, b, x);
-        if (settings.type == Type::cg_amg_constraints)
-          {
-            previous.reinit(n_displacements);
-            for (unsigned int i = 0; i < n_displacements; ++i)
-              previous[i] = x[i];
-          }
-        if (last_inexact)
-          inexact_system = system;
-      }
+      solve_condensed(A, n_displacements, x, b);
     else if (settings.type != Type::gmres_amg)
       {
         internal::solve_direct(A, x, b, settings.type == Type::klu);
         iterations = 1;
       }
     else
-      {
-        dealii::BlockSparsityPattern      pattern;
-        dealii::BlockSparseMatrix<double> blocks;
-        split_into_blocks(A, n_displacements, pattern, blocks);
-        const BlockPreconditioner preconditioner(blocks, modes);
-        const std::vector<dealii::types::global_dof_index> sizes{n_displacements,
-                                                                 A.m() - n_displacements};
-        dealii::BlockVector<double>                        xb(sizes), bb(sizes);
-        for (unsigned int i = 0; i < b.size(); ++i)
-          bb[i] = b[i];
-        dealii::SolverControl control(settings.max_iterations,
-                                      settings.relative_tolerance * b.l2_norm());
-        dealii::SolverGMRES<dealii::BlockVector<double>>::AdditionalData data(200, true);
-        dealii::SolverGMRES<dealii::BlockVector<double>> gmres(control, data);
-        try
-          {
-            gmres.solve(blocks, xb, bb, preconditioner.linear_operator(blocks));
-          }
-        catch (const dealii::SolverControl::NoConvergence &e)
-          {
-            AssertThrow(false,
-                        dealii::ExcMessage("GMRES-AMG did not converge: residual " +
-                                           std::to_string(e.last_residual) + " after " +
-                                           std::to_string(e.last_step) + " iterations (target " +
-                                           std::to_string(control.tolerance()) + ")."));
-          }
-        iterations = control.last_step();
-        for (unsigned int i = 0; i < x.size(); ++i)
-          x[i] = xb[i];
-      }
+      solve_block_gmres(A, n_displacements, x, b);
     for (unsigned int i = 0; i < x.size(); ++i)
       AssertThrow(std::isfinite(x[i]),
                   dealii::ExcMessage("The saddle-point solver produced a non-finite value: the "

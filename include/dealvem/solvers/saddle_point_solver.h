@@ -299,6 +299,35 @@ namespace dealvem
     std::string                      context;
 
   private:
+    /// solve() for the condensed types (direct_constraints,
+    /// cg_amg_constraints): eliminates the constraint rows, solves the
+    /// condensed system directly or iteratively, and recovers the
+    /// multipliers into @p x.
+    void
+    solve_condensed(const dealii::SparseMatrix<double> &A,
+                    const unsigned int                  n_displacements,
+                    dealii::Vector<double>             &x,
+                    const dealii::Vector<double>       &b);
+
+    /// The iterative solve of the condensed @p system of A x = b: warm
+    /// start, inexact tolerance, and CG or GMRES preconditioned by the
+    /// stick springs or by AMG; @p length is the length scale of the
+    /// rotation mode.
+    void
+    solve_condensed_iteratively(internal::CondensedSystem          &system,
+                                const dealii::SparseMatrix<double> &A,
+                                const dealii::Vector<double>       &b,
+                                const double                        length);
+
+    /// solve() for gmres_amg: GMRES on the saddle-point system split into
+    /// its displacement and multiplier blocks, with the block
+    /// preconditioner.
+    void
+    solve_block_gmres(const dealii::SparseMatrix<double> &A,
+                      const unsigned int                  n_displacements,
+                      dealii::Vector<double>             &x,
+                      const dealii::Vector<double>       &b);
+
     /// CG (GMRES if not @p symmetric) on K u = f from @p u to
     /// @p relative_tolerance, preconditioned by the AMG hierarchy of
     /// @p K_amg (K or its symmetric part) from amg_cache, built, reused or
