@@ -51,6 +51,139 @@ namespace dealvem
 
 
 
+  namespace
+  {
+    // The loop over linear solves of an active-set iteration, with every
+    // decision about the set taken by an ActiveSetUpdate (the rule). The
+    // solves of a set that is not the last one only choose the next set:
+    // with `inexact` they may stop at the solver's inexact tolerance (see
+    // ActiveSetSolver); the solver is exact again when the loop ends.
+    template <int dim>
+    struct UpdateLoop
+    {
+      const ContactAssembler<dim>             &contact;
+      const dealii::AffineConstraints<double> &constraints;
+      SaddlePointSolver                       &solver;
+      const dealii::SparseMatrix<double>      &system_matrix;
+      const dealii::Vector<double>            &system_rhs;
+      dealii::SparseMatrix<double>            &matrix;
+      dealii::Vector<double>                  &x;
+      const unsigned int                       n;
+      const bool                               inexact;
+      typename ActiveSetSolver<dim>::Result   &result;
+      dealii::Vector<double>                   rhs;
+
+      // Solve and update the state @p st by @p rule until the rule stops;
+      // @p name and the iteration number are the solver's context.
+      void
+      run(ActiveSetUpdate<dim> &rule, typename ActiveSetUpdate<dim>::State &st, const std::string &name)
+      {
+        solver.set_inexact(inexact);
+        while (true)
+          {
+            matrix.copy_from(system_matrix);
+            rhs = system_rhs;
+            contact.assemble(constraints, st.active, matrix, rhs);
+            // the condensed solver preconditions stick springs by tying them
+            if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
+              solver.set_stick_directions(contact.stick_penalty_rows(constraints, st.active));
+            solver.set_context(name + " " + std::to_string(st.n_iterations + 1));
+            solver.solve(matrix, n, x, rhs);
+            constraints.distribute(x);
+            result.linear_iterations += solver.last_iterations();
+            if (solver.last_solve_inexact())
+              {
+                // the rule on a copy of the state: its next set is taken
+                // unless it would stop (converge, or fail), which only a
+                // solution at the full tolerance may decide
+                auto trial = st;
+                bool stops = true;
+                try
+                  {
+                    stops = rule.update(trial, contact, x);
+                  }
+                catch (const std::exception &)
+                  {
+                    stops = true;
+                  }
+                if (!stops)
+                  {
+                    st = std::move(trial);
+                    continue;
+                  }
+                solver.complete_last_solve(matrix, x, rhs);
+                constraints.distribute(x);
+                result.linear_iterations += solver.last_iterations();
+                ++result.n_completed_solves;
+              }
+            if (rule.update(st, contact, x))
+              break;
+          }
+        solver.set_inexact(false);
+      }
+    };
+
+
+
+    // Polish the convex stick solution of the globalized solve (closed pairs
+    // @p convex_active) to the model of the fast path (open pairs free
+    // tangentially), from its set: first by the same primal iteration, then
+    // by the fast path's update (plain, at most 10 iterations); if neither
+    // settles, the convex solution stays (Result::convex_stick_model).
+    template <int dim>
+    void
+    polish_stick_solution(UpdateLoop<dim>            &loop,
+                          PrimalActiveSetSolver<dim> &primal,
+                          const ContactSettings      &settings,
+                          const RigidBodySupport     *support,
+                          const double                c,
+                          const std::vector<bool>    &convex_active)
+    {
+      auto                        &x      = loop.x;
+      auto                        &result = loop.result;
+      const dealii::Vector<double> convex = x;
+      bool                         done   = false;
+      try
+        {
+          const auto pc =
+            primal.solve_stick_on_closed(loop.system_matrix, loop.system_rhs, loop.matrix, x, convex_active);
+          result.n_polish_iterations = pc.n_solves;
+          result.linear_iterations += pc.linear_iterations;
+          if (pc.converged)
+            {
+              result.active = pc.active;
+              done          = true;
+            }
+        }
+      catch (const dealii::ExceptionBase &)
+        {
+          // (a degenerate tie: the fast path's update polishes instead)
+        }
+      if (done)
+        return;
+      x                               = convex;
+      ContactSettings plain           = settings;
+      plain.accelerate_active_set     = false;
+      plain.max_active_set_iterations = 10;
+      ActiveSetUpdate<dim> polish(loop.contact.get_pairs(), plain, c);
+      polish.set_support(support);
+      polish.set_report_failures(true);
+      auto pstate   = polish.initial_state();
+      pstate.active = convex_active;
+      loop.run(polish, pstate, "polish of the globalized solve, iteration");
+      result.n_polish_iterations += pstate.n_iterations;
+      if (pstate.converged)
+        result.active = pstate.active;
+      else
+        {
+          x                         = convex;
+          result.convex_stick_model = true;
+        }
+    }
+  } // namespace
+
+
+
   // The driver: the loop over linear solves, with every decision about the
   // active set (first set, update, acceleration, convergence, cycles,
   // iteration limit, equilibrium) taken by ActiveSetUpdate; when that
@@ -69,10 +202,8 @@ namespace dealvem
     update.set_support(support);
     update.set_pair_neighbours(neighbours);
     update.set_report_failures(globalize);
-    auto                   state = update.initial_state();
-    const auto             n     = system_matrix.m() - contact.n_multipliers();
-    Result                 result;
-    dealii::Vector<double> rhs;
+    auto   state = update.initial_state();
+    Result result;
     // the solves of a set that is not the last one only choose the next
     // set: they may stop at the solver's inexact tolerance (see the class
     // documentation); the solver is exact again when solve() returns or
@@ -86,52 +217,18 @@ namespace dealvem
         solver.set_inexact(false);
       }
     } exact_on_exit{solver};
-    const auto iterate = [&](ActiveSetUpdate<dim> &rule, typename ActiveSetUpdate<dim>::State &st,
-                             const std::string &name) {
-      solver.set_inexact(inexact);
-      while (true)
-        {
-          matrix.copy_from(system_matrix);
-          rhs = system_rhs;
-          contact.assemble(constraints, st.active, matrix, rhs);
-          // the condensed solver preconditions stick springs by tying them
-          if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
-            solver.set_stick_directions(contact.stick_penalty_rows(constraints, st.active));
-          solver.set_context(name + " " + std::to_string(st.n_iterations + 1));
-          solver.solve(matrix, n, x, rhs);
-          constraints.distribute(x);
-          result.linear_iterations += solver.last_iterations();
-          if (solver.last_solve_inexact())
-            {
-              // the rule on a copy of the state: its next set is taken
-              // unless it would stop (converge, or fail), which only a
-              // solution at the full tolerance may decide
-              auto trial = st;
-              bool stops = true;
-              try
-                {
-                  stops = rule.update(trial, contact, x);
-                }
-              catch (const std::exception &)
-                {
-                  stops = true;
-                }
-              if (!stops)
-                {
-                  st = std::move(trial);
-                  continue;
-                }
-              solver.complete_last_solve(matrix, x, rhs);
-              constraints.distribute(x);
-              result.linear_iterations += solver.last_iterations();
-              ++result.n_completed_solves;
-            }
-          if (rule.update(st, contact, x))
-            break;
-        }
-      solver.set_inexact(false);
-    };
-    iterate(update, state, "active-set iteration");
+    UpdateLoop<dim> loop{contact,
+                         constraints,
+                         solver,
+                         system_matrix,
+                         system_rhs,
+                         matrix,
+                         x,
+                         static_cast<unsigned int>(system_matrix.m() - contact.n_multipliers()),
+                         inexact,
+                         result,
+                         {}};
+    loop.run(update, state, "active-set iteration");
     result.active               = state.active;
     result.n_iterations         = state.n_iterations;
     result.n_active_history     = state.n_active_history;
@@ -162,49 +259,7 @@ namespace dealvem
       }
     result.active = pr.active;
     if (settings.tangential != ContactSettings::Tangential::frictionless)
-      {
-        // polish the convex stick solution to the model of the fast path
-        // (open pairs free tangentially), from its set: first by the same
-        // primal iteration, then by the fast path's update
-        const dealii::Vector<double> convex = x;
-        bool                         done   = false;
-        try
-          {
-            const auto pc = primal.solve_stick_on_closed(system_matrix, system_rhs, matrix, x, pr.active);
-            result.n_polish_iterations = pc.n_solves;
-            result.linear_iterations += pc.linear_iterations;
-            if (pc.converged)
-              {
-                result.active = pc.active;
-                done          = true;
-              }
-          }
-        catch (const dealii::ExceptionBase &)
-          {
-            // (a degenerate tie: the fast path's update polishes instead)
-          }
-        if (!done)
-          {
-            x                           = convex;
-            ContactSettings plain       = settings;
-            plain.accelerate_active_set = false;
-            plain.max_active_set_iterations = 10;
-            ActiveSetUpdate<dim> polish(contact.get_pairs(), plain, c);
-            polish.set_support(support);
-            polish.set_report_failures(true);
-            auto pstate   = polish.initial_state();
-            pstate.active = pr.active;
-            iterate(polish, pstate, "polish of the globalized solve, iteration");
-            result.n_polish_iterations += pstate.n_iterations;
-            if (pstate.converged)
-              result.active = pstate.active;
-            else
-              {
-                x                         = convex;
-                result.convex_stick_model = true;
-              }
-          }
-      }
+      polish_stick_solution(loop, primal, settings, support, c, pr.active);
     return result;
   }
 

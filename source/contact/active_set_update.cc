@@ -214,6 +214,33 @@ namespace dealvem
 
 
 
+  namespace
+  {
+    // The pairs that switch between the set @p current and @p next (the
+    // first 10 by index and location, and how many more).
+    std::string
+    switching_pairs(const std::vector<ContactNodePair> &pairs,
+                    const std::vector<bool>            &current,
+                    const std::vector<bool>            &next)
+    {
+      std::ostringstream switching;
+      unsigned int       n_switching = 0;
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        if (next[i] != current[i])
+          {
+            if (n_switching < 10)
+              switching << (n_switching > 0 ? ", " : "") << "pair " << i << " at (" << pairs[i].slave_location
+                        << ") " << (next[i] ? "closes" : "opens");
+            ++n_switching;
+          }
+      if (n_switching > 10)
+        switching << " and " << n_switching - 10 << " more";
+      return switching.str();
+    }
+  } // namespace
+
+
+
   template <int dim>
   bool
   ActiveSetUpdate<dim>::update(State                     &state,
@@ -318,23 +345,9 @@ namespace dealvem
       }
     if (plain && state.visited.count(next) > 0)
       {
-        // name the pairs that switch between the set solved with and the
-        // one visited before
-        std::ostringstream switching;
-        unsigned int       n_switching = 0;
-        for (unsigned int i = 0; i < n_pairs; ++i)
-          if (next[i] != state.active[i])
-            {
-              if (n_switching < 10)
-                switching << (n_switching > 0 ? ", " : "") << "pair " << i << " at (" << pairs[i].slave_location
-                          << ") " << (next[i] ? "closes" : "opens");
-              ++n_switching;
-            }
-        if (n_switching > 10)
-          switching << " and " << n_switching - 10 << " more";
         return fail("The contact active set cycles: the set of iteration " + std::to_string(it + 1) +
                     " was already visited (active pairs per iteration:" + history_string(state) +
-                    "; switching back: " + switching.str() +
+                    "; switching back: " + switching_pairs(pairs, state.active, next) +
                     "). Try another active-set constant or finer meshes.");
       }
     if (plain)

@@ -188,6 +188,187 @@ namespace dealvem
             parent[std::max(a, b)] = std::min(a, b);
         }
       };
+
+
+      // Rule 2: an edge facing several bodies is split where their ranges
+      // meet.
+      void
+      split_facing_edges(PolygonalMesh<2>                           &mesh,
+                         const std::set<dealii::types::boundary_id> &excluded_ids,
+                         const Settings                             &settings,
+                         Result                                     &result)
+      {
+        const Facing facing = find_facing(mesh, excluded_ids, settings);
+        for (const unsigned int e : facing.candidates)
+          {
+            if (facing.ranges[e].size() < 2)
+              continue;
+            std::vector<std::pair<double, double>> ranges;
+            for (const auto &r : facing.ranges[e])
+              ranges.push_back(r.second);
+            std::sort(ranges.begin(), ranges.end(), [](const auto &x, const auto &y) {
+              return x.first + x.second < y.first + y.second;
+            });
+            const EdgeGeometry &g = facing.geometry[e];
+            std::vector<double> cuts;
+            for (unsigned int i = 1; i < ranges.size(); ++i)
+              {
+                const double s = 0.5 * (ranges[i - 1].second + ranges[i].first);
+                if (s > settings.merge_fraction * g.length && s < (1 - settings.merge_fraction) * g.length &&
+                    (cuts.empty() || s > cuts.back() + settings.merge_fraction * g.length))
+                  cuts.push_back(s);
+              }
+            // split_edge() keeps the first piece under the index of the
+            // edge and appends the second: cut the last piece each time
+            unsigned int piece = e;
+            for (const double s : cuts)
+              {
+                // the piece runs along g in the direction of the loop, or
+                // against it; split_edge() takes the point either way
+                mesh.split_edge(piece, g.a + s * g.t);
+                ++result.n_split_edges;
+                // the piece beyond the cut (towards g.b) is the one to cut next
+                const unsigned int appended           = mesh.n_edges() - 1;
+                const auto        &ev                 = mesh.edge(appended).vertices;
+                const bool         appended_is_beyond = (mesh.vertex(ev[0]).distance(g.b) < 1e-12 * g.length ||
+                                                 mesh.vertex(ev[1]).distance(g.b) < 1e-12 * g.length);
+                piece                                 = appended_is_beyond ? appended : piece;
+              }
+          }
+      }
+
+
+
+      // Rule 1: per candidate edge the body it overlaps most (invalid for
+      // the other edges).
+      std::vector<unsigned int>
+      facing_bodies(const PolygonalMesh<2> &mesh, const Facing &facing)
+      {
+        std::vector<unsigned int> facing_body(mesh.n_edges(), dealii::numbers::invalid_unsigned_int);
+        for (const unsigned int e : facing.candidates)
+          {
+            double best = 0;
+            for (const auto &o : facing.overlap[e])
+              if (o.second > best)
+                {
+                  best           = o.second;
+                  facing_body[e] = o.first;
+                }
+          }
+        return facing_body;
+      }
+
+
+
+      // Rule 3: chains of one body facing another (edges meeting at a
+      // vertex at an angle below the corner angle), joined across the
+      // interface.
+      void
+      join_chains(const PolygonalMesh<2>          &mesh,
+                  const Facing                    &facing,
+                  const std::vector<unsigned int> &facing_body,
+                  const Settings                  &settings,
+                  UnionFind                       &groups)
+      {
+        const unsigned int                                none = dealii::numbers::invalid_unsigned_int;
+        std::map<unsigned int, std::vector<unsigned int>> at_vertex;
+        for (const unsigned int e : facing.candidates)
+          if (facing_body[e] != none)
+            for (const unsigned int v : mesh.edge(e).vertices)
+              at_vertex[v].push_back(e);
+        const double cos_corner = std::cos(settings.corner_angle * M_PI / 180.);
+        for (const auto &v : at_vertex)
+          for (unsigned int i = 0; i < v.second.size(); ++i)
+            for (unsigned int j = i + 1; j < v.second.size(); ++j)
+              {
+                const unsigned int e = v.second[i], f = v.second[j];
+                if (facing.geometry[e].body == facing.geometry[f].body && facing_body[e] == facing_body[f] &&
+                    facing.geometry[e].n * facing.geometry[f].n >= cos_corner)
+                  groups.join(e, f);
+              }
+        for (const unsigned int e : facing.candidates)
+          for (const unsigned int f : facing.partners[e])
+            if (facing_body[e] == facing.geometry[f].body && facing_body[f] == facing.geometry[e].body)
+              groups.join(e, f);
+      }
+
+
+
+      // A chain of joined edges: its two bodies (lower first), its first
+      // edge and its edges.
+      struct Group
+      {
+        unsigned int              low, high, first;
+        std::vector<unsigned int> edges;
+      };
+
+      // Rule 4: the chains with edges on both sides, in the order of their
+      // bodies and first edges.
+      std::vector<Group>
+      sorted_groups(const Facing &facing, const std::vector<unsigned int> &facing_body, UnionFind &groups)
+      {
+        std::map<unsigned int, std::vector<unsigned int>> members;
+        for (const unsigned int e : facing.candidates)
+          if (facing_body[e] != dealii::numbers::invalid_unsigned_int)
+            members[groups.find(e)].push_back(e);
+        std::vector<Group> list;
+        for (auto &m : members)
+          {
+            Group g;
+            g.low   = std::min(facing.geometry[m.second[0]].body, facing_body[m.second[0]]);
+            g.high  = std::max(facing.geometry[m.second[0]].body, facing_body[m.second[0]]);
+            g.first = *std::min_element(m.second.begin(), m.second.end());
+            g.edges = std::move(m.second);
+            // a chain whose partner chain is missing (every facing partner
+            // assigned elsewhere) is no interface
+            bool both = false;
+            for (const unsigned int e : g.edges)
+              both = both || facing.geometry[e].body != facing.geometry[g.edges[0]].body;
+            if (both)
+              list.push_back(std::move(g));
+          }
+        std::sort(list.begin(), list.end(), [](const Group &x, const Group &y) {
+          return std::tie(x.low, x.high, x.first) < std::tie(y.low, y.high, y.first);
+        });
+        return list;
+      }
+
+
+
+      // Rule 5: the interface of chain @p k, its master (the coarser side)
+      // and its ids, set on the edges.
+      Interface
+      make_interface(PolygonalMesh<2>                &mesh,
+                     const Facing                    &facing,
+                     const Group                     &g,
+                     const unsigned int               k,
+                     const dealii::types::boundary_id first_id)
+      {
+        double       length[2] = {0, 0};
+        unsigned int count[2]  = {0, 0};
+        for (const unsigned int e : g.edges)
+          {
+            const unsigned int side = (facing.geometry[e].body == g.low ? 0 : 1);
+            length[side] += facing.geometry[e].length;
+            ++count[side];
+          }
+        const double h[2] = {length[0] / count[0], length[1] / count[1]};
+        // the coarser side is the master; the lower body on a tie
+        const unsigned int master = (h[1] > h[0] * (1 + 1e-9)) ? 1 : 0;
+        Interface          itf;
+        itf.master_body    = (master == 0 ? g.low : g.high);
+        itf.slave_body     = (master == 0 ? g.high : g.low);
+        itf.master_id      = first_id + 2 * k;
+        itf.slave_id       = first_id + 2 * k + 1;
+        itf.n_master_edges = count[master];
+        itf.n_slave_edges  = count[1 - master];
+        itf.master_h       = h[master];
+        itf.slave_h        = h[1 - master];
+        itf.length         = std::min(length[0], length[1]);
+        for (const unsigned int e : g.edges)
+          mesh.set_edge_boundary_id(e, facing.geometry[e].body == itf.master_body ? itf.master_id : itf.slave_id);
+        return itf;
+      }
     } // namespace
 
 
@@ -225,146 +406,23 @@ namespace dealvem
 
       // rule 2: an edge facing several bodies is split where their ranges meet
       if (settings.split_edges)
-      {
-        const Facing facing = find_facing(mesh, excluded_ids, settings);
-        for (const unsigned int e : facing.candidates)
-          {
-            if (facing.ranges[e].size() < 2)
-              continue;
-            std::vector<std::pair<double, double>> ranges;
-            for (const auto &r : facing.ranges[e])
-              ranges.push_back(r.second);
-            std::sort(ranges.begin(), ranges.end(), [](const auto &x, const auto &y) {
-              return x.first + x.second < y.first + y.second;
-            });
-            const EdgeGeometry &g = facing.geometry[e];
-            std::vector<double> cuts;
-            for (unsigned int i = 1; i < ranges.size(); ++i)
-              {
-                const double s = 0.5 * (ranges[i - 1].second + ranges[i].first);
-                if (s > settings.merge_fraction * g.length && s < (1 - settings.merge_fraction) * g.length &&
-                    (cuts.empty() || s > cuts.back() + settings.merge_fraction * g.length))
-                  cuts.push_back(s);
-              }
-            // split_edge() keeps the first piece under the index of the
-            // edge and appends the second: cut the last piece each time
-            unsigned int piece = e;
-            for (const double s : cuts)
-              {
-                const auto &edge = mesh.edge(piece);
-                // the piece runs along g in the direction of the loop, or
-                // against it; split_edge() takes the point either way
-                (void)edge;
-                mesh.split_edge(piece, g.a + s * g.t);
-                ++result.n_split_edges;
-                // the piece beyond the cut (towards g.b) is the one to cut next
-                const unsigned int appended = mesh.n_edges() - 1;
-                const auto        &ev       = mesh.edge(appended).vertices;
-                const bool appended_is_beyond = (mesh.vertex(ev[0]).distance(g.b) < 1e-12 * g.length ||
-                                                 mesh.vertex(ev[1]).distance(g.b) < 1e-12 * g.length);
-                piece = appended_is_beyond ? appended : piece;
-              }
-          }
-      }
+        split_facing_edges(mesh, excluded_ids, settings, result);
 
       // rule 1 again on the split mesh: each edge faces the body it
       // overlaps most
-      const Facing facing = find_facing(mesh, excluded_ids, settings);
+      const Facing facing      = find_facing(mesh, excluded_ids, settings);
       result.n_candidate_edges = facing.candidates.size();
-      const unsigned int  none = dealii::numbers::invalid_unsigned_int;
-      std::vector<unsigned int> facing_body(mesh.n_edges(), none);
-      for (const unsigned int e : facing.candidates)
-        {
-          double best = 0;
-          for (const auto &o : facing.overlap[e])
-            if (o.second > best)
-              {
-                best           = o.second;
-                facing_body[e] = o.first;
-              }
-        }
+      const auto facing_body   = facing_bodies(mesh, facing);
 
       // rule 3: chains of one body facing another, joined across the
       // interface
-      UnionFind                                       groups(mesh.n_edges());
-      std::map<unsigned int, std::vector<unsigned int>> at_vertex;
-      for (const unsigned int e : facing.candidates)
-        if (facing_body[e] != none)
-          for (const unsigned int v : mesh.edge(e).vertices)
-            at_vertex[v].push_back(e);
-      const double cos_corner = std::cos(settings.corner_angle * M_PI / 180.);
-      for (const auto &v : at_vertex)
-        for (unsigned int i = 0; i < v.second.size(); ++i)
-          for (unsigned int j = i + 1; j < v.second.size(); ++j)
-            {
-              const unsigned int e = v.second[i], f = v.second[j];
-              if (facing.geometry[e].body == facing.geometry[f].body && facing_body[e] == facing_body[f] &&
-                  facing.geometry[e].n * facing.geometry[f].n >= cos_corner)
-                groups.join(e, f);
-            }
-      for (const unsigned int e : facing.candidates)
-        for (const unsigned int f : facing.partners[e])
-          if (facing_body[e] == facing.geometry[f].body && facing_body[f] == facing.geometry[e].body)
-            groups.join(e, f);
+      UnionFind groups(mesh.n_edges());
+      join_chains(mesh, facing, facing_body, settings, groups);
 
       // rules 4 and 5: master, order, ids
-      std::map<unsigned int, std::vector<unsigned int>> members;
-      for (const unsigned int e : facing.candidates)
-        if (facing_body[e] != none)
-          members[groups.find(e)].push_back(e);
-      struct Group
-      {
-        unsigned int              low, high, first;
-        std::vector<unsigned int> edges;
-      };
-      std::vector<Group> list;
-      for (auto &m : members)
-        {
-          Group g;
-          g.low   = std::min(facing.geometry[m.second[0]].body, facing_body[m.second[0]]);
-          g.high  = std::max(facing.geometry[m.second[0]].body, facing_body[m.second[0]]);
-          g.first = *std::min_element(m.second.begin(), m.second.end());
-          g.edges = std::move(m.second);
-          // a chain whose partner chain is missing (every facing partner
-          // assigned elsewhere) is no interface
-          bool both = false;
-          for (const unsigned int e : g.edges)
-            both = both || facing.geometry[e].body != facing.geometry[g.edges[0]].body;
-          if (both)
-            list.push_back(std::move(g));
-        }
-      std::sort(list.begin(), list.end(), [](const Group &x, const Group &y) {
-        return std::tie(x.low, x.high, x.first) < std::tie(y.low, y.high, y.first);
-      });
+      const std::vector<Group> list = sorted_groups(facing, facing_body, groups);
       for (unsigned int k = 0; k < list.size(); ++k)
-        {
-          const Group &g = list[k];
-          double       length[2] = {0, 0};
-          unsigned int count[2]  = {0, 0};
-          for (const unsigned int e : g.edges)
-            {
-              const unsigned int side = (facing.geometry[e].body == g.low ? 0 : 1);
-              length[side] += facing.geometry[e].length;
-              ++count[side];
-            }
-          const double h[2] = {length[0] / count[0], length[1] / count[1]};
-          // the coarser side is the master; the lower body on a tie
-          const unsigned int master = (h[1] > h[0] * (1 + 1e-9)) ? 1 : 0;
-          Interface          itf;
-          itf.master_body    = (master == 0 ? g.low : g.high);
-          itf.slave_body     = (master == 0 ? g.high : g.low);
-          itf.master_id      = first_id + 2 * k;
-          itf.slave_id       = first_id + 2 * k + 1;
-          itf.n_master_edges = count[master];
-          itf.n_slave_edges  = count[1 - master];
-          itf.master_h       = h[master];
-          itf.slave_h        = h[1 - master];
-          itf.length         = std::min(length[0], length[1]);
-          for (const unsigned int e : g.edges)
-            mesh.set_edge_boundary_id(e, facing.geometry[e].body == itf.master_body ? itf.master_id :
-                                                                                      itf.slave_id);
-          result.interfaces.push_back(itf);
-        }
+        result.interfaces.push_back(make_interface(mesh, facing, list[k], k, first_id));
       return result;
     }
 

@@ -196,6 +196,408 @@ namespace dealvem
       dealii::TrilinosWrappers::PreconditionAMG                                      amg;
       mutable dealii::TrilinosWrappers::MPI::Vector                                  w, v;
     };
+
+
+
+    using DoFMap = std::map<dealii::types::global_dof_index, std::map<dealii::types::global_dof_index, double>>;
+    using LineDifferences = std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>;
+
+    // Step 1: the displacement constraints and the contact's slave lines in
+    // one closed set of constraints.
+    void
+    merge_constraints(const dealii::AffineConstraints<double> &first,
+                      const dealii::AffineConstraints<double> &second,
+                      dealii::AffineConstraints<double>       &all)
+    {
+      for (const auto *c : {&first, &second})
+        for (const auto &line : c->get_lines())
+          {
+            all.add_line(line.index);
+            all.add_entries(line.index, line.entries);
+            all.set_inhomogeneity(line.index, line.inhomogeneity);
+          }
+      all.close();
+    }
+
+
+
+    // The multiplier rows of A (rows n to n + m) whose displacement entries
+    // belong to nodes of more than one process.
+    unsigned int
+    count_rows_across(const dealii::SparseMatrix<double> &A,
+                      const unsigned int                  n,
+                      const unsigned int                  m,
+                      const VEMPartition<2>              &partition)
+    {
+      unsigned int n_across = 0;
+      for (unsigned int r = 0; r < m; ++r)
+        {
+          unsigned int owner = dealii::numbers::invalid_unsigned_int;
+          bool         cut   = false;
+          for (auto it = A.begin(n + r); it != A.end(n + r); ++it)
+            if (it->column() < n && it->value() != 0.)
+              {
+                const unsigned int o = partition.node_owner(it->column() / 2);
+                cut                  = cut || (owner != dealii::numbers::invalid_unsigned_int && o != owner);
+                owner                = o;
+              }
+          n_across += cut;
+        }
+      return n_across;
+    }
+
+
+
+    // Step 2, the spring rows: the rows of the contact blocks' displacement
+    // part (springs, right-hand side with the forces of the known
+    // multipliers) that this process adds, those of its owned DoFs that the
+    // displacement constraints leave free; their DoFs (through the merged
+    // constraints) join @p relevant.
+    struct SpringRows
+    {
+      std::vector<std::vector<dealii::types::global_dof_index>> dofs;
+      std::vector<std::vector<double>>                          values;
+      std::vector<double>                                       rhs;
+    };
+
+    void
+    collect_spring_rows(const dealii::SparseMatrix<double>      &A,
+                        const dealii::Vector<double>            &b,
+                        const unsigned int                       n,
+                        const std::vector<double>               &known,
+                        const dealii::IndexSet                  &owned,
+                        const dealii::AffineConstraints<double> &displacement_constraints,
+                        const dealii::AffineConstraints<double> &all,
+                        dealii::IndexSet                        &relevant,
+                        SpringRows                              &rows)
+    {
+      for (const auto i : owned)
+        {
+          if (displacement_constraints.is_constrained(i))
+            continue;
+          std::vector<dealii::types::global_dof_index> dofs{i};
+          std::vector<double>                          values{0.};
+          double                                       rhs = b[i];
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            {
+              const auto j = it->column();
+              if (it->value() == 0.)
+                continue;
+              if (j >= n)
+                rhs -= it->value() * known[j - n];
+              else if (j == i)
+                values[0] = it->value();
+              else
+                {
+                  dofs.push_back(j);
+                  values.push_back(it->value());
+                }
+            }
+          if (dofs.size() == 1 && values[0] == 0. && rhs == 0.)
+            continue;
+          for (const auto d : dofs)
+            {
+              relevant.add_index(d);
+              if (all.is_constrained(d))
+                for (const auto &e : *all.get_constraint_entries(d))
+                  relevant.add_index(e.first);
+            }
+          rows.dofs.push_back(std::move(dofs));
+          rows.values.push_back(std::move(values));
+          rows.rhs.push_back(rhs);
+        }
+    }
+
+
+
+    // Step 2, Petrov-Galerkin (slipping pairs): the slaves whose test line
+    // differs from the trial line, the owned cells around them, and the
+    // masters of the difference, which receive the slave's row of K C.
+    struct PetrovGalerkinCorrection
+    {
+      DoFMap                                                    slave_rows;
+      std::vector<unsigned int>                                 cells;
+      std::vector<std::vector<dealii::types::global_dof_index>> columns;
+    };
+
+    void
+    prepare_correction(const dealii::SparseMatrix<double>      &A,
+                       const unsigned int                       n,
+                       const LineDifferences                   &differences,
+                       const dealii::IndexSet                  &owned,
+                       const dealii::AffineConstraints<double> &all,
+                       const VEMPartition<2>                   &partition,
+                       const VEMDoFHandler<2>                  &dof_handler,
+                       dealii::IndexSet                        &relevant,
+                       PetrovGalerkinCorrection                &correction)
+    {
+      auto                                        &slave_rows = correction.slave_rows;
+      std::vector<dealii::types::global_dof_index> dof_indices;
+      correction.columns.resize(differences.size());
+      for (const auto &d : differences)
+        slave_rows[d.first];
+      for (const unsigned int c : partition.locally_owned_cells())
+        {
+          dof_handler.get_dof_indices(c, dof_indices);
+          for (const auto d : dof_indices)
+            if (slave_rows.count(d) > 0)
+              {
+                correction.cells.push_back(c);
+                break;
+              }
+        }
+      // the columns of the slaves' rows: the DoFs of their cells and of
+      // their spring rows, through the constraints
+      std::map<dealii::types::global_dof_index, std::set<dealii::types::global_dof_index>> columns;
+      for (const unsigned int c : correction.cells)
+        {
+          dof_handler.get_dof_indices(c, dof_indices);
+          for (const auto s : dof_indices)
+            if (slave_rows.count(s) > 0)
+              columns[s].insert(dof_indices.begin(), dof_indices.end());
+        }
+      for (unsigned int k = 0; k < differences.size(); ++k)
+        {
+          const auto s = differences[k].first;
+          if (owned.is_element(s))
+            for (auto it = A.begin(s); it != A.end(s); ++it)
+              if (it->column() < n)
+                columns[s].insert(it->column());
+          for (const auto j : columns[s])
+            if (all.is_constrained(j))
+              for (const auto &e : *all.get_constraint_entries(j))
+                correction.columns[k].push_back(e.first);
+            else
+              correction.columns[k].push_back(j);
+          for (const auto &e : differences[k].second)
+            relevant.add_index(e.first);
+          for (const auto j : correction.columns[k])
+            relevant.add_index(j);
+        }
+    }
+
+
+
+    // Step 2: the condensed stiffness and load of the owned cells, plus the
+    // spring rows, in a matrix with the sparsity of both and of the
+    // Petrov-Galerkin correction (not compressed).
+    void
+    assemble_condensed(const SpringRows                         &rows,
+                       const LineDifferences                    &differences,
+                       const PetrovGalerkinCorrection           &correction,
+                       const dealii::IndexSet                   &owned,
+                       const dealii::IndexSet                   &relevant,
+                       const dealii::AffineConstraints<double>  &all,
+                       const VEMPartition<2>                    &partition,
+                       const ElasticityAssembler<2>             &assembler,
+                       const MPI_Comm                            comm,
+                       dealii::TrilinosWrappers::SparseMatrix   &K,
+                       dealii::TrilinosWrappers::MPI::Vector    &f)
+    {
+      dealii::DynamicSparsityPattern dsp(relevant);
+      partition.make_sparsity_pattern(dsp, all);
+      for (const auto &dofs : rows.dofs)
+        all.add_entries_local_to_global(dofs, dsp, false);
+      for (unsigned int k = 0; k < differences.size(); ++k)
+        for (const auto &e : differences[k].second)
+          dsp.add_entries(e.first, correction.columns[k].begin(), correction.columns[k].end());
+      dealii::SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+      K.reinit(owned, owned, dsp, comm);
+      assembler.assemble(all, partition.locally_owned_cells(), K, f);
+      for (unsigned int k = 0; k < rows.dofs.size(); ++k)
+        {
+          // one row of a "cell" whose other rows are zero: condensation is
+          // linear in the local matrix, so row by row adds up to the whole
+          const unsigned int         s = rows.dofs[k].size();
+          dealii::FullMatrix<double> local(s, s);
+          dealii::Vector<double>     local_rhs(s);
+          for (unsigned int j = 0; j < s; ++j)
+            local(0, j) = rows.values[k][j];
+          local_rhs[0] = rows.rhs[k];
+          all.distribute_local_to_global(local, local_rhs, rows.dofs[k], K, f);
+        }
+    }
+
+
+
+    // Step 2: Z^T K C = C^T K C + (Z - C)^T K C: this process's part of each
+    // slave's row of K C (its owned cells; the spring row on the owner) and
+    // of f - K c, times the difference of the lines.
+    void
+    add_correction(const dealii::SparseMatrix<double>      &A,
+                   const dealii::Vector<double>            &b,
+                   const unsigned int                       n,
+                   const std::vector<double>               &known,
+                   const LineDifferences                   &differences,
+                   PetrovGalerkinCorrection                &correction,
+                   const dealii::IndexSet                  &owned,
+                   const dealii::AffineConstraints<double> &all,
+                   const ElasticityAssembler<2>            &assembler,
+                   const MPI_Comm                           comm,
+                   dealii::TrilinosWrappers::SparseMatrix  &K,
+                   dealii::TrilinosWrappers::MPI::Vector   &f)
+    {
+      auto &slave_rows = correction.slave_rows;
+      assembler.add_matrix_rows(correction.cells, slave_rows);
+      dealii::Vector<double> c(n), r(n);
+      all.distribute(c); // the inhomogeneities
+      assembler.add_residual(correction.cells, c, dealii::Utilities::MPI::this_mpi_process(comm) == 0, r);
+      for (const auto &d : differences)
+        {
+          const auto s   = d.first;
+          auto      &row = slave_rows[s];
+          double     rs  = r[s];
+          if (owned.is_element(s))
+            {
+              rs += b[s];
+              for (auto it = A.begin(s); it != A.end(s); ++it)
+                {
+                  const auto j = it->column();
+                  if (j >= n)
+                    rs -= it->value() * known[j - n];
+                  else
+                    {
+                      row[j] += it->value();
+                      rs -= it->value() * c[j];
+                    }
+                }
+            }
+          std::map<dealii::types::global_dof_index, double> condensed;
+          for (const auto &e : row)
+            if (all.is_constrained(e.first))
+              {
+                for (const auto &l : *all.get_constraint_entries(e.first))
+                  condensed[l.first] += e.second * l.second;
+              }
+            else
+              condensed[e.first] += e.second;
+          std::vector<dealii::types::global_dof_index> cols;
+          std::vector<double>                          values;
+          for (const auto &e : condensed)
+            if (e.second != 0.)
+              {
+                cols.push_back(e.first);
+                values.push_back(e.second);
+              }
+          for (const auto &e : d.second)
+            {
+              std::vector<double> v(values);
+              for (auto &x : v)
+                x *= e.second;
+              K.add(e.first, cols.size(), cols.data(), v.data());
+              f.add(std::vector<dealii::types::global_dof_index>{e.first}, std::vector<double>{e.second * rs});
+            }
+        }
+    }
+
+
+
+    // Step 3 with stick by penalty: CG (GMRES when not symmetric) with the
+    // two-subspace preconditioner; returns the iterations.
+    unsigned int
+    solve_with_stick_preconditioner(const dealii::TrilinosWrappers::SparseMatrix &K,
+                                    const DistributedStickPreconditioner         &preconditioner,
+                                    const unsigned int                            max_iterations,
+                                    const double                                  relative_tolerance,
+                                    const bool                                    gmres_solve,
+                                    dealii::TrilinosWrappers::MPI::Vector        &u,
+                                    const dealii::TrilinosWrappers::MPI::Vector  &f)
+    {
+      dealii::SolverControl control(max_iterations, relative_tolerance * f.l2_norm());
+      using Vector = dealii::TrilinosWrappers::MPI::Vector;
+      dealii::SolverCG<Vector>    cg(control);
+      dealii::SolverGMRES<Vector> gmres(control, dealii::SolverGMRES<Vector>::AdditionalData(200, true));
+      try
+        {
+          if (gmres_solve)
+            gmres.solve(K, u, f, preconditioner);
+          else
+            cg.solve(K, u, f, preconditioner);
+        }
+      catch (const dealii::SolverControl::NoConvergence &e)
+        {
+          AssertThrow(false, dealii::ExcMessage("CG-AMG constraints (stick penalty) did not converge: residual " +
+                                                std::to_string(e.last_residual) + " after " +
+                                                std::to_string(e.last_step) + " iterations (target " +
+                                                std::to_string(control.tolerance()) + ")."));
+        }
+      return control.last_step();
+    }
+
+
+
+    // Step 4: the elastic forces on the slave DoFs, added to @p b. The
+    // residual rows the multipliers need are the slaves and the DoFs whose
+    // displacement constraint refers to a slave (their rows are condensed
+    // into the slave's); only the owned cells around them contribute, summed
+    // over the processes in rank order.
+    void
+    add_slave_residuals(const ContactConstraints                &contact,
+                        const dealii::AffineConstraints<double> &displacement_constraints,
+                        const unsigned int                       n,
+                        const VEMPartition<2>                   &partition,
+                        const ElasticityAssembler<2>            &assembler,
+                        const MPI_Comm                           comm,
+                        const dealii::Vector<double>            &full,
+                        dealii::Vector<double>                  &b)
+    {
+      const auto       &dof_handler = assembler.get_dof_handler();
+      std::vector<bool> is_slave(n, false);
+      for (const auto &sl : contact.get_slaves())
+        is_slave[sl.second] = true;
+      std::vector<unsigned int>                                            targets;
+      std::vector<int>                                                     target_of(n, -1);
+      std::map<unsigned int, std::vector<std::pair<unsigned int, double>>> folded;
+      for (const auto &sl : contact.get_slaves())
+        {
+          target_of[sl.second] = targets.size();
+          targets.push_back(sl.second);
+        }
+      for (const auto &line : displacement_constraints.get_lines())
+        for (const auto &e : line.entries)
+          if (e.first < n && is_slave[e.first])
+            {
+              if (target_of[line.index] < 0)
+                {
+                  target_of[line.index] = targets.size();
+                  targets.push_back(line.index);
+                }
+              folded[e.first].emplace_back(line.index, e.second);
+            }
+      std::vector<unsigned int>                    cells;
+      std::vector<dealii::types::global_dof_index> dof_indices;
+      for (const unsigned int c : partition.locally_owned_cells())
+        {
+          dof_handler.get_dof_indices(c, dof_indices);
+          for (const auto d : dof_indices)
+            if (target_of[d] >= 0)
+              {
+                cells.push_back(c);
+                break;
+              }
+        }
+      dealii::Vector<double> r(n);
+      assembler.add_residual(cells, full, dealii::Utilities::MPI::this_mpi_process(comm) == 0, r);
+      std::vector<double> local_r(targets.size());
+      for (unsigned int k = 0; k < targets.size(); ++k)
+        local_r[k] = r[targets[k]];
+      const auto          parts = dealii::Utilities::MPI::all_gather(comm, local_r);
+      std::vector<double> target_r(targets.size(), 0.);
+      for (const auto &p : parts) // in rank order on every process: the same bits
+        for (unsigned int k = 0; k < targets.size(); ++k)
+          target_r[k] += p[k];
+
+      for (const auto &sl : contact.get_slaves())
+        {
+          const unsigned int s  = sl.second;
+          double             v  = target_r[target_of[s]];
+          const auto         fo = folded.find(s);
+          if (fo != folded.end())
+            for (const auto &e : fo->second)
+              v += e.second * target_r[target_of[e.first]];
+          b[s] += v;
+        }
+    }
   } // namespace
 
 
@@ -222,212 +624,30 @@ namespace dealvem
     contact.reinit(A, n, b, length, 1e-10, &displacement_constraints);
     n_dropped = contact.get_dependent_rows().size();
     dealii::AffineConstraints<double> all;
-    for (const auto *c : {&displacement_constraints, &contact.get_constraints()})
-      for (const auto &line : c->get_lines())
-        {
-          all.add_line(line.index);
-          all.add_entries(line.index, line.entries);
-          all.set_inhomogeneity(line.index, line.inhomogeneity);
-        }
-    all.close();
-
-    // the multiplier rows cut by the partition
-    n_rows_across = 0;
-    for (unsigned int r = 0; r < m; ++r)
-      {
-        unsigned int owner = dealii::numbers::invalid_unsigned_int;
-        bool         cut   = false;
-        for (auto it = A.begin(n + r); it != A.end(n + r); ++it)
-          if (it->column() < n && it->value() != 0.)
-            {
-              const unsigned int o = partition.node_owner(it->column() / 2);
-              cut                  = cut || (owner != dealii::numbers::invalid_unsigned_int && o != owner);
-              owner                = o;
-            }
-        n_rows_across += cut;
-      }
+    merge_constraints(displacement_constraints, contact.get_constraints(), all);
+    n_rows_across = count_rows_across(A, n, m, partition);
 
     // known multipliers (inactive, and the constant parts of tied ones):
     // their forces go to the right-hand side
     const std::vector<double> known = contact.known_multipliers();
 
-    // 2. the rows of the contact blocks' displacement part (springs,
-    //    right-hand side) that this process adds: those of its owned DoFs
-    //    that the displacement constraints leave free
-    const dealii::IndexSet                                    &owned = partition.locally_owned_dofs();
-    std::vector<std::vector<dealii::types::global_dof_index>> row_dofs;
-    std::vector<std::vector<double>>                          row_values;
-    std::vector<double>                                       row_rhs;
-    dealii::IndexSet                                          relevant = partition.locally_relevant_dofs(all);
-    for (const auto i : owned)
-      {
-        if (displacement_constraints.is_constrained(i))
-          continue;
-        std::vector<dealii::types::global_dof_index> dofs{i};
-        std::vector<double>                          values{0.};
-        double                                       rhs = b[i];
-        for (auto it = A.begin(i); it != A.end(i); ++it)
-          {
-            const auto j = it->column();
-            if (it->value() == 0.)
-              continue;
-            if (j >= n)
-              rhs -= it->value() * known[j - n];
-            else if (j == i)
-              values[0] = it->value();
-            else
-              {
-                dofs.push_back(j);
-                values.push_back(it->value());
-              }
-          }
-        if (dofs.size() == 1 && values[0] == 0. && rhs == 0.)
-          continue;
-        for (const auto d : dofs)
-          {
-            relevant.add_index(d);
-            if (all.is_constrained(d))
-              for (const auto &e : *all.get_constraint_entries(d))
-                relevant.add_index(e.first);
-          }
-        row_dofs.push_back(std::move(dofs));
-        row_values.push_back(std::move(values));
-        row_rhs.push_back(rhs);
-      }
-    // Petrov-Galerkin (slipping pairs): the slaves whose test line differs
-    // from the trial line, the owned cells around them, and the masters of
-    // the difference, which receive the slave's row of K C
-    const auto &differences = contact.get_line_differences();
-    std::map<dealii::types::global_dof_index, std::map<dealii::types::global_dof_index, double>> slave_rows;
-    std::vector<unsigned int>                    correction_cells;
-    std::vector<dealii::types::global_dof_index> dof_indices;
-    const auto                                  &dof_handler = assembler->get_dof_handler();
-    std::vector<std::vector<dealii::types::global_dof_index>> correction_columns(differences.size());
+    // 2. the condensed stiffness: the owned cells, the spring rows of the
+    //    owned DoFs and (slipping pairs) the Petrov-Galerkin correction
+    const dealii::IndexSet &owned    = partition.locally_owned_dofs();
+    dealii::IndexSet        relevant = partition.locally_relevant_dofs(all);
+    SpringRows              rows;
+    collect_spring_rows(A, b, n, known, owned, displacement_constraints, all, relevant, rows);
+    const auto              &differences = contact.get_line_differences();
+    PetrovGalerkinCorrection correction;
     if (!differences.empty())
-      {
-        for (const auto &d : differences)
-          slave_rows[d.first];
-        for (const unsigned int c : partition.locally_owned_cells())
-          {
-            dof_handler.get_dof_indices(c, dof_indices);
-            for (const auto d : dof_indices)
-              if (slave_rows.count(d) > 0)
-                {
-                  correction_cells.push_back(c);
-                  break;
-                }
-          }
-        // the columns of the slaves' rows: the DoFs of their cells and of
-        // their spring rows, through the constraints
-        std::map<dealii::types::global_dof_index, std::set<dealii::types::global_dof_index>> columns;
-        for (const unsigned int c : correction_cells)
-          {
-            dof_handler.get_dof_indices(c, dof_indices);
-            for (const auto s : dof_indices)
-              if (slave_rows.count(s) > 0)
-                columns[s].insert(dof_indices.begin(), dof_indices.end());
-          }
-        for (unsigned int k = 0; k < differences.size(); ++k)
-          {
-            const auto s = differences[k].first;
-            if (owned.is_element(s))
-              for (auto it = A.begin(s); it != A.end(s); ++it)
-                if (it->column() < n)
-                  columns[s].insert(it->column());
-            for (const auto j : columns[s])
-              if (all.is_constrained(j))
-                for (const auto &e : *all.get_constraint_entries(j))
-                  correction_columns[k].push_back(e.first);
-              else
-                correction_columns[k].push_back(j);
-            for (const auto &e : differences[k].second)
-              relevant.add_index(e.first);
-            for (const auto j : correction_columns[k])
-              relevant.add_index(j);
-          }
-      }
+      prepare_correction(
+        A, n, differences, owned, all, partition, assembler->get_dof_handler(), relevant, correction);
     relevant.compress();
-
-    dealii::DynamicSparsityPattern dsp(relevant);
-    partition.make_sparsity_pattern(dsp, all);
-    for (const auto &dofs : row_dofs)
-      all.add_entries_local_to_global(dofs, dsp, false);
-    for (unsigned int k = 0; k < differences.size(); ++k)
-      for (const auto &e : differences[k].second)
-        dsp.add_entries(e.first, correction_columns[k].begin(), correction_columns[k].end());
-    dealii::SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
     dealii::TrilinosWrappers::SparseMatrix K;
-    K.reinit(owned, owned, dsp, comm);
-    dealii::TrilinosWrappers::MPI::Vector f(owned, comm), u(owned, comm);
-    assembler->assemble(all, partition.locally_owned_cells(), K, f);
-    for (unsigned int k = 0; k < row_dofs.size(); ++k)
-      {
-        // one row of a "cell" whose other rows are zero: condensation is
-        // linear in the local matrix, so row by row adds up to the whole
-        const unsigned int         s = row_dofs[k].size();
-        dealii::FullMatrix<double> local(s, s);
-        dealii::Vector<double>     local_rhs(s);
-        for (unsigned int j = 0; j < s; ++j)
-          local(0, j) = row_values[k][j];
-        local_rhs[0] = row_rhs[k];
-        all.distribute_local_to_global(local, local_rhs, row_dofs[k], K, f);
-      }
+    dealii::TrilinosWrappers::MPI::Vector  f(owned, comm), u(owned, comm);
+    assemble_condensed(rows, differences, correction, owned, relevant, all, partition, *assembler, comm, K, f);
     if (!differences.empty())
-      {
-        // Z^T K C = C^T K C + (Z - C)^T K C: this process's part of each
-        // slave's row of K C (its owned cells; the spring row on the owner)
-        // and of f - K c, times the difference of the lines
-        assembler->add_matrix_rows(correction_cells, slave_rows);
-        dealii::Vector<double> c(n), r(n);
-        all.distribute(c); // the inhomogeneities
-        assembler->add_residual(correction_cells, c, dealii::Utilities::MPI::this_mpi_process(comm) == 0, r);
-        for (const auto &d : differences)
-          {
-            const auto s   = d.first;
-            auto      &row = slave_rows[s];
-            double     rs  = r[s];
-            if (owned.is_element(s))
-              {
-                rs += b[s];
-                for (auto it = A.begin(s); it != A.end(s); ++it)
-                  {
-                    const auto j = it->column();
-                    if (j >= n)
-                      rs -= it->value() * known[j - n];
-                    else
-                      {
-                        row[j] += it->value();
-                        rs -= it->value() * c[j];
-                      }
-                  }
-              }
-            std::map<dealii::types::global_dof_index, double> condensed;
-            for (const auto &e : row)
-              if (all.is_constrained(e.first))
-                {
-                  for (const auto &l : *all.get_constraint_entries(e.first))
-                    condensed[l.first] += e.second * l.second;
-                }
-              else
-                condensed[e.first] += e.second;
-            std::vector<dealii::types::global_dof_index> cols;
-            std::vector<double>                          values;
-            for (const auto &e : condensed)
-              if (e.second != 0.)
-                {
-                  cols.push_back(e.first);
-                  values.push_back(e.second);
-                }
-            for (const auto &e : d.second)
-              {
-                std::vector<double> v(values);
-                for (auto &x : v)
-                  x *= e.second;
-                K.add(e.first, cols.size(), cols.data(), v.data());
-                f.add(std::vector<dealii::types::global_dof_index>{e.first}, std::vector<double>{e.second * rs});
-              }
-          }
-      }
+      add_correction(A, b, n, known, differences, correction, owned, all, *assembler, comm, K, f);
     K.compress(dealii::VectorOperation::add);
     f.compress(dealii::VectorOperation::add);
 
@@ -451,25 +671,8 @@ namespace dealvem
         // stick by penalty: CG with the two-subspace preconditioner
         const DistributedStickPreconditioner preconditioner(K, all, contact.get_constraints(), stick_rows, modes,
                                                             length, partition, *assembler, comm);
-        dealii::SolverControl control(settings.max_iterations, settings.relative_tolerance * f.l2_norm());
-        using Vector = dealii::TrilinosWrappers::MPI::Vector;
-        dealii::SolverCG<Vector>    cg(control);
-        dealii::SolverGMRES<Vector> gmres(control, dealii::SolverGMRES<Vector>::AdditionalData(200, true));
-        try
-          {
-            if (used_gmres)
-              gmres.solve(K, u, f, preconditioner);
-            else
-              cg.solve(K, u, f, preconditioner);
-          }
-        catch (const dealii::SolverControl::NoConvergence &e)
-          {
-            AssertThrow(false, dealii::ExcMessage("CG-AMG constraints (stick penalty) did not converge: residual " +
-                                                  std::to_string(e.last_residual) + " after " +
-                                                  std::to_string(e.last_step) + " iterations (target " +
-                                                  std::to_string(control.tolerance()) + ")."));
-          }
-        iterations                = control.last_step();
+        iterations                = solve_with_stick_preconditioner(
+          K, preconditioner, settings.max_iterations, settings.relative_tolerance, used_gmres, u, f);
         used_stick_preconditioner = true;
       }
     else
@@ -492,65 +695,8 @@ namespace dealvem
     all.distribute(full);
     if (linear.type == LinearSolver::Type::cg_amg)
       previous = full;
-
-    // the residual rows the multipliers need: the slaves, and the DoFs
-    // whose displacement constraint refers to a slave (their rows are
-    // condensed into the slave's)
-    std::vector<bool> is_slave(n, false);
-    for (const auto &sl : contact.get_slaves())
-      is_slave[sl.second] = true;
-    std::vector<unsigned int>                                                targets;
-    std::vector<int>                                                         target_of(n, -1);
-    std::map<unsigned int, std::vector<std::pair<unsigned int, double>>>     folded;
-    for (const auto &sl : contact.get_slaves())
-      {
-        target_of[sl.second] = targets.size();
-        targets.push_back(sl.second);
-      }
-    for (const auto &line : displacement_constraints.get_lines())
-      for (const auto &e : line.entries)
-        if (e.first < n && is_slave[e.first])
-          {
-            if (target_of[line.index] < 0)
-              {
-                target_of[line.index] = targets.size();
-                targets.push_back(line.index);
-              }
-            folded[e.first].emplace_back(line.index, e.second);
-          }
-    std::vector<unsigned int> cells;
-    for (const unsigned int c : partition.locally_owned_cells())
-      {
-        dof_handler.get_dof_indices(c, dof_indices);
-        for (const auto d : dof_indices)
-          if (target_of[d] >= 0)
-            {
-              cells.push_back(c);
-              break;
-            }
-      }
-    dealii::Vector<double> r(n);
-    assembler->add_residual(cells, full, dealii::Utilities::MPI::this_mpi_process(comm) == 0, r);
-    std::vector<double> local_r(targets.size());
-    for (unsigned int k = 0; k < targets.size(); ++k)
-      local_r[k] = r[targets[k]];
-    const auto          parts = dealii::Utilities::MPI::all_gather(comm, local_r);
-    std::vector<double> target_r(targets.size(), 0.);
-    for (const auto &p : parts) // in rank order on every process: the same bits
-      for (unsigned int k = 0; k < targets.size(); ++k)
-        target_r[k] += p[k];
-
     dealii::Vector<double> b_with_elasticity(b);
-    for (const auto &sl : contact.get_slaves())
-      {
-        const unsigned int s = sl.second;
-        double             v = target_r[target_of[s]];
-        const auto fo = folded.find(s);
-        if (fo != folded.end())
-          for (const auto &e : fo->second)
-            v += e.second * target_r[target_of[e.first]];
-        b_with_elasticity[s] += v;
-      }
+    add_slave_residuals(contact, displacement_constraints, n, partition, *assembler, comm, full, b_with_elasticity);
     for (unsigned int i = 0; i < n; ++i)
       x[i] = full[i];
     contact.distribute_and_recover_multipliers(A, b_with_elasticity, x);

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <set>
@@ -153,6 +154,305 @@ namespace dealvem
       s << std::setprecision(6) << f;
       return s.str();
     }
+
+
+
+    // The refusal with the mechanism of the last Tresca problem.
+    std::string
+    friction_collapse(const CollapseMechanism            &mechanism,
+                      const std::vector<ContactNodePair> &pairs,
+                      const std::string                  &reason,
+                      const bool                          continued)
+    {
+      return "No static equilibrium: the friction cannot hold the bodies. With the friction bounds mu |N| of "
+             "the normal forces N of the last iterate of the Tresca fixed point, " +
+             mechanism.describe(pairs) + "\n  (the semismooth Newton iteration had failed: " + headline(reason) +
+             (continued ? "; the continuation in the friction coefficient found no equilibrium either)" : ")");
+    }
+
+
+
+    // What the fallbacks of FrictionSolver::solve() share: the step's
+    // system, its solution and result, the last converged state, the
+    // evidence of a collapse, and the semismooth Newton iteration of the
+    // solver from a given state (with the factor set in `update`).
+    template <int dim>
+    struct FrictionStep
+    {
+      using State = typename FrictionStateUpdate<dim>::State;
+
+      const ContactAssembler<dim>                                &contact;
+      const dealii::AffineConstraints<double>                    &constraints;
+      SaddlePointSolver                                          &solver;
+      const ContactSettings                                      &settings;
+      const dealii::SparseMatrix<double>                         &system_matrix;
+      const dealii::Vector<double>                               &system_rhs;
+      dealii::SparseMatrix<double>                               &matrix;
+      dealii::Vector<double>                                     &x;
+      const std::vector<double>                                  &reference;
+      FrictionStateUpdate<dim>                                   &update;
+      typename FrictionSolver<dim>::Result                       &result;
+      State                                                      &state;
+      std::shared_ptr<CollapseMechanism>                         &mechanism;
+      std::function<State(const std::vector<PairState> &start)> newton;
+    };
+
+
+
+    // Coulomb as a fixed point of Tresca problems: the friction bounds
+    // b_i = mu_i |lambda_n,i| of the last solution, each Tresca problem
+    // solved by the globally convergent iteration from the last one's
+    // solution and states, starting from the stick solution with the closed
+    // pairs `closed`. Sets result.globalized_start when it found a solution
+    // (a fixed point, or Newton from settled states); keeps the mechanism
+    // when a Tresca problem has no equilibrium.
+    template <int dim>
+    void
+    tresca_fixed_point(FrictionStep<dim>          &step,
+                       PrimalActiveSetSolver<dim> &primal,
+                       std::vector<bool>           closed,
+                       const unsigned int          max_iterations)
+    {
+      const auto        &contact = step.contact;
+      auto              &result  = step.result;
+      auto              &x       = step.x;
+      const unsigned int n_pairs = contact.n_pairs();
+      const unsigned int n       = step.system_matrix.m() - contact.n_multipliers();
+      const auto         bounds_of = [&](const dealii::Vector<double> &y, const std::vector<bool> &closed_pairs) {
+        std::vector<double> b(n_pairs, 0.);
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (closed_pairs[i])
+            b[i] = contact.friction_coefficient(i) * std::max(0., -y[n + i]);
+        return b;
+      };
+      std::vector<double>    bound = bounds_of(x, closed);
+      std::vector<PairState> tstate(n_pairs, PairState::stick);
+      bool                   newton_tried = false;
+      for (unsigned int k = 0; k < max_iterations && !result.globalized_start; ++k)
+        {
+          const auto tr =
+            primal.solve_tresca(step.system_matrix, step.system_rhs, step.matrix, x, bound, closed, tstate);
+          ++result.n_fixed_point_iterations;
+          result.n_globalized_solves += tr.n_solves;
+          result.n_iterations += tr.n_solves;
+          result.linear_iterations += tr.linear_iterations;
+          if (!tr.converged)
+            {
+              // no equilibrium with these bounds: the evidence, if the
+              // continuation finds none either
+              step.mechanism = std::make_shared<CollapseMechanism>(tr.mechanism);
+              break;
+            }
+          const auto next   = bounds_of(x, tr.active);
+          double     change = 0, largest = 0;
+          for (unsigned int i = 0; i < n_pairs; ++i)
+            {
+              change  = std::max(change, std::abs(next[i] - bound[i]));
+              largest = std::max(largest, next[i]);
+            }
+          const bool same_states = (tr.active == closed && tr.state == tstate);
+          closed                 = tr.active;
+          tstate                 = tr.state;
+          if (change <= 1e-11 * largest)
+            {
+              // a fixed point: the Tresca solution with b = mu |lambda_n| is
+              // a Coulomb solution
+              auto &state                 = step.state;
+              state                       = step.update.start(tstate);
+              state.slip                  = contact.slips(x);
+              state.tangential_multiplier = tr.tangential_force;
+              state.converged             = true;
+              state.n_iterations          = tr.n_solves;
+              if (step.settings.tangential == ContactSettings::Tangential::coulomb)
+                for (unsigned int i = 0; i < n_pairs; ++i)
+                  x[n + n_pairs + i] = tr.tangential_force[i];
+              result.globalized_start = true;
+              break;
+            }
+          bound = next;
+          if (same_states && !newton_tried && change <= 1e-6 * largest)
+            {
+              // the states have settled: Newton from them solves the coupled
+              // problem at once
+              newton_tried                      = true;
+              const dealii::Vector<double> x_fp = x;
+              try
+                {
+                  step.state              = step.newton(tstate);
+                  result.globalized_start = true;
+                }
+              catch (const std::exception &)
+                {
+                  ++result.n_failed_attempts;
+                  x = x_fp;
+                }
+            }
+        }
+    }
+
+
+
+    // The globalized path after a failed semismooth Newton iteration: the
+    // sticking joints, solved by the globally convergent method (no
+    // equilibrium there is none with friction: throws with the mechanism),
+    // then the Tresca fixed point from that solution.
+    template <int dim>
+    void
+    solve_globalized(FrictionStep<dim>            &step,
+                     const dealii::Vector<double> &x_start,
+                     const std::string            &plain_reason,
+                     const unsigned int            max_fixed_point_iterations)
+    {
+      const auto     &settings       = step.settings;
+      auto           &result         = step.result;
+      ContactSettings stick_settings = settings;
+      stick_settings.tangential =
+        (settings.tangential == ContactSettings::Tangential::coulomb ? ContactSettings::Tangential::multipliers :
+                                                                       ContactSettings::Tangential::penalty);
+      const ContactAssembler<dim> stick(step.contact.get_dof_handler(), step.contact.get_pairs(), stick_settings,
+                                        step.contact.get_penalty());
+      PrimalActiveSetSolver<dim>  primal(stick, step.constraints, step.solver, stick_settings);
+      primal.set_tangential_reference(step.reference);
+      step.x                     = x_start;
+      auto pr                    = primal.solve(step.system_matrix, step.system_rhs, step.matrix, step.x);
+      result.n_globalized_solves = pr.n_solves;
+      result.n_iterations += pr.n_solves;
+      if (!pr.converged)
+        {
+          step.mechanism = std::make_shared<CollapseMechanism>(pr.mechanism);
+          AssertThrow(false,
+                      dealii::ExcMessage("No static equilibrium, even with unlimited friction (every closed pair "
+                                         "sticking): " +
+                                         pr.mechanism.describe(step.contact.get_pairs()) +
+                                         "\n  (the semismooth Newton iteration had failed: " +
+                                         headline(plain_reason) + ")"));
+        }
+      tresca_fixed_point(step, primal, pr.active, max_fixed_point_iterations);
+      if (result.globalized_start)
+        step.mechanism.reset();
+    }
+
+
+
+    // The continuation, part 1: a factor of the friction coefficients at
+    // which the iteration converges, from continuation.first_factor,
+    // doubled up to continuation.max_doublings times. Returns whether one
+    // converged (then in `factor`; step.state is its solution); counts the
+    // attempts.
+    template <int dim>
+    bool
+    find_converging_factor(FrictionStep<dim>                                 &step,
+                           const typename FrictionSolver<dim>::Continuation &continuation,
+                           const std::vector<PairState>                      &start,
+                           const dealii::Vector<double>                      &x_start,
+                           double                                            &factor,
+                           unsigned int                                      &attempts)
+    {
+      factor         = continuation.first_factor;
+      bool converged = false;
+      for (unsigned int k = 0; k <= continuation.max_doublings && !converged; ++k, factor *= 2)
+        {
+          step.update.set_friction_factor(factor);
+          step.x = x_start;
+          ++attempts;
+          try
+            {
+              step.state = step.newton(start);
+              converged  = true;
+            }
+          catch (const std::exception &)
+            {
+              ++step.result.n_failed_attempts;
+            }
+          if (converged)
+            break;
+        }
+      return converged;
+    }
+
+
+
+    // The continuation, part 2: lower the factor to 1, each attempt from
+    // the states of the last factor that converged; throws (naming the
+    // motions held only by friction) when the step falls below
+    // continuation.min_step.
+    template <int dim>
+    void
+    lower_factor_to_one(FrictionStep<dim>                                 &step,
+                        const typename FrictionSolver<dim>::Continuation &continuation,
+                        const RigidBodySupport                            *support,
+                        const std::string                                 &plain_reason,
+                        double                                             factor,
+                        unsigned int                                       attempts)
+    {
+      auto              &result  = step.result;
+      auto              &state   = step.state;
+      auto              &x       = step.x;
+      const unsigned int n_pairs = step.contact.n_pairs();
+      double             size    = factor - 1;
+      std::string        last_reason;
+      double             last_target = 1;
+      while (factor > 1)
+        {
+          const double target = std::max(1., factor - size);
+          AssertThrow(attempts < continuation.max_attempts,
+                      dealii::ExcMessage(
+                        "The friction continuation did not reach the friction coefficients as set within " +
+                        std::to_string(continuation.max_attempts) +
+                        " Newton iterations; it converged last with every coefficient multiplied by " +
+                        factor_string(factor) + ". The semismooth Newton iteration itself failed with: " +
+                        plain_reason));
+          ++attempts;
+          step.update.set_friction_factor(target);
+          const dealii::Vector<double> x_converged = x;
+          try
+            {
+              state  = step.newton(state.state);
+              factor = target;
+              size *= 2;
+              result.continuation_factors.push_back(factor);
+              continue;
+            }
+          catch (const std::exception &e)
+            {
+              ++result.n_failed_attempts;
+              last_reason = reason_of(e);
+              last_target = target;
+              x           = x_converged;
+            }
+          size = (factor - target) / 2;
+          if (size < continuation.min_step)
+            {
+              // name the rigid-body motions that the closed pairs hold only
+              // by friction
+              std::string motions;
+              if (support != nullptr)
+                {
+                  std::vector<bool> closed(n_pairs), held(n_pairs, false);
+                  for (unsigned int i = 0; i < n_pairs; ++i)
+                    closed[i] = (state.state[i] != PairState::open);
+                  motions = support->free_motions(closed, held);
+                }
+              AssertThrow(false,
+                          dealii::ExcMessage(
+                            "No static equilibrium: the loads need more friction than the contact "
+                            "interfaces can carry. The semismooth Newton iteration failed (" +
+                            headline(plain_reason) +
+                            "); continued in the friction coefficient, it converged with every coefficient "
+                            "multiplied by " +
+                            factor_string(factor) + " but not from there with any smaller factor (steps down to " +
+                            factor_string(continuation.min_step) + "; the last attempt, with the factor " +
+                            factor_string(last_target) + ", failed with: " + headline(last_reason) + ")." +
+                            (motions.empty() ? std::string() :
+                                               " Held only by friction: " + motions_and_bodies(motions) + ".") +
+                            (step.mechanism ? "\n  With the friction bounds mu |N| of the normal forces N found, " +
+                                                step.mechanism->describe(step.contact.get_pairs()) + "\n " :
+                                              std::string()) +
+                            " Raise the friction coefficient, hold the bodies by Dirichlet, roller or point "
+                            "constraints, or reduce the load."));
+            }
+        }
+    }
   } // namespace
 
 
@@ -222,8 +522,10 @@ namespace dealvem
 
 
 
-  // Solve the step; if the plain iteration fails, continue in the factor of
-  // the friction coefficients from a converging factor above 1 down to 1.
+  // Solve the step; if the plain iteration fails, solve it with every
+  // closed pair sticking and as a fixed point of Tresca problems
+  // (solve_globalized()), else continue in the factor of the friction
+  // coefficients from a converging factor above 1 down to 1.
   template <int dim>
   typename FrictionSolver<dim>::Result
   FrictionSolver<dim>::solve(const dealii::SparseMatrix<double> &system_matrix,
@@ -233,9 +535,8 @@ namespace dealvem
                              const std::vector<PairState>       &start,
                              const std::vector<double>          &reference)
   {
-    const unsigned int n_pairs = contact.n_pairs();
-    AssertDimension(start.size(), n_pairs);
-    AssertDimension(reference.size(), n_pairs);
+    AssertDimension(start.size(), contact.n_pairs());
+    AssertDimension(reference.size(), contact.n_pairs());
     FrictionStateUpdate<dim> update(contact.get_pairs(), settings, c, contact.get_penalty());
     update.set_support(support);
     Result                                   result;
@@ -243,15 +544,22 @@ namespace dealvem
     const dealii::Vector<double>             x_start = x;
     std::exception_ptr                       plain_failure_ptr;
     std::string                              plain_reason;
-    // the refusal with the mechanism of the last Tresca problem
-    const auto friction_collapse = [&](const std::string &reason) {
-      return "No static equilibrium: the friction cannot hold the bodies. With the friction bounds mu |N| of "
-             "the normal forces N of the last iterate of the Tresca fixed point, " +
-             mechanism->describe(contact.get_pairs()) +
-             "\n  (the semismooth Newton iteration had failed: " + headline(reason) +
-             (continuation.enabled ? "; the continuation in the friction coefficient found no equilibrium either)" :
-                                     ")");
-    };
+    FrictionStep<dim>                        step{contact,
+                           constraints,
+                           solver,
+                           settings,
+                           system_matrix,
+                           system_rhs,
+                           matrix,
+                           x,
+                           reference,
+                           update,
+                           result,
+                           state,
+                           mechanism,
+                           [&](const std::vector<PairState> &from) {
+                             return iterate(update, system_matrix, system_rhs, matrix, x, from, reference, result);
+                           }};
     try
       {
         state = iterate(update, system_matrix, system_rhs, matrix, x, start, reference, result);
@@ -262,226 +570,45 @@ namespace dealvem
         plain_reason      = reason_of(plain_failure);
         plain_failure_ptr = std::current_exception();
         mechanism.reset();
-        // the sticking joints, solved by the globally convergent method: no
-        // equilibrium there is none here; otherwise a start for Newton
         if (settings.globalize && settings.normal == ContactSettings::Normal::unilateral && support != nullptr &&
             system_matrix.frobenius_norm() > 0)
-          {
-            ContactSettings stick_settings = settings;
-            stick_settings.tangential =
-              (settings.tangential == ContactSettings::Tangential::coulomb ? ContactSettings::Tangential::multipliers :
-                                                                             ContactSettings::Tangential::penalty);
-            const ContactAssembler<dim> stick(contact.get_dof_handler(), contact.get_pairs(), stick_settings,
-                                              contact.get_penalty());
-            PrimalActiveSetSolver<dim> primal(stick, constraints, solver, stick_settings);
-            primal.set_tangential_reference(reference);
-            x        = x_start;
-            auto pr  = primal.solve(system_matrix, system_rhs, matrix, x);
-            result.n_globalized_solves = pr.n_solves;
-            result.n_iterations += pr.n_solves;
-            if (!pr.converged)
-              {
-                mechanism = std::make_shared<CollapseMechanism>(pr.mechanism);
-                AssertThrow(false,
-                            dealii::ExcMessage(
-                              "No static equilibrium, even with unlimited friction (every closed pair "
-                              "sticking): " + pr.mechanism.describe(contact.get_pairs()) +
-                              "\n  (the semismooth Newton iteration had failed: " + headline(plain_reason) + ")"));
-              }
-            // Coulomb as a fixed point of Tresca problems: the friction
-            // bounds b_i = mu_i |lambda_n,i| of the last solution, each
-            // Tresca problem solved by the globally convergent iteration
-            // from the last one's solution and states
-            const unsigned int n  = system_matrix.m() - contact.n_multipliers();
-            const auto         bounds_of = [&](const dealii::Vector<double> &y, const std::vector<bool> &closed) {
-              std::vector<double> b(n_pairs, 0.);
-              for (unsigned int i = 0; i < n_pairs; ++i)
-                if (closed[i])
-                  b[i] = contact.friction_coefficient(i) * std::max(0., -y[n + i]);
-              return b;
-            };
-            std::vector<bool>      closed = pr.active;
-            std::vector<double>    bound  = bounds_of(x, closed);
-            std::vector<PairState> tstate(n_pairs, PairState::stick);
-            bool                   newton_tried = false;
-            for (unsigned int k = 0; k < max_fixed_point_iterations && !result.globalized_start; ++k)
-              {
-                const auto tr = primal.solve_tresca(system_matrix, system_rhs, matrix, x, bound, closed, tstate);
-                ++result.n_fixed_point_iterations;
-                result.n_globalized_solves += tr.n_solves;
-                result.n_iterations += tr.n_solves;
-                result.linear_iterations += tr.linear_iterations;
-                if (!tr.converged)
-                  {
-                    // no equilibrium with these bounds: the evidence, if
-                    // the continuation below finds none either
-                    mechanism = std::make_shared<CollapseMechanism>(tr.mechanism);
-                    break;
-                  }
-                const auto   next   = bounds_of(x, tr.active);
-                double       change = 0, largest = 0;
-                for (unsigned int i = 0; i < n_pairs; ++i)
-                  {
-                    change  = std::max(change, std::abs(next[i] - bound[i]));
-                    largest = std::max(largest, next[i]);
-                  }
-                const bool same_states = (tr.active == closed && tr.state == tstate);
-                closed                 = tr.active;
-                tstate                 = tr.state;
-                if (change <= 1e-11 * largest)
-                  {
-                    // a fixed point: the Tresca solution with b = mu |lambda_n|
-                    // is a Coulomb solution
-                    state             = update.start(tstate);
-                    state.slip        = contact.slips(x);
-                    state.tangential_multiplier = tr.tangential_force;
-                    state.converged   = true;
-                    state.n_iterations = tr.n_solves;
-                    if (settings.tangential == ContactSettings::Tangential::coulomb)
-                      for (unsigned int i = 0; i < n_pairs; ++i)
-                        x[n + n_pairs + i] = tr.tangential_force[i];
-                    result.globalized_start = true;
-                    break;
-                  }
-                bound = next;
-                if (same_states && !newton_tried && change <= 1e-6 * largest)
-                  {
-                    // the states have settled: Newton from them solves the
-                    // coupled problem at once
-                    newton_tried                     = true;
-                    const dealii::Vector<double> x_fp = x;
-                    try
-                      {
-                        state = iterate(update, system_matrix, system_rhs, matrix, x, tstate, reference, result);
-                        result.globalized_start = true;
-                      }
-                    catch (const std::exception &)
-                      {
-                        ++result.n_failed_attempts;
-                        x = x_fp;
-                      }
-                  }
-              }
-            if (result.globalized_start)
-              mechanism.reset();
-          }
+          solve_globalized(step, x_start, plain_reason, max_fixed_point_iterations);
         if (!result.globalized_start && !continuation.enabled)
           {
             if (mechanism)
-              AssertThrow(false, dealii::ExcMessage(friction_collapse(plain_reason)));
+              AssertThrow(false,
+                          dealii::ExcMessage(
+                            friction_collapse(*mechanism, contact.get_pairs(), plain_reason, continuation.enabled)));
             throw;
           }
       }
     if (!result.globalized_start && plain_failure_ptr)
       {
-
-        // 1. a factor at which the iteration converges
-        double       factor    = continuation.first_factor;
-        bool         converged = false;
-        unsigned int attempts  = 1;
-        for (unsigned int k = 0; k <= continuation.max_doublings && !converged; ++k, factor *= 2)
-          {
-            update.set_friction_factor(factor);
-            x = x_start;
-            ++attempts;
-            try
-              {
-                state     = iterate(update, system_matrix, system_rhs, matrix, x, start, reference, result);
-                converged = true;
-              }
-            catch (const std::exception &)
-              {
-                ++result.n_failed_attempts;
-              }
-            if (converged)
-              break;
-          }
-        if (!converged)
+        double       factor   = 0;
+        unsigned int attempts = 1;
+        if (!find_converging_factor(step, continuation, start, x_start, factor, attempts))
           {
             if (mechanism)
-              AssertThrow(false, dealii::ExcMessage(friction_collapse(plain_reason)));
+              AssertThrow(false,
+                          dealii::ExcMessage(
+                            friction_collapse(*mechanism, contact.get_pairs(), plain_reason, continuation.enabled)));
             std::rethrow_exception(plain_failure_ptr);
           }
         result.continuation_factors.push_back(factor);
-
-        // 2. lower it to 1, each attempt from the states of the last factor
-        // that converged
-        double      step = factor - 1;
-        std::string last_reason;
-        double      last_target = 1;
-        while (factor > 1)
-          {
-            const double target = std::max(1., factor - step);
-            AssertThrow(attempts < continuation.max_attempts,
-                        dealii::ExcMessage(
-                          "The friction continuation did not reach the friction coefficients as set within " +
-                          std::to_string(continuation.max_attempts) +
-                          " Newton iterations; it converged last with every coefficient multiplied by " +
-                          factor_string(factor) + ". The semismooth Newton iteration itself failed with: " +
-                          plain_reason));
-            ++attempts;
-            update.set_friction_factor(target);
-            const dealii::Vector<double> x_converged = x;
-            try
-              {
-                state  = iterate(update, system_matrix, system_rhs, matrix, x, state.state, reference, result);
-                factor = target;
-                step *= 2;
-                result.continuation_factors.push_back(factor);
-                continue;
-              }
-            catch (const std::exception &e)
-              {
-                ++result.n_failed_attempts;
-                last_reason = reason_of(e);
-                last_target = target;
-                x           = x_converged;
-              }
-            step = (factor - target) / 2;
-            if (step < continuation.min_step)
-              {
-                // name the rigid-body motions that the closed pairs hold
-                // only by friction
-                std::string motions;
-                if (support != nullptr)
-                  {
-                    std::vector<bool> closed(n_pairs), held(n_pairs, false);
-                    for (unsigned int i = 0; i < n_pairs; ++i)
-                      closed[i] = (state.state[i] != PairState::open);
-                    motions = support->free_motions(closed, held);
-                  }
-                AssertThrow(false,
-                            dealii::ExcMessage(
-                              "No static equilibrium: the loads need more friction than the contact "
-                              "interfaces can carry. The semismooth Newton iteration failed (" +
-                              headline(plain_reason) +
-                              "); continued in the friction coefficient, it converged with every coefficient "
-                              "multiplied by " + factor_string(factor) +
-                              " but not from there with any smaller factor (steps down to " +
-                              factor_string(continuation.min_step) + "; the last attempt, with the factor " +
-                              factor_string(last_target) + ", failed with: " + headline(last_reason) + ")." +
-                              (motions.empty() ? std::string() :
-                                                 " Held only by friction: " + motions_and_bodies(motions) + ".") +
-                              (mechanism ? "\n  With the friction bounds mu |N| of the normal forces N found, " +
-                                             mechanism->describe(contact.get_pairs()) + "\n " :
-                                           std::string()) +
-                              " Raise the friction coefficient, hold the bodies by Dirichlet, roller or point "
-                              "constraints, or reduce the load."));
-              }
-          }
+        lower_factor_to_one(step, continuation, support, plain_reason, factor, attempts);
       }
 
     mechanism.reset();
     // converged: slips, friction forces, references for the next step and
     // the dissipated energy, all against the reference of the start of the
     // step
-    auto step                    = update.converged_step(state, reference);
+    auto converged               = update.converged_step(state, reference);
     result.state                 = state.state;
-    result.slip                  = std::move(step.slip);
-    result.slip_increment        = std::move(step.slip_increment);
-    result.tangential_multiplier = std::move(step.tangential_multiplier);
-    result.reference             = std::move(step.reference);
-    result.dissipated_energy     = step.dissipated_energy;
+    result.slip                  = std::move(converged.slip);
+    result.slip_increment        = std::move(converged.slip_increment);
+    result.tangential_multiplier = std::move(converged.tangential_multiplier);
+    result.reference             = std::move(converged.reference);
+    result.dissipated_energy     = converged.dissipated_energy;
     return result;
   }
 

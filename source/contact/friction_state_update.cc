@@ -6,6 +6,7 @@
 #include <dealvem/contact/rigid_body_support.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -112,6 +113,142 @@ namespace dealvem
              s == PairState::slip_positive ? "slip +t" :
                                              "slip -t";
     }
+
+
+    // The Coulomb test of the semismooth Newton update: per pair open,
+    // stick or slip from the trial pressure p - c g and the trial traction
+    // tau_hat (a slip that turns round sticks first).
+    template <int dim>
+    std::vector<PairState>
+    coulomb_test(const FrictionStateUpdate<dim>     &update,
+                 const std::vector<ContactNodePair> &pairs,
+                 const double                        c,
+                 const std::vector<double>          &gaps,
+                 const std::vector<double>          &p,
+                 const std::vector<double>          &tau_hat,
+                 const double                        scale,
+                 const std::vector<PairState>       &current)
+    {
+      const unsigned int     n_pairs = pairs.size();
+      std::vector<PairState> next(n_pairs);
+      for (unsigned int i = 0; i < n_pairs; ++i)
+        {
+          const double p_hat = p[i] - c * gaps[i];
+          if (!(p_hat > 1e-10 * scale) || pairs[i].junction)
+            next[i] = PairState::open;
+          else if (std::abs(tau_hat[i]) <= update.friction_coefficient(i) * p_hat + 1e-10 * scale)
+            next[i] = PairState::stick;
+          else
+            {
+              next[i] = (tau_hat[i] > 0 ? PairState::slip_positive : PairState::slip_negative);
+              // a slipping pair whose trial traction turned round sticks
+              // first: slip reversal goes through stick (no ping-pong
+              // between the two slip directions)
+              if ((current[i] == PairState::slip_positive && next[i] == PairState::slip_negative) ||
+                  (current[i] == PairState::slip_negative && next[i] == PairState::slip_positive))
+                next[i] = PairState::stick;
+            }
+        }
+      return next;
+    }
+
+
+
+    // The equilibrium safeguard. A body that the next states would leave
+    // free: either there is no static equilibrium (the load exceeds what
+    // friction can carry), or the iterate passes through an all-slip set on
+    // its way to one. Keep the would-be slipping pairs closest to the
+    // friction cone (smallest |tau_hat| / (mu p_hat)) sticking until every
+    // body is held. If that safeguard is needed at the converged set, at a
+    // set visited before, or in three iterations in a row, there is no
+    // equilibrium.
+    template <int dim>
+    void
+    hold_every_body(const FrictionStateUpdate<dim>                   &update,
+                    const RigidBodySupport                           &support,
+                    const std::vector<ContactNodePair>               &pairs,
+                    const double                                      c,
+                    const std::vector<double>                        &gaps,
+                    const std::vector<double>                        &p,
+                    const std::vector<double>                        &tau_hat,
+                    const unsigned int                                it,
+                    typename FrictionStateUpdate<dim>::State         &state,
+                    std::vector<PairState>                           &next)
+    {
+      const unsigned int n_pairs     = pairs.size();
+      bool               safeguarded = false;
+      std::vector<bool>  closed(n_pairs), held(n_pairs);
+      for (unsigned int i = 0; i < n_pairs; ++i)
+        {
+          closed[i] = (next[i] != PairState::open);
+          held[i]   = (next[i] == PairState::stick);
+        }
+      const std::string free = support.free_motions(closed, held);
+      if (!free.empty())
+        {
+          std::vector<std::pair<double, unsigned int>> candidates;
+          for (unsigned int i = 0; i < n_pairs; ++i)
+            if (closed[i] && !held[i])
+              {
+                const double bound = update.friction_coefficient(i) * (p[i] - c * gaps[i]);
+                candidates.emplace_back(bound > 0 ? std::abs(tau_hat[i]) / bound : 1e300, i);
+              }
+          std::sort(candidates.begin(), candidates.end());
+          for (const auto &cand : candidates)
+            {
+              next[cand.second] = PairState::stick;
+              held[cand.second] = true;
+              if (support.free_motions(closed, held).empty())
+                break;
+            }
+          safeguarded = true;
+          ++state.n_safeguarded;
+        }
+      else
+        state.n_safeguarded = 0;
+      const std::string still_free = support.free_motions(closed, held);
+      AssertThrow(still_free.empty() && !(safeguarded && (next == state.state || state.visited.count(next) > 0 ||
+                                                          state.n_safeguarded >= 3)),
+                  dealii::ExcMessage(
+                    "No static equilibrium: in friction iteration " + std::to_string(it) +
+                    " every contact pair that held these rigid-body motions came out slipping or open: " +
+                    (still_free.empty() ? free : still_free) + " (open/stick/slip pairs per iteration:" +
+                    history_string(state.history) +
+                    "). The tangential load exceeds the friction coefficient times the normal load "
+                    "on a body held only by friction, or the loads pull the body off its partner; "
+                    "hold the body by Dirichlet, roller or point constraints, or reduce the load."));
+    }
+
+
+
+    // The refusal when the next states were visited before: a cycle, with
+    // the pairs whose state switches back.
+    void
+    throw_cycle(const std::vector<ContactNodePair>           &pairs,
+                const std::vector<PairState>                 &current,
+                const std::vector<PairState>                 &next,
+                const std::vector<std::array<unsigned int, 3>> &history,
+                const unsigned int                            it)
+    {
+      std::ostringstream switching;
+      unsigned int       n_switching = 0;
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        if (next[i] != current[i])
+          {
+            if (n_switching < 10)
+              switching << (n_switching > 0 ? ", " : "") << "pair " << i << " at (" << pairs[i].slave_location
+                        << ") " << state_name(current[i]) << " -> " << state_name(next[i]);
+            ++n_switching;
+          }
+      if (n_switching > 10)
+        switching << " and " << n_switching - 10 << " more";
+      AssertThrow(false,
+                  dealii::ExcMessage("The friction active set cycles: the states of iteration " +
+                                     std::to_string(it + 1) +
+                                     " were already visited (open/stick/slip pairs per iteration:" +
+                                     history_string(history) + "; switching back: " + switching.str() +
+                                     "). Use more load steps or another mesh."));
+    }
   } // namespace
 
 
@@ -171,103 +308,17 @@ namespace dealvem
         tau_hat[i] = multipliers ? tau[i] + c * (s[i] - reference[i]) : eps * (s[i] - reference[i]);
         scale      = std::max({scale, std::abs(p[i]), c * std::abs(gaps[i]), std::abs(tau_hat[i])});
       }
-    std::vector<PairState> next(n_pairs);
-    for (unsigned int i = 0; i < n_pairs; ++i)
-      {
-        const double p_hat = p[i] - c * gaps[i];
-        if (!(p_hat > 1e-10 * scale) || pairs[i].junction)
-          next[i] = PairState::open;
-        else if (std::abs(tau_hat[i]) <= friction_coefficient(i) * p_hat + 1e-10 * scale)
-          next[i] = PairState::stick;
-        else
-          {
-            next[i] = (tau_hat[i] > 0 ? PairState::slip_positive : PairState::slip_negative);
-            // a slipping pair whose trial traction turned round sticks
-            // first: slip reversal goes through stick (no ping-pong
-            // between the two slip directions)
-            if ((state.state[i] == PairState::slip_positive && next[i] == PairState::slip_negative) ||
-                (state.state[i] == PairState::slip_negative && next[i] == PairState::slip_positive))
-              next[i] = PairState::stick;
-          }
-      }
-    // A body that the next states would leave free: either there is no
-    // static equilibrium (the load exceeds what friction can carry), or
-    // the iterate passes through an all-slip set on its way to one. Keep
-    // the would-be slipping pairs closest to the friction cone (smallest
-    // |tau_hat| / (mu p_hat)) sticking until every body is held. If that
-    // safeguard is needed at the converged set, at a set visited before,
-    // or in three iterations in a row, there is no equilibrium.
+    // the Coulomb test, and the equilibrium safeguard
+    std::vector<PairState> next = coulomb_test(*this, pairs, c, gaps, p, tau_hat, scale, state.state);
     if (support != nullptr)
-      {
-        bool              safeguarded = false;
-        std::vector<bool> closed(n_pairs), held(n_pairs);
-        for (unsigned int i = 0; i < n_pairs; ++i)
-          {
-            closed[i] = (next[i] != PairState::open);
-            held[i]   = (next[i] == PairState::stick);
-          }
-        const std::string free = support->free_motions(closed, held);
-        if (!free.empty())
-          {
-            std::vector<std::pair<double, unsigned int>> candidates;
-            for (unsigned int i = 0; i < n_pairs; ++i)
-              if (closed[i] && !held[i])
-                {
-                  const double bound = friction_coefficient(i) * (p[i] - c * gaps[i]);
-                  candidates.emplace_back(bound > 0 ? std::abs(tau_hat[i]) / bound : 1e300, i);
-                }
-            std::sort(candidates.begin(), candidates.end());
-            for (const auto &cand : candidates)
-              {
-                next[cand.second] = PairState::stick;
-                held[cand.second] = true;
-                if (support->free_motions(closed, held).empty())
-                  break;
-              }
-            safeguarded = true;
-            ++state.n_safeguarded;
-          }
-        else
-          state.n_safeguarded = 0;
-        const std::string still_free = support->free_motions(closed, held);
-        AssertThrow(still_free.empty() && !(safeguarded && (next == state.state || state.visited.count(next) > 0 ||
-                                                            state.n_safeguarded >= 3)),
-                    dealii::ExcMessage(
-                      "No static equilibrium: in friction iteration " + std::to_string(it) +
-                      " every contact pair that held these rigid-body motions came out slipping or open: " +
-                      (still_free.empty() ? free : still_free) + " (open/stick/slip pairs per iteration:" +
-                      history_string(state.history) +
-                      "). The tangential load exceeds the friction coefficient times the normal load "
-                      "on a body held only by friction, or the loads pull the body off its partner; "
-                      "hold the body by Dirichlet, roller or point constraints, or reduce the load."));
-      }
+      hold_every_body(*this, *support, pairs, c, gaps, p, tau_hat, it, state, next);
     if (next == state.state)
       {
         state.converged = true;
         return true;
       }
     if (state.visited.count(next) > 0)
-      {
-        // name the pairs whose state switches back
-        std::ostringstream switching;
-        unsigned int       n_switching = 0;
-        for (unsigned int i = 0; i < n_pairs; ++i)
-          if (next[i] != state.state[i])
-            {
-              if (n_switching < 10)
-                switching << (n_switching > 0 ? ", " : "") << "pair " << i << " at (" << pairs[i].slave_location
-                          << ") " << state_name(state.state[i]) << " -> " << state_name(next[i]);
-              ++n_switching;
-            }
-        if (n_switching > 10)
-          switching << " and " << n_switching - 10 << " more";
-        AssertThrow(false,
-                    dealii::ExcMessage("The friction active set cycles: the states of iteration " +
-                                       std::to_string(it + 1) +
-                                       " were already visited (open/stick/slip pairs per iteration:" +
-                                       history_string(state.history) + "; switching back: " + switching.str() +
-                                       "). Use more load steps or another mesh."));
-      }
+      throw_cycle(pairs, state.state, next, state.history, it);
     state.visited.insert(state.state);
     for (unsigned int i = 0; i < n_pairs; ++i)
       state.n_changed += (next[i] != state.state[i]);

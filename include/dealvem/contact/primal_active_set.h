@@ -292,6 +292,10 @@ namespace dealvem
     }
 
   private:
+    /// The state and the steps of one run of iterate() (defined in the
+    /// source file).
+    class Iteration;
+
     /// The iteration of solve() and solve_stick_on_closed() (@p start:
     /// the closed pairs to start from with the displacement in @p x).
     Result
