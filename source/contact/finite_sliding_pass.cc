@@ -328,7 +328,7 @@ namespace dealvem
       step_merges.clear();
     for (const auto &interface : pass.new_interfaces)
       for (const auto &pair : interface.pairs)
-        if (!pair.is_midpoint)
+        if (!pair.on_edge())
           {
             if (pair.master_entity < n0 && pair.slave_entity < n0)
               step_merges.insert({pair.master_entity, pair.slave_entity});
@@ -369,7 +369,7 @@ namespace dealvem
     std::map<unsigned int, unsigned int> partner; // inserted vertex -> its partner vertex
     for (const auto &interface : pass.new_interfaces)
         for (const auto &pair : interface.pairs)
-          if (!pair.is_midpoint)
+          if (!pair.on_edge())
             {
               if (pair.master_entity >= n0)
                 partner[pair.master_entity] = pair.slave_entity;
@@ -480,7 +480,7 @@ namespace dealvem
     for (const auto &interface : pass.new_interfaces)
       for (const auto &pair : interface.pairs)
         {
-          if (pair.is_midpoint || pair.master_entity >= n0 || pair.slave_entity >= n0)
+          if (pair.on_edge() || pair.master_entity >= n0 || pair.slave_entity >= n0)
             continue;
           const bool         slave_moves = movable.count(pair.slave_entity) > 0;
           if (!slave_moves && movable.count(pair.master_entity) == 0)

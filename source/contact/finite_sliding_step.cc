@@ -466,12 +466,19 @@ namespace dealvem
         const auto &ca = correction[a], &cb = correction[b];
         for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
           add(dofs.vertex_node(chain.vertices[k]), (1 - chain.s[k]) * ca + chain.s[k] * cb);
-        if (parameters.degree == 2)
-          for (unsigned int k = 0; k + 1 < chain.vertices.size(); ++k)
-            {
-              const double sm = 0.5 * (chain.s[k] + chain.s[k + 1]);
-              add(dofs.edge_node(chain.edges[k]), (1 - sm) * ca + sm * cb);
-            }
+        // the edge nodes at their places along the chain's edges (counted
+        // from an edge's first vertex)
+        const auto &positions = dofs.get_element_data().edge_node_positions();
+        for (unsigned int k = 0; k + 1 < chain.vertices.size(); ++k)
+          {
+            const bool same_way = mesh.edge(chain.edges[k]).vertices[0] == chain.vertices[k];
+            for (unsigned int j = 0; j < positions.size(); ++j)
+              {
+                const double t  = same_way ? positions[j] : 1. - positions[j];
+                const double sm = (1 - t) * chain.s[k] + t * chain.s[k + 1];
+                add(dofs.edge_node(chain.edges[k], j), (1 - sm) * ca + sm * cb);
+              }
+          }
       }
     for (const auto &[v, c] : correction)
       add(dofs.vertex_node(v), c);

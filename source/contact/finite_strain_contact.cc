@@ -153,13 +153,14 @@ namespace dealvem
     // body slid off its partner in FiniteSliding)
 
     const auto node_of = [&](const unsigned int i, const bool master) {
-      const auto        &p      = pairs[i];
-      const unsigned int entity = master ? p.master_entity : p.slave_entity;
-      AssertThrow(!p.is_midpoint || dof_handler.get_degree() == 2,
+      const auto &p = pairs[i];
+      AssertThrow(!p.on_edge() || dof_handler.get_element_data().nodes_per_edge() == 1,
                   dealii::ExcMessage("FiniteStrainContact: pair " + std::to_string(i) +
-                                     " pairs edge midpoints, but the DoF handler has degree " +
-                                     std::to_string(dof_handler.get_degree()) + "."));
-      return p.is_midpoint ? dof_handler.edge_node(entity) : dof_handler.vertex_node(entity);
+                                     " pairs edge nodes, but the DoF handler's layout " +
+                                     dof_handler.get_element_data().get_name() + " has " +
+                                     std::to_string(dof_handler.get_element_data().nodes_per_edge()) +
+                                     " nodes per edge, not one."));
+      return p.node(dof_handler, master);
     };
 
     // positions in the base configuration X + u_b
@@ -330,7 +331,7 @@ namespace dealvem
                 const double kappa  = kappa_at_origin[interface_of_pair[i]][j];
                 const double l      = piece[0].distance(piece[2]);
                 double       l_own  = 0;
-                if (pairs[i].is_midpoint && neighbours[i].size() == 2)
+                if (pairs[i].on_edge() && neighbours[i].size() == 2)
                   l_own = position(data[neighbours[i][0]].slave_node, *options.slip_origin)
                             .distance(position(data[neighbours[i][1]].slave_node, *options.slip_origin));
                 touch = 1e-2 * l + 1.5 * (l * l + l_own * l_own) * kappa / 8;
