@@ -549,7 +549,7 @@ namespace dealvem
       }
     pass.next->mesh->validate();
     pass.next->dof_handler = std::make_unique<VEMDoFHandler<2>>(*pass.next->mesh);
-    pass.next->dof_handler->distribute_dofs(degree);
+    pass.next->dof_handler->distribute_dofs(VEMElementData(degree));
     record.n_inserted = 0;
     for (const auto &i : pass.new_interfaces)
       record.n_inserted += i.report.n_inserted_master + i.report.n_inserted_slave;
@@ -658,7 +658,7 @@ namespace dealvem
         first_pass_disc              = std::make_unique<Discretization>();
         first_pass_disc->mesh        = std::make_unique<PolygonalMesh<2>>(*pass.next->mesh);
         first_pass_disc->dof_handler = std::make_unique<VEMDoFHandler<2>>(*first_pass_disc->mesh);
-        first_pass_disc->dof_handler->distribute_dofs(degree);
+        first_pass_disc->dof_handler->distribute_dofs(VEMElementData(degree));
         first_pass_pairing = pass.u_base;
       }
     current         = std::move(pass.next);
