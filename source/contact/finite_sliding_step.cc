@@ -348,6 +348,16 @@ namespace dealvem
       }
     anderson_moved   = moved;
     anderson_on_side = on_side;
+    const std::vector<double> next = anderson_next(x, r, length);
+    return corrected_pairing_state(x, r, next, on_side, moved);
+  }
+
+
+
+  std::vector<double>
+  FiniteSliding::Impl::anderson_next(const std::vector<double> &x, const std::vector<double> &r, const double length)
+  {
+    const unsigned int n = x.size() / 2;
     // Safeguard: where the residual grew since the last pass, the history
     // no longer describes the map (a pass changed which side of a kink a
     // partner lies on, or the fit was poor): it starts again from this
@@ -432,7 +442,23 @@ namespace dealvem
               }
           }
       }
+    return next;
+  }
 
+
+
+  dealii::Vector<double>
+  FiniteSliding::Impl::corrected_pairing_state(const std::vector<double>    &x,
+                                               const std::vector<double>    &r,
+                                               const std::vector<double>    &next,
+                                               const std::set<unsigned int> &on_side,
+                                               const std::set<unsigned int> &moved) const
+  {
+    const auto &dofs   = *current->dof_handler;
+    const auto &mesh   = *current->mesh;
+    const auto  fitted = [&](const unsigned int v) {
+      return !parameters.detection.enabled || on_side.count(v) > 0;
+    };
     // the vertices go to x_{k+1}; the other nodes of an interface edge take
     // the plain update plus the correction of the vertices interpolated
     // along the edge
