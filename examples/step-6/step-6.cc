@@ -316,7 +316,7 @@ namespace Step6
     const auto         &set   = sets_solved_with.back();
     std::vector<double> active(mesh.n_vertices(), 0.), pressure(mesh.n_vertices(), 0.);
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      if (!pairs[i].is_midpoint)
+      if (!pairs[i].on_edge())
         for (const unsigned int v : {pairs[i].master_entity, pairs[i].slave_entity})
           {
             active[v]   = set[i] ? 1. : 0.;

@@ -318,7 +318,7 @@ namespace dealvem
   {
     CycleData &d = *data;
     d.dof_handler.reinit(results.mesh);
-    d.dof_handler.distribute_dofs(opt.degree);
+    d.dof_handler.distribute_dofs(VEMElementData(opt.degree));
 
     const ContactScales scales(d.materials, results.interfaces);
     if (contact_settings.tangential == ContactSettings::Tangential::penalty ||

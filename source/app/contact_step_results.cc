@@ -120,7 +120,7 @@ namespace dealvem
         PairResult  r;
         r.interface       = p.interface;
         r.location        = p.slave_location;
-        r.midpoint        = p.is_midpoint;
+        r.midpoint        = p.on_edge();
         r.active          = as.active[i];
         r.weight          = p.weight;
         r.gap             = gaps[i];

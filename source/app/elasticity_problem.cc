@@ -125,7 +125,7 @@ namespace dealvem
   {
     dealii::TimerOutput::Scope t(*timer, "setup");
     dof_handler.reinit(mesh);
-    dof_handler.distribute_dofs(degree);
+    dof_handler.distribute_dofs(VEMElementData(degree));
     constraints.clear();
     bc.apply_constraints(dof_handler, constraints);
     constraints.close();
@@ -252,7 +252,7 @@ namespace dealvem
   {
     dealii::TimerOutput::Scope t(*timer, "setup");
     dof_handler.reinit(mesh);
-    dof_handler.distribute_dofs(degree);
+    dof_handler.distribute_dofs(VEMElementData(degree));
     partition.reinit(dof_handler, mpi_communicator);
     constraints.clear();
     bc.apply_constraints(dof_handler, constraints);

@@ -334,7 +334,7 @@ namespace dealvem
     {
       VEMDoFHandler<2> dofs;
       dofs.reinit(mesh);
-      dofs.distribute_dofs(opt.degree);
+      dofs.distribute_dofs(VEMElementData(opt.degree));
       FiniteStrainAssembler<2> assembler(dofs, laws);
       bc.set_time(opt.final_time);
       bc.add_finite_strain_loads(assembler, "Finite strain/Enabled", opt.pressure_load);

@@ -10,6 +10,7 @@
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/mesh/mesh_io.h>
 #include <dealvem/app/mesh_parameters.h>
+#include <dealvem/vem/vem_element_data.h>
 
 #include <muParserError.h>
 
@@ -365,8 +366,11 @@ namespace dealvem
             if (last)
               {
                 e.cells += cells;
-                // k = 2: a node per edge and the two moments of each cell
-                e.dofs += 2 * vertices + (degree >= 2 ? 2 * edges + 2 * cells : 0.);
+                // two DoFs per node, the nodes as the element's layout
+                // places them on the vertices, edges and cells
+                const VEMElementData layout(degree);
+                e.dofs += 2 * vertices * layout.nodes_per_vertex() +
+                          (2 * edges * layout.nodes_per_edge() + 2 * cells * layout.nodes_per_cell());
               }
           }
       return e;

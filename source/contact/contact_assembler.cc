@@ -107,8 +107,9 @@ namespace dealvem
                   dealii::ExcMessage("The friction coefficient of contact interface " +
                                      std::to_string(p.interface) + " must be finite and >= 0."));
     for (const auto &p : pairs)
-      AssertThrow(p.is_midpoint == false || dof_handler.get_degree() == 2,
-                  dealii::ExcMessage("Midpoint contact pairs need order k = 2."));
+      AssertThrow(!p.on_edge() || dof_handler.get_element_data().nodes_per_edge() == 1,
+                  dealii::ExcMessage("Contact pairs of edge nodes need a layout with one node per edge "
+                                     "(order k = 2)."));
   }
 
 
@@ -118,10 +119,8 @@ namespace dealvem
   ContactAssembler<dim>::pair_dofs(const unsigned int i) const
   {
     const auto  &p = pairs[i];
-    unsigned int a = p.is_midpoint ? dof_handler.edge_node(p.master_entity) :
-                                     dof_handler.vertex_node(p.master_entity);
-    unsigned int b = p.is_midpoint ? dof_handler.edge_node(p.slave_entity) :
-                                     dof_handler.vertex_node(p.slave_entity);
+    const unsigned int a = p.node(dof_handler, true);
+    const unsigned int b = p.node(dof_handler, false);
     return {{VEMDoFHandler<dim>::node_dof(a, 0), VEMDoFHandler<dim>::node_dof(a, 1),
              VEMDoFHandler<dim>::node_dof(b, 0), VEMDoFHandler<dim>::node_dof(b, 1)}};
   }

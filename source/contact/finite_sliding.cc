@@ -454,17 +454,17 @@ namespace dealvem
             const auto &pair   = contact->get_pairs()[i];
             // (two vertices of the original mesh: a merge, Parameters::
             // insertion's merge_fraction)
-            if (chord[i] > 0 && !pair.is_midpoint && pair.master_entity < n0 && pair.slave_entity < n0)
+            if (chord[i] > 0 && !pair.on_edge() && pair.master_entity < n0 && pair.slave_entity < n0)
               {
                 ++record.n_merged;
                 record.merged_offset = std::max(record.merged_offset, off / chord[i]);
               }
-            else if (chord[i] > 0 && !pair.is_midpoint)
+            else if (chord[i] > 0 && !pair.on_edge())
               {
                 record.pairing_offset = std::max(record.pairing_offset, off / chord[i]);
               }
           }
-        else if (chord[i] > 0 && !contact->get_pairs()[i].is_midpoint)
+        else if (chord[i] > 0 && !contact->get_pairs()[i].on_edge())
           {
             // An open pair: its partners need only be opposite each other
             // within its gap. One whose partners slid apart by more than the

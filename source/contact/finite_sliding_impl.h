@@ -513,6 +513,25 @@ namespace dealvem
     /// converged states at the interface vertices (see the implementation).
     dealii::Vector<double>
     relaxed_pairing_state();
+    /// relaxed_pairing_state(), the fit: the next pairing positions
+    /// x_{k+1} of the interface vertices from their pairing positions @p x
+    /// and residuals @p r of this pass (two entries per vertex of
+    /// side_neighbours), with the Anderson history updated (and started
+    /// again where the residual grew). @p length is the size of the
+    /// problem, the scale of a negligible fit.
+    std::vector<double>
+    anderson_next(const std::vector<double> &x, const std::vector<double> &r, const double length);
+    /// relaxed_pairing_state(), the result: the solution with the vertices
+    /// at @p next, the other nodes of an interface edge moved by the
+    /// correction of its end vertices interpolated along the edge; the
+    /// vertices off @p on_side (with detection) take the plain update, those
+    /// in @p moved the plain update (halved once the step was damped).
+    dealii::Vector<double>
+    corrected_pairing_state(const std::vector<double>    &x,
+                            const std::vector<double>    &r,
+                            const std::vector<double>    &next,
+                            const std::set<unsigned int> &on_side,
+                            const std::set<unsigned int> &moved) const;
     /// One attempt at the step from t_start to time, cut in halves where
     /// it fails (Parameters::max_cutbacks); adds its sub-steps to total.
     void

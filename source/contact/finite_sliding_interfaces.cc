@@ -357,10 +357,12 @@ namespace dealvem
     // are not interface edges, keep their values
     for (unsigned int v = 0; v < n0; ++v)
       copy(new_dofs.vertex_node(v), old_dofs.vertex_node(v));
-    if (parameters.degree == 2)
+    const VEMElementData &layout = new_dofs.get_element_data();
+    for (unsigned int cell = 0; cell < new_mesh.n_cells() && layout.nodes_per_cell() > 0; ++cell)
+      for (unsigned int j = 0; j < layout.nodes_per_cell(); ++j)
+        copy(new_dofs.cell_node(cell, j), old_dofs.cell_node(cell, j));
+    if (layout.nodes_per_edge() > 0)
       {
-        for (unsigned int cell = 0; cell < new_mesh.n_cells(); ++cell)
-          copy(new_dofs.cell_node(cell), old_dofs.cell_node(cell));
         std::map<std::uint64_t, unsigned int> old_edges;
         for (unsigned int e = 0; e < old_mesh.n_edges(); ++e)
           {
@@ -374,8 +376,14 @@ namespace dealvem
             if (ev[0] < n0 && ev[1] < n0)
               {
                 const auto it = old_edges.find(edge_key(ev[0], ev[1]));
-                if (it != old_edges.end())
-                  copy(new_dofs.edge_node(e), old_dofs.edge_node(it->second));
+                if (it == old_edges.end())
+                  continue;
+                // (the edge nodes count from an edge's first vertex: the
+                // old edge may run the other way)
+                const bool same_way = old_mesh.edge(it->second).vertices[0] == ev[0];
+                for (unsigned int j = 0; j < layout.nodes_per_edge(); ++j)
+                  copy(new_dofs.edge_node(e, j),
+                       old_dofs.edge_node(it->second, same_way ? j : layout.nodes_per_edge() - 1 - j));
               }
           }
       }
@@ -394,11 +402,20 @@ namespace dealvem
         };
         for (unsigned int k = 0; k < new_chain.vertices.size(); ++k)
           set(new_dofs.vertex_node(new_chain.vertices[k]), new_mesh.vertex(new_chain.vertices[k]));
-        if (parameters.degree == 2)
-          for (unsigned int k = 0; k + 1 < new_chain.vertices.size(); ++k)
-            set(new_dofs.edge_node(new_chain.edges[k]),
-                dealii::Point<2>(0.5 * (new_mesh.vertex(new_chain.vertices[k]) +
-                                        new_mesh.vertex(new_chain.vertices[k + 1]))));
+        // the edge nodes at their places along the chain's edges
+        const auto &positions = layout.edge_node_positions();
+        for (unsigned int k = 0; k + 1 < new_chain.vertices.size(); ++k)
+          {
+            const unsigned int e        = new_chain.edges[k];
+            const bool         same_way = new_mesh.edge(e).vertices[0] == new_chain.vertices[k];
+            for (unsigned int j = 0; j < positions.size(); ++j)
+              {
+                const double t = same_way ? positions[j] : 1. - positions[j];
+                set(new_dofs.edge_node(e, j),
+                    dealii::Point<2>((1. - t) * new_mesh.vertex(new_chain.vertices[k]) +
+                                     t * new_mesh.vertex(new_chain.vertices[k + 1])));
+              }
+          }
       }
     return u_new;
   }

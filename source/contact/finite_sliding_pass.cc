@@ -328,7 +328,7 @@ namespace dealvem
       step_merges.clear();
     for (const auto &interface : pass.new_interfaces)
       for (const auto &pair : interface.pairs)
-        if (!pair.is_midpoint)
+        if (!pair.on_edge())
           {
             if (pair.master_entity < n0 && pair.slave_entity < n0)
               step_merges.insert({pair.master_entity, pair.slave_entity});
@@ -369,7 +369,7 @@ namespace dealvem
     std::map<unsigned int, unsigned int> partner; // inserted vertex -> its partner vertex
     for (const auto &interface : pass.new_interfaces)
         for (const auto &pair : interface.pairs)
-          if (!pair.is_midpoint)
+          if (!pair.on_edge())
             {
               if (pair.master_entity >= n0)
                 partner[pair.master_entity] = pair.slave_entity;
@@ -480,7 +480,7 @@ namespace dealvem
     for (const auto &interface : pass.new_interfaces)
       for (const auto &pair : interface.pairs)
         {
-          if (pair.is_midpoint || pair.master_entity >= n0 || pair.slave_entity >= n0)
+          if (pair.on_edge() || pair.master_entity >= n0 || pair.slave_entity >= n0)
             continue;
           const bool         slave_moves = movable.count(pair.slave_entity) > 0;
           if (!slave_moves && movable.count(pair.master_entity) == 0)
@@ -549,7 +549,7 @@ namespace dealvem
       }
     pass.next->mesh->validate();
     pass.next->dof_handler = std::make_unique<VEMDoFHandler<2>>(*pass.next->mesh);
-    pass.next->dof_handler->distribute_dofs(degree);
+    pass.next->dof_handler->distribute_dofs(VEMElementData(degree));
     record.n_inserted = 0;
     for (const auto &i : pass.new_interfaces)
       record.n_inserted += i.report.n_inserted_master + i.report.n_inserted_slave;
@@ -658,7 +658,7 @@ namespace dealvem
         first_pass_disc              = std::make_unique<Discretization>();
         first_pass_disc->mesh        = std::make_unique<PolygonalMesh<2>>(*pass.next->mesh);
         first_pass_disc->dof_handler = std::make_unique<VEMDoFHandler<2>>(*first_pass_disc->mesh);
-        first_pass_disc->dof_handler->distribute_dofs(degree);
+        first_pass_disc->dof_handler->distribute_dofs(VEMElementData(degree));
         first_pass_pairing = pass.u_base;
       }
     current         = std::move(pass.next);

@@ -348,6 +348,16 @@ namespace dealvem
       }
     anderson_moved   = moved;
     anderson_on_side = on_side;
+    const std::vector<double> next = anderson_next(x, r, length);
+    return corrected_pairing_state(x, r, next, on_side, moved);
+  }
+
+
+
+  std::vector<double>
+  FiniteSliding::Impl::anderson_next(const std::vector<double> &x, const std::vector<double> &r, const double length)
+  {
+    const unsigned int n = x.size() / 2;
     // Safeguard: where the residual grew since the last pass, the history
     // no longer describes the map (a pass changed which side of a kink a
     // partner lies on, or the fit was poor): it starts again from this
@@ -432,7 +442,23 @@ namespace dealvem
               }
           }
       }
+    return next;
+  }
 
+
+
+  dealii::Vector<double>
+  FiniteSliding::Impl::corrected_pairing_state(const std::vector<double>    &x,
+                                               const std::vector<double>    &r,
+                                               const std::vector<double>    &next,
+                                               const std::set<unsigned int> &on_side,
+                                               const std::set<unsigned int> &moved) const
+  {
+    const auto &dofs   = *current->dof_handler;
+    const auto &mesh   = *current->mesh;
+    const auto  fitted = [&](const unsigned int v) {
+      return !parameters.detection.enabled || on_side.count(v) > 0;
+    };
     // the vertices go to x_{k+1}; the other nodes of an interface edge take
     // the plain update plus the correction of the vertices interpolated
     // along the edge
@@ -466,12 +492,19 @@ namespace dealvem
         const auto &ca = correction[a], &cb = correction[b];
         for (unsigned int k = 1; k + 1 < chain.vertices.size(); ++k)
           add(dofs.vertex_node(chain.vertices[k]), (1 - chain.s[k]) * ca + chain.s[k] * cb);
-        if (parameters.degree == 2)
-          for (unsigned int k = 0; k + 1 < chain.vertices.size(); ++k)
-            {
-              const double sm = 0.5 * (chain.s[k] + chain.s[k + 1]);
-              add(dofs.edge_node(chain.edges[k]), (1 - sm) * ca + sm * cb);
-            }
+        // the edge nodes at their places along the chain's edges (counted
+        // from an edge's first vertex)
+        const auto &positions = dofs.get_element_data().edge_node_positions();
+        for (unsigned int k = 0; k + 1 < chain.vertices.size(); ++k)
+          {
+            const bool same_way = mesh.edge(chain.edges[k]).vertices[0] == chain.vertices[k];
+            for (unsigned int j = 0; j < positions.size(); ++j)
+              {
+                const double t  = same_way ? positions[j] : 1. - positions[j];
+                const double sm = (1 - t) * chain.s[k] + t * chain.s[k + 1];
+                add(dofs.edge_node(chain.edges[k], j), (1 - sm) * ca + sm * cb);
+              }
+          }
       }
     for (const auto &[v, c] : correction)
       add(dofs.vertex_node(v), c);

@@ -87,6 +87,113 @@ namespace dealvem
 
 
 
+  namespace
+  {
+    // A sub-edge of the master side at the slip origin: its end, its middle
+    // (the edge node, or the chord's midpoint), its other end.
+    using Piece = std::array<dealii::Point<2>, 3>;
+
+    // The chord deviation of each piece of one interface where the master
+    // side follows a smooth curve: a slave point that lay on the curve at
+    // the origin is off the chord of a piece by up to l^2 kappa / 8 (l the
+    // piece's length), more than the 1e-2 l of a touch once l kappa > 0.08
+    // (a ring of 40 edges). kappa from the turns to the neighbouring pieces
+    // (the angle between two chords over their mean length); turns above 30
+    // degrees are corners, not curvature.
+    std::vector<double>
+    piece_curvatures(const std::vector<Piece> &list)
+    {
+      std::vector<double> curvatures(list.size(), 0.);
+      for (unsigned int j = 0; j < list.size(); ++j)
+        {
+          const dealii::Tensor<1, 2> dj    = list[j][2] - list[j][0];
+          const double               lj    = dj.norm();
+          double                     kappa = 0;
+          for (const int step : {-1, 1})
+            {
+              const int m = int(j) + step;
+              if (m < 0 || m >= int(list.size()) || lj == 0)
+                continue;
+              // (neighbours along the side share an end)
+              if (!(step < 0 ? list[m][2].distance(list[j][0]) <= 1e-12 * lj :
+                               list[m][0].distance(list[j][2]) <= 1e-12 * lj))
+                continue;
+              const dealii::Tensor<1, 2> dm = list[m][2] - list[m][0];
+              const double               lm = dm.norm();
+              if (lm == 0)
+                continue;
+              const double sine = std::abs(dj[0] * dm[1] - dj[1] * dm[0]) / (lj * lm);
+              if ((dj * dm) <= 0 || sine > 0.5)
+                continue;
+              kappa = std::max(kappa, 2 * std::asin(sine) / (lj + lm));
+            }
+          curvatures[j] = kappa;
+        }
+      return curvatures;
+    }
+
+    // The gap of the slave point @p x_slave to the master side's curve at
+    // the origin (the pieces of its interface), on the side of the turned
+    // normal @p n_origin, and the gap below which the point counts as
+    // touching: within 1e-2 of the nearest piece's chord, plus 1.5 times
+    // the chord deviations (the curvature of the chords is an estimate; an
+    // edge node of k = 2 lies on its own sub-edge's chord, of length
+    // @p l_own, off the curve by that chord's deviation too). (Beyond the
+    // ends of the paired part of the master side, which is all the class
+    // knows of it, the side is continued along its end tangent: the gap is
+    // the normal part of the distance.)
+    std::pair<double, double>
+    gap_and_touch_at_origin(const dealii::Point<2>     &x_slave,
+                            const dealii::Tensor<1, 2> &n_origin,
+                            const std::vector<Piece>   &pieces,
+                            const std::vector<double>  &curvatures,
+                            const double                l_own)
+    {
+      double gap = std::numeric_limits<double>::max(), nearest = gap, touch = 0;
+      for (unsigned int j = 0; j < pieces.size(); ++j)
+        {
+          const auto &piece = pieces[j];
+          // (a piece x(s) = xm + s b + s^2 c lies within |b| + |c| of xm:
+          // one farther than the nearest so far is skipped unsearched)
+          const double reach =
+            0.5 * (piece[2].distance(piece[0]) + ((piece[2] - piece[1]) + (piece[0] - piece[1])).norm());
+          if (x_slave.distance(piece[1]) - reach >= nearest)
+            continue;
+          const auto [q, tangent] = closest_on_piece(x_slave, piece[0], piece[1], piece[2]);
+          const double dist       = q.distance(x_slave);
+          if (dist < nearest && tangent.norm() > 0)
+            {
+              nearest                     = dist;
+              dealii::Tensor<1, 2> normal = turn_left(tangent / tangent.norm());
+              if (normal * n_origin < 0)
+                normal = -normal;
+              gap            = (x_slave - q) * normal;
+              const double l = piece[0].distance(piece[2]);
+              touch          = 1e-2 * l + 1.5 * (l * l + l_own * l_own) * curvatures[j] / 8;
+            }
+        }
+      return {gap, touch};
+    }
+  } // namespace
+
+
+
+  /**
+   * What the constructor's steps share about the pairs of all interfaces:
+   * for each pair the pairs next to it along its interface (vertex pairs:
+   * through the sub-edges; edge-node pairs: the two ends of their
+   * sub-edge), the side its normal is taken from, and its interface.
+   */
+  struct FiniteStrainContact::Topology
+  {
+    std::vector<std::vector<unsigned int>>            neighbours;
+    std::vector<NodeInsertion::Interface::NormalSide> side_of_pair;
+    std::vector<unsigned int>                         interface_of_pair;
+    unsigned int                                      n_interfaces = 0;
+  };
+
+
+
   FiniteStrainContact::FiniteStrainContact(const VEMDoFHandler<2>                      &dof_handler,
                                            const std::vector<NodeInsertion::Interface> &interfaces,
                                            const ContactSettings::Normal                normal,
@@ -102,6 +209,21 @@ namespace dealvem
                 dealii::ExcMessage("FiniteStrainContact: the base displacement has " +
                                    std::to_string(options.base == nullptr ? 0 : options.base->size()) +
                                    " entries, the DoF handler " + std::to_string(dof_handler.n_dofs()) + "."));
+    Topology topology;
+    collect_pairs(interfaces, options, topology);
+    // (no pairs at all is a valid state: every interface is open, as where a
+    // body slid off its partner in FiniteSliding)
+    set_up_pair_data(topology, options.base);
+    set_up_slip_origins(topology, options);
+  }
+
+
+
+  void
+  FiniteStrainContact::collect_pairs(const std::vector<NodeInsertion::Interface> &interfaces,
+                                     const Options                               &options,
+                                     Topology                                    &topology)
+  {
     const auto mu_of = [&](const unsigned int interface) {
       double m = options.friction_coefficient;
       if (interface < options.friction_coefficients.size() && options.friction_coefficients[interface] >= 0)
@@ -110,27 +232,23 @@ namespace dealvem
                   dealii::ExcMessage("FiniteStrainContact: the friction coefficient of interface " +
                                      std::to_string(interface) + " is " + std::to_string(m) +
                                      "; it must be finite and not negative."));
-      AssertThrow(m == 0 || normal == ContactSettings::Normal::unilateral,
+      AssertThrow(m == 0 || model == ContactSettings::Normal::unilateral,
                   dealii::ExcMessage("FiniteStrainContact: interface " + std::to_string(interface) +
                                      " has the friction coefficient " + std::to_string(m) +
                                      ", but tied contact has no friction (it sticks everywhere)."));
       return m;
     };
-    // the pairs of all interfaces, and for each pair the pairs next to it
-    // along its interface (vertex pairs: through the sub-edges; midpoint
-    // pairs: the two ends of their sub-edge)
-    std::vector<std::vector<unsigned int>> neighbours;
-    std::vector<NodeInsertion::Interface::NormalSide> side_of_pair;
-    std::vector<unsigned int>                         interface_of_pair;
+    auto &neighbours         = topology.neighbours;
+    topology.n_interfaces    = interfaces.size();
     for (const auto &interface : interfaces)
       {
-        const unsigned int offset = pairs.size();
-        const double interface_mu = mu_of(&interface - interfaces.data());
+        const unsigned int offset       = pairs.size();
+        const double       interface_mu = mu_of(&interface - interfaces.data());
         for (const auto &p : interface.pairs)
           {
             pairs.push_back(p);
-            side_of_pair.push_back(interface.normal_side);
-            interface_of_pair.push_back(&interface - interfaces.data());
+            topology.side_of_pair.push_back(interface.normal_side);
+            topology.interface_of_pair.push_back(&interface - interfaces.data());
             mu.push_back(interface_mu);
             frictional = frictional || interface_mu > 0;
           }
@@ -149,25 +267,30 @@ namespace dealvem
             segments.push_back(s);
           }
       }
-    // (no pairs at all is a valid state: every interface is open, as where a
-    // body slid off its partner in FiniteSliding)
+  }
 
+
+
+  void
+  FiniteStrainContact::set_up_pair_data(const Topology &topology, const dealii::Vector<double> *base)
+  {
     const auto node_of = [&](const unsigned int i, const bool master) {
-      const auto        &p      = pairs[i];
-      const unsigned int entity = master ? p.master_entity : p.slave_entity;
-      AssertThrow(!p.is_midpoint || dof_handler.get_degree() == 2,
+      const auto &p = pairs[i];
+      AssertThrow(!p.on_edge() || dof_handler.get_element_data().nodes_per_edge() == 1,
                   dealii::ExcMessage("FiniteStrainContact: pair " + std::to_string(i) +
-                                     " pairs edge midpoints, but the DoF handler has degree " +
-                                     std::to_string(dof_handler.get_degree()) + "."));
-      return p.is_midpoint ? dof_handler.edge_node(entity) : dof_handler.vertex_node(entity);
+                                     " pairs edge nodes, but the DoF handler's layout " +
+                                     dof_handler.get_element_data().get_name() + " has " +
+                                     std::to_string(dof_handler.get_element_data().nodes_per_edge()) +
+                                     " nodes per edge, not one."));
+      return p.node(dof_handler, master);
     };
 
     // positions in the base configuration X + u_b
     const auto base_location = [&](const unsigned int node) {
       dealii::Point<2> x = dof_handler.node_location(node);
-      if (options.base != nullptr)
+      if (base != nullptr)
         for (unsigned int comp = 0; comp < 2; ++comp)
-          x[comp] += (*options.base)[VEMDoFHandler<2>::node_dof(node, comp)];
+          x[comp] += (*base)[VEMDoFHandler<2>::node_dof(node, comp)];
       return x;
     };
 
@@ -187,13 +310,13 @@ namespace dealvem
 
         // the chord ends: the two neighbours, or the pair itself and its
         // one neighbour at the end of a chain
-        const auto &nb = neighbours[i];
+        const auto &nb = topology.neighbours[i];
         if (nb.empty())
           continue;
         const unsigned int minus = nb.size() >= 2 ? nb[0] : i;
         const unsigned int plus  = nb.size() >= 2 ? nb[1] : nb[0];
         std::vector<std::pair<bool, double>> sides; // (master side?, weight)
-        switch (side_of_pair[i])
+        switch (topology.side_of_pair[i])
           {
             case NodeInsertion::Interface::NormalSide::master:
               sides = {{true, 1.}};
@@ -219,11 +342,18 @@ namespace dealvem
         if (d.chords.size() == 1)
           d.chords[0].weight = 1.;
       }
+  }
 
+
+
+  void
+  FiniteStrainContact::set_up_slip_origins(const Topology &topology, const Options &options)
+  {
     // the slip origin: a.t in the configuration where the slip starts, t
     // turned there from the base by the pair's chords; the master side's
-    // sub-edges there (end, midpoint, end), by interface
-    std::vector<std::vector<std::array<dealii::Point<2>, 3>>> pieces_at_origin(interfaces.size());
+    // sub-edges there (end, middle, end), by interface, and their
+    // curvatures
+    std::vector<std::vector<Piece>> pieces_at_origin(topology.n_interfaces);
     if (options.slip_origin != nullptr && options.slip_origin->size() == dof_handler.n_dofs())
       for (const auto &s : segments)
         {
@@ -232,46 +362,13 @@ namespace dealvem
           const auto xm = s.midpoint != dealii::numbers::invalid_unsigned_int ?
                             position(data[s.midpoint].master_node, *options.slip_origin) :
                             dealii::Point<2>(0.5 * (x0 + x1));
-          pieces_at_origin[interface_of_pair[s.first]].push_back({{x0, xm, x1}});
+          pieces_at_origin[topology.interface_of_pair[s.first]].push_back({{x0, xm, x1}});
         }
-    // The chord deviation of each piece where the master side follows a
-    // smooth curve: a slave point that lay on the curve at the origin is
-    // off the chord of a piece by up to l^2 kappa / 8 (l the piece's
-    // length), more than the 1e-2 l of a touch once l kappa > 0.08 (a ring
-    // of 40 edges). kappa from the turns to the neighbouring pieces (the
-    // angle between two chords over their mean length); turns above 30
-    // degrees are corners, not curvature.
-    std::vector<std::vector<double>> kappa_at_origin(interfaces.size());
+    std::vector<std::vector<double>> kappa_at_origin(topology.n_interfaces);
     for (unsigned int k = 0; k < pieces_at_origin.size(); ++k)
-      {
-        const auto &list = pieces_at_origin[k];
-        kappa_at_origin[k].assign(list.size(), 0.);
-        for (unsigned int j = 0; j < list.size(); ++j)
-          {
-            const dealii::Tensor<1, 2> dj = list[j][2] - list[j][0];
-            const double               lj = dj.norm();
-            double                     kappa = 0;
-            for (const int step : {-1, 1})
-              {
-                const int m = int(j) + step;
-                if (m < 0 || m >= int(list.size()) || lj == 0)
-                  continue;
-                // (neighbours along the side share an end)
-                if (!(step < 0 ? list[m][2].distance(list[j][0]) <= 1e-12 * lj :
-                                 list[m][0].distance(list[j][2]) <= 1e-12 * lj))
-                  continue;
-                const dealii::Tensor<1, 2> dm = list[m][2] - list[m][0];
-                const double               lm = dm.norm();
-                if (lm == 0)
-                  continue;
-                const double sine = std::abs(dj[0] * dm[1] - dj[1] * dm[0]) / (lj * lm);
-                if ((dj * dm) <= 0 || sine > 0.5)
-                  continue;
-                kappa = std::max(kappa, 2 * std::asin(sine) / (lj + lm));
-              }
-            kappa_at_origin[k][j] = kappa;
-          }
-      }
+      kappa_at_origin[k] = piece_curvatures(pieces_at_origin[k]);
+
+    const auto &neighbours = topology.neighbours;
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         auto &d = data[i];
@@ -298,44 +395,17 @@ namespace dealvem
         // (of the slide squared over twice the radius). Within 1e-2 of the
         // piece's chord the point counts as touching (for k = 2 the two
         // sides' quadratics meet only at the nodes).
-        // (Beyond the ends of the paired part of the master side, which
-        // is all this class knows of it, the side is continued along its
-        // end tangent: the gap is the normal part of the distance.)
-        const dealii::Tensor<1, 2> n_origin = rotate(d.n0, theta);
-        const dealii::Point<2>     x_slave  = position(d.slave_node, *options.slip_origin);
-        double gap_at_origin = std::numeric_limits<double>::max(), nearest = gap_at_origin, touch = 0;
-        const auto &origin_pieces = pieces_at_origin[interface_of_pair[i]];
-        for (unsigned int j = 0; j < origin_pieces.size(); ++j)
-          {
-            const auto &piece = origin_pieces[j];
-            // (a piece x(s) = xm + s b + s^2 c lies within |b| + |c| of xm:
-            // one farther than the nearest so far is skipped unsearched)
-            const double reach =
-              0.5 * (piece[2].distance(piece[0]) + ((piece[2] - piece[1]) + (piece[0] - piece[1])).norm());
-            if (x_slave.distance(piece[1]) - reach >= nearest)
-              continue;
-            const auto [q, tangent] = closest_on_piece(x_slave, piece[0], piece[1], piece[2]);
-            const double dist       = q.distance(x_slave);
-            if (dist < nearest && tangent.norm() > 0)
-              {
-                nearest                      = dist;
-                dealii::Tensor<1, 2> normal = turn_left(tangent / tangent.norm());
-                if (normal * n_origin < 0)
-                  normal = -normal;
-                gap_at_origin = (x_slave - q) * normal;
-                // (1.5 times the chord deviation: the curvature of the
-                // chords is an estimate; a midpoint node of k = 2 lies on
-                // its own sub-edge's chord, off the curve by that chord's
-                // deviation too)
-                const double kappa  = kappa_at_origin[interface_of_pair[i]][j];
-                const double l      = piece[0].distance(piece[2]);
-                double       l_own  = 0;
-                if (pairs[i].is_midpoint && neighbours[i].size() == 2)
-                  l_own = position(data[neighbours[i][0]].slave_node, *options.slip_origin)
-                            .distance(position(data[neighbours[i][1]].slave_node, *options.slip_origin));
-                touch = 1e-2 * l + 1.5 * (l * l + l_own * l_own) * kappa / 8;
-              }
-          }
+        double l_own = 0;
+        if (pairs[i].on_edge() && neighbours[i].size() == 2)
+          l_own = position(data[neighbours[i][0]].slave_node, *options.slip_origin)
+                    .distance(position(data[neighbours[i][1]].slave_node, *options.slip_origin));
+        const unsigned int interface = topology.interface_of_pair[i];
+        const auto [gap_at_origin, touch] =
+          gap_and_touch_at_origin(position(d.slave_node, *options.slip_origin),
+                                  rotate(d.n0, theta),
+                                  pieces_at_origin[interface],
+                                  kappa_at_origin[interface],
+                                  l_own);
         if (gap_at_origin > touch)
           {
             new_contact[i] = true;

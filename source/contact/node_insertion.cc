@@ -216,7 +216,7 @@ namespace dealvem
       double       km = 0, ks = 0;
       unsigned int n  = 0;
       for (const auto &p : interface.pairs)
-        if (!p.is_midpoint)
+        if (!p.on_edge())
           {
             const auto a = master.kappa.find(p.master_entity), b = slave.kappa.find(p.slave_entity);
             km += (a != master.kappa.end() ? std::abs(a->second) : 0.);
@@ -234,8 +234,9 @@ namespace dealvem
     for (auto &p : interface.pairs)
       {
         Vector n_master, n_slave;
-        if (p.is_midpoint)
+        if (p.on_edge())
           {
+            // the single edge node (k = 2) is the midpoint
             const auto &me = mesh.edge(p.master_entity).vertices, &se = mesh.edge(p.slave_entity).vertices;
             p.master_location = 0.5 * (mesh.vertex(me[0]) + mesh.vertex(me[1]));
             p.slave_location  = 0.5 * (mesh.vertex(se[0]) + mesh.vertex(se[1]));
@@ -276,14 +277,18 @@ namespace dealvem
         p.initial_gap = (p.slave_location - p.master_location) * p.normal;
         p.weight      = 0;
       }
+    const VEMElementData       layout(interface.degree);
+    const std::vector<double> &edge_weights = layout.edge_quadrature_weights();
     for (auto &s : interface.segments)
       {
         s.length = interface.pairs[s.first].slave_location.distance(interface.pairs[s.second].slave_location);
-        const double end_weight = (interface.degree == 1 ? 0.5 : 1. / 6.) * s.length;
+        // the Gauss-Lobatto rule on the sub-edge's nodes: its end weights
+        // at the vertex pairs, its interior weight at the edge node pair
+        const double end_weight = edge_weights.front() * s.length;
         interface.pairs[s.first].weight += end_weight;
         interface.pairs[s.second].weight += end_weight;
         if (s.midpoint != invalid)
-          interface.pairs[s.midpoint].weight += 2. / 3. * s.length;
+          interface.pairs[s.midpoint].weight += edge_weights[1] * s.length;
       }
   }
 
@@ -294,7 +299,7 @@ namespace dealvem
     // per vertex: the vertex pairs it is in (pair, partner)
     std::map<unsigned int, std::vector<std::pair<unsigned int, unsigned int>>> at;
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      if (!pairs[i].is_midpoint)
+      if (!pairs[i].on_edge())
         {
           at[pairs[i].master_entity].emplace_back(i, pairs[i].slave_entity);
           at[pairs[i].slave_entity].emplace_back(i, pairs[i].master_entity);
@@ -321,7 +326,7 @@ namespace dealvem
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
         pairs[p].junction = false;
-        if (pairs[p].is_midpoint)
+        if (pairs[p].on_edge())
           continue;
         const unsigned int a = pairs[p].master_entity, b = pairs[p].slave_entity;
         for (const auto &[q, c] : at[a])

@@ -237,6 +237,9 @@ namespace dealvem
                       NodeInsertion::Interface                   &result)
     {
       NodeInsertion::Report &report = result.report;
+      // the layout's edge nodes are paired with the sub-edges (at most one
+      // per edge: NodeInsertion::insert() admits k = 1 and 2 only)
+      const bool pair_edge_nodes = VEMElementData(degree).nodes_per_edge() > 0;
       // does the boundary of the body go on smoothly beyond the end vertex v
       // of a side (the part was cut out of a smooth boundary)? The other
       // boundary edge at v is found by walking around v from the side's
@@ -332,13 +335,13 @@ namespace dealvem
               seg.first = vertex_pair(i);
               if (run_start == invalid)
                 run_start = seg.first;
-              if (degree == 2)
+              if (pair_edge_nodes)
                 {
                   ContactNodePair p;
                   p.master_entity =
                     master_after.edge_indices[master_after.edge_by_pair.at(key(pa->second, pb->second))];
                   p.slave_entity = slave_after.edge_indices[slave_after.edge_by_pair.at(key(sa, sb))];
-                  p.is_midpoint  = true;
+                  p.kind         = VEMElementData::NodeKind::edge;
                   p.interface    = index;
                   seg.midpoint   = result.pairs.size();
                   result.pairs.push_back(p);

@@ -119,9 +119,11 @@ namespace dealvem
                 S(2 * nodes[a] + c, 2 * nodes[b] + c) += v;
             }
       }
-    if (k == 2)
+    // the cell moments enter with unit weight
+    const VEMElementData &layout = element.get_element_data();
+    for (unsigned int j = 0; j < layout.nodes_per_cell(); ++j)
       for (unsigned int c = 0; c < 2; ++c)
-        S(2 * (2 * N) + c, 2 * (2 * N) + c) = 1.;
+        S(2 * layout.cell_node(N, j) + c, 2 * layout.cell_node(N, j) + c) = 1.;
   }
 
 

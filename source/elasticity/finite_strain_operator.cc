@@ -136,10 +136,12 @@ namespace dealvem
     componentwise_projector_complement(const VirtualElement<dim> &element, dealii::FullMatrix<double> &I_Pi)
     {
       const PolygonGeometry<dim> &geometry = element.get_geometry();
+      const VEMElementData       &layout   = element.get_element_data();
       const unsigned int          k = element.get_degree(), n = element.n_dofs_per_cell(),
                          n_p = element.n_polynomials(), N = geometry.n_vertices();
+      const std::vector<double>  &edge_weights = layout.edge_quadrature_weights();
       dealii::FullMatrix<double> Bc(n_p, n);
-      if (k == 1)
+      if (layout.nodes_per_cell() == 0)
         for (unsigned int v = 0; v < N; ++v)
           {
             Bc(0, 2 * v)     = 1. / N;
@@ -147,8 +149,8 @@ namespace dealvem
           }
       else
         {
-          Bc(0, 2 * (2 * N))     = 1.;
-          Bc(1, 2 * (2 * N) + 1) = 1.;
+          Bc(0, 2 * layout.cell_node(N, 0))     = 1.;
+          Bc(1, 2 * layout.cell_node(N, 0) + 1) = 1.;
         }
       const double            h = geometry.diameter();
       const dealii::Point<dim> &x_c = geometry.centroid();
@@ -159,13 +161,13 @@ namespace dealvem
               const std::vector<unsigned int> nodes = element.edge_nodes(e);
               const double                    L     = geometry.edge_length(e);
               const dealii::Tensor<1, dim>    normal = geometry.edge_normal(e);
-              const double w1[2] = {L / 2., L / 2.}, w2[3] = {L / 6., 2. * L / 3., L / 6.};
+              // edge_nodes() lists the nodes in the order of the weights
               for (unsigned int a = 0; a < nodes.size(); ++a)
                 {
                   const dealii::Tensor<1, dim> flux =
                     element.polynomial_gradient(alpha, element.node_location(nodes[a])) * normal;
                   for (unsigned int c = 0; c < dim; ++c)
-                    Bc(alpha, 2 * nodes[a] + c) += (k == 1 ? w1[a] : w2[a]) * flux[c];
+                    Bc(alpha, 2 * nodes[a] + c) += edge_weights[a] * L * flux[c];
                 }
             }
           if (k == 2)
@@ -181,7 +183,7 @@ namespace dealvem
                       x[j] += h;
                       laplacian += (element.polynomial_gradient(alpha, x)[c][j] - g0[c][j]) / h;
                     }
-                  Bc(alpha, 2 * (2 * N) + c) -= geometry.area() * laplacian;
+                  Bc(alpha, 2 * layout.cell_node(N, 0) + c) -= geometry.area() * laplacian;
                 }
             }
         }

@@ -145,6 +145,15 @@ namespace dealvem
       const auto        &tria = map.get_triangulation();
       const auto        &mesh = map.get_mesh();
       const unsigned int k    = vem_dof_handler.get_degree();
+      // the VEM layout: point values at the vertices and at the edge nodes
+      // (the Gauss-Lobatto points, as FE_Q(k)'s support points on a line),
+      // and the cell moments; the interior FE_Q DoFs are fixed by the cell
+      // mean alone, which is one moment per component
+      const VEMElementData &layout = vem_dof_handler.get_element_data();
+      AssertThrow(layout.nodes_per_cell() <= 1,
+                  dealii::ExcMessage(where + "implemented for at most one moment per cell (k = 1 and 2); " +
+                                     layout.get_name() + " has " + std::to_string(layout.nodes_per_cell()) +
+                                     ". Use interpolate_to_discontinuous()."));
       AssertThrow(tria.all_reference_cells_are_hyper_cube(),
                   dealii::ExcMessage(where + "the triangulation must consist of quadrilaterals."));
       AssertThrow(!tria.has_hanging_nodes(),
@@ -153,7 +162,7 @@ namespace dealvem
                                              "FE_Q field matches it. Use interpolate_to_discontinuous()."));
       // FE_Q(k)^2: one DoF per vertex and component, k - 1 per line, (k-1)^2
       // per quad.
-      AssertThrow(fe.degree == k && fe.n_dofs_per_vertex() == 2 && fe.n_dofs_per_line() == 2 * (k - 1) &&
+      AssertThrow(fe.degree == k && fe.n_dofs_per_vertex() == 2 && fe.n_dofs_per_line() == 2 * layout.nodes_per_edge() &&
                     fe.n_dofs_per_quad(0) == 2 * (k - 1) * (k - 1),
                   dealii::ExcMessage(where + "the finite element must be FESystem(FE_Q(" + std::to_string(k) +
                                      "), 2) for virtual elements of order " + std::to_string(k) + ", not " +
@@ -198,7 +207,7 @@ namespace dealvem
           vem_dof_handler.get_dof_values(p, vem_solution, local);
           cell->get_dof_indices(indices);
 
-          // the cell-centre DoFs (k = 2), one per component
+          // the cell-centre DoFs (one cell moment), one per component
           std::array<unsigned int, 2> centre = {{dealii::numbers::invalid_unsigned_int,
                                                  dealii::numbers::invalid_unsigned_int}};
           for (unsigned int i = 0; i < n_dofs_per_cell; ++i)
@@ -214,27 +223,35 @@ namespace dealvem
                 }
               else if (on_side(s[0]) || on_side(s[1]))
                 {
-                  // the midpoint of a face (k = 2): faces 0, 1 at x = 0, 1,
-                  // faces 2, 3 at y = 0, 1; the VEM node of the polygon edge
-                  // joining the face's vertices
-                  Assert(k == 2, dealii::ExcInternalError());
+                  // a point inside a face: faces 0, 1 at x = 0, 1, faces
+                  // 2, 3 at y = 0, 1; the VEM edge node of the polygon edge
+                  // joining the face's vertices at the same place
                   const unsigned int f = on_side(s[0]) ? (s[0] > 0.5 ? 1 : 0) : (s[1] > 0.5 ? 3 : 2);
                   const unsigned int a = local_vertex[dealii::GeometryInfo<dim>::face_to_cell_vertices(f, 0)];
                   const unsigned int b = local_vertex[dealii::GeometryInfo<dim>::face_to_cell_vertices(f, 1)];
                   // polygon edge i joins loop[i] and loop[i + 1]
                   const unsigned int edge = ((a + 1) % N == b) ? a : b;
                   AssertThrow((edge + 1) % N == (edge == a ? b : a), dealii::ExcInternalError());
-                  values[i] = local[2 * (N + edge) + comp];
+                  // the position along the face from its vertex 0, then
+                  // along the polygon edge
+                  const double t_face = on_side(s[0]) ? s[1] : s[0];
+                  const double t      = (edge == a ? t_face : 1. - t_face);
+                  const auto  &positions = layout.edge_node_positions();
+                  unsigned int j         = 0;
+                  while (j < positions.size() && std::abs(positions[j] - t) > tol)
+                    ++j;
+                  AssertThrow(j < positions.size(), dealii::ExcInternalError());
+                  values[i] = local[2 * layout.edge_node(N, edge, j) + comp];
                 }
               else
                 {
-                  Assert(k == 2, dealii::ExcInternalError());
+                  AssertThrow(layout.nodes_per_cell() == 1, dealii::ExcInternalError());
                   centre[comp] = i;
                   values[i]    = 0.;
                 }
             }
 
-          if (k == 2)
+          if (layout.nodes_per_cell() == 1)
             {
               // choose the centre values so that the cell mean of each
               // component is the VEM cell moment (local node 2N)
@@ -258,7 +275,7 @@ namespace dealvem
                 {
                   AssertThrow(centre[comp] != dealii::numbers::invalid_unsigned_int, dealii::ExcInternalError());
                   values[centre[comp]] =
-                    (area * local[2 * (2 * N) + comp] - integral_without_centre[comp]) / integral_of_centre[comp];
+                    (area * local[2 * layout.cell_node(N, 0) + comp] - integral_without_centre[comp]) / integral_of_centre[comp];
                 }
             }
 

@@ -87,7 +87,7 @@ namespace dealvem
     dof_handler.check_mesh_unchanged();
     const PolygonalMesh<2> &mesh = dof_handler.get_mesh();
     VEMDoFHandler<2>        coarse(mesh);
-    coarse.distribute_dofs(1);
+    coarse.distribute_dofs(VEMElementData(1));
     coarse_modes = coarse.rigid_body_modes();
 
     std::vector<dealii::types::global_dof_index> fine_dofs, coarse_dofs;

@@ -13,15 +13,24 @@ namespace dealvem
     : degree(degree)
   {
     AssertThrow(degree >= 1, dealii::ExcMessage("VEMElementData: the order k must be at least 1, got 0."));
-    if (degree == 2)
-      edge_positions = {0.5}; // exactly the midpoint
-    else if (degree > 2)
+    // The (k + 1)-point Gauss-Lobatto rule on [0, 1]: its end points are
+    // the vertices, its interior points the edge nodes. The rules of k = 1
+    // and 2 are written out, so that their points and weights are the
+    // correctly rounded 1/2, 1/6 and 2/3 the formulas of the element always
+    // used (deal.II computes the general rule by Newton's method).
+    if (degree == 1)
+      edge_weights = {0.5, 0.5};
+    else if (degree == 2)
       {
-        // the interior points of the (k + 1)-point Gauss-Lobatto rule on
-        // [0, 1]; its end points are the vertices
+        edge_positions = {0.5};
+        edge_weights   = {1. / 6., 2. / 3., 1. / 6.};
+      }
+    else
+      {
         const dealii::QGaussLobatto<1> rule(degree + 1);
         for (unsigned int q = 1; q < degree; ++q)
           edge_positions.push_back(rule.point(q)[0]);
+        edge_weights = rule.get_weights();
       }
   }
 

@@ -68,16 +68,6 @@ namespace dealvem
     // 1, xi, eta, xi^2, xi eta, eta^2.
     constexpr unsigned int monomial_product[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
 
-    // Gauss-Lobatto weights on an edge's nodes (relative to its length):
-    // trapezoidal for k = 1, Simpson for k = 2.
-    inline const double *
-    lobatto_weights(const unsigned int degree)
-    {
-      static constexpr double lobatto_1[2] = {0.5, 0.5};
-      static constexpr double lobatto_2[3] = {1. / 6., 2. / 3., 1. / 6.};
-      return degree == 1 ? lobatto_1 : lobatto_2;
-    }
-
     // Row-major views of dealii::FullMatrix storage and of scratch buffers:
     // the Eigen products below write straight into the element's matrices.
     using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -233,10 +223,12 @@ namespace dealvem
   std::vector<unsigned int>
   VirtualElement<dim>::edge_nodes(const unsigned int edge) const
   {
-    const unsigned int next = (edge + 1) % n_vertices;
-    if (degree == 1)
-      return {edge, next};
-    return {edge, n_vertices + edge, next};
+    // the Gauss-Lobatto order: first vertex, edge nodes, second vertex
+    std::vector<unsigned int> nodes(1, edge);
+    for (unsigned int j = 0; j < data.nodes_per_edge(); ++j)
+      nodes.push_back(data.edge_node(n_vertices, edge, j));
+    nodes.push_back((edge + 1) % n_vertices);
+    return nodes;
   }
 
 
@@ -247,7 +239,8 @@ namespace dealvem
   {
     if (j < n_vertices)
       return geometry->vertex(j);
-    if (j < 2 * n_vertices)
+    // (the element implements k = 1 and 2: at most one edge node, the midpoint)
+    if (data.node_kind(n_vertices, j) == VEMElementData::NodeKind::edge)
       return geometry->edge_midpoint(j - n_vertices);
     return geometry->centroid();
   }
@@ -333,7 +326,7 @@ namespace dealvem
     const unsigned int          n_p = n_polynomials(), N = n_vertices;
     const double                area = geo.area();
     D.reinit(n_dofs, n_p);
-    const unsigned int n_point_nodes = (degree == 1 ? N : 2 * N);
+    const unsigned int n_point_nodes = data.cell_node(N, 0);
     for (unsigned int j = 0; j < n_point_nodes; ++j)
       {
         const dealii::Point<dim> s = geo.scaled(node_location(j));
@@ -357,7 +350,7 @@ namespace dealvem
             double moment = 0;
             for (unsigned int m = 0; m < 6; ++m)
               moment += coef[alpha][c][m] * monomial_integrals[m];
-            D(2 * (2 * N) + c, alpha) = moment / area;
+            D(2 * data.cell_node(N, 0) + c, alpha) = moment / area;
           }
   }
 
@@ -374,8 +367,8 @@ namespace dealvem
     // rows 0, 1: translations
     if (degree == 2)
       {
-        B(0, 2 * (2 * N) + 0) = 1.;
-        B(1, 2 * (2 * N) + 1) = 1.;
+        B(0, 2 * data.cell_node(N, 0) + 0) = 1.;
+        B(1, 2 * data.cell_node(N, 0) + 1) = 1.;
       }
     else
       for (unsigned int i = 0; i < N; ++i)
@@ -385,8 +378,8 @@ namespace dealvem
         }
     // row 2: mean rotation h/(2|E|) int_dE v.t, by Gauss-Lobatto on the
     // edge nodes
-    const double      *lobatto      = lobatto_weights(degree);
-    const unsigned int n_edge_nodes = degree + 1;
+    const std::vector<double> &lobatto      = data.edge_quadrature_weights();
+    const unsigned int         n_edge_nodes = lobatto.size();
     for (unsigned int e = 0; e < N; ++e)
       {
         const auto         nodes = edge_node_triple(e);
@@ -410,8 +403,8 @@ namespace dealvem
     const PolygonGeometry<dim> &geo = *geometry;
     const unsigned int          n_p = n_polynomials(), N = n_vertices;
     const double                h = geo.diameter(), area = geo.area();
-    const double               *lobatto      = lobatto_weights(degree);
-    const unsigned int          n_edge_nodes = degree + 1;
+    const std::vector<double>  &lobatto      = data.edge_quadrature_weights();
+    const unsigned int          n_edge_nodes = lobatto.size();
     for (unsigned int e = 0; e < N; ++e)
       {
         const auto                   nodes = edge_node_triple(e);
@@ -466,7 +459,7 @@ namespace dealvem
                 }
           const dealii::Tensor<1, dim> div_eps = 0.5 * (grad_div + laplace);
           for (unsigned int c = 0; c < 2; ++c)
-            B(alpha, 2 * (2 * N) + c) -= area * div_eps[c];
+            B(alpha, 2 * data.cell_node(N, 0) + c) -= area * div_eps[c];
         }
   }
 
@@ -589,8 +582,8 @@ namespace dealvem
     // - int_E v_c d_j q_m in the rows (2c + j) n_m + m: the edge integrals
     // by Gauss-Lobatto on the edge nodes (exact, degree <= 2k - 1) ...
     Pi_grad.reinit(4 * n_m, n_dofs);
-    const double      *lobatto      = lobatto_weights(degree);
-    const unsigned int n_edge_nodes = degree + 1;
+    const std::vector<double> &lobatto      = data.edge_quadrature_weights();
+    const unsigned int         n_edge_nodes = lobatto.size();
     for (unsigned int e = 0; e < N; ++e)
       {
         const auto                   nodes = edge_node_triple(e);
@@ -614,8 +607,8 @@ namespace dealvem
     if (degree == 2)
       for (unsigned int c = 0; c < 2; ++c)
         {
-          Pi_grad((2 * c + 0) * n_m + 1, 2 * (2 * N) + c) -= area / h;
-          Pi_grad((2 * c + 1) * n_m + 2, 2 * (2 * N) + c) -= area / h;
+          Pi_grad((2 * c + 0) * n_m + 1, 2 * data.cell_node(N, 0) + c) -= area / h;
+          Pi_grad((2 * c + 1) * n_m + 2, 2 * data.cell_node(N, 0) + c) -= area / h;
         }
     // the coefficients: M^{-1} times each block of n_m rows
     Eigen::Matrix3d M = Eigen::Matrix3d::Identity();
@@ -668,7 +661,7 @@ namespace dealvem
   {
     AssertDimension(f.n_components, 2);
     local.reinit(n_dofs);
-    const unsigned int n_point_nodes = (degree == 1 ? n_vertices : 2 * n_vertices);
+    const unsigned int n_point_nodes = data.cell_node(n_vertices, 0);
     for (unsigned int j = 0; j < n_point_nodes; ++j)
       {
         const dealii::Point<dim> x = node_location(j);
@@ -684,8 +677,8 @@ namespace dealvem
             m0 += q.weight(k) * f.value(q.point(k), 0);
             m1 += q.weight(k) * f.value(q.point(k), 1);
           }
-        local[4 * n_vertices]     = m0 / geometry->area();
-        local[4 * n_vertices + 1] = m1 / geometry->area();
+        local[2 * data.cell_node(n_vertices, 0)]     = m0 / geometry->area();
+        local[2 * data.cell_node(n_vertices, 0) + 1] = m1 / geometry->area();
       }
   }
 

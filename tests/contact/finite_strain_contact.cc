@@ -408,7 +408,7 @@ namespace
     std::vector<std::pair<double, dealii::Point<2>>> side;
     for (const auto &pair : interfaces[0].pairs)
       {
-        const unsigned int node = pair.is_midpoint ? dofs.edge_node(pair.master_entity) :
+        const unsigned int node = pair.on_edge() ? dofs.edge_node(pair.master_entity) :
                                                      dofs.vertex_node(pair.master_entity);
         side.emplace_back(dofs.node_location(node)[0], bend(dofs.node_location(node)[0], 1.));
       }
@@ -432,7 +432,7 @@ namespace
     };
     std::set<unsigned int> slave_nodes;
     for (const auto &pair : interfaces[0].pairs)
-      slave_nodes.insert(pair.is_midpoint ? dofs.edge_node(pair.slave_entity) : dofs.vertex_node(pair.slave_entity));
+      slave_nodes.insert(pair.on_edge() ? dofs.edge_node(pair.slave_entity) : dofs.vertex_node(pair.slave_entity));
     const double delta = 0.15;
     for (const double lift : {0., 0.02})
       {

@@ -106,7 +106,7 @@ namespace
         for (const auto &pr : i.pairs)
           std::cout << "  initial gap " << pr.initial_gap << " at theta " << std::atan2(pr.slave_location[1], pr.slave_location[0])
                     << " master r " << pr.master_location.norm() << " slave r " << pr.slave_location.norm()
-                    << " master theta " << std::atan2(pr.master_location[1], pr.master_location[0]) << (pr.is_midpoint ? " mid" : "") << std::endl;
+                    << " master theta " << std::atan2(pr.master_location[1], pr.master_location[0]) << (pr.on_edge() ? " mid" : "") << std::endl;
     for (const auto &rep : r.insertion_reports)
       {
         o.n_closed += rep.n_closed_gaps;

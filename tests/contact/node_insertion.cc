@@ -231,10 +231,10 @@ namespace
         tangent_err = std::max(tangent_err, (p.tangent - t).norm());
         gap_err     = std::max(gap_err, std::abs(p.initial_gap - x.gap));
         shift       = std::max(shift, std::abs((p.slave_location - p.master_location) * t));
-        n_mid += p.is_midpoint;
+        n_mid += p.on_edge();
         wrong_interface += (p.interface != index);
         // the entities are where the locations say
-        if (p.is_midpoint)
+        if (p.on_edge())
           {
             const auto &em = mesh.edge(p.master_entity).vertices;
             const auto &es = mesh.edge(p.slave_entity).vertices;
@@ -585,7 +585,7 @@ main(int argc, char **argv)
             max_x = std::max(max_x, std::abs(p.slave_location[0]));
             // vertex: on the circle; midpoint: mean of the chord's ends
             double g0 = R - std::sqrt(R * R - p.slave_location[0] * p.slave_location[0]);
-            if (p.is_midpoint)
+            if (p.on_edge())
               {
                 const auto &e = mesh.edge(p.slave_entity).vertices;
                 g0            = 0.5 * (mesh.vertex(e[0])[1] + mesh.vertex(e[1])[1]);
@@ -655,7 +655,7 @@ main(int argc, char **argv)
             const auto   vertex = [&](const double x) { return (x > 0.1 && x < 0.9) ? delta * h : 0.; };
             // a midpoint pair: the mean of the gaps at the ends of its edge
             const double expected =
-              closed ? 0. : (p.is_midpoint ? 0.5 * (vertex(xs - h / 2) + vertex(xs + h / 2)) : vertex(xs));
+              closed ? 0. : (p.on_edge() ? 0.5 * (vertex(xs - h / 2) + vertex(xs + h / 2)) : vertex(xs));
             gap_err               = std::max(gap_err, std::abs(p.initial_gap - expected));
             shift                 = std::max(shift, std::abs(p.slave_location[0] - p.master_location[0]));
           }
@@ -725,7 +725,7 @@ main(int argc, char **argv)
     const unsigned int last     = lower.n_vertices() + 4;
     const auto         paired   = [](const NodeInsertion::Interface &itf, const unsigned int v) {
       for (const auto &p : itf.pairs)
-        if (!p.is_midpoint && p.slave_entity == v)
+        if (!p.on_edge() && p.slave_entity == v)
           return &p;
       return static_cast<const ContactNodePair *>(nullptr);
     };

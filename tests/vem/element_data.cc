@@ -49,6 +49,24 @@ main()
                         "k = 3: first edge node at (1 - 1/sqrt 5)/2");
     testing::check_near(k3.edge_node_positions()[1], 0.5 * (1 + 1 / std::sqrt(5.)), 1e-15,
                         "k = 3: second edge node at (1 + 1/sqrt 5)/2");
+    // the edge rule of the layout: Gauss-Lobatto on the edge's k + 1 nodes
+    testing::check(k1.edge_quadrature_weights() == std::vector<double>{0.5, 0.5},
+                   "k = 1: the trapezoidal rule on an edge");
+    testing::check(k2.edge_quadrature_weights() == std::vector<double>{1. / 6., 2. / 3., 1. / 6.},
+                   "k = 2: Simpson's rule on an edge");
+    {
+      const std::vector<double> &w = k3.edge_quadrature_weights();
+      testing::check(w.size() == 4, "k = 3: four edge weights");
+      testing::check_near(w[0], 1. / 12., 1e-15, "k = 3: first end weight 1/12");
+      testing::check_near(w[1], 5. / 12., 1e-15, "k = 3: first interior weight 5/12");
+      testing::check_near(w[2] - w[1] + w[3] - w[0], 0., 1e-15, "k = 3: the weights are symmetric");
+    }
+    testing::check(k3.node_kind(4, 3) == VEMElementData::NodeKind::vertex &&
+                     k3.node_kind(4, 4) == VEMElementData::NodeKind::edge &&
+                     k3.node_kind(4, 11) == VEMElementData::NodeKind::edge &&
+                     k3.node_kind(4, 12) == VEMElementData::NodeKind::cell &&
+                     k2.node_kind(5, 9) == VEMElementData::NodeKind::edge,
+                   "node kinds follow the local order");
     for (const unsigned int k : {1u, 2u})
       {
         const VirtualElement<2> element(k);

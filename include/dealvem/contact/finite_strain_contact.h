@@ -406,6 +406,28 @@ namespace dealvem
       double               slip_origin = 0; ///< a.t at the origin of the slip (Coulomb)
     };
 
+    /// What the constructor's steps share about the pairs (defined in the
+    /// .cc file).
+    struct Topology;
+
+    /// Constructor step 1: the pairs, segments and friction coefficients of
+    /// all @p interfaces, and the pairs' neighbours, normal sides and
+    /// interfaces in @p topology.
+    void
+    collect_pairs(const std::vector<NodeInsertion::Interface> &interfaces,
+                  const Options                               &options,
+                  Topology                                    &topology);
+
+    /// Constructor step 2: the nodes, the frame and the chords of each pair,
+    /// with the base displacement @p base (none if null).
+    void
+    set_up_pair_data(const Topology &topology, const dealii::Vector<double> *base);
+
+    /// Constructor step 3: the slip origin of each pair, and which pairs
+    /// begin their contact within the step (is_new_contact()).
+    void
+    set_up_slip_origins(const Topology &topology, const Options &options);
+
     /// The angle theta of pair @p i at @p u (and, if not null, the values
     /// d and theta_s of each chord).
     double

@@ -10,6 +10,8 @@
 #include <deal.II/base/types.h>
 
 #include <dealvem/mesh/polygonal_mesh.h>
+#include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/vem_element_data.h>
 
 #include <map>
 #include <set>
@@ -34,15 +36,25 @@ namespace dealvem
    * $g = (u_B - u_A)\cdot n + g_0$ with $g_0 = (x_B - x_A)\cdot n$, A =
    * master, B = slave; $g \ge 0$ means the bodies do not penetrate.
    *
-   * Nodes are mesh entities: a vertex (is_midpoint = false, entity = vertex
-   * index) or, for k = 2, the midpoint of an edge (is_midpoint = true,
-   * entity = edge index).
+   * Nodes are mesh entities, of the kind the element's layout
+   * (VEMElementData) gives them: a vertex (kind = vertex, entity = vertex
+   * index) or the node inside an edge (kind = edge, entity = edge index;
+   * the midpoint for k = 2). NodeInsertion pairs edge nodes only for
+   * layouts with at most one node per edge (k = 1 and 2), so an edge and its
+   * node are the same thing here.
    */
   struct ContactNodePair
   {
-    unsigned int           master_entity;      ///< vertex or edge index (see is_midpoint) on the master side
+    unsigned int           master_entity;      ///< vertex or edge index (see kind) on the master side
     unsigned int           slave_entity;       ///< vertex or edge index on the slave side
-    bool                   is_midpoint = false; ///< a pair of edge midpoints (k = 2)
+    /**
+     * The kind of node of both sides, in the terms of the element's layout:
+     * VEMElementData::NodeKind::vertex (the entities are vertices) or
+     * VEMElementData::NodeKind::edge (the entities are edges, each with its
+     * one interior node, the midpoint for k = 2). Cell nodes are never
+     * paired.
+     */
+    VEMElementData::NodeKind kind = VEMElementData::NodeKind::vertex;
     dealii::Point<2>       master_location;    ///< position of the master node
     dealii::Point<2>       slave_location;     ///< position of the slave node
     dealii::Tensor<1, 2>   normal;             ///< contact normal n
@@ -65,6 +77,29 @@ namespace dealvem
     /// of the two other pairs, and the unilateral and Coulomb iterations
     /// keep it open (with tied normal contact it stays a constraint).
     bool                   junction = false;
+
+    /**
+     * True for a pair of edge nodes (kind is VEMElementData::NodeKind::edge),
+     * false for a pair of vertices.
+     */
+    bool
+    on_edge() const
+    {
+      return kind == VEMElementData::NodeKind::edge;
+    }
+
+    /**
+     * The global node of the master side (@p master true) or of the slave
+     * side of this pair in @p dof_handler: the node of the vertex, or the
+     * interior node of the edge.
+     */
+    template <int dim>
+    unsigned int
+    node(const VEMDoFHandler<dim> &dof_handler, const bool master) const
+    {
+      const unsigned int entity = master ? master_entity : slave_entity;
+      return on_edge() ? dof_handler.edge_node(entity) : dof_handler.vertex_node(entity);
+    }
   };
 
   /**

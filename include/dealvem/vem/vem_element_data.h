@@ -82,6 +82,49 @@ namespace dealvem
       return edge_positions;
     }
 
+    /**
+     * The weights on [0, 1] of the (k + 1)-point Gauss-Lobatto rule whose
+     * points are the nodes of an edge: the first vertex, the edge nodes of
+     * edge_node_positions(), the second vertex, in this order. Multiplied by
+     * the edge length they integrate a trace over an edge from its nodal
+     * values, exactly for polynomials of degree up to 2k - 1: the
+     * trapezoidal rule (1/2, 1/2) for k = 1, Simpson's rule (1/6, 2/3, 1/6)
+     * for k = 2. The weights sum to one.
+     */
+    const std::vector<double> &
+    edge_quadrature_weights() const
+    {
+      return edge_weights;
+    }
+
+    /**
+     * The kind of entity a local node belongs to: a vertex, the interior of
+     * an edge, or the interior of the cell (a moment).
+     */
+    enum class NodeKind
+    {
+      /// The point value at a vertex.
+      vertex,
+      /// A point value inside an edge (edge_node_positions()).
+      edge,
+      /// A moment of the cell.
+      cell
+    };
+
+    /**
+     * The kind of local node @p node of a cell with @p n_vertices vertices,
+     * from the local order described in the class documentation.
+     */
+    NodeKind
+    node_kind(const unsigned int n_vertices, const unsigned int node) const
+    {
+      if (node < n_vertices)
+        return NodeKind::vertex;
+      if (node < n_vertices * (1 + nodes_per_edge()))
+        return NodeKind::edge;
+      return NodeKind::cell;
+    }
+
     /// Local nodes of a cell with @p n_vertices vertices.
     unsigned int
     n_nodes(const unsigned int n_vertices) const
@@ -119,6 +162,7 @@ namespace dealvem
   private:
     unsigned int        degree;
     std::vector<double> edge_positions;
+    std::vector<double> edge_weights;
   };
 } // namespace dealvem
 

@@ -544,7 +544,7 @@ namespace dealvem
     edge_node_triple(const unsigned int e) const
     {
       const unsigned int next = (e + 1) % n_vertices;
-      return {{e, degree == 1 ? next : n_vertices + e, next}};
+      return {{e, data.nodes_per_edge() == 0 ? next : data.edge_node(n_vertices, e, 0), next}};
     }
 
     unsigned int                                degree;
