@@ -17,7 +17,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "FAIL: git ls-files in ${SOURCE_DIR}: ${err}")
 endif()
 string(REPLACE "\n" ";" files "${files}")
-set(top_level_allowed .ci .gitignore CMakeLists.txt LICENSE README.md app benchmarks cmake doc examples
+set(top_level_allowed .ci .clang-format .gitignore CMakeLists.txt LICENSE README.md app benchmarks cmake doc examples
   include scripts source tests)
 set(bad "")
 set(n 0)

@@ -292,8 +292,8 @@ namespace dealvem
     }
 
   private:
-    /// The state and the steps of one run of iterate() (defined in the
-    /// source file).
+    /// The state and the steps of one run of iterate() (defined in
+    /// source/contact/primal_active_set_iteration.cc).
     class Iteration;
 
     /// The iteration of solve() and solve_stick_on_closed() (@p start:
