@@ -236,8 +236,11 @@ namespace Step2
         const auto &s = stresses.cell_stress(c);
         stress_error  = std::max({stress_error, std::abs(s[0][0]), std::abs(s[1][1] + p), std::abs(s[0][1])});
       }
+    // the multiplier of pair i is the solution's entry in the pair's normal
+    // row (ContactRows, unknown n_dofs + i)
+    const ContactRows rows = contact->rows();
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      pressure_error = std::max(pressure_error, std::abs(-solution[n_dofs + i] / pairs[i].weight - p));
+      pressure_error = std::max(pressure_error, std::abs(-rows.normal_multiplier(solution, i) / rows.weight(i) - p));
     std::cout << std::scientific << std::setprecision(2) << "   max |sigma - sigma_exact| / p = " << stress_error / p
               << ", max |pressure - p| / p = " << pressure_error / p << std::defaultfloat << std::endl;
     write_vtu_file("step-2-k" + std::to_string(degree) + (voronoi_upper ? "-voronoi" : "-quads") + ".vtu",

@@ -313,6 +313,7 @@ namespace Step6
   PressedBody::output_results(const unsigned int iteration)
   {
     const auto         &pairs = contact->get_pairs();
+    const ContactRows   rows  = contact->rows();
     const auto         &set   = sets_solved_with.back();
     std::vector<double> active(mesh.n_vertices(), 0.), pressure(mesh.n_vertices(), 0.);
     for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -320,7 +321,7 @@ namespace Step6
         for (const unsigned int v : {pairs[i].master_entity, pairs[i].slave_entity})
           {
             active[v]   = set[i] ? 1. : 0.;
-            pressure[v] = -solution[n_dofs + i] / pairs[i].weight;
+            pressure[v] = -rows.normal_multiplier(solution, i) / pairs[i].weight;
           }
     dealii::Vector<double> u(n_dofs);
     for (unsigned int i = 0; i < n_dofs; ++i)
@@ -337,7 +338,7 @@ namespace Step6
     SVGPlots::Series series;
     series.name = "iteration " + std::to_string(iteration);
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      series.points.emplace_back(pairs[i].slave_location[0], -solution[n_dofs + i] / pairs[i].weight);
+      series.points.emplace_back(pairs[i].slave_location[0], -rows.normal_multiplier(solution, i) / pairs[i].weight);
     std::sort(series.points.begin(), series.points.end());
     series.marker_radius = 2;
     pressure_history.push_back(series);
@@ -364,9 +365,12 @@ namespace Step6
   {
     const auto &pairs = contact->get_pairs();
 
+    // the multiplier of pair i: the solution's entry in the pair's normal
+    // row (ContactRows, unknown n_dofs + i)
+    const ContactRows   rows = contact->rows();
     std::vector<double> gaps = contact->gaps(solution), lambda(pairs.size());
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      lambda[i] = solution[n_dofs + i];
+      lambda[i] = rows.normal_multiplier(solution, i);
     const double residual = update->residual(gaps, lambda);
 
     const auto           ft = contact->tangential_forces(solution);

@@ -86,7 +86,6 @@ namespace dealvem
                                     const std::vector<double> &tangential_force)
   {
     const CycleData &d        = *data;
-    const auto      &n        = d.n;
     const auto      &x        = d.x;
     const auto      &as       = d.solve_result;
     const auto      &fr       = d.solve_result;
@@ -97,9 +96,10 @@ namespace dealvem
     const auto       slips    = d.contact->slips(x);
     // the normal nodal forces -lambda and the tangential ones, recovered as
     // tractions interface by interface
+    const ContactRows   rows = d.contact->rows();
     std::vector<double> normal_force(pairs.size());
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      normal_force[i] = -x[n + i];
+      normal_force[i] = -rows.normal_multiplier(x, i);
     const auto  tractions       = InterfaceTractions::recover(results.interfaces, normal_force, tangential_force, as.active);
     const auto &recovered       = tractions.pressure;
     const auto &recovered_shear = tractions.shear;
@@ -124,8 +124,8 @@ namespace dealvem
         r.active          = as.active[i];
         r.weight          = p.weight;
         r.gap             = gaps[i];
-        r.multiplier      = x[n + i];
-        r.lumped_pressure = -x[n + i] / p.weight;
+        r.multiplier      = rows.normal_multiplier(x, i);
+        r.lumped_pressure = -rows.normal_multiplier(x, i) / p.weight;
         r.pressure        = recovered[i];
         r.at_open_end     = p.at_open_end;
         r.slip            = slips[i];
@@ -150,7 +150,7 @@ namespace dealvem
         step_result.n_slip += (r.status == "slip");
         results.pairs.push_back(r);
         results.total_contact_force +=
-          (-x[n + i]) * p.normal + r.tangential_traction * p.weight * p.tangent;
+          (-rows.normal_multiplier(x, i)) * p.normal + r.tangential_traction * p.weight * p.tangent;
       }
     return step_result;
   }
@@ -163,11 +163,11 @@ namespace dealvem
   void
   ContactProblem::make_interface_resultants(StepResult &step_result) const
   {
-    const CycleData &d          = *data;
-    const auto      &n          = d.n;
-    const auto      &x          = d.x;
-    const auto      &pairs      = d.pairs;
-    const auto      &interfaces = results.interfaces;
+    const CycleData  &d          = *data;
+    const auto       &x          = d.x;
+    const auto       &pairs      = d.pairs;
+    const auto       &interfaces = results.interfaces;
+    const ContactRows rows       = d.contact->rows();
     step_result.interfaces.assign(interfaces.size(), InterfaceResult());
     {
       std::vector<double> moment_weight(interfaces.size(), 0.);
@@ -191,7 +191,7 @@ namespace dealvem
           const PairResult  &r  = results.pairs[i];
           const unsigned int k  = p.interface;
           auto              &ir = step_result.interfaces[k];
-          const double       N  = -x[n + i];
+          const double       N  = -rows.normal_multiplier(x, i);
           const double       T  = r.tangential_traction * p.weight;
           ir.length += p.weight;
           ir.normal_force += N;
@@ -343,10 +343,11 @@ namespace dealvem
                               const std::vector<double> &tangential_force,
                               StepResult                &step_result) const
   {
-    const CycleData &d     = *data;
-    const auto      &n     = d.n;
-    const auto      &x     = d.x;
-    const auto      &pairs = d.pairs;
+    const CycleData   &d     = *data;
+    const auto        &n     = d.n;
+    const ContactRows  rows  = d.contact->rows();
+    const auto        &x     = d.x;
+    const auto        &pairs = d.pairs;
     std::ostringstream where;
     where << (opt.n_load_steps > 1 ? "load step " + std::to_string(step) + " of " + std::to_string(opt.n_load_steps) : "the contact problem")
           << " (t = " << time << ", " << d.solve_result.n_iterations
@@ -363,8 +364,8 @@ namespace dealvem
         if (transmits)
           for (unsigned int c = 0; c < 2; ++c)
             couplings.emplace_back(dofs[c], dofs[2 + c]);
-        const dealii::Tensor<1, 2> F    = (-x[n + i]) * pairs[i].normal +
-                                       (transmits ? tangential_force[i] : 0.) * pairs[i].tangent;
+        const dealii::Tensor<1, 2> F =
+          (-rows.normal_multiplier(x, i)) * pairs[i].normal + (transmits ? tangential_force[i] : 0.) * pairs[i].tangent;
         for (unsigned int c = 0; c < 2; ++c)
           {
             contact_forces[dofs[2 + c]] += F[c];
@@ -404,15 +405,15 @@ namespace dealvem
       {
         double largest = 0;
         for (unsigned int i = 0; i < pairs.size(); ++i)
-          largest = std::max(largest, std::abs(x[n + i]) / pairs[i].weight);
+          largest = std::max(largest, std::abs(rows.normal_multiplier(x, i)) / pairs[i].weight);
         for (unsigned int i = 0; i < pairs.size(); ++i)
-          if (d.solve_result.active[i] && -x[n + i] / pairs[i].weight < -1e-8 * largest)
+          if (d.solve_result.active[i] && -rows.normal_multiplier(x, i) / pairs[i].weight < -1e-8 * largest)
             {
               std::ostringstream msg;
               msg << "Verification failed after the solve of " << where.str() << ": the active contact pair at ("
                   << pairs[i].slave_location[0] << ", " << pairs[i].slave_location[1] << ") of interface "
-                  << pairs[i].interface << " carries a tensile normal force (pressure " << -x[n + i] / pairs[i].weight
-                  << ", largest magnitude " << largest
+                  << pairs[i].interface << " carries a tensile normal force (pressure "
+                  << -rows.normal_multiplier(x, i) / pairs[i].weight << ", largest magnitude " << largest
                   << "), although the converged active set keeps only pairs in compression. The solve is not "
                      "accurate enough for the contact decisions; bring the Young's moduli of the bodies closer "
                      "together.";

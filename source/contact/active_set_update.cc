@@ -374,15 +374,14 @@ namespace dealvem
                                const ContactAssembler<dim>  &contact,
                                const dealii::Vector<double> &x) const
   {
-    AssertThrow(contact.n_pairs() == pairs.size() && x.size() >= contact.n_multipliers(),
-                dealii::ExcMessage("ActiveSetUpdate: the contact assembler has " +
-                                   std::to_string(contact.n_pairs()) + " pairs, this update " +
-                                   std::to_string(pairs.size()) + ", and the solution " +
+    const ContactRows rows = contact.rows();
+    AssertThrow(rows.n_pairs() == pairs.size() && x.size() == rows.n_unknowns(),
+                dealii::ExcMessage("ActiveSetUpdate: the contact assembler has " + std::to_string(contact.n_pairs()) +
+                                   " pairs, this update " + std::to_string(pairs.size()) + ", and the solution " +
                                    std::to_string(x.size()) + " entries."));
-    const unsigned int  n = x.size() - contact.n_multipliers();
     std::vector<double> multipliers(pairs.size());
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      multipliers[i] = x[n + i];
+      multipliers[i] = rows.normal_multiplier(x, i);
     return update(state, contact.gaps(x), multipliers);
   }
 

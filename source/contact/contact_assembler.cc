@@ -131,16 +131,16 @@ namespace dealvem
   void
   ContactAssembler<dim>::add_sparsity(dealii::DynamicSparsityPattern &dsp) const
   {
-    const auto n = dof_handler.n_dofs();
+    const ContactRows layout = rows();
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const auto d = pair_dofs(i);
-        std::vector<dealii::types::global_dof_index> rows(d.begin(), d.end());
-        rows.push_back(n + i);
-        if (n_tangential > 0)
-          rows.push_back(n + n_normal + i);
-        for (const auto r : rows)
-          for (const auto c : rows)
+        std::vector<dealii::types::global_dof_index> idx(d.begin(), d.end());
+        idx.push_back(layout.normal_row(i));
+        if (layout.has_tangential_rows())
+          idx.push_back(layout.tangential_row(i));
+        for (const auto r : idx)
+          for (const auto c : idx)
             dsp.add(r, c);
       }
   }
@@ -248,7 +248,7 @@ namespace dealvem
     AssertDimension(tangential_active.size(), pairs.size());
     Assert(reference == nullptr || reference->size() == pairs.size(),
            dealii::ExcDimensionMismatch(reference->size(), pairs.size()));
-    const auto n = dof_handler.n_dofs();
+    const ContactRows layout = rows();
     dropped.clear();
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
@@ -262,9 +262,9 @@ namespace dealvem
         // fix already is dropped if the two agree (drop_if_fixed())
         const bool unilateral = (settings.normal == ContactSettings::Normal::unilateral);
         std::vector<dealii::types::global_dof_index> idx(d.begin(), d.end());
-        idx.push_back(n + i);
-        if (n_tangential > 0)
-          idx.push_back(n + n_normal + i);
+        idx.push_back(layout.normal_row(i));
+        if (layout.has_tangential_rows())
+          idx.push_back(layout.tangential_row(i));
         dealii::FullMatrix<double> M(idx.size(), idx.size());
         dealii::Vector<double>     F(idx.size());
         if (active[i] && !drop_if_fixed(constraints, i, cn, false, -p.initial_gap, unilateral))
@@ -359,7 +359,7 @@ namespace dealvem
     AssertDimension(state.size(), pairs.size());
     AssertDimension(reference.size(), pairs.size());
     const bool multipliers = (settings.tangential == ContactSettings::Tangential::coulomb);
-    const auto n           = dof_handler.n_dofs();
+    const ContactRows layout      = rows();
     dropped.clear();
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
@@ -375,9 +375,9 @@ namespace dealvem
         // constraints fix already: as in assemble(), dropped if they agree
         // (Coulomb friction is unilateral: an open gap is admissible)
         std::vector<dealii::types::global_dof_index> idx(d.begin(), d.end());
-        idx.push_back(n + i);
+        idx.push_back(layout.normal_row(i));
         if (multipliers)
-          idx.push_back(n + n_normal + i);
+          idx.push_back(layout.tangential_row(i));
         dealii::FullMatrix<double> M(idx.size(), idx.size());
         dealii::Vector<double>     F(idx.size());
         const bool normal_on = closed && !drop_if_fixed(constraints, i, cn, false, -p.initial_gap, true);
@@ -469,8 +469,9 @@ namespace dealvem
         settings.tangential == ContactSettings::Tangential::coulomb)
       {
         // the force on the slave node is -lambda_t t
+        const ContactRows layout = rows();
         for (unsigned int i = 0; i < pairs.size(); ++i)
-          f[i] = -x[dof_handler.n_dofs() + n_normal + i];
+          f[i] = -layout.tangential_multiplier(x, i);
       }
     else if (settings.tangential == ContactSettings::Tangential::penalty)
       {

@@ -595,29 +595,38 @@ namespace dealvem
 
 
 
+  ContactRows
+  FiniteStrainContact::rows() const
+  {
+    return ContactRows(dof_handler.n_dofs(), pairs, n_constraints() > pairs.size());
+  }
+
+
+
   void
   FiniteStrainContact::add_sparsity(dealii::DynamicSparsityPattern          &dsp,
                                     const dealii::AffineConstraints<double> &constraints) const
   {
-    const auto n = dof_handler.n_dofs();
-    AssertThrow(dsp.n_rows() == n + n_constraints() && dsp.n_cols() == n + n_constraints(),
+    const ContactRows layout = rows();
+    AssertThrow(dsp.n_rows() == layout.n_unknowns() && dsp.n_cols() == layout.n_unknowns(),
                 dealii::ExcMessage("FiniteStrainContact::add_sparsity(): the pattern must have n_dofs() + "
                                    "n_constraints() rows and columns."));
-    dealii::Vector<double> zero(n);
+    dealii::Vector<double> zero(layout.n_dofs());
     Linearization          lin;
     for (unsigned int j = 0; j < n_constraints(); ++j)
       {
-        dsp.add(n + j, n + j);
+        const unsigned int row = layout.row(j);
+        dsp.add(row, row);
         if (is_left_out(j))
           continue;
         linearize(j, zero, lin, false);
         std::vector<dealii::types::global_dof_index> indices = lin.dofs;
-        indices.push_back(n + j);
+        indices.push_back(row);
         constraints.add_entries_local_to_global(indices, dsp, true);
         // the slip equation lambda_t = mu |lambda_n| sign(.) couples the
         // tangential multiplier to the normal one
         if (frictional && is_tangential(j))
-          dsp.add(n + j, n + pair_of(j));
+          dsp.add(row, layout.normal_row(pair_of(j)));
       }
   }
 

@@ -217,12 +217,12 @@ namespace dealvem
       auto              &result  = step.result;
       auto              &x       = step.x;
       const unsigned int n_pairs = contact.n_pairs();
-      const unsigned int n       = step.system_matrix.m() - contact.n_multipliers();
+      const ContactRows  rows      = contact.rows();
       const auto         bounds_of = [&](const dealii::Vector<double> &y, const std::vector<bool> &closed_pairs) {
         std::vector<double> b(n_pairs, 0.);
         for (unsigned int i = 0; i < n_pairs; ++i)
           if (closed_pairs[i])
-            b[i] = contact.friction_coefficient(i) * std::max(0., -y[n + i]);
+            b[i] = contact.friction_coefficient(i) * std::max(0., -rows.normal_multiplier(y, i));
         return b;
       };
       std::vector<double>    bound = bounds_of(x, closed);
@@ -265,7 +265,7 @@ namespace dealvem
               state.n_iterations          = tr.n_solves;
               if (step.settings.tangential == ContactSettings::Tangential::coulomb)
                 for (unsigned int i = 0; i < n_pairs; ++i)
-                  x[n + n_pairs + i] = tr.tangential_force[i];
+                  x[rows.tangential_row(i)] = tr.tangential_force[i];
               result.globalized_start = true;
               break;
             }

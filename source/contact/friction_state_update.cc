@@ -343,19 +343,19 @@ namespace dealvem
                                    const std::vector<double>    &reference) const
   {
     const unsigned int n_pairs = pairs.size();
-    AssertThrow(contact.n_pairs() == n_pairs && x.size() >= contact.n_multipliers(),
+    const ContactRows  rows    = contact.rows();
+    AssertThrow(rows.n_pairs() == n_pairs && x.size() == rows.n_unknowns(),
                 dealii::ExcMessage("FrictionStateUpdate: the contact assembler has " +
                                    std::to_string(contact.n_pairs()) + " pairs, this update " +
                                    std::to_string(n_pairs) + ", and the solution " + std::to_string(x.size()) +
                                    " entries."));
-    const unsigned int  n = x.size() - contact.n_multipliers();
     const bool          multipliers = (settings.tangential == ContactSettings::Tangential::coulomb);
     std::vector<double> ln(n_pairs), lt(multipliers ? n_pairs : 0);
     for (unsigned int i = 0; i < n_pairs; ++i)
       {
-        ln[i] = x[n + i];
+        ln[i] = rows.normal_multiplier(x, i);
         if (multipliers)
-          lt[i] = x[n + n_pairs + i];
+          lt[i] = rows.tangential_multiplier(x, i);
       }
     return update(state, contact.gaps(x), contact.slips(x), ln, lt, reference);
   }

@@ -148,6 +148,8 @@ namespace dealvem
     const std::vector<ContactNodePair> &pairs;
     const unsigned int                  n_pairs;
     const unsigned int                  n;
+    /// The multiplier rows of the system (contact.rows()).
+    const ContactRows                   rows;
     const bool                          tresca;
     const bool                          springs;
     const double                        penalty;
@@ -213,6 +215,7 @@ namespace dealvem
     , pairs(contact.get_pairs())
     , n_pairs(pairs.size())
     , n(system_matrix.m() - contact.n_multipliers())
+    , rows(contact.rows())
     , tresca(!owner.tresca_bound.empty())
     , springs(owner.settings.tangential == ContactSettings::Tangential::penalty)
     , penalty(contact.get_penalty())
@@ -470,7 +473,7 @@ namespace dealvem
       {
         const double d = s[i] - reference[i];
         if (!free_t[i] && slip_dir[i] == 0)
-          result.tangential_force[i] = springs ? penalty * pairs[i].weight * d : xc[n + n_pairs + i];
+          result.tangential_force[i] = springs ? penalty * pairs[i].weight * d : rows.tangential_multiplier(xc, i);
         else if (!free_t[i])
           result.tangential_force[i] = slip_dir[i] * bound[i];
         if (!W[i])
@@ -498,7 +501,7 @@ namespace dealvem
     released.clear();
     if (largest_tangential)
       {
-        slip_dir[largest] = (xc[n + n_pairs + largest] > 0 ? 1 : -1);
+        slip_dir[largest] = (rows.tangential_multiplier(xc, largest) > 0 ? 1 : -1);
         released          = {largest};
       }
     else
@@ -519,21 +522,21 @@ namespace dealvem
     for (unsigned int i = 0; i < n_pairs; ++i)
       {
         if (W[i])
-          scale = std::max(scale, std::abs(xc[n + i]) / pairs[i].weight);
+          scale = std::max(scale, std::abs(rows.normal_multiplier(xc, i)) / pairs[i].weight);
         if (tresca && !springs && tangential[i])
-          scale = std::max(scale, std::abs(xc[n + n_pairs + i]) / pairs[i].weight);
+          scale = std::max(scale, std::abs(rows.tangential_multiplier(xc, i)) / pairs[i].weight);
       }
     const double threshold = 1e-11 * scale;
     dropped.clear();
     released.clear();
     double most = 0;
     for (unsigned int i = 0; i < n_pairs; ++i)
-      if (W[i] && xc[n + i] / pairs[i].weight > threshold)
+      if (W[i] && rows.normal_multiplier(xc, i) / pairs[i].weight > threshold)
         {
           dropped.push_back(i);
-          if (xc[n + i] / pairs[i].weight > most)
+          if (rows.normal_multiplier(xc, i) / pairs[i].weight > most)
             {
-              most               = xc[n + i] / pairs[i].weight;
+              most               = rows.normal_multiplier(xc, i) / pairs[i].weight;
               largest            = i;
               largest_tangential = false;
             }
@@ -543,7 +546,7 @@ namespace dealvem
       for (unsigned int i = 0; i < n_pairs; ++i)
         if (tangential[i])
           {
-            const double lt     = xc[n + n_pairs + i];
+            const double lt     = rows.tangential_multiplier(xc, i);
             const double excess = (std::abs(lt) - bound[i]) / pairs[i].weight;
             if (excess > threshold)
               {
@@ -567,7 +570,7 @@ namespace dealvem
     for (const auto i : dropped)
       W[i] = false;
     for (const auto i : released)
-      slip_dir[i] = (xc[n + n_pairs + i] > 0 ? 1 : -1);
+      slip_dir[i] = (rows.tangential_multiplier(xc, i) > 0 ? 1 : -1);
     single = (dropped.size() + released.size() == 1);
     if (!single)
       {

@@ -10,6 +10,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <dealvem/contact/contact_rows.h>
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
@@ -226,9 +227,10 @@ namespace dealvem
    * $c_i u = (u_B - u_A)\cdot t_i$ and $w_i$ the tributary weight.
    *
    * The system has n_dofs() + n_multipliers() unknowns: multiplier j is
-   * unknown n_dofs() + j. Multipliers of inactive normal pairs get the
-   * equation $\lambda_j = 0$ (unit diagonal), so the sparsity pattern does
-   * not change during the active-set iteration.
+   * unknown n_dofs() + j (rows() gives the layout, a ContactRows).
+   * Multipliers of inactive normal pairs get the equation $\lambda_j = 0$
+   * (unit diagonal), so the sparsity pattern does not change during the
+   * active-set iteration.
    *
    * A multiplier is a nodal force: $\lambda_i < 0$ is compression, and the
    * contact pressure at the node is $p_i = -\lambda_i / w_i$.
@@ -277,13 +279,22 @@ namespace dealvem
       return n_normal + n_tangential;
     }
 
-    /// Multiplier of the normal constraint of pair i is n_dofs + i; with
-    /// tangential multipliers, that of the tangential constraint of pair i
-    /// is n_dofs + n_pairs + i.
+    /// Number of node pairs. Multiplier of the normal constraint of pair i
+    /// is n_dofs + i; with tangential multipliers, that of the tangential
+    /// constraint of pair i is n_dofs + n_pairs + i (rows()).
     unsigned int
     n_pairs() const
     {
       return pairs.size();
+    }
+
+    /// The multiplier rows of the system: their layout, the pair and kind of
+    /// each row, and the data of the pairs (valid while this assembler
+    /// lives). Tangential rows with `Tangential = multipliers` and `coulomb`.
+    ContactRows
+    rows() const
+    {
+      return ContactRows(dof_handler.n_dofs(), pairs, n_tangential > 0);
     }
 
     /// The four displacement DoFs (u_A x, u_A y, u_B x, u_B y) of pair i.

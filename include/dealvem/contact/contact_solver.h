@@ -123,8 +123,8 @@ namespace dealvem
   /**
    * The one seam of the contact solvers: the nonlinear solve of a load step
    * of bodies in contact, given the elasticity part of the saddle-point
-   * system, the contact rows (ContactAssembler: row i of the multipliers
-   * belongs to pair i) and a linear SaddlePointSolver.
+   * system, the contact rows (ContactAssembler, whose rows() gives their
+   * layout as a ContactRows) and a linear SaddlePointSolver.
    *
    * A program holds a ContactSolver made by create() from the contact
    * settings and calls solve_step() once per load step; a solver carries

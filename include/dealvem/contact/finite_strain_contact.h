@@ -12,6 +12,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <dealvem/contact/contact_assembler.h>
+#include <dealvem/contact/contact_rows.h>
 #include <dealvem/contact/node_insertion.h>
 #include <dealvem/elasticity/finite_strain_constraints.h>
 #include <dealvem/vem/vem_dof_handler.h>
@@ -240,6 +241,17 @@ namespace dealvem
     {
       return (is_bilateral() || frictional ? 2 : 1) * pairs.size();
     }
+
+    /**
+     * The multiplier rows of the constraints in the system of
+     * FiniteStrainSolver (n_dofs() + n_constraints() unknowns): constraint j
+     * is unknown rows().row(j); the normal constraint of pair i is
+     * ContactRows::normal_row(i), the tangential one (tied contact, Coulomb
+     * friction) ContactRows::tangential_row(i). Valid while this object
+     * lives.
+     */
+    ContactRows
+    rows() const;
 
     /// The pair of constraint @p j.
     unsigned int
