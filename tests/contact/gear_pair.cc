@@ -35,6 +35,7 @@
 #include <deal.II/base/function.h>
 
 #include <dealvem/app/contact_problem.h>
+#include <dealvem/contact/node_insertion.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/spur_gear.h>
 
@@ -196,6 +197,57 @@ namespace
               << ", normal force " << out.normal_force << std::setprecision(6) << std::endl;
     return out;
   }
+
+
+  /// Node insertion on the pair turned by 7 degrees (the pinion; the gear
+  /// by 7 z1/z2 the other way): two tooth pairs touch, the second with
+  /// the gear's tip corner near the pinion's form circle. The normals of the
+  /// tip corner's nodes cross; cast along them onto the pinion's curved
+  /// edge, the inserted vertices came out of order and folded a cell
+  /// ("cell 703 is self-intersecting"). Now the edge keeps its order.
+  void
+  check_two_pairs_insertion()
+  {
+    const double         turn = 7 * pi / 180;
+    SpurGear::Parameters p1, p2;
+    p1.n_teeth = z1;
+    p2.n_teeth = z2;
+    p1.backlash = p2.backlash = j;
+    p1.rotation               = -(m * pi / 2 - j) / (m * z1) + turn;
+    p2.center                 = dealii::Point<2>(m * (z1 + z2) / 2., 0);
+    p2.rotation               = pi - (m * pi / 2 - j) / (m * z2) - turn * z1 / z2;
+    p2.bore_radius            = 0.3 * m * z2;
+    PolygonalMeshGenerators::GearMeshSettings m1;
+    m1.first_tooth     = z1 - 1;
+    m1.n_teeth         = 3;
+    m1.flank_cell_size = 0.01;
+    auto m2            = m1;
+    m2.first_tooth     = z2 - 1;
+    PolygonalMesh<2> mesh, gear;
+    PolygonalMeshGenerators::spur_gear(mesh, SpurGear(p1), m1);
+    PolygonalMeshGenerators::spur_gear(gear, SpurGear(p2), m2);
+    for (unsigned int c = 0; c < gear.n_cells(); ++c)
+      gear.set_material_id(c, 1);
+    for (unsigned int e = 0; e < gear.n_edges(); ++e)
+      if (gear.edge(e).at_boundary())
+        gear.set_edge_boundary_id(e, gear.edge(e).boundary_id + 10);
+    mesh.append(gear);
+    NodeInsertion::Settings settings;
+    settings.validate_mesh = false;
+    const auto interface   = NodeInsertion::insert(mesh, 1, 11, 2, settings, 0);
+    bool       valid       = true;
+    try
+      {
+        mesh.validate();
+      }
+    catch (const std::exception &e)
+      {
+        valid = false;
+        std::cout << e.what() << std::endl;
+      }
+    check(valid, "two tooth pairs, tip corner at the form circle: node insertion keeps every cell valid (" +
+                   std::to_string(interface.pairs.size()) + " pairs)");
+  }
 } // namespace
 
 
@@ -205,6 +257,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   try
     {
+      check_two_pairs_insertion();
       const Outcome ref = solve({"pinion centred at the origin", dealii::Point<2>(), 1, 0});
       const double  r1 = m * z1 / 2, r2 = m * z2 / 2, rb1 = r1 * std::cos(alpha), rb2 = r2 * std::cos(alpha);
 
