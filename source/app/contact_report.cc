@@ -7,6 +7,12 @@
 // VTU, SVG pictures, JSON summary).
 #include "contact_problem_internal.h"
 
+#include <algorithm>
+#include <functional>
+#include <limits>
+#include <map>
+#include <numeric>
+
 namespace dealvem
 {
   using namespace internal::ContactProblemImplementation;
@@ -534,6 +540,107 @@ namespace dealvem
 
 
 
+  namespace
+  {
+    /**
+     * The pressure plots of the interfaces: one series per closed zone
+     * (closed pairs joined when they lie within five typical spacings of
+     * each other), over the position along the zone's tangent measured
+     * from its centre of pressure, with the pairs within twice the zone's
+     * reach of that centre. A plot over x alone squeezes the closed zone
+     * of a curved or long interface (gear flanks, an assembly's joints)
+     * into a spike, and two tooth pairs in contact are two zones. An
+     * interface with nothing closed is plotted over x. At most 12 series.
+     */
+    std::vector<SVGPlots::Series>
+    pressure_series(const std::vector<ContactPairResult>                     &pairs,
+                    const std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> &interfaces)
+    {
+      std::vector<SVGPlots::Series> series;
+      for (unsigned int i = 0; i < interfaces.size() && series.size() < 12; ++i)
+        {
+          const std::string name = "interface " + std::to_string(i) + " (" + std::to_string(interfaces[i].first) +
+                                   ":" + std::to_string(interfaces[i].second) + ")";
+          std::vector<unsigned int> closed, all;
+          for (unsigned int p = 0; p < pairs.size(); ++p)
+            if (pairs[p].interface == i)
+              {
+                all.push_back(p);
+                if (pairs[p].active)
+                  closed.push_back(p);
+              }
+          if (closed.empty())
+            {
+              SVGPlots::Series s;
+              s.name = name;
+              for (const unsigned int p : all)
+                s.points.emplace_back(pairs[p].location[0], pairs[p].pressure);
+              std::sort(s.points.begin(), s.points.end());
+              series.push_back(s);
+              continue;
+            }
+          // zones: single linkage within five typical spacings
+          std::vector<double> spacing(closed.size(), std::numeric_limits<double>::max());
+          for (unsigned int a = 0; a < closed.size(); ++a)
+            for (unsigned int b = 0; b < closed.size(); ++b)
+              if (a != b)
+                spacing[a] =
+                  std::min(spacing[a], pairs[closed[a]].location.distance(pairs[closed[b]].location));
+          std::vector<double> sorted = spacing;
+          std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+          const double              link = 5 * (closed.size() > 1 ? sorted[sorted.size() / 2] : 0.);
+          std::vector<unsigned int> zone(closed.size());
+          std::iota(zone.begin(), zone.end(), 0u);
+          const std::function<unsigned int(unsigned int)> root = [&](unsigned int a) {
+            return zone[a] == a ? a : zone[a] = root(zone[a]);
+          };
+          for (unsigned int a = 0; a < closed.size(); ++a)
+            for (unsigned int b = a + 1; b < closed.size(); ++b)
+              if (pairs[closed[a]].location.distance(pairs[closed[b]].location) <= link)
+                zone[root(a)] = root(b);
+          std::map<unsigned int, std::vector<unsigned int>> zones;
+          for (unsigned int a = 0; a < closed.size(); ++a)
+            zones[root(a)].push_back(closed[a]);
+          unsigned int k = 0;
+          for (const auto &[r, members] : zones)
+            {
+              if (series.size() == 12)
+                break;
+              // centre of pressure (pressure times tributary length), reach, tangent
+              dealii::Point<2> centre;
+              double           force = 0, reach = 0, nearest = std::numeric_limits<double>::max();
+              for (const unsigned int p : members)
+                {
+                  const double f = std::max(pairs[p].pressure, 0.) * pairs[p].weight;
+                  centre += f * dealii::Tensor<1, 2>(pairs[p].location);
+                  force += f;
+                }
+              if (force > 0)
+                centre /= force;
+              else
+                centre = pairs[members.front()].location;
+              dealii::Tensor<1, 2> tangent = pairs[members.front()].tangent;
+              for (const unsigned int p : members)
+                {
+                  reach = std::max(reach, pairs[p].location.distance(centre));
+                  if (pairs[p].location.distance(centre) < nearest)
+                    nearest = pairs[p].location.distance(centre), tangent = pairs[p].tangent;
+                }
+              SVGPlots::Series s;
+              s.name = name + (zones.size() > 1 ? ", zone " + std::to_string(++k) : std::string());
+              for (const unsigned int p : all)
+                if (pairs[p].location.distance(centre) <= 2 * reach + 1e-12 * (1 + reach))
+                  s.points.emplace_back((pairs[p].location - centre) * tangent, pairs[p].pressure);
+              std::sort(s.points.begin(), s.points.end());
+              series.push_back(s);
+            }
+        }
+      return series;
+    }
+  } // namespace
+
+
+
   // The deformed bodies coloured by sigma_yy (inserted nodes marked) and
   // the contact pressure along each interface, as SVG.
   void
@@ -563,21 +670,9 @@ namespace dealvem
           << "), inserted nodes marked";
     SVGPlots::write_mesh(prefix + "-stress.svg", mesh, displacement, scale, syy, "sigma_yy",
                          inserted, title.str());
-    std::vector<SVGPlots::Series> series;
-    // (the first 12 interfaces of an assembly; all are in -interface.csv)
-    for (unsigned int i = 0; i < std::min<std::size_t>(cycle_pairs.size(), 12); ++i)
-      {
-        SVGPlots::Series s;
-        s.name = "interface " + std::to_string(i) + " (" + std::to_string(cycle_pairs[i].first) +
-                 ":" + std::to_string(cycle_pairs[i].second) + ")";
-        for (const auto &r : results.pairs)
-          if (r.interface == i)
-            s.points.emplace_back(r.location[0], r.pressure);
-        std::sort(s.points.begin(), s.points.end());
-        series.push_back(s);
-      }
-    SVGPlots::write_line_plot(prefix + "-pressure.svg", series, "x", "contact pressure",
-                              "Contact pressure along the interface");
+    SVGPlots::write_line_plot(prefix + "-pressure.svg", pressure_series(results.pairs, cycle_pairs),
+                              "position from the zone's centre of pressure", "contact pressure",
+                              "Contact pressure near each closed zone");
     // the assembly: bodies and the contact force of each interface (on its
     // slave body, at the centre of pressure)
     std::vector<SVGPlots::Arrow> arrows;

@@ -10,9 +10,17 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <tuple>
 
 namespace dealvem
 {
+  namespace
+  {
+    void
+    declare_gear_parameters(dealii::ParameterHandler &prm);
+  }
+
+
   void
   MeshParameters::declare_parameters(dealii::ParameterHandler &prm)
   {
@@ -22,8 +30,10 @@ namespace dealvem
     using dealii::Patterns::Selection;
     prm.declare_entry("Type", "voronoi",
                       Selection("structured quads|structured triangles|perturbed quads|voronoi|"
-                                "nonconvex|vtk file|gridin file"),
-                      "Mesh source. Generators work on the rectangle given by the corners; "
+                                "nonconvex|spur gear|vtk file|gridin file"),
+                      "Mesh source. Generators work on the rectangle given by the corners; 'spur gear' "
+                      "meshes the involute gear of the subsection 'Gear' (boundary ids 0 bore, 1 teeth, "
+                      "2 and 3 the sides of a sector); "
                       "'vtk file' reads a polygon mesh in legacy VTK format; 'gridin file' "
                       "reads any format of deal.II's GridIn (gmsh .msh: physical lines become "
                       "boundary ids, physical surfaces material ids). In a convergence study a "
@@ -68,12 +78,78 @@ namespace dealvem
                       "Map of the vertices 'x_new, y_new' as muparser expressions in x, y (with "
                       "pi), applied before the shift; edges stay straight and the mapped mesh is "
                       "validated. Example for a sloped top: 'x, y*(1 + 0.2*x)'. Empty: none.");
+    declare_gear_parameters(prm);
   }
 
 
 
   namespace
   {
+    const double degree = M_PI / 180;
+
+    /// The entries of subsection 'Gear' (Type = spur gear).
+    void
+    declare_gear_parameters(dealii::ParameterHandler &prm)
+    {
+      using dealii::Patterns::Anything;
+      using dealii::Patterns::Double;
+      using dealii::Patterns::Integer;
+      prm.enter_subsection("Gear");
+      prm.declare_entry("Module", "1", Double(0), "Module m of the involute spur gear (Type = spur gear).");
+      prm.declare_entry("Number of teeth", "20", Integer(5, 10000), "Number of teeth z.");
+      prm.declare_entry("Pressure angle", "20", Double(0, 35), "Pressure angle of the basic rack, in degrees.");
+      prm.declare_entry("Profile shift", "0", Double(-2, 2), "Profile shift coefficient x.");
+      prm.declare_entry("Addendum", "1", Double(0), "Addendum coefficient h_a* (tip radius r + m (h_a* + x)).");
+      prm.declare_entry("Dedendum", "1.25", Double(0),
+                        "Dedendum coefficient h_f* (root radius r - m (h_f* - x)), the rack's addendum.");
+      prm.declare_entry("Rack tip radius", "0.38", Double(0),
+                        "Tip radius coefficient of the rack rho_f* (the root fillet is the trochoid its "
+                        "rounded corner cuts).");
+      prm.declare_entry("Backlash", "0", Double(0),
+                        "Backlash allowance of this gear: the teeth thinned by this length along the "
+                        "reference circle.");
+      prm.declare_entry("Tip relief", "0", Double(0),
+                        "Tip relief amount C_a at the tip (a length along the flank normal); 0: none.");
+      prm.declare_entry("Tip relief radius", "0", Double(0),
+                        "Radius where the tip relief starts; 0: halfway between the reference and the tip "
+                        "radius.");
+      prm.declare_entry("Tip relief shape", "linear", dealii::Patterns::Selection("linear|parabolic"),
+                        "How the tip relief grows with the roll length: linear or parabolic.");
+      prm.declare_entry("Bore radius", "0", Double(0), "Radius of the bore; 0: half the root radius.");
+      prm.declare_entry("Centre", "0, 0", Anything(), "Centre x, y of the gear.");
+      prm.declare_entry("Rotation", "0", Double(), "Polar angle of the axis of tooth 0, in degrees.");
+      prm.declare_entry("Teeth", "all", Anything(),
+                        "The teeth meshed: 'all' (the whole gear) or 'first, count' (a sector from the "
+                        "middle of the space before tooth 'first' to the middle of the space after the "
+                        "last; teeth are numbered counter-clockwise from tooth 0).");
+      prm.declare_entry("Global refinements", "1", Integer(0, 8),
+                        "Global refinements of the block mesh (about 6 cells across a tooth at 0).");
+      prm.declare_entry("Flank cell size", "0", Double(0),
+                        "Cell size the flanks are refined to (0: no local refinement).");
+      prm.declare_entry("Refined teeth", "all", Anything(),
+                        "The teeth whose flanks are refined: 'all' (the meshed ones) or 'first, count'.");
+      prm.declare_entry("Refined radii", "auto", Anything(),
+                        "Radii 'from, to' of the refined flank zone; 'auto': the form radius to the tip.");
+      prm.declare_entry("Refinement layers", "2", Double(0.1, 100),
+                        "Cells within this many cell sizes of the flank zone are refined.");
+      prm.leave_subsection();
+    }
+
+    /// 'all' -> {0, 0}, 'first, count' -> {first, count}.
+    std::pair<unsigned int, unsigned int>
+    parse_teeth(const std::string &text, const std::string &name)
+    {
+      if (InputParsing::trim(text) == "all")
+        return {0, 0};
+      const auto parts = InputParsing::split(text, ',');
+      AssertThrow(parts.size() == 2,
+                  dealii::ExcMessage("Parameter '" + name + "': expected 'all' or 'first, count', got '" + text + "'."));
+      const unsigned int first = InputParsing::parse_unsigned(parts[0], name);
+      const unsigned int count = InputParsing::parse_unsigned(parts[1], name);
+      AssertThrow(count >= 1, dealii::ExcMessage("Parameter '" + name + "': the count must be at least 1."));
+      return {first, count};
+    }
+
     dealii::Point<2>
     parse_point(const std::string &s, const std::string &name)
     {
@@ -147,6 +223,70 @@ namespace dealvem
     AssertThrow(type.find("file") == std::string::npos || !file_name.empty(),
                 dealii::ExcMessage("Parameter '" + section + "/File name' is empty but 'Type' is '" +
                                    type + "'."));
+    parse_gear_parameters(prm);
+  }
+
+
+
+  void
+  MeshParameters::parse_gear_parameters(dealii::ParameterHandler &prm)
+  {
+    const std::string name = section + "/Gear";
+    prm.enter_subsection("Gear");
+    gear                   = SpurGear::Parameters();
+    gear.module            = prm.get_double("Module");
+    gear.n_teeth           = prm.get_integer("Number of teeth");
+    gear.pressure_angle    = prm.get_double("Pressure angle") * degree;
+    gear.profile_shift     = prm.get_double("Profile shift");
+    gear.addendum          = prm.get_double("Addendum");
+    gear.dedendum          = prm.get_double("Dedendum");
+    gear.rack_tip_radius   = prm.get_double("Rack tip radius");
+    gear.backlash          = prm.get_double("Backlash");
+    gear.tip_relief        = prm.get_double("Tip relief");
+    gear.tip_relief_radius = prm.get_double("Tip relief radius");
+    gear.relief_shape      = prm.get("Tip relief shape") == "parabolic" ? SpurGear::ReliefShape::parabolic :
+                                                                          SpurGear::ReliefShape::linear;
+    gear.bore_radius       = prm.get_double("Bore radius");
+    gear.center            = parse_point(prm.get("Centre"), name + "/Centre");
+    gear.rotation          = prm.get_double("Rotation") * degree;
+    gear_mesh              = PolygonalMeshGenerators::GearMeshSettings();
+    std::tie(gear_mesh.first_tooth, gear_mesh.n_teeth) = parse_teeth(prm.get("Teeth"), name + "/Teeth");
+    gear_mesh.n_global_refinements = prm.get_integer("Global refinements");
+    gear_mesh.flank_cell_size      = prm.get_double("Flank cell size");
+    std::tie(gear_mesh.first_refined_tooth, gear_mesh.n_refined_teeth) =
+      parse_teeth(prm.get("Refined teeth"), name + "/Refined teeth");
+    const std::string radii = InputParsing::trim(prm.get("Refined radii"));
+    if (radii != "auto")
+      {
+        const dealii::Point<2> r = parse_point(radii, name + "/Refined radii");
+        AssertThrow(r[0] > 0 && r[1] > r[0],
+                    dealii::ExcMessage("Parameter '" + name + "/Refined radii': expected 'auto' or 'from, to' with "
+                                       "0 < from < to, got '" + radii + "'."));
+        gear_mesh.refine_from_radius = r[0];
+        gear_mesh.refine_to_radius   = r[1];
+      }
+    gear_mesh.layers = prm.get_double("Refinement layers");
+    prm.leave_subsection();
+    if (type == "spur gear")
+      {
+        // check the data now, naming the section
+        try
+          {
+            const SpurGear check(gear);
+            gear = check.parameters();
+          }
+        catch (const std::exception &e)
+          {
+            std::string what = e.what();
+            const auto  at   = what.find("SpurGear: ");
+            if (at != std::string::npos)
+              what = what.substr(at + 10);
+            const auto end = what.find("Stacktrace");
+            if (end != std::string::npos)
+              what = what.substr(0, end);
+            AssertThrow(false, dealii::ExcMessage("Parameter section '" + name + "': " + InputParsing::trim(what)));
+          }
+      }
   }
 
 
@@ -168,6 +308,12 @@ namespace dealvem
       G::voronoi(mesh, lower_left, upper_right, n_cells * f * f, lloyd_iterations, seed);
     else if (type == "nonconvex")
       G::nonconvex(mesh, lower_left, upper_right, nx * f, ny * f, nonconvex_depth);
+    else if (type == "spur gear")
+      {
+        auto settings = gear_mesh;
+        settings.n_global_refinements += refinement;
+        G::spur_gear(mesh, SpurGear(gear), settings);
+      }
     else
       {
         // one file per level ("{cycle}" in the name), or the file refined
@@ -254,6 +400,11 @@ namespace dealvem
       s << ", " << n_cells << " cells, " << lloyd_iterations << " Lloyd iterations, seed " << seed;
     else if (type.find("file") != std::string::npos)
       s << " '" << file_name << "'";
+    else if (type == "spur gear")
+      s << ", z " << gear.n_teeth << ", m " << gear.module
+        << (gear_mesh.n_teeth == 0 ? std::string(", whole") :
+                                     ", teeth " + std::to_string(gear_mesh.first_tooth) + " to " +
+                                       std::to_string(gear_mesh.first_tooth + gear_mesh.n_teeth - 1));
     else
       s << ", " << nx << " x " << ny;
     return s.str();

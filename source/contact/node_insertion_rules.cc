@@ -174,6 +174,7 @@ namespace dealvem
           unsigned int       e        = onto.edge_indices[entry.first]; // the piece (previous, b)
           double             previous = 0;
           std::vector<std::pair<unsigned int, Point>> moves; // after all splits of this edge
+          std::vector<double>                         moved_t;
           for (unsigned int i = 0; i < list.size(); ++i)
             {
               const double       t    = list[i].first;
@@ -204,6 +205,7 @@ namespace dealvem
                   if (!on_arc) // (a degenerate arc: the chord's own offset rule)
                     target = mesh.vertex(nv) + 0.5 * t * (1 - t) * L * L * kappa * edge_normal(xa, xb);
                   moves.emplace_back(nv, target);
+                  moved_t.push_back(t);
                 }
               partner_onto[nv] = v;
               partner_from[v]  = nv;
@@ -212,6 +214,21 @@ namespace dealvem
               previous = t;
               ++(onto_master ? report.n_inserted_master : report.n_inserted_slave);
             }
+          // the partners' normals may cross where the other side turns
+          // sharply (a gear's tip corner facing a flank): targets out of
+          // order along the edge would fold it. Then every new vertex of the
+          // edge takes the chord's own offset rule, which keeps the order.
+          bool ordered = true;
+          for (unsigned int i = 0; i < moves.size() && ordered; ++i)
+            {
+              const double tau = (moves[i].second - xa) * (xb - xa) / (L * L);
+              const double before = (i == 0 ? 0. : (moves[i - 1].second - xa) * (xb - xa) / (L * L));
+              ordered            = tau > before && tau < 1;
+            }
+          if (!ordered)
+            for (unsigned int i = 0; i < moves.size(); ++i)
+              moves[i].second = xa + moved_t[i] * (xb - xa) +
+                                0.5 * moved_t[i] * (1 - moved_t[i]) * L * L * kappa * edge_normal(xa, xb);
           for (const auto &m : moves)
             mesh.move_vertex(m.first, m.second);
         }

@@ -2,17 +2,21 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
-// The gmsh .msh reader of MeshIO (read_msh(), read_msh_physical_names()):
+// The gmsh .msh reader of MeshIO (read_msh(), read_msh_physical_names())
+// and its writer of triangulations (write_msh(), format 2.2 ASCII). The reader:
 // formats 2.2 and 4.1, ASCII and binary, any mix of two-dimensional
 // elements read as polygons. The file is parsed and checked by
 // internal::GmshReader (gmsh_reader.h, gmsh_reader.cc, gmsh_checks.cc);
 // here its cells become a PolygonalMesh.
+#include <deal.II/grid/tria.h>
+
 #include <dealvem/mesh/mesh_io.h>
 
 #include "gmsh_reader.h"
 
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -241,5 +245,45 @@ namespace dealvem
 
 
     template PhysicalNames read_msh(PolygonalMesh<2> &, const std::string &, const unsigned int, const bool);
+    void
+    write_msh(const dealii::Triangulation<2, 2> &tria, const std::string &filename)
+    {
+      std::ofstream out(filename);
+      AssertThrow(out, dealii::ExcMessage("MeshIO::write_msh: cannot open '" + filename + "' for writing."));
+      const std::vector<bool>  &used = tria.get_used_vertices();
+      std::vector<unsigned int> number(used.size(), 0);
+      unsigned int              n_nodes = 0;
+      for (unsigned int v = 0; v < used.size(); ++v)
+        if (used[v])
+          number[v] = ++n_nodes;
+      out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << n_nodes << '\n' << std::setprecision(17);
+      for (unsigned int v = 0; v < used.size(); ++v)
+        if (used[v])
+          out << number[v] << ' ' << tria.get_vertices()[v][0] << ' ' << tria.get_vertices()[v][1] << " 0\n";
+      out << "$EndNodes\n";
+      std::ostringstream elements;
+      unsigned int       n_elements = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() != 0)
+            elements << ++n_elements << " 1 2 " << int(cell->face(f)->boundary_id()) << ' '
+                     << int(cell->face(f)->boundary_id()) << ' ' << number[cell->face(f)->vertex_index(0)] << ' '
+                     << number[cell->face(f)->vertex_index(1)] << '\n';
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          const unsigned int id = cell->material_id();
+          if (cell->n_vertices() == 4)
+            // gmsh orders a quadrangle's vertices around it, deal.II lexicographically
+            elements << ++n_elements << " 3 2 " << id << ' ' << id << ' ' << number[cell->vertex_index(0)] << ' '
+                     << number[cell->vertex_index(1)] << ' ' << number[cell->vertex_index(3)] << ' '
+                     << number[cell->vertex_index(2)] << '\n';
+          else
+            elements << ++n_elements << " 2 2 " << id << ' ' << id << ' ' << number[cell->vertex_index(0)] << ' '
+                     << number[cell->vertex_index(1)] << ' ' << number[cell->vertex_index(2)] << '\n';
+        }
+      out << "$Elements\n" << n_elements << '\n' << elements.str() << "$EndElements\n";
+      out.close();
+      AssertThrow(out, dealii::ExcMessage("MeshIO::write_msh: writing '" + filename + "' failed."));
+    }
   } // namespace MeshIO
 } // namespace dealvem

@@ -10,6 +10,7 @@
 
 #include <dealvem/mesh/mesh_io.h>
 #include <dealvem/mesh/polygonal_mesh.h>
+#include <dealvem/mesh/spur_gear.h>
 
 #include <string>
 
@@ -18,7 +19,9 @@ namespace dealvem
   /**
    * The mesh source of one body, as a parameter-file section:
    * a generator (structured quads or triangles, perturbed quads,
-   * centroidal Voronoi, the non-convex family) on a rectangle, a polygon
+   * centroidal Voronoi, the non-convex family) on a rectangle, a spur
+   * gear or a sector of one (subsection 'Gear': SpurGear and
+   * PolygonalMeshGenerators::spur_gear()), a polygon
    * mesh file (legacy VTK, see MeshIO), a gmsh .msh file (MeshIO::read_msh:
    * physical curves as boundary ids, physical surfaces as material ids, both
    * nameable in the parameter file by their physical names), or any other
@@ -71,6 +74,12 @@ namespace dealvem
     dealii::Point<2> shift{0., 0.};
     /// Vertex map "x', y'" in x, y (muparser); empty for none.
     std::string      transformation;
+    /// Subsection 'Gear' of Type = "spur gear": the gear's data (angles
+    /// converted to radians).
+    SpurGear::Parameters gear;
+    /// Subsection 'Gear': the part meshed and the grading (each refinement
+    /// of a convergence study adds a global refinement).
+    PolygonalMeshGenerators::GearMeshSettings gear_mesh;
 
     /// Declare the entries in the current subsection of @p prm.
     static void
@@ -108,6 +117,11 @@ namespace dealvem
     /// A missing file leaves the names empty (create_mesh() reports it).
     void
     load_physical_names(const std::string &base_directory);
+
+    /// Read subsection 'Gear' (and check the gear when Type = "spur gear",
+    /// naming the section in the message).
+    void
+    parse_gear_parameters(dealii::ParameterHandler &prm);
 
     /// A one-line description, e.g. "voronoi, 64 cells, 20 Lloyd iterations".
     std::string

@@ -11,6 +11,12 @@
 #include <map>
 #include <string>
 
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class Triangulation;
+}
+
 namespace dealvem
 {
   /**
@@ -134,6 +140,20 @@ namespace dealvem
              const std::string  &filename,
              const unsigned int  n_refinements         = 0,
              const bool          separate_material_ids = false);
+
+    /**
+     * Write the active cells of a two-dimensional triangulation as a gmsh
+     * file of format 2.2 (ASCII), the format read_msh() reads: its used
+     * vertices, every active cell as a quadrangle (or triangle) on the
+     * physical surface of its material id, and every boundary face with a
+     * non-zero boundary id as a line on that physical curve. Hanging
+     * vertices stay as they are (gmsh cells are conforming only where the
+     * triangulation is); read_msh() makes them vertices of the coarse
+     * neighbours' polygons, as from_triangulation() does. (deal.II's own
+     * GridOut::write_msh() writes gmsh's format 1, which read_msh() refuses.)
+     */
+    void
+    write_msh(const dealii::Triangulation<2, 2> &tria, const std::string &filename);
 
     /// The physical names of a gmsh file only (the head of the file up to
     /// \$EndPhysicalNames is read and checked); empty maps for a file
