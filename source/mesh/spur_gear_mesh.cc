@@ -259,45 +259,68 @@ namespace dealvem
       tria.refine_global(settings.n_global_refinements);
       if (settings.flank_cell_size > 0)
         {
-          // the flank zone: involute points of the refined teeth between the radii
-          const double from = settings.refine_from_radius > 0 ? settings.refine_from_radius : gear->form_radius();
-          const double to   = settings.refine_to_radius > 0 ? settings.refine_to_radius : gear->tip_radius();
-          AssertThrow(from < to, dealii::ExcMessage("spur_gear(): the refined zone's radii must increase, not " +
-                                                    number_string(from) + " to " + number_string(to) + "."));
-          std::vector<dealii::Point<2>> upper;
-          const auto                   &starts = gear->piece_starts();
-          for (unsigned int i = 0; i <= 400; ++i)
+          // the zones: given, or one per refined tooth with the common radii and both flanks
+          std::vector<GearMeshSettings::FlankZone> zones = settings.zones;
+          if (zones.empty())
             {
-              const dealii::Point<2> p   = gear->outline_point(starts[4] + (starts[5] - starts[4]) * i / 400.);
-              const double           rad = p.distance(prm.center);
-              if (rad >= from - 1e-12 * scale && rad <= to + 1e-12 * scale)
-                upper.push_back(dealii::Point<2>(p - prm.center)); // tooth 0, its own frame rotated by prm.rotation
+              const unsigned int first_refined = settings.n_refined_teeth == 0 ? first : settings.first_refined_tooth;
+              const unsigned int n_refined     = settings.n_refined_teeth == 0 ? n : settings.n_refined_teeth;
+              for (unsigned int k = first_refined; k < first_refined + n_refined; ++k)
+                zones.push_back({int(k), settings.refine_from_radius, settings.refine_to_radius,
+                                 GearMeshSettings::Flank::both});
             }
-          AssertThrow(!upper.empty(), dealii::ExcMessage("spur_gear(): the refined zone holds no flank point."));
-          const unsigned int first_refined = settings.n_refined_teeth == 0 ? first : settings.first_refined_tooth % z;
-          const unsigned int n_refined     = settings.n_refined_teeth == 0 ? n : settings.n_refined_teeth;
-          const auto         refined       = [&](const int k) {
-            const unsigned int kk = ((k % int(z)) + z) % z;
-            return (kk + z - first_refined) % z < n_refined;
-          };
+          // per zone: points of the upper (counter-clockwise) flank of tooth
+          // 0 in the tooth's frame between the zone's radii
+          const auto                                &starts = gear->piece_starts();
+          std::vector<std::vector<dealii::Tensor<1, 2>>> flank(zones.size());
+          for (unsigned int zi = 0; zi < zones.size(); ++zi)
+            {
+              const double from = zones[zi].from_radius > 0 ? zones[zi].from_radius : gear->form_radius();
+              const double to   = zones[zi].to_radius > 0 ? zones[zi].to_radius : gear->tip_radius();
+              AssertThrow(from < to, dealii::ExcMessage("spur_gear(): the refined zone's radii must increase, not " +
+                                                        number_string(from) + " to " + number_string(to) + "."));
+              const double c = std::cos(-prm.rotation), sn = std::sin(-prm.rotation);
+              for (unsigned int i = 0; i <= 800; ++i)
+                {
+                  const dealii::Tensor<1, 2> p =
+                    gear->outline_point(starts[4] + (starts[5] - starts[4]) * i / 800.) - prm.center;
+                  const double rad = p.norm();
+                  if (rad >= from - 1e-12 * scale && rad <= to + 1e-12 * scale)
+                    flank[zi].push_back(dealii::Tensor<1, 2>({c * p[0] - sn * p[1], sn * p[0] + c * p[1]}));
+                }
+              AssertThrow(!flank[zi].empty(),
+                          dealii::ExcMessage("spur_gear(): the refined zone from radius " + number_string(from) +
+                                             " to " + number_string(to) + " holds no point of the flank (form radius " +
+                                             number_string(gear->form_radius()) + ", tip radius " +
+                                             number_string(gear->tip_radius()) + ")."));
+            }
           const auto distance = [&](const dealii::Point<2> &x) {
             const dealii::Tensor<1, 2> rel  = x - prm.center;
             const double               phi  = std::atan2(rel[1], rel[0]) - prm.rotation;
             const int                  k    = std::lround(phi / (2 * tau));
             double                     dmin = std::numeric_limits<double>::max();
-            for (int j = k - 1; j <= k + 1; ++j)
-              if (refined(j))
-                {
-                  // rotate x into tooth 0's placement and mirror to the upper flank
-                  const double         a = -2 * tau * j - prm.rotation;
-                  dealii::Tensor<1, 2> loc(
-                    {std::cos(a) * rel[0] - std::sin(a) * rel[1], std::sin(a) * rel[0] + std::cos(a) * rel[1]});
-                  loc[1]                       = std::abs(loc[1]);
-                  const double               c = std::cos(prm.rotation), s = std::sin(prm.rotation);
-                  const dealii::Tensor<1, 2> back({c * loc[0] - s * loc[1], s * loc[0] + c * loc[1]});
-                  for (const auto &p : upper)
-                    dmin = std::min(dmin, (back - dealii::Tensor<1, 2>(p)).norm());
-                }
+            for (unsigned int zi = 0; zi < zones.size(); ++zi)
+              {
+                // the zone's tooth, if it is k - 1, k or k + 1 (modulo z)
+                const int d = ((zones[zi].tooth - k) % int(z) + int(z) + 1) % int(z) - 1;
+                if (d < -1 || d > 1)
+                  continue;
+                // x in the frame of that tooth
+                const double         a = -2 * tau * (k + d) - prm.rotation;
+                dealii::Tensor<1, 2> loc({std::cos(a) * rel[0] - std::sin(a) * rel[1],
+                                          std::sin(a) * rel[0] + std::cos(a) * rel[1]});
+                const auto           side = zones[zi].flank;
+                for (const bool mirrored : {false, true})
+                  {
+                    // the counter-clockwise flank is the upper one, the clockwise its mirror image
+                    if ((mirrored && side == GearMeshSettings::Flank::counter_clockwise) ||
+                        (!mirrored && side == GearMeshSettings::Flank::clockwise))
+                      continue;
+                    const dealii::Tensor<1, 2> q({loc[0], mirrored ? -loc[1] : loc[1]});
+                    for (const auto &p : flank[zi])
+                      dmin = std::min(dmin, (q - p).norm());
+                  }
+              }
             return dmin;
           };
           refine_toward(tria, distance, settings.flank_cell_size, settings.layers);
