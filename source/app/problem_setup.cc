@@ -142,6 +142,7 @@ namespace dealvem
     pressures.clear();
     points.clear();
     rigid_boundaries.clear();
+    rotations.clear();
     body_force.reset();
     body_force_name.clear();
   }
@@ -253,6 +254,33 @@ namespace dealvem
 
 
   void
+  BoundaryConditionParameters::add_rotation_about_centre(const dealii::types::boundary_id            id,
+                                                         const dealii::Point<2>                     &centre,
+                                                         const std::shared_ptr<dealii::Function<2>> &value,
+                                                         const bool                                  torque_driven,
+                                                         const std::string                          &name)
+  {
+    Rotation r;
+    r.name = default_name(name, torque_driven ? "Torque" : "Rotation", id);
+    check_id(id, r.name);
+    AssertThrow(std::isfinite(centre[0]) && std::isfinite(centre[1]),
+                dealii::ExcMessage(r.name + ": the centre of the rotation is not finite."));
+    for (const auto &other : rotations)
+      AssertThrow(other.id != id, dealii::ExcMessage(r.name + ": boundary id " + std::to_string(int(id)) +
+                                                     " is turned about a centre already ('" + other.name + "')."));
+    for (const auto &other : rigid_boundaries)
+      AssertThrow(other.id != id, dealii::ExcMessage(r.name + ": boundary id " + std::to_string(int(id)) +
+                                                     " is a rigid boundary already ('" + other.name + "')."));
+    r.id            = id;
+    r.centre        = centre;
+    r.value         = checked(value, 1, r.name);
+    r.torque_driven = torque_driven;
+    rotations.push_back(std::move(r));
+  }
+
+
+
+  void
   BoundaryConditionParameters::set_body_force(const std::shared_ptr<dealii::Function<2>> &force,
                                               const std::string                           &name)
   {
@@ -301,6 +329,26 @@ namespace dealvem
                       "constants, evaluated at the centroid, t = 1 (or the time of the load step). A rigid part does not hold its "
                       "body (add Dirichlet data elsewhere) and may share constrained nodes with "
                       "other conditions only at its two reference nodes.");
+    prm.declare_entry("Rotation about centre", "", Anything(),
+                      "Boundary parts turned rigidly about a centre (a gear's bore): 'id : cx, cy : angle a; "
+                      "id : cx, cy : torque M; ...'. 'angle a' turns the part about (cx, cy) by the angle a "
+                      "(counter-clockwise, radians): Dirichlet data u = (R(a) - I)(x - c) on every node of the "
+                      "part, the exact rotation (also at finite strain, where each load step without t in the "
+                      "data turns the part by its load factor times a, exactly). 'torque M' "
+                      "loads the part by the torque M (counter-clockwise) about (cx, cy) and leaves its angle "
+                      "an unknown: the part turns rigidly about the centre without translating (a bearing); "
+                      "small strain only, and the body needs other support against that rotation (a clamped "
+                      "rim, contact). Expressions with the function constants, evaluated at the centre, t = 1 "
+                      "(or the time of the load step). Each load step reports per part the centre, the angle "
+                      "(prescribed or solved for), the torque, and the moment about the centre "
+                      "(the reaction moment of a prescribed angle) and the force on the body: on the terminal, "
+                      "in the JSON summary (keys rotations.rotation_<id>: contact problems under steps.N. and at "
+                      "the top level for the last step, one body under cycles.C. or "
+                      "cycles.C.finite_strain.steps.N.) and, in contact problems with CSV output, in "
+                      "<base name>-rotations.csv (finite sliding: columns angle_, torque_, "
+                      "moment_about_centre_rotation_<id> of <base name>-history.csv). The nodes of the part may not be "
+                      "constrained by other "
+                      "entries (a node shared with Dirichlet data must have the same value).");
     prm.declare_entry("Body force", "", Anything(),
                       "Body force 'fx, fy' (force per area; expressions in x, y, t; t = 1, or the time of the load step); empty "
                       "for none.");
@@ -413,6 +461,37 @@ namespace dealvem
                                          " is rigid already (entry '" + other.name + "')."));
         add_rigid_boundary(id, force, moment, name);
       }
+    for (const auto &entry : InputParsing::split(prm.get("Rotation about centre"), ';'))
+      {
+        const std::string name   = section + "/Rotation about centre entry '" + entry + "'";
+        const std::string syntax = "expected 'id : cx, cy : angle a' or 'id : cx, cy : torque M'";
+        const auto        fields = InputParsing::split(entry, ':', true);
+        AssertThrow(fields.size() == 3, dealii::ExcMessage("Parameter '" + name + "': " + syntax + "."));
+        const auto id = parse_id(fields[0], name, physical_names);
+        const auto xy = InputParsing::split(fields[1], ',');
+        AssertThrow(xy.size() == 2,
+                    dealii::ExcMessage("Parameter '" + name + "': expected the centre 'cx, cy' after the id; " +
+                                       syntax + "."));
+        const dealii::Point<2> centre(InputParsing::parse_double(xy[0], name), InputParsing::parse_double(xy[1], name));
+        // 'angle <expression>' or 'torque <expression>'
+        const std::string load = InputParsing::trim(fields[2]);
+        const auto        word = load.substr(0, load.find_first_of(" \t"));
+        AssertThrow(word == "angle" || word == "torque",
+                    dealii::ExcMessage("Parameter '" + name +
+                                       "': the third field must start with 'angle' or "
+                                       "'torque', got '" +
+                                       load + "'; " + syntax + "."));
+        const std::string expression = InputParsing::trim(load.substr(word.size()));
+        AssertThrow(!expression.empty(), dealii::ExcMessage("Parameter '" + name + "': no expression after '" + word +
+                                                            "'; " + syntax + "."));
+        const auto value =
+          std::make_shared<InputParsing::ParsedFunction>(std::vector<std::string>{expression}, constants, name);
+        for (const auto &other : rotations)
+          AssertThrow(other.id != id,
+                      dealii::ExcMessage("Parameter '" + name + "': boundary id " + fields[0] +
+                                         " is turned about a centre already (entry '" + other.name + "')."));
+        add_rotation_about_centre(id, centre, value, word == "torque", name);
+      }
     const std::string bf = prm.get("Body force");
     if (!InputParsing::trim(bf).empty())
       {
@@ -462,14 +541,17 @@ namespace dealvem
       check(p.id, p.name);
     for (const auto &r : rigid_boundaries)
       check(r.id, r.name);
+    for (const auto &r : rotations)
+      check(r.id, r.name);
   }
 
 
 
   void
-  BoundaryConditionParameters::apply_constraints(const VEMDoFHandler<2>                 &dof_handler,
-                                                 dealii::AffineConstraints<double>      &constraints,
-                                                 std::vector<SupportReactions::Support> *supports) const
+  BoundaryConditionParameters::apply_constraints(const VEMDoFHandler<2>                                  &dof_handler,
+                                                 dealii::AffineConstraints<double>                       &constraints,
+                                                 std::vector<SupportReactions::Support>                  *supports,
+                                                 std::vector<BoundaryConditions::RotationAboutCentre<2>> *parts) const
   {
     check_boundary_ids(dof_handler.get_mesh());
     // who wrote each line, for the messages of later, colliding entries
@@ -526,6 +608,28 @@ namespace dealvem
         BoundaryConditions::add_rigid_boundary(dof_handler, r.id, constraints, r.name, &origins);
         record(r.name, none); // passes the load on within the body: no support
       }
+    if (parts != nullptr)
+      parts->clear();
+    for (const auto &r : rotations)
+      {
+        BoundaryConditions::RotationAboutCentre<2> part;
+        if (r.torque_driven)
+          {
+            part = BoundaryConditions::add_torque_rotation(dof_handler, r.id, r.centre, constraints, r.name, &origins);
+            record(r.name, none); // the lines turn the part; the torque is a load
+          }
+        else
+          {
+            part = BoundaryConditions::add_prescribed_rotation(dof_handler, r.id, r.centre,
+                                                               angle_factor * r.value->value(r.centre), constraints,
+                                                               r.name, &origins);
+            record(r.name, supports != nullptr ? support_index("boundary " + std::to_string(int(r.id)),
+                                                               "boundary_" + std::to_string(int(r.id)), r.id)
+                                               : none);
+          }
+        if (parts != nullptr)
+          parts->push_back(std::move(part));
+      }
     // prescribed displacements far beyond the size of the mesh leave the
     // small-displacement model and make the solvers fail for reasons that
     // would not name the value (overflowing residuals, cycling active sets)
@@ -571,6 +675,36 @@ namespace dealvem
         for (const auto &l : BoundaryConditions::rigid_boundary_load(part, force, moment))
           assembler.add_nodal_load(l.first, l.second);
       }
+    for (const auto &r : rotations)
+      if (r.torque_driven)
+        {
+          auto part = BoundaryConditions::rotation_geometry(assembler.get_dof_handler(), r.id, r.centre, r.name);
+          part.torque_driven = true; // (the master DoF of add_torque_rotation())
+          for (const auto &l : BoundaryConditions::rotation_torque_load(part, r.value->value(r.centre)))
+            assembler.add_nodal_load(l.first, l.second);
+        }
+  }
+
+
+
+  std::vector<SupportReactions::Rotation>
+  BoundaryConditionParameters::rotation_results(const std::vector<BoundaryConditions::RotationAboutCentre<2>> &parts,
+                                                const dealii::AffineConstraints<double> &constraints,
+                                                const dealii::Vector<double>            &u,
+                                                const dealii::Vector<double>            &unbalanced,
+                                                const std::vector<dealii::Point<2>>     &positions) const
+  {
+    AssertThrow(parts.size() == rotations.size(),
+                dealii::ExcMessage("BoundaryConditionParameters::rotation_results(): " + std::to_string(parts.size()) +
+                                   " parts for " + std::to_string(rotations.size()) +
+                                   " 'Rotation about centre' entries."));
+    std::vector<SupportReactions::Rotation> results;
+    for (unsigned int k = 0; k < parts.size(); ++k)
+      {
+        const double torque = rotations[k].torque_driven ? rotations[k].value->value(rotations[k].centre) : 0.;
+        results.push_back(SupportReactions::rotation(parts[k], torque, constraints, u, unbalanced, positions));
+      }
+    return results;
   }
 
 
@@ -586,6 +720,15 @@ namespace dealvem
                            "condition (its constraints and resultant do not follow a finite rotation), and '" +
                            switch_name + "' is true. Use Dirichlet conditions or tractions, or solve at small "
                            "strain."));
+    for (const auto &r : rotations)
+      AssertThrow(!r.torque_driven,
+                  dealii::ExcMessage("Parameter '" + r.name +
+                                     "': a torque about a centre (the angle an unknown) "
+                                     "is a small-strain condition (its constraints u = theta perp(x - c) do not "
+                                     "follow a finite rotation), and '" +
+                                     switch_name +
+                                     "' is true. Prescribe the angle instead ('angle a'), or solve at small "
+                                     "strain."));
     if (body_force)
       assembler.set_body_force(*body_force);
     for (const auto &t : tractions)
@@ -619,6 +762,8 @@ namespace dealvem
         r.force->set_time(t);
         r.moment->set_time(t);
       }
+    for (auto &r : rotations)
+      r.value->set_time(t);
     if (body_force)
       body_force->set_time(t);
   }
@@ -652,6 +797,8 @@ namespace dealvem
         check(r.force.get());
         check(r.moment.get());
       }
+    for (const auto &r : rotations)
+      check(r.value.get());
     check(body_force.get());
     return names;
   }
@@ -672,8 +819,76 @@ namespace dealvem
       ids.insert(p.id);
     for (const auto &r : rigid_boundaries)
       ids.insert(r.id);
+    for (const auto &r : rotations)
+      ids.insert(r.id);
     return ids;
   }
+
+
+  namespace RotationOutput
+  {
+    void
+    print(const dealii::ConditionalOStream              &out,
+          const std::vector<SupportReactions::Rotation> &rotations,
+          const std::string                             &indent)
+    {
+      for (const auto &r : rotations)
+        {
+          out << indent << r.name << ": ";
+          if (r.torque_driven)
+            out << "torque " << r.torque << " (applied), angle " << r.angle << " (solved for), bearing force ("
+                << r.force[0] << ", " << r.force[1] << ")";
+          else
+            out << "angle " << r.angle << " (prescribed), moment about centre " << r.reaction_moment
+                << " (reaction), force (" << r.force[0] << ", " << r.force[1] << ")";
+          out << std::endl;
+        }
+    }
+
+
+
+    void
+    json(JsonSummary &summary, const std::string &key, const std::vector<SupportReactions::Rotation> &rotations)
+    {
+      for (const auto &r : rotations)
+        {
+          const std::string k = key + r.key + ".";
+          summary.set(k + "boundary_id", double(r.boundary_id));
+          summary.set(k + "centre_x", r.centre[0]);
+          summary.set(k + "centre_y", r.centre[1]);
+          summary.set(k + "mode", r.torque_driven ? "torque" : "angle");
+          summary.set(k + "angle", r.angle);
+          summary.set(k + "torque", r.torque);
+          summary.set(k + "reaction_moment_about_centre", r.reaction_moment);
+          summary.set(k + "moment_about_centre", r.moment_about_centre);
+          summary.set(k + "force_x", r.force[0]);
+          summary.set(k + "force_y", r.force[1]);
+        }
+    }
+
+
+
+    std::string
+    csv_header()
+    {
+      return "step,time,rotation,boundary_id,centre_x,centre_y,mode,angle,torque,reaction_moment_about_centre,"
+             "moment_about_centre,force_x,force_y\n";
+    }
+
+
+
+    std::string
+    csv_line(const unsigned int step, const double time, const SupportReactions::Rotation &r)
+    {
+      std::ostringstream s;
+      s << std::setprecision(15) << step << "," << time << "," << r.key << "," << int(r.boundary_id) << ","
+        << r.centre[0] << "," << r.centre[1] << "," << (r.torque_driven ? "torque" : "angle") << "," << r.angle << ","
+        << r.torque << "," << r.reaction_moment << "," << r.moment_about_centre << "," << r.force[0] << ","
+        << r.force[1] << "\n";
+      return s.str();
+    }
+  } // namespace RotationOutput
+
 
 
   namespace MaterialLaws
