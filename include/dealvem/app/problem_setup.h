@@ -353,6 +353,15 @@ namespace dealvem
       bool                                 torque_driven;
     };
 
+    /// Declare the entry 'Rotation about centre' (declare_parameters()).
+    static void
+    declare_rotation_entry(dealii::ParameterHandler &prm);
+
+    /// Add the parts of the entry 'Rotation about centre' with the value
+    /// @p value (parse_parameters()).
+    void
+    parse_rotation_entries(const std::string &value);
+
     std::vector<Rotation>                          rotations;
     double                                         angle_factor = 1;
     std::map<std::string, double>                  constants;
