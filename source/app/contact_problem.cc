@@ -424,7 +424,7 @@ namespace dealvem
     dealii::TimerOutput::Scope t(d.timer, "assembly");
     bc.set_time(time);
     d.constraints.clear();
-    bc.apply_constraints(d.dof_handler, d.constraints, &d.supports);
+    bc.apply_constraints(d.dof_handler, d.constraints, &d.supports, &d.rotation_parts);
     d.constraints.close();
     d.assembler = std::make_unique<ElasticityAssembler<2>>(d.dof_handler, d.materials, opt.stabilization_factor, opt.stabilization);
     ElasticityAssembler<2> &assembler = *d.assembler;

@@ -82,6 +82,8 @@ namespace dealvem
     dealii::AffineConstraints<double>                     constraints;
     /// The supports of the constraints (their reactions per step).
     std::vector<SupportReactions::Support>                supports;
+    /// The parts of the 'Rotation about centre' entries of the step.
+    std::vector<BoundaryConditions::RotationAboutCentre<2>> rotation_parts;
     std::unique_ptr<RigidBodySupport>                     support;
     // the distributed path: partition, the elasticity part of the step,
     // and the solver (also held as `solver`)

@@ -79,6 +79,22 @@ namespace dealvem
         csv_file.commit();
       }
 
+      // The rotation parts (angle, torque, moment about the centre), one
+      // line per part and load step; no file without such parts.
+      void
+      write_rotations_csv(const std::string &filename, const std::vector<ContactProblem::StepResult> &steps)
+      {
+        if (steps.empty() || steps.front().rotations.empty())
+          return;
+        OutputFile    csv_file(filename);
+        std::ostream &csv = csv_file.stream();
+        csv << RotationOutput::csv_header();
+        for (const auto &sr : steps)
+          for (const auto &r : sr.rotations)
+            csv << RotationOutput::csv_line(sr.step, sr.time, r);
+        csv_file.commit();
+      }
+
       // One line per support on the terminal: its reaction and moment about
       // @p point (the first @p max ones, then their number).
       void
@@ -344,6 +360,7 @@ namespace dealvem
                   json.set(kr + "force_y", r.force[1]);
                   json.set(kr + "moment", r.moment);
                 }
+              RotationOutput::json(json, k + "rotations.", sr.rotations);
             }
         }
     }
@@ -417,6 +434,7 @@ namespace dealvem
         write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
         write_resultants_csv(step_prefix(d.prefix, step) + "-resultants.csv", results.interface_results);
         write_reactions_csv(d.prefix + "-reactions.csv", results.steps);
+        write_rotations_csv(d.prefix + "-rotations.csv", results.steps);
       }
     if (opt.write_vtu)
       {
@@ -461,9 +479,13 @@ namespace dealvem
         write_interface_csv(data->prefix + "-interface.csv", results.pairs);
         write_resultants_csv(data->prefix + "-resultants.csv", results.interface_results);
         write_reactions_csv(data->prefix + "-reactions.csv", results.steps);
+        write_rotations_csv(data->prefix + "-rotations.csv", results.steps);
         pcout << "  interface results: " << data->prefix << "-interface.csv (node pairs), " << data->prefix
                   << "-resultants.csv (force per interface), " << data->prefix
                   << "-reactions.csv (force and moment per support)" << std::endl;
+        if (!results.steps.empty() && !results.steps.back().rotations.empty())
+          pcout << "  rotations about centres: " << data->prefix
+                << "-rotations.csv (angle, torque and moment about the centre per part and step)" << std::endl;
       }
     if (opt.write_vtu)
       {
@@ -535,7 +557,10 @@ namespace dealvem
     print_ranges(pcout, results);
     // (with load steps the progress line of each step lists them)
     if (!results.steps.empty() && opt.n_load_steps == 1 && !contact_settings.is_coulomb())
-      print_reactions(pcout, results.steps.back().reactions, opt.moment_point, "  ");
+      {
+        print_reactions(pcout, results.steps.back().reactions, opt.moment_point, "  ");
+        RotationOutput::print(pcout, results.steps.back().rotations, "  ");
+      }
   }
 
 
@@ -764,6 +789,8 @@ namespace dealvem
           json.set(key + "force_y", r.force[1]);
           json.set(key + "moment", r.moment);
         }
+    if (!results.steps.empty())
+      RotationOutput::json(json, "rotations.", results.steps.back().rotations);
     for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
       json.set("timings." + s.first, s.second);
     json.write(prefix + ".json");

@@ -329,6 +329,7 @@ namespace dealvem
       }
     pcout << std::endl;
     print_reactions(pcout, step_result.reactions, opt.moment_point, "    ");
+    RotationOutput::print(pcout, step_result.rotations, "    ");
   }
 
 
@@ -397,6 +398,7 @@ namespace dealvem
         positions[m] = d.dof_handler.node_location(m);
       step_result.reactions =
         SupportReactions::compute(d.supports, d.constraints, unbalanced, positions, opt.moment_point);
+      step_result.rotations = bc.rotation_results(d.rotation_parts, d.constraints, u, unbalanced, positions);
     }
 
     // an active pair of unilateral contact in tension contradicts the

@@ -56,7 +56,10 @@ namespace dealvem
   ElasticityProblem::output_results(const unsigned int cycle)
   {
     check_displacement_scale(cycle);
-    const std::vector<ForceBalance::Body> balance = verify_balance(cycle);
+    dealii::Vector<double>                unbalanced;
+    const std::vector<ForceBalance::Body> balance = verify_balance(cycle, &unbalanced);
+    if (bc.has_rotations() && !finite_strain.enabled)
+      report_rotations("cycles." + std::to_string(cycle) + ".", unbalanced, false);
     // the cells this process computes: all, or (distributed) its own, with
     // the ghost layer for the nodal stress averages
     std::vector<unsigned int> stress_cells;
@@ -144,7 +147,7 @@ namespace dealvem
   // finite strain the Newton solver's residual test is the check (the
   // linear balance does not hold for the deformed body): none here.
   std::vector<ForceBalance::Body>
-  ElasticityProblem::verify_balance(const unsigned int cycle) const
+  ElasticityProblem::verify_balance(const unsigned int cycle, dealii::Vector<double> *unbalanced) const
   {
     std::vector<ForceBalance::Body> balance;
     if (!finite_strain.enabled)
@@ -153,10 +156,11 @@ namespace dealvem
       bc.add_loads(assembler);
       const double tolerance =
         (LinearSolver::parse_type(used_solver_type) == LinearSolver::Type::cg_amg ? solver_tolerance : 0.);
-      balance = distributed ? ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(),
-                                                    tolerance, &partition.locally_owned_cells(), mpi_communicator) :
-                              ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(),
-                                                    tolerance);
+      balance = distributed
+                  ? ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(), tolerance,
+                                          &partition.locally_owned_cells(), mpi_communicator, {}, unbalanced)
+                  : ForceBalance::compute(assembler, constraints, solution, dealii::Vector<double>(), tolerance,
+                                          nullptr, MPI_COMM_SELF, {}, unbalanced);
       ForceBalance::check(balance, "cycle " + std::to_string(cycle) + " (solver " + solver_description + ")");
     }
     return balance;
@@ -384,5 +388,26 @@ namespace dealvem
         json.write(output_folder + "/" + base_name + ".json");
         json_written = true;
       }
+  }
+
+
+  // The rotation parts: angle, torque and moment about the centre of each,
+  // on the terminal and in the JSON summary.
+  void
+  ElasticityProblem::report_rotations(const std::string            &key,
+                                      const dealii::Vector<double> &unbalanced,
+                                      const bool                    deformed)
+  {
+    std::vector<dealii::Point<2>> positions(dof_handler.n_nodes());
+    for (unsigned int m = 0; m < positions.size(); ++m)
+      {
+        positions[m] = dof_handler.node_location(m);
+        if (deformed)
+          for (unsigned int c = 0; c < 2; ++c)
+            positions[m][c] += solution[VEMDoFHandler<2>::node_dof(m, c)];
+      }
+    const auto rotations = bc.rotation_results(rotation_parts, constraints, solution, unbalanced, positions);
+    RotationOutput::print(pcout, rotations, "    ");
+    RotationOutput::json(json, key + "rotations.", rotations);
   }
 } // namespace dealvem

@@ -127,7 +127,7 @@ namespace dealvem
     dof_handler.reinit(mesh);
     dof_handler.distribute_dofs(VEMElementData(degree));
     constraints.clear();
-    bc.apply_constraints(dof_handler, constraints);
+    bc.apply_constraints(dof_handler, constraints, nullptr, &rotation_parts);
     constraints.close();
     BoundaryConditions::check_rigid_body_support(dof_handler, constraints);
     dealii::DynamicSparsityPattern dsp(dof_handler.n_dofs());
@@ -255,7 +255,7 @@ namespace dealvem
     dof_handler.distribute_dofs(VEMElementData(degree));
     partition.reinit(dof_handler, mpi_communicator);
     constraints.clear();
-    bc.apply_constraints(dof_handler, constraints);
+    bc.apply_constraints(dof_handler, constraints, nullptr, &rotation_parts);
     constraints.close();
     BoundaryConditions::check_rigid_body_support(dof_handler, constraints);
     locally_owned_dofs    = partition.locally_owned_dofs();
@@ -544,7 +544,11 @@ namespace dealvem
     check_finite_strain_loads(assembler);
     FiniteStrainSolver<2>::Parameters parameters = finite_strain.solver;
     parameters.n_load_steps                     = n_load_steps;
-    parameters.scale_prescribed_motion          = !timed;
+    // an angle about a centre is prescribed as the exact rotation by the
+    // load factor times the angle: the constraints of every step are
+    // written for it, the other prescribed values scaled here
+    const bool exact_rotations         = !timed && bc.has_rotations();
+    parameters.scale_prescribed_motion = !timed && !exact_rotations;
     FiniteStrainSolver<2> solver(assembler, constraints, parameters);
 
     // the monitor point: a vertex of the mesh
@@ -594,7 +598,25 @@ namespace dealvem
                 // their functions' time) and prescribed displacements
                 bc.set_time(time);
                 dealii::AffineConstraints<double> step_constraints;
-                bc.apply_constraints(dof_handler, step_constraints);
+                bc.apply_constraints(dof_handler, step_constraints, nullptr, &rotation_parts);
+                step_constraints.close();
+                solver.set_constraints(step_constraints);
+              }
+            else if (exact_rotations)
+              {
+                bc.set_load_factor(load_factor);
+                dealii::AffineConstraints<double> step_constraints;
+                bc.apply_constraints(dof_handler, step_constraints, nullptr, &rotation_parts);
+                bc.set_load_factor(1.);
+                std::set<dealii::types::global_dof_index> turned;
+                for (const auto &part : rotation_parts)
+                  turned.insert(part.lines.begin(), part.lines.end());
+                std::vector<std::pair<dealii::types::global_dof_index, double>> values;
+                for (const auto &line : step_constraints.get_lines())
+                  if (turned.count(line.index) == 0)
+                    values.emplace_back(line.index, load_factor * line.inhomogeneity);
+                for (const auto &v : values)
+                  step_constraints.set_inhomogeneity(v.first, v.second);
                 step_constraints.close();
                 solver.set_constraints(step_constraints);
               }
@@ -628,6 +650,13 @@ namespace dealvem
         max_cauchy_norm                 = fields.max_cell_cauchy_norm;
         json.set(key + "steps." + std::to_string(n) + ".max_cauchy_norm", max_cauchy_norm);
         report_load_step(n, load_factor, time, r, monitor, key);
+        if (bc.has_rotations())
+          {
+            // the reactions at the converged step: r = lambda f_ext - f_int(u)
+            dealii::Vector<double> unbalanced;
+            assembler.assemble(solution, load_factor, unbalanced, constraints, nullptr, nullptr);
+            report_rotations(key + "steps." + std::to_string(n) + ".", unbalanced, true);
+          }
         if (write_vtu)
           {
             const std::string       file = prefix + step_suffix(n) + ".vtu";

@@ -31,6 +31,7 @@ namespace dealvem
       std::vector<dealii::Tensor<1, 2>>       force;  // on the slave side, per interface
       std::vector<double>                     moment; // of those forces about the moment point
       std::vector<SupportReactions::Reaction> reactions;
+      std::vector<SupportReactions::Rotation> rotations; // the 'Rotation about centre' parts
       dealii::Tensor<1, 2>                    load; // the applied loads and their moment
       double                                  load_moment = 0;
     };
@@ -113,7 +114,8 @@ namespace dealvem
       const auto                             &dofs = sliding.get_dof_handler();
       dealii::AffineConstraints<double>       lines;
       std::vector<SupportReactions::Support> supports;
-      bc.apply_constraints(dofs, lines, &supports);
+      std::vector<BoundaryConditions::RotationAboutCentre<2>> parts;
+      bc.apply_constraints(dofs, lines, &supports, &parts);
       const auto             forces = sliding.nodal_forces();
       dealii::Vector<double> unbalanced(forces.external);
       unbalanced += forces.contact;
@@ -127,6 +129,7 @@ namespace dealvem
               positions[m][c] += u[2 * m + c];
         }
       out.reactions = SupportReactions::compute(supports, sliding.get_constraints(), unbalanced, positions, point);
+      out.rotations = bc.rotation_results(parts, sliding.get_constraints(), u, unbalanced, positions);
       for (unsigned int i = 0; i < forces.external.size(); ++i)
         {
           dealii::Tensor<1, 2> f;
@@ -554,6 +557,7 @@ namespace dealvem
                 << outputs.force[i][1] << "), moment " << outputs.moment[i] << " about ("
                 << opt.moment_point[0] << ", " << opt.moment_point[1] << ")" << std::endl;
     print_reactions(p.pcout, outputs.reactions, opt.moment_point, "    ");
+    RotationOutput::print(p.pcout, outputs.rotations, "    ");
     return outputs;
   }
 
@@ -578,6 +582,8 @@ namespace dealvem
         for (const auto &reaction : outputs.reactions)
           csv << ",reaction_x_" << reaction.key << ",reaction_y_" << reaction.key << ",reaction_moment_"
               << reaction.key;
+        for (const auto &rotation : outputs.rotations)
+          csv << ",angle_" << rotation.key << ",torque_" << rotation.key << ",moment_about_centre_" << rotation.key;
         csv << ",load_x,load_y,load_moment\n";
       }
     csv << n << ',' << internal::number_string(time) << ',' << r.n_passes << ',' << updates << ','
@@ -630,6 +636,9 @@ namespace dealvem
         json.set(k + "force_y", reaction.force[1]);
         json.set(k + "moment", reaction.moment);
       }
+    for (const auto &rotation : outputs.rotations)
+      csv << ',' << full(rotation.angle) << ',' << full(rotation.torque) << ',' << full(rotation.moment_about_centre);
+    RotationOutput::json(json, key + "rotations.", outputs.rotations);
     csv << ',' << full(outputs.load[0]) << ',' << full(outputs.load[1]) << ',' << full(outputs.load_moment)
         << "\n";
     json.set(key + "loads.force_x", outputs.load[0]);

@@ -142,6 +142,7 @@ namespace dealvem
     pressures.clear();
     points.clear();
     rigid_boundaries.clear();
+    rotations.clear();
     body_force.reset();
     body_force_name.clear();
   }
@@ -253,6 +254,33 @@ namespace dealvem
 
 
   void
+  BoundaryConditionParameters::add_rotation_about_centre(const dealii::types::boundary_id            id,
+                                                         const dealii::Point<2>                     &centre,
+                                                         const std::shared_ptr<dealii::Function<2>> &value,
+                                                         const bool                                  torque_driven,
+                                                         const std::string                          &name)
+  {
+    Rotation r;
+    r.name = default_name(name, torque_driven ? "Torque" : "Rotation", id);
+    check_id(id, r.name);
+    AssertThrow(std::isfinite(centre[0]) && std::isfinite(centre[1]),
+                dealii::ExcMessage(r.name + ": the centre of the rotation is not finite."));
+    for (const auto &other : rotations)
+      AssertThrow(other.id != id, dealii::ExcMessage(r.name + ": boundary id " + std::to_string(int(id)) +
+                                                     " is turned about a centre already ('" + other.name + "')."));
+    for (const auto &other : rigid_boundaries)
+      AssertThrow(other.id != id, dealii::ExcMessage(r.name + ": boundary id " + std::to_string(int(id)) +
+                                                     " is a rigid boundary already ('" + other.name + "')."));
+    r.id            = id;
+    r.centre        = centre;
+    r.value         = checked(value, 1, r.name);
+    r.torque_driven = torque_driven;
+    rotations.push_back(std::move(r));
+  }
+
+
+
+  void
   BoundaryConditionParameters::set_body_force(const std::shared_ptr<dealii::Function<2>> &force,
                                               const std::string                           &name)
   {
@@ -301,6 +329,7 @@ namespace dealvem
                       "constants, evaluated at the centroid, t = 1 (or the time of the load step). A rigid part does not hold its "
                       "body (add Dirichlet data elsewhere) and may share constrained nodes with "
                       "other conditions only at its two reference nodes.");
+    declare_rotation_entry(prm);
     prm.declare_entry("Body force", "", Anything(),
                       "Body force 'fx, fy' (force per area; expressions in x, y, t; t = 1, or the time of the load step); empty "
                       "for none.");
@@ -413,6 +442,7 @@ namespace dealvem
                                          " is rigid already (entry '" + other.name + "')."));
         add_rigid_boundary(id, force, moment, name);
       }
+    parse_rotation_entries(prm.get("Rotation about centre"));
     const std::string bf = prm.get("Body force");
     if (!InputParsing::trim(bf).empty())
       {
@@ -462,14 +492,17 @@ namespace dealvem
       check(p.id, p.name);
     for (const auto &r : rigid_boundaries)
       check(r.id, r.name);
+    for (const auto &r : rotations)
+      check(r.id, r.name);
   }
 
 
 
   void
-  BoundaryConditionParameters::apply_constraints(const VEMDoFHandler<2>                 &dof_handler,
-                                                 dealii::AffineConstraints<double>      &constraints,
-                                                 std::vector<SupportReactions::Support> *supports) const
+  BoundaryConditionParameters::apply_constraints(const VEMDoFHandler<2>                                  &dof_handler,
+                                                 dealii::AffineConstraints<double>                       &constraints,
+                                                 std::vector<SupportReactions::Support>                  *supports,
+                                                 std::vector<BoundaryConditions::RotationAboutCentre<2>> *parts) const
   {
     check_boundary_ids(dof_handler.get_mesh());
     // who wrote each line, for the messages of later, colliding entries
@@ -526,6 +559,28 @@ namespace dealvem
         BoundaryConditions::add_rigid_boundary(dof_handler, r.id, constraints, r.name, &origins);
         record(r.name, none); // passes the load on within the body: no support
       }
+    if (parts != nullptr)
+      parts->clear();
+    for (const auto &r : rotations)
+      {
+        BoundaryConditions::RotationAboutCentre<2> part;
+        if (r.torque_driven)
+          {
+            part = BoundaryConditions::add_torque_rotation(dof_handler, r.id, r.centre, constraints, r.name, &origins);
+            record(r.name, none); // the lines turn the part; the torque is a load
+          }
+        else
+          {
+            part = BoundaryConditions::add_prescribed_rotation(dof_handler, r.id, r.centre,
+                                                               angle_factor * r.value->value(r.centre), constraints,
+                                                               r.name, &origins);
+            record(r.name, supports != nullptr ? support_index("boundary " + std::to_string(int(r.id)),
+                                                               "boundary_" + std::to_string(int(r.id)), r.id)
+                                               : none);
+          }
+        if (parts != nullptr)
+          parts->push_back(std::move(part));
+      }
     // prescribed displacements far beyond the size of the mesh leave the
     // small-displacement model and make the solvers fail for reasons that
     // would not name the value (overflowing residuals, cycling active sets)
@@ -571,6 +626,14 @@ namespace dealvem
         for (const auto &l : BoundaryConditions::rigid_boundary_load(part, force, moment))
           assembler.add_nodal_load(l.first, l.second);
       }
+    for (const auto &r : rotations)
+      if (r.torque_driven)
+        {
+          auto part = BoundaryConditions::rotation_geometry(assembler.get_dof_handler(), r.id, r.centre, r.name);
+          part.torque_driven = true; // (the master DoF of add_torque_rotation())
+          for (const auto &l : BoundaryConditions::rotation_torque_load(part, r.value->value(r.centre)))
+            assembler.add_nodal_load(l.first, l.second);
+        }
   }
 
 
@@ -586,6 +649,15 @@ namespace dealvem
                            "condition (its constraints and resultant do not follow a finite rotation), and '" +
                            switch_name + "' is true. Use Dirichlet conditions or tractions, or solve at small "
                            "strain."));
+    for (const auto &r : rotations)
+      AssertThrow(!r.torque_driven,
+                  dealii::ExcMessage("Parameter '" + r.name +
+                                     "': a torque about a centre (the angle an unknown) "
+                                     "is a small-strain condition (its constraints u = theta perp(x - c) do not "
+                                     "follow a finite rotation), and '" +
+                                     switch_name +
+                                     "' is true. Prescribe the angle instead ('angle a'), or solve at small "
+                                     "strain."));
     if (body_force)
       assembler.set_body_force(*body_force);
     for (const auto &t : tractions)
@@ -619,6 +691,8 @@ namespace dealvem
         r.force->set_time(t);
         r.moment->set_time(t);
       }
+    for (auto &r : rotations)
+      r.value->set_time(t);
     if (body_force)
       body_force->set_time(t);
   }
@@ -652,6 +726,8 @@ namespace dealvem
         check(r.force.get());
         check(r.moment.get());
       }
+    for (const auto &r : rotations)
+      check(r.value.get());
     check(body_force.get());
     return names;
   }
@@ -672,8 +748,11 @@ namespace dealvem
       ids.insert(p.id);
     for (const auto &r : rigid_boundaries)
       ids.insert(r.id);
+    for (const auto &r : rotations)
+      ids.insert(r.id);
     return ids;
   }
+
 
 
   namespace MaterialLaws

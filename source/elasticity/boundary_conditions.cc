@@ -443,6 +443,184 @@ namespace dealvem
 
 
 
+    namespace
+    {
+      // "Rotation of boundary id 3 about (0, 0)" or the parameter entry
+      template <int dim>
+      std::string
+      rotation_label(const dealii::types::boundary_id id, const dealii::Point<dim> &centre, const std::string &name)
+      {
+        if (!name.empty())
+          return "Parameter '" + name + "'";
+        std::ostringstream s;
+        s << "Rotation of boundary id " << int(id) << " about (" << centre[0] << ", " << centre[1] << ")";
+        return s.str();
+      }
+
+      // perp(x - c) = (-(y - c_y), x - c_x), component c
+      template <int dim>
+      double
+      arm(const dealii::Point<dim> &x, const dealii::Point<dim> &centre, const unsigned int c)
+      {
+        return c == 0 ? -(x[1] - centre[1]) : x[0] - centre[0];
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    RotationAboutCentre<dim>
+    rotation_geometry(const VEMDoFHandler<dim>        &dof_handler,
+                      const dealii::types::boundary_id id,
+                      const dealii::Point<dim>        &centre,
+                      const std::string               &name)
+    {
+      const auto &mesh  = dof_handler.get_mesh();
+      const auto  label = rotation_label(id, centre, name);
+      AssertThrow(std::isfinite(centre[0]) && std::isfinite(centre[1]),
+                  dealii::ExcMessage(label + ": the centre of the rotation is not finite."));
+      RotationAboutCentre<dim> part;
+      part.id     = id;
+      part.centre = centre;
+      part.nodes  = dof_handler.boundary_nodes({id});
+      AssertThrow(!part.nodes.empty(), dealii::ExcMessage(label + ": no boundary edge of mesh '" + mesh.name +
+                                                          "' has boundary id " + std::to_string(int(id)) + "."));
+      // the master: the largest arm in magnitude (the first on ties)
+      double       largest = -1;
+      unsigned int node = part.nodes.front(), component = 0;
+      for (const auto n : part.nodes)
+        for (unsigned int c = 0; c < 2; ++c)
+          if (const double a = std::abs(arm(dof_handler.node_location(n), centre, c)); a > largest)
+            {
+              largest   = a;
+              node      = n;
+              component = c;
+            }
+      AssertThrow(largest > 0,
+                  dealii::ExcMessage(label + ": every node of the boundary part lies at the centre of the rotation."));
+      part.master_dof = VEMDoFHandler<dim>::node_dof(node, component);
+      part.master_arm = arm(dof_handler.node_location(node), centre, component);
+      return part;
+    }
+
+
+
+    template <int dim>
+    RotationAboutCentre<dim>
+    add_prescribed_rotation(const VEMDoFHandler<dim>          &dof_handler,
+                            const dealii::types::boundary_id   id,
+                            const dealii::Point<dim>          &centre,
+                            const double                       angle,
+                            dealii::AffineConstraints<double> &constraints,
+                            const std::string                 &name,
+                            const ConstraintOrigins           *origins)
+    {
+      auto       part  = rotation_geometry(dof_handler, id, centre, name);
+      const auto label = rotation_label(id, centre, name);
+      AssertThrow(std::isfinite(angle), dealii::ExcMessage(label + ": the angle of the rotation is not finite."));
+      part.torque_driven    = false;
+      part.prescribed_angle = angle;
+      part.master_dof       = dealii::numbers::invalid_dof_index;
+      part.master_arm       = 0;
+      const double cs = std::cos(angle), sn = std::sin(angle);
+      for (const auto node : part.nodes)
+        {
+          const auto   x  = dof_handler.node_location(node);
+          const double dx = x[0] - centre[0], dy = x[1] - centre[1];
+          // (R - I)(x - c), exact
+          const double value[2] = {(cs - 1.) * dx - sn * dy, sn * dx + (cs - 1.) * dy};
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              const auto dof = VEMDoFHandler<dim>::node_dof(node, c);
+              if (!constraints.is_constrained(dof))
+                {
+                  constraints.add_line(dof);
+                  constraints.set_inhomogeneity(dof, value[c]);
+                  part.lines.push_back(dof);
+                  continue;
+                }
+              // constrained already: accept the same fixed value only
+              const auto  *entries  = constraints.get_constraint_entries(dof);
+              const bool   coupled  = entries != nullptr && !entries->empty();
+              const double existing = constraints.get_inhomogeneity(dof);
+              const double scale    = std::max(std::abs(existing), std::abs(value[c]));
+              if (!coupled && std::abs(existing - value[c]) <= 1e-12 * std::max(scale, 1e-300))
+                continue;
+              std::ostringstream m;
+              m << label << " on mesh '" << dof_handler.get_mesh().name << "': component " << (c == 0 ? "x" : "y")
+                << " of the node at (" << x << ") is already constrained by " << origin_of(dof, origins);
+              if (coupled)
+                m << ", which couples it to other displacement components";
+              else
+                m << " to the value " << existing;
+              m << "; the rotation by " << angle << " about (" << centre[0] << ", " << centre[1] << ") prescribes "
+                << value[c] << " there. Give the nodes of the rotating part to one condition only.";
+              AssertThrow(false, dealii::ExcMessage(m.str()));
+            }
+        }
+      return part;
+    }
+
+
+
+    template <int dim>
+    RotationAboutCentre<dim>
+    add_torque_rotation(const VEMDoFHandler<dim>          &dof_handler,
+                        const dealii::types::boundary_id   id,
+                        const dealii::Point<dim>          &centre,
+                        dealii::AffineConstraints<double> &constraints,
+                        const std::string                 &name,
+                        const ConstraintOrigins           *origins)
+    {
+      auto       part    = rotation_geometry(dof_handler, id, centre, name);
+      const auto label   = rotation_label(id, centre, name);
+      part.torque_driven = true;
+      for (const auto node : part.nodes)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            const auto dof = VEMDoFHandler<dim>::node_dof(node, c);
+            if (!constraints.is_constrained(dof))
+              continue;
+            std::ostringstream m;
+            m << label << " on mesh '" << dof_handler.get_mesh().name << "': component " << (c == 0 ? "x" : "y")
+              << " of the node at (" << dof_handler.node_location(node) << ") is already constrained by "
+              << origin_of(dof, origins)
+              << ". A part turned by a torque (its angle an unknown) must have every node free; give its "
+                 "nodes to one condition only.";
+            AssertThrow(false, dealii::ExcMessage(m.str()));
+          }
+      // u_d = (arm_d / arm_m) u_m for every DoF d but the master
+      for (const auto node : part.nodes)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            const auto dof = VEMDoFHandler<dim>::node_dof(node, c);
+            if (dof == part.master_dof)
+              continue;
+            constraints.add_line(dof);
+            part.lines.push_back(dof);
+            const double s = arm(dof_handler.node_location(node), centre, c) / part.master_arm;
+            if (s != 0.)
+              constraints.add_entry(dof, part.master_dof, s);
+          }
+      return part;
+    }
+
+
+
+    template <int dim>
+    std::vector<std::pair<dealii::types::global_dof_index, double>>
+    rotation_torque_load(const RotationAboutCentre<dim> &part, const double torque)
+    {
+      AssertThrow(part.torque_driven && part.master_dof != dealii::numbers::invalid_dof_index,
+                  dealii::ExcMessage("rotation_torque_load(): boundary id " + std::to_string(int(part.id)) +
+                                     " is not a torque-driven rotation (add_torque_rotation())."));
+      AssertThrow(std::isfinite(torque), dealii::ExcMessage("rotation_torque_load(): the torque on boundary id " +
+                                                            std::to_string(int(part.id)) + " is not finite."));
+      return {{part.master_dof, torque / part.master_arm}};
+    }
+
+
+
     template <int dim>
     void
     check_rigid_body_support(
@@ -521,6 +699,28 @@ namespace dealvem
                        const ConstraintOrigins *);
     template std::vector<std::pair<dealii::types::global_dof_index, double>>
     rigid_boundary_load(const RigidBoundary<2> &, const dealii::Tensor<1, 2> &, const double);
+    template RotationAboutCentre<2>
+    rotation_geometry(const VEMDoFHandler<2> &,
+                      const dealii::types::boundary_id,
+                      const dealii::Point<2> &,
+                      const std::string &);
+    template RotationAboutCentre<2>
+    add_prescribed_rotation(const VEMDoFHandler<2> &,
+                            const dealii::types::boundary_id,
+                            const dealii::Point<2> &,
+                            const double,
+                            dealii::AffineConstraints<double> &,
+                            const std::string &,
+                            const ConstraintOrigins *);
+    template RotationAboutCentre<2>
+    add_torque_rotation(const VEMDoFHandler<2> &,
+                        const dealii::types::boundary_id,
+                        const dealii::Point<2> &,
+                        dealii::AffineConstraints<double> &,
+                        const std::string &,
+                        const ConstraintOrigins *);
+    template std::vector<std::pair<dealii::types::global_dof_index, double>>
+    rotation_torque_load(const RotationAboutCentre<2> &, const double);
     template void
     check_rigid_body_support(
       const VEMDoFHandler<2> &, const dealii::AffineConstraints<double> &,

@@ -5,6 +5,7 @@
 #include <dealvem/elasticity/support_reactions.h>
 
 #include <map>
+#include <sstream>
 
 namespace dealvem
 {
@@ -56,5 +57,43 @@ namespace dealvem
         reactions.push_back(r);
       }
     return reactions;
+  }
+
+
+  SupportReactions::Rotation
+  SupportReactions::rotation(const BoundaryConditions::RotationAboutCentre<2> &part,
+                             const double                                      torque,
+                             const dealii::AffineConstraints<double>          &constraints,
+                             const dealii::Vector<double>                     &u,
+                             const dealii::Vector<double>                     &unbalanced,
+                             const std::vector<dealii::Point<2>>              &positions)
+  {
+    Rotation r;
+    {
+      std::ostringstream name;
+      name << "rotation of boundary " << int(part.id) << " about (" << part.centre[0] << ", " << part.centre[1] << ")";
+      r.name = name.str();
+    }
+    r.key           = "rotation_" + std::to_string(int(part.id));
+    r.boundary_id   = part.id;
+    r.centre        = part.centre;
+    r.torque_driven = part.torque_driven;
+    r.angle         = part.angle(u);
+    r.torque        = part.torque_driven ? torque : 0.;
+    Support support;
+    support.name        = r.name;
+    support.key         = r.key;
+    support.boundary_id = part.id;
+    support.lines       = part.lines;
+    const auto reaction = compute({support}, constraints, unbalanced, positions, part.centre).front();
+    r.force             = reaction.force;
+    // the torque enters the loads as the force torque/arm on the master
+    // DoF; the lines carry its net force back, which belongs to the couple,
+    // not to the bearing
+    if (part.torque_driven)
+      r.force[part.master_dof % 2] += torque / part.master_arm;
+    r.reaction_moment     = reaction.moment;
+    r.moment_about_centre = r.reaction_moment + r.torque;
+    return r;
   }
 } // namespace dealvem

@@ -171,6 +171,10 @@ namespace dealvem
     /// every support: each boundary id with Dirichlet data or a roller,
     /// each point constraint (SupportReactions).
     std::vector<SupportReactions::Reaction> reactions;
+    /// Each 'Rotation about centre' part: its centre, angle (prescribed or
+    /// solved for), torque and moment about the centre
+    /// (SupportReactions::rotation()).
+    std::vector<SupportReactions::Rotation> rotations;
   };
 
   /// Everything a test or a user program wants to look at after

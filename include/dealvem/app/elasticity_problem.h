@@ -194,7 +194,13 @@ namespace dealvem
     void
     check_displacement_scale(const unsigned int cycle) const;
     std::vector<ForceBalance::Body>
-    verify_balance(const unsigned int cycle) const;
+    verify_balance(const unsigned int cycle, dealii::Vector<double> *unbalanced = nullptr) const;
+    /// The 'Rotation about centre' parts after a solve or a load step: the
+    /// terminal lines and the JSON entries under @p key ("cycles.N." or
+    /// "cycles.N.finite_strain.steps.n."); @p unbalanced as ForceBalance
+    /// gives it, the node positions current ones if @p deformed.
+    void
+    report_rotations(const std::string &key, const dealii::Vector<double> &unbalanced, const bool deformed);
     void
     check_finite_results(const unsigned int cycle, const StressRecovery<2> &stresses, const ErrorNorms &errors) const;
     void
@@ -286,6 +292,8 @@ namespace dealvem
     PolygonalMesh<2>                                      mesh;
     VEMDoFHandler<2>                                      dof_handler;
     dealii::AffineConstraints<double>                     constraints;
+    /// The parts of the 'Rotation about centre' entries (apply_constraints()).
+    std::vector<BoundaryConditions::RotationAboutCentre<2>> rotation_parts;
     dealii::SparsityPattern                               sparsity_pattern;
     dealii::SparseMatrix<double>                          system_matrix;
     dealii::Vector<double>                                system_rhs, solution;

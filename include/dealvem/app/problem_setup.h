@@ -5,6 +5,7 @@
 #ifndef dealvem_app_problem_setup_h
 #define dealvem_app_problem_setup_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -12,6 +13,7 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <dealvem/app/input_parsing.h>
+#include <dealvem/elasticity/boundary_conditions.h>
 #include <dealvem/elasticity/constitutive_law.h>
 #include <dealvem/elasticity/elasticity_assembler.h>
 #include <dealvem/elasticity/finite_strain_assembler.h>
@@ -19,6 +21,7 @@
 #include <dealvem/elasticity/material.h>
 #include <dealvem/elasticity/support_reactions.h>
 #include <dealvem/mesh/mesh_io.h>
+#include <dealvem/postprocessing/json_summary.h>
 #include <dealvem/mesh/polygonal_mesh.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
@@ -48,6 +51,12 @@ namespace dealvem
    *   nodes on the boundary part move as one rigid body, loaded by the
    *   force (Fx, Fy) at the part's centroid and the moment M about it;
    *   the expressions are evaluated at the centroid)
+   * - Rotation about centre: `id : cx, cy : angle a; ...` (the boundary
+   *   part turned rigidly about (cx, cy) by the angle a, counter-clockwise,
+   *   radians: Dirichlet data of the exact rotation) or
+   *   `id : cx, cy : torque M; ...` (the part turns rigidly about (cx, cy)
+   *   by an unknown angle, loaded by the torque M, counter-clockwise; small
+   *   strain only); the expressions are evaluated at the centre
    * - Body force: `fx, fy` (empty: none)
    *
    * Expressions are muparser expressions in x, y and t with the function
@@ -150,6 +159,55 @@ namespace dealvem
                        const std::shared_ptr<dealii::Function<2>> &moment = nullptr,
                        const std::string                         &name   = "");
 
+    /**
+     * Turn the boundary part @p id rigidly about @p centre: with
+     * @p torque_driven false by the angle @p value (one component,
+     * counter-clockwise, radians; BoundaryConditions::add_prescribed_rotation()),
+     * with @p torque_driven true by an unknown angle under the torque
+     * @p value (counter-clockwise; BoundaryConditions::add_torque_rotation(),
+     * small strain only). @p value is evaluated at the centre.
+     */
+    void
+    add_rotation_about_centre(const dealii::types::boundary_id            id,
+                              const dealii::Point<2>                     &centre,
+                              const std::shared_ptr<dealii::Function<2>> &value,
+                              const bool                                  torque_driven,
+                              const std::string                          &name = "");
+
+    /**
+     * The factor of the prescribed angles of 'Rotation about centre' (1 by
+     * default): a finite-strain load step without t in the data sets its
+     * load factor here, so that apply_constraints() writes the exact
+     * rotation by the factor times the angle (the other prescribed values
+     * it scales itself).
+     */
+    void
+    set_load_factor(const double factor)
+    {
+      angle_factor = factor;
+    }
+
+    /// Whether a 'Rotation about centre' entry is set.
+    bool
+    has_rotations() const
+    {
+      return !rotations.empty();
+    }
+
+    /**
+     * The Rotation of every 'Rotation about centre' entry after a solve, in
+     * the order of the entries: @p parts as apply_constraints() returned
+     * them, @p constraints, @p u (the displacement), @p unbalanced and
+     * @p positions as for SupportReactions::compute(). The torque is that
+     * of the current time (set_time()).
+     */
+    std::vector<SupportReactions::Rotation>
+    rotation_results(const std::vector<BoundaryConditions::RotationAboutCentre<2>> &parts,
+                     const dealii::AffineConstraints<double>                       &constraints,
+                     const dealii::Vector<double>                                  &u,
+                     const dealii::Vector<double>                                  &unbalanced,
+                     const std::vector<dealii::Point<2>>                           &positions) const;
+
     /// The body force (force per area; two components); null: none.
     void
     set_body_force(const std::shared_ptr<dealii::Function<2>> &force, const std::string &name = "");
@@ -182,11 +240,16 @@ namespace dealvem
     /// with the lines it wrote first; a support that wrote no line (its
     /// DoFs were constrained by an earlier entry) is listed without lines.
     /// The lines of rigid boundaries pass the load on within the body and
-    /// are no support.
+    /// are no support. Rotations about a centre come last: a prescribed
+    /// angle is a support ("boundary 3") like Dirichlet data; a
+    /// torque-driven part is none. If @p rotations is not null, it gets the
+    /// parts of the 'Rotation about centre' entries, in their order
+    /// (rotation_results() reads them).
     void
-    apply_constraints(const VEMDoFHandler<2>                        &dof_handler,
-                      dealii::AffineConstraints<double>             &constraints,
-                      std::vector<SupportReactions::Support>        *supports = nullptr) const;
+    apply_constraints(const VEMDoFHandler<2>                                  &dof_handler,
+                      dealii::AffineConstraints<double>                       &constraints,
+                      std::vector<SupportReactions::Support>                  *supports  = nullptr,
+                      std::vector<BoundaryConditions::RotationAboutCentre<2>> *rotations = nullptr) const;
 
     /// Hand the loads to an assembler (the functions live in this object);
     /// the resultants of rigid boundaries become nodal loads.
@@ -281,6 +344,26 @@ namespace dealvem
       std::shared_ptr<dealii::Function<2>>          moment;
     };
 
+    struct Rotation
+    {
+      std::string                          name;
+      dealii::types::boundary_id           id;
+      dealii::Point<2>                     centre;
+      std::shared_ptr<dealii::Function<2>> value;
+      bool                                 torque_driven;
+    };
+
+    /// Declare the entry 'Rotation about centre' (declare_parameters()).
+    static void
+    declare_rotation_entry(dealii::ParameterHandler &prm);
+
+    /// Add the parts of the entry 'Rotation about centre' with the value
+    /// @p value (parse_parameters()).
+    void
+    parse_rotation_entries(const std::string &value);
+
+    std::vector<Rotation>                          rotations;
+    double                                         angle_factor = 1;
     std::map<std::string, double>                  constants;
     std::vector<Dirichlet>                         dirichlet;
     std::vector<Roller>                            rollers;
@@ -290,6 +373,44 @@ namespace dealvem
     std::shared_ptr<dealii::Function<2>>           body_force;
     std::string                                    body_force_name;
   };
+
+
+  /**
+   * The report of the 'Rotation about centre' entries (SupportReactions::Rotation)
+   * after a solve or a load step, shared by the programs: one line per part
+   * on the terminal, the JSON entries and the CSV lines.
+   */
+  namespace RotationOutput
+  {
+    /**
+     * One line per part: "rotation of boundary 3 about (0, 0): angle 0.01
+     * (prescribed), moment about centre -12.5 (reaction), force (..)" or
+     * "...: torque 5 (applied), angle 0.0012 (solved for), bearing force (..)".
+     */
+    void
+    print(const dealii::ConditionalOStream              &out,
+          const std::vector<SupportReactions::Rotation> &rotations,
+          const std::string                             &indent);
+
+    /**
+     * The entries @p key + "rotation_<id>." + boundary_id, centre_x,
+     * centre_y, mode ("angle" or "torque"), angle, torque,
+     * reaction_moment_about_centre, moment_about_centre, force_x, force_y.
+     */
+    void
+    json(JsonSummary &summary, const std::string &key, const std::vector<SupportReactions::Rotation> &rotations);
+
+    /// The header of the CSV file of the rotations (one line per part and
+    /// load step).
+    std::string
+    csv_header();
+
+    /// The CSV line of @p r in load step @p step at time @p time (full
+    /// precision), with a line break.
+    std::string
+    csv_line(const unsigned int step, const double time, const SupportReactions::Rotation &r);
+  } // namespace RotationOutput
+
 
 
   /**

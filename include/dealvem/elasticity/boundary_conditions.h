@@ -182,6 +182,126 @@ namespace dealvem
                         const double                  moment);
 
     /**
+     * A boundary part turned rigidly about a centre $c$ (a gear's bore
+     * turned by an angle or loaded by a torque): what
+     * add_prescribed_rotation() and add_torque_rotation() wrote, and what
+     * reads the angle back from a solution.
+     */
+    template <int dim>
+    struct RotationAboutCentre
+    {
+      /// The boundary id of the part.
+      dealii::types::boundary_id id = dealii::numbers::invalid_boundary_id;
+      /// The centre $c$ of the rotation.
+      dealii::Point<dim> centre;
+      /// The nodes on the part's boundary edges (vertices and, for k = 2,
+      /// edge midpoints; VEMDoFHandler::boundary_nodes()), sorted.
+      std::vector<unsigned int> nodes;
+      /// Whether the angle is an unknown driven by a torque
+      /// (add_torque_rotation()); false: prescribed (add_prescribed_rotation()).
+      bool torque_driven = false;
+      /// The prescribed angle (counter-clockwise, radians); 0 for a
+      /// torque-driven part.
+      double prescribed_angle = 0;
+      /// The DoFs of the constraint lines this condition wrote (a DoF
+      /// constrained before to the same value is not among them); their
+      /// reactions are the part's (SupportReactions::rotation()).
+      std::vector<dealii::types::global_dof_index> lines;
+      /// Torque-driven part: the master DoF carrying the rotation,
+      /// $u_m = \theta\,\mathrm{perp}(x_m - c)_{c_m}$; invalid otherwise.
+      dealii::types::global_dof_index master_dof = dealii::numbers::invalid_dof_index;
+      /// Torque-driven part: the arm $\mathrm{perp}(x_m - c)_{c_m}$ of the
+      /// master DoF (the largest component in magnitude over the part).
+      double master_arm = 0;
+
+      /// The rotation angle of the part in the displacement @p u: the
+      /// unknown $\theta = u_m / $ master_arm of a torque-driven part, the
+      /// prescribed angle otherwise.
+      template <typename VectorType>
+      double
+      angle(const VectorType &u) const
+      {
+        return torque_driven ? double(u[master_dof]) / master_arm : prescribed_angle;
+      }
+    };
+
+    /**
+     * The nodes of boundary part @p id and, for a torque, its master DoF
+     * (the node and component with the largest $|\mathrm{perp}(x - c)|$
+     * component, perp(v) = (-v_y, v_x); the first on ties). AssertThrow if
+     * no boundary edge carries @p id, if @p centre is not finite, or if all
+     * nodes of the part lie at the centre.
+     */
+    template <int dim>
+    RotationAboutCentre<dim>
+    rotation_geometry(const VEMDoFHandler<dim>        &dof_handler,
+                      const dealii::types::boundary_id id,
+                      const dealii::Point<dim>        &centre,
+                      const std::string               &name = "");
+
+    /**
+     * Prescribed rotation of boundary part @p id about @p centre by the angle
+     * @p angle (counter-clockwise, radians): Dirichlet data
+     * $u(x) = (R(\theta) - I)(x - c)$ on both components of every node of
+     * the part (vertices and, k = 2, edge midpoints), with the exact rotation
+     * matrix (not linearized), so that the same data turn a bore at finite
+     * strain or finite sliding. At small strain the data are the exact
+     * rotation too: its linear strain $(\cos\theta - 1)I$ is $O(\theta^2)$.
+     *
+     * A DoF of the part constrained already (by another entry) must have the
+     * same value and no coupling, else AssertThrow names the part (@p name,
+     * if not empty) and the earlier condition (through @p origins). Also
+     * AssertThrow for an unknown boundary id, a centre or angle that is not
+     * finite.
+     */
+    template <int dim>
+    RotationAboutCentre<dim>
+    add_prescribed_rotation(const VEMDoFHandler<dim>          &dof_handler,
+                            const dealii::types::boundary_id   id,
+                            const dealii::Point<dim>          &centre,
+                            const double                       angle,
+                            dealii::AffineConstraints<double> &constraints,
+                            const std::string                 &name    = "",
+                            const ConstraintOrigins           *origins = nullptr);
+
+    /**
+     * Rotation of boundary part @p id about @p centre with the angle
+     * $\theta$ an unknown (small strain): every DoF of the part is
+     * constrained as $u = \theta\,\mathrm{perp}(x - c)$ through affine
+     * constraints on one master DoF (RotationAboutCentre::master_dof, the
+     * node and component of largest arm, for conditioning), so the part
+     * keeps its shape and turns about $c$ without translating. Load it with
+     * rotation_torque_load(); read $\theta$ with RotationAboutCentre::angle().
+     * The lines hold the body against translations, not against the
+     * rotation about $c$: that one the torque drives and something else
+     * (a clamped rim, contact) must resist.
+     *
+     * Every DoF of the part must be free: a DoF constrained already stops
+     * with a message naming the part (@p name if not empty) and the earlier
+     * condition (through @p origins). AssertThrow also for an unknown
+     * boundary id and a centre that is not finite.
+     */
+    template <int dim>
+    RotationAboutCentre<dim>
+    add_torque_rotation(const VEMDoFHandler<dim>          &dof_handler,
+                        const dealii::types::boundary_id   id,
+                        const dealii::Point<dim>          &centre,
+                        dealii::AffineConstraints<double> &constraints,
+                        const std::string                 &name    = "",
+                        const ConstraintOrigins           *origins = nullptr);
+
+    /**
+     * The generalized force of a torque @p torque (counter-clockwise) about
+     * the centre of a torque-driven part: one entry on the master DoF,
+     * @p torque / master_arm, whose virtual work on $u_m = \theta$
+     * master_arm is torque $\cdot\,\theta$. An entry of the unconstrained
+     * load vector (ElasticityAssembler::add_nodal_load()).
+     */
+    template <int dim>
+    std::vector<std::pair<dealii::types::global_dof_index, double>>
+    rotation_torque_load(const RotationAboutCentre<dim> &part, const double torque);
+
+    /**
      * Check that every body (material id) is held against all three
      * rigid-body motions by the constraints: the homogeneous constraints
      * restricted to the body's rigid-body modes must have rank 3. Throws

@@ -11,6 +11,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
+#include <dealvem/elasticity/boundary_conditions.h>
+
 #include <string>
 #include <vector>
 
@@ -98,6 +100,60 @@ namespace dealvem
             const dealii::Vector<double>            &unbalanced,
             const std::vector<dealii::Point<2>>     &positions,
             const dealii::Point<2>                  &point);
+
+    /**
+     * What a gear user reads of a boundary part turned about a centre
+     * (BoundaryConditions::RotationAboutCentre): the angle, the torque and
+     * the moment about the centre.
+     */
+    struct Rotation
+    {
+      /// How the messages name it: "rotation of boundary 3 about (0, 0)".
+      std::string name;
+      /// A name without spaces for CSV columns and JSON keys: "rotation_3".
+      std::string key;
+      /// The boundary id of the part.
+      dealii::types::boundary_id boundary_id = dealii::numbers::invalid_boundary_id;
+      /// The centre of the rotation.
+      dealii::Point<2> centre;
+      /// Whether the angle is an unknown driven by the torque (else it is
+      /// prescribed).
+      bool torque_driven = false;
+      /// The rotation angle (counter-clockwise, radians): prescribed, or
+      /// solved for (RotationAboutCentre::angle()).
+      double angle = 0;
+      /// The applied torque about the centre (counter-clockwise; 0 for a
+      /// prescribed angle).
+      double torque = 0;
+      /// The force of the condition on the body: the reaction of the
+      /// constraint lines (for a torque-driven part the bearing force that
+      /// keeps the centre in place: the lines' reaction plus the net force
+      /// torque / arm of the nodal force that carries the torque, so that
+      /// the torque acts as a pure couple).
+      dealii::Tensor<1, 2> force;
+      /// The moment about the centre of the constraint reactions (for a
+      /// prescribed angle: the torque needed to turn the part; for a
+      /// torque-driven part 0 up to round-off, the lines transmit no moment).
+      double reaction_moment = 0;
+      /// The moment about the centre that the condition exerts on the
+      /// body: reaction_moment + torque.
+      double moment_about_centre = 0;
+    };
+
+    /**
+     * The Rotation of @p part after a solve: @p torque is the torque applied
+     * to a torque-driven part (ignored otherwise), @p u the displacement,
+     * and @p constraints, @p unbalanced and @p positions as for compute();
+     * the reaction is that of the lines the part wrote
+     * (RotationAboutCentre::lines), its moment taken about the centre.
+     */
+    static Rotation
+    rotation(const BoundaryConditions::RotationAboutCentre<2> &part,
+             const double                                      torque,
+             const dealii::AffineConstraints<double>          &constraints,
+             const dealii::Vector<double>                     &u,
+             const dealii::Vector<double>                     &unbalanced,
+             const std::vector<dealii::Point<2>>              &positions);
 
     /// The moment about @p point of the force @p force acting at @p x
     /// (counter-clockwise positive).
