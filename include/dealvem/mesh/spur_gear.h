@@ -282,6 +282,37 @@ namespace dealvem
       /// Refined cells within this many cell sizes of the flank zone
       /// (as refine_toward()).
       double layers = 2.;
+
+      /// Which flank of a tooth a zone refines.
+      enum class Flank
+      {
+        /// both flanks
+        both,
+        /// the flank on the counter-clockwise side of the tooth's axis
+        counter_clockwise,
+        /// the flank on the clockwise side
+        clockwise
+      };
+
+      /// A refined zone of one flank (or both flanks) of one tooth.
+      struct FlankZone
+      {
+        /// The tooth (the gear's numbering, counter-clockwise from tooth 0; modulo z).
+        int tooth = 0;
+        /// Radii from (0: the form radius) ...
+        double from_radius = 0.;
+        /// ... to (0: the tip radius).
+        double to_radius = 0.;
+        /// The flank(s).
+        Flank flank = Flank::both;
+      };
+
+      /// Zones refined to flank_cell_size. Empty: both flanks of the teeth
+      /// first_refined_tooth, ... between refine_from_radius and
+      /// refine_to_radius. A gear pair's contact zones of one position are
+      /// a few such zones (one per tooth pair in contact, on the driving
+      /// flanks).
+      std::vector<FlankZone> zones;
     };
 
     /**
