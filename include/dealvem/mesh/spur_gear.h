@@ -49,8 +49,9 @@ namespace dealvem
    *
    * <b>Checks.</b> The constructor stops with a message naming the
    * parameter when the data give no gear: fewer than 5 teeth, an
-   * undercut (the involute would start below the base circle: raise the
-   * profile shift), a rack tip too round for the tooth space (the fillets
+   * undercut (the rack's straight flank would reach past the point where
+   * the line of action touches the base circle: raise the profile shift),
+   * a rack tip too round for the tooth space (the fillets
    * would cross), a pointed tooth (no tip land left), a tip relief larger
    * than the tooth, or a bore that does not fit below the root circle.
    *
@@ -59,8 +60,9 @@ namespace dealvem
    * it (counter-clockwise), is seven pieces: root arc, fillet, involute,
    * tip arc, involute, fillet, root arc. The outline coordinate
    * outline_point() takes is the arc length along the gear's outline from
-   * the middle of the space before tooth 0 (up to round-off of a
-   * tabulated arc length inside the fillet pieces), periodic with
+   * the middle of the space before tooth 0 (to about 1e-5 relative: the
+   * length of 512 chords per piece, each piece parameterized so that its
+   * speed is nearly constant), periodic with
    * z outline_pitch_length(). PolygonalMeshGenerators::spur_gear() uses it
    * as the chart of the deal.II manifold on the outline, so every vertex
    * it makes on a tooth lies on the exact outline.
