@@ -285,6 +285,125 @@ namespace dealvem
 
 
     /**
+     * The cells around the boundary vertex @p v, in the order met when
+     * walking from its boundary edge @p first (a mesh edge) across the
+     * interior edges at @p v, up to the boundary edge that ends the walk.
+     * The walk is local (no scan of the mesh).
+     */
+    std::vector<unsigned int>
+    cells_around(const Mesh &mesh, const unsigned int v, const unsigned int first)
+    {
+      std::vector<unsigned int> cells;
+      unsigned int              e = first, c = mesh.edge(first).cells[0];
+      while (c != invalid && std::find(cells.begin(), cells.end(), c) == cells.end())
+        {
+          cells.push_back(c);
+          unsigned int next = invalid;
+          for (const unsigned int f : mesh.cell(c).edges)
+            if (f != e && (mesh.edge(f).vertices[0] == v || mesh.edge(f).vertices[1] == v))
+              next = f;
+          if (next == invalid)
+            break;
+          e                = next;
+          const auto &edge = mesh.edge(e);
+          c                = (edge.cells[0] == c ? edge.cells[1] : edge.cells[0]);
+        }
+      return cells;
+    }
+
+
+
+    /// Whether segments [a, b] and [c, d] cross, or one has an end on (or
+    /// within 1e-9 of the longer length of) the other: stricter than the
+    /// mesh's own validation, so a move it lets through leaves no cell
+    /// that validate() refuses.
+    bool
+    segments_meet(const Point &a, const Point &b, const Point &c, const Point &d)
+    {
+      const double L   = std::max(a.distance(b), c.distance(d));
+      const double eps = 1e-9 * L * L;
+      const auto   sgn = [eps](const Point &p, const Point &q, const Point &r) {
+        const double x = cross(q - p, r - p);
+        return x > eps ? 1 : (x < -eps ? -1 : 0);
+      };
+      const int d1 = sgn(c, d, a), d2 = sgn(c, d, b), d3 = sgn(a, b, c), d4 = sgn(a, b, d);
+      if (d1 * d2 < 0 && d3 * d4 < 0)
+        return true;
+      // r (on the line p q to within eps) between p and q
+      const auto on = [](const Point &p, const Point &q, const Point &r) {
+        const double t = (r - p) * (q - p) / (q - p).norm_square();
+        return t >= -1e-9 && t <= 1 + 1e-9;
+      };
+      return (d1 == 0 && on(c, d, a)) || (d2 == 0 && on(c, d, b)) || (d3 == 0 && on(a, b, c)) ||
+             (d4 == 0 && on(a, b, d));
+    }
+
+
+
+    /**
+     * Whether the cells around the boundary vertex @p v (boundary edge
+     * @p first at it) are valid after @p v moved: each is a simple
+     * counter-clockwise polygon (its two edges at @p v cross no other edge
+     * of it), and their angles at @p v add up to less than a full turn (a
+     * cell folded over its neighbour adds a turn).
+     */
+    bool
+    valid_around(const Mesh &mesh, const unsigned int v, const unsigned int first)
+    {
+      double angle = 0;
+      for (const unsigned int c : cells_around(mesh, v, first))
+        {
+          const auto        &loop = mesh.cell(c).vertices;
+          const unsigned int n    = loop.size();
+          const unsigned int i    = std::find(loop.begin(), loop.end(), v) - loop.begin();
+          if (i == n)
+            return false;
+          double area = 0;
+          for (unsigned int j = 0; j < n; ++j)
+            area += cross(mesh.vertex(loop[j]) - mesh.vertex(v), mesh.vertex(loop[(j + 1) % n]) - mesh.vertex(v));
+          if (!(area > 0))
+            return false;
+          const Point &x = mesh.vertex(v), &p = mesh.vertex(loop[(i + n - 1) % n]), &q = mesh.vertex(loop[(i + 1) % n]);
+          // the edges at v against the edges not adjacent to them
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const unsigned int j1 = (j + 1) % n;
+              const Point       &a = mesh.vertex(loop[j]), &b = mesh.vertex(loop[j1]);
+              if (j != i && j1 != i && j1 != (i + n - 1) % n && segments_meet(x, p, a, b))
+                return false;
+              if (j != i && j != (i + 1) % n && j1 != i && segments_meet(x, q, a, b))
+                return false;
+            }
+          double a = std::atan2(cross(q - x, p - x), (q - x) * (p - x));
+          angle += (a <= 0 ? a + 2 * dealii::numbers::PI : a);
+        }
+      return angle < 2 * dealii::numbers::PI * (1 - 1e-12);
+    }
+
+
+
+    /**
+     * Move the boundary vertex @p v of @p side (the side as on the current
+     * mesh) to @p x if the cells around it stay valid (valid_around());
+     * otherwise it stays where it is. Returns whether it moved.
+     */
+    bool
+    move_if_valid(PolygonalMesh<2> &mesh, const Side &side, const unsigned int v, const Point &x)
+    {
+      const auto e = side_edges_at(side, v);
+      if (e.empty())
+        return false;
+      const Point old = mesh.vertex(v);
+      mesh.move_vertex(v, x);
+      if (valid_around(mesh, v, side.edge_indices[e[0]]))
+        return true;
+      mesh.move_vertex(v, old);
+      return false;
+    }
+
+
+
+    /**
      * Rule 4, pass (b): place every pair of two merged original vertices
      * (pairs without a vertex of @p by_vertex) opposite each other. The
      * slave vertex moves along its side (on the arc of either of its edges,
@@ -304,6 +423,7 @@ namespace dealvem
                          const InsertedByVertex                     &by_vertex,
                          NodeInsertion::Report                      &report)
     {
+      const Side master_now = collect_side(mesh, master), slave_now = collect_side(mesh, slave);
       for (const auto &mp : master_partner)
         {
           const unsigned int m = mp.first, s = mp.second;
@@ -352,8 +472,10 @@ namespace dealvem
             }
           if (best > 0.5 * side.h.at(v))
             continue; // no hit close to the vertex (a corner): it stays
-          report.max_merge_shift = std::max(report.max_merge_shift, best);
-          mesh.move_vertex(v, target);
+          // (a move past a vertex that rule 3 inserted next to it would fold
+          // its cell: the vertex then stays, and its gap is judged as it is)
+          if (move_if_valid(mesh, move_slave ? slave_now : master_now, v, target))
+            report.max_merge_shift = std::max(report.max_merge_shift, best);
         }
     }
 
@@ -383,7 +505,7 @@ namespace dealvem
                        const NodeInsertion::Settings  &settings,
                        NodeInsertion::Report          &report)
     {
-      const Side   master_now = collect_side(mesh, master);
+      const Side   master_now = collect_side(mesh, master), slave_now = collect_side(mesh, slave);
       unsigned int n_real = 0;
       for (const auto &j : judged)
         n_real += (j.verdict == GapVerdict::real);
@@ -413,10 +535,14 @@ namespace dealvem
           bool       move_master   = is_new_master;
           if (!is_new_master && !is_new_slave)
             move_master = slave.is_end(j.s) && !master.is_end(j.m);
-          if (move_master)
-            mesh.move_vertex(j.m, xs);
-          else
-            mesh.move_vertex(j.s, xm);
+          // a move that would fold a cell is not made: the gap is kept
+          if (!(move_master ? move_if_valid(mesh, master_now, j.m, xs) : move_if_valid(mesh, slave_now, j.s, xm)))
+            {
+              report.unresolved_gaps.push_back({0.5 * (xm + xs), g0, j.deviation});
+              ++report.n_kept_gaps;
+              report.max_kept_gap = std::max(report.max_kept_gap, std::abs(g0));
+              continue;
+            }
           if (!is_new_master && !is_new_slave)
             report.max_merge_shift = std::max(report.max_merge_shift, xm.distance(xs));
           ++report.n_closed_gaps;
