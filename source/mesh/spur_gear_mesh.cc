@@ -19,6 +19,7 @@
 #include <dealvem/mesh/spur_gear.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 
 namespace dealvem
@@ -166,25 +167,18 @@ namespace dealvem
         }
       return blocks;
     }
-  } // namespace
 
 
-  namespace PolygonalMeshGenerators
-  {
-    void
-    spur_gear(dealii::Triangulation<2, 2> &tria, const SpurGear &gear_in, const GearMeshSettings &settings)
+    /// The quadrilateral blocks of teeth [@p first, @p first + @p n): the
+    /// half-tooth blocks of half_tooth_blocks(), placed at each tooth's axis
+    /// and mirrored for the clockwise half.
+    BlockMesh
+    tooth_blocks(const SpurGear &gear, const unsigned int first, const unsigned int n)
     {
-      const auto         gear  = std::make_shared<const SpurGear>(gear_in);
-      const unsigned int z     = gear->n_teeth();
-      const bool         whole = settings.n_teeth == 0 || settings.n_teeth >= z;
-      const unsigned int first = whole ? 0 : settings.first_tooth % z, n = whole ? z : settings.n_teeth;
-      AssertThrow(settings.flank_cell_size >= 0 && std::isfinite(settings.flank_cell_size),
-                  dealii::ExcMessage("spur_gear(): the flank cell size must not be negative."));
-
       unsigned int n_flank_blocks = 0;
-      const auto   half           = half_tooth_blocks(*gear, n_flank_blocks);
-      const auto  &prm            = gear->parameters();
-      const double tau            = gear->angular_pitch() / 2;
+      const auto   half           = half_tooth_blocks(gear, n_flank_blocks);
+      const auto  &prm            = gear.parameters();
+      const double tau            = gear.angular_pitch() / 2;
 
       BlockMesh blocks;
       for (unsigned int k = first; k < first + n; ++k)
@@ -202,13 +196,24 @@ namespace dealvem
               blocks.quad({{place(b[3], true), place(b[2], true), place(b[1], true), place(b[0], true)}});
             }
         }
-      dealii::SubCellData       subcell_data;
-      std::vector<unsigned int> considered;
-      dealii::GridTools::delete_duplicated_vertices(blocks.points, blocks.cells, subcell_data, considered,
-                                                    1e-9 * gear->tip_radius());
-      tria.clear();
-      tria.create_triangulation(blocks.points, blocks.cells, subcell_data);
+      return blocks;
+    }
 
+
+
+    /**
+     * Boundary ids and manifold ids of the coarse triangulation of teeth
+     * from @p first: 1 the outline (manifold 1), 0 the bore (manifold 2),
+     * 2 and 3 the sector sides; inner arcs about the centre get manifold 2
+     * too, everything else is flat.
+     */
+    void
+    set_gear_ids(dealii::Triangulation<2, 2>           &tria,
+                 const std::shared_ptr<const SpurGear> &gear,
+                 const unsigned int                     first)
+    {
+      const auto  &prm = gear->parameters();
+      const double tau = gear->angular_pitch() / 2;
       // manifolds: 1 the outline, 2 circles about the centre; the cells are
       // flat: deal.II places a refined quadrilateral's centre by the weights
       // -1/4 on the vertices and 1/2 on the (curved) face midpoints, the
@@ -255,76 +260,118 @@ namespace dealvem
         }
       tria.set_manifold(1, GearOutlineManifold(gear));
       tria.set_manifold(2, dealii::PolarManifold<2>(prm.center));
+    }
 
+
+
+    using PolygonalMeshGenerators::GearMeshSettings;
+
+    /**
+     * The distance of a point from the flank zones of @p settings
+     * (GearMeshSettings::zones, or one zone per refined tooth of teeth
+     * [@p first, @p first + @p n) with the settings' radii, both flanks),
+     * for refine_toward().
+     */
+    std::function<double(const dealii::Point<2> &)>
+    flank_zone_distance(const std::shared_ptr<const SpurGear> &gear,
+                        const GearMeshSettings                &settings,
+                        const unsigned int                     first,
+                        const unsigned int                     n)
+    {
+      const auto        &prm   = gear->parameters();
+      const double       tau   = gear->angular_pitch() / 2;
+      const double       scale = gear->tip_radius();
+      const unsigned int z     = gear->n_teeth();
+      // the zones: given, or one per refined tooth with the common radii and both flanks
+      std::vector<GearMeshSettings::FlankZone> zones = settings.zones;
+      if (zones.empty())
+        {
+          const unsigned int first_refined = settings.n_refined_teeth == 0 ? first : settings.first_refined_tooth;
+          const unsigned int n_refined     = settings.n_refined_teeth == 0 ? n : settings.n_refined_teeth;
+          for (unsigned int k = first_refined; k < first_refined + n_refined; ++k)
+            zones.push_back(
+              {int(k), settings.refine_from_radius, settings.refine_to_radius, GearMeshSettings::Flank::both});
+        }
+      // per zone: points of the upper (counter-clockwise) flank of tooth
+      // 0 in the tooth's frame between the zone's radii
+      const auto                                    &starts = gear->piece_starts();
+      std::vector<std::vector<dealii::Tensor<1, 2>>> flank(zones.size());
+      for (unsigned int zi = 0; zi < zones.size(); ++zi)
+        {
+          const double from = zones[zi].from_radius > 0 ? zones[zi].from_radius : gear->form_radius();
+          const double to   = zones[zi].to_radius > 0 ? zones[zi].to_radius : gear->tip_radius();
+          AssertThrow(from < to, dealii::ExcMessage("spur_gear(): the refined zone's radii must increase, not " +
+                                                    number_string(from) + " to " + number_string(to) + "."));
+          const double c = std::cos(-prm.rotation), sn = std::sin(-prm.rotation);
+          for (unsigned int i = 0; i <= 800; ++i)
+            {
+              const dealii::Tensor<1, 2> p =
+                gear->outline_point(starts[4] + (starts[5] - starts[4]) * i / 800.) - prm.center;
+              const double rad = p.norm();
+              if (rad >= from - 1e-12 * scale && rad <= to + 1e-12 * scale)
+                flank[zi].push_back(dealii::Tensor<1, 2>({c * p[0] - sn * p[1], sn * p[0] + c * p[1]}));
+            }
+          AssertThrow(!flank[zi].empty(),
+                      dealii::ExcMessage("spur_gear(): the refined zone from radius " + number_string(from) + " to " +
+                                         number_string(to) + " holds no point of the flank (form radius " +
+                                         number_string(gear->form_radius()) + ", tip radius " +
+                                         number_string(gear->tip_radius()) + ")."));
+        }
+      return [=](const dealii::Point<2> &x) {
+        const dealii::Tensor<1, 2> rel  = x - prm.center;
+        const double               phi  = std::atan2(rel[1], rel[0]) - prm.rotation;
+        const int                  k    = std::lround(phi / (2 * tau));
+        double                     dmin = std::numeric_limits<double>::max();
+        for (unsigned int zi = 0; zi < zones.size(); ++zi)
+          {
+            // the zone's tooth, if it is k - 1, k or k + 1 (modulo z)
+            const int d = ((zones[zi].tooth - k) % int(z) + int(z) + 1) % int(z) - 1;
+            if (d < -1 || d > 1)
+              continue;
+            // x in the frame of that tooth
+            const double         a = -2 * tau * (k + d) - prm.rotation;
+            dealii::Tensor<1, 2> loc(
+              {std::cos(a) * rel[0] - std::sin(a) * rel[1], std::sin(a) * rel[0] + std::cos(a) * rel[1]});
+            const auto side = zones[zi].flank;
+            for (const bool mirrored : {false, true})
+              {
+                // the counter-clockwise flank is the upper one, the clockwise its mirror image
+                if ((mirrored && side == GearMeshSettings::Flank::counter_clockwise) ||
+                    (!mirrored && side == GearMeshSettings::Flank::clockwise))
+                  continue;
+                const dealii::Tensor<1, 2> q({loc[0], mirrored ? -loc[1] : loc[1]});
+                for (const auto &p : flank[zi])
+                  dmin = std::min(dmin, (q - p).norm());
+              }
+          }
+        return dmin;
+      };
+    }
+  } // namespace
+
+
+  namespace PolygonalMeshGenerators
+  {
+    void
+    spur_gear(dealii::Triangulation<2, 2> &tria, const SpurGear &gear_in, const GearMeshSettings &settings)
+    {
+      const auto         gear  = std::make_shared<const SpurGear>(gear_in);
+      const unsigned int z     = gear->n_teeth();
+      const bool         whole = settings.n_teeth == 0 || settings.n_teeth >= z;
+      const unsigned int first = whole ? 0 : settings.first_tooth % z, n = whole ? z : settings.n_teeth;
+      AssertThrow(settings.flank_cell_size >= 0 && std::isfinite(settings.flank_cell_size),
+                  dealii::ExcMessage("spur_gear(): the flank cell size must not be negative."));
+      BlockMesh                 blocks = tooth_blocks(*gear, first, n);
+      dealii::SubCellData       subcell_data;
+      std::vector<unsigned int> considered;
+      dealii::GridTools::delete_duplicated_vertices(blocks.points, blocks.cells, subcell_data, considered,
+                                                    1e-9 * gear->tip_radius());
+      tria.clear();
+      tria.create_triangulation(blocks.points, blocks.cells, subcell_data);
+      set_gear_ids(tria, gear, first);
       tria.refine_global(settings.n_global_refinements);
       if (settings.flank_cell_size > 0)
-        {
-          // the zones: given, or one per refined tooth with the common radii and both flanks
-          std::vector<GearMeshSettings::FlankZone> zones = settings.zones;
-          if (zones.empty())
-            {
-              const unsigned int first_refined = settings.n_refined_teeth == 0 ? first : settings.first_refined_tooth;
-              const unsigned int n_refined     = settings.n_refined_teeth == 0 ? n : settings.n_refined_teeth;
-              for (unsigned int k = first_refined; k < first_refined + n_refined; ++k)
-                zones.push_back({int(k), settings.refine_from_radius, settings.refine_to_radius,
-                                 GearMeshSettings::Flank::both});
-            }
-          // per zone: points of the upper (counter-clockwise) flank of tooth
-          // 0 in the tooth's frame between the zone's radii
-          const auto                                &starts = gear->piece_starts();
-          std::vector<std::vector<dealii::Tensor<1, 2>>> flank(zones.size());
-          for (unsigned int zi = 0; zi < zones.size(); ++zi)
-            {
-              const double from = zones[zi].from_radius > 0 ? zones[zi].from_radius : gear->form_radius();
-              const double to   = zones[zi].to_radius > 0 ? zones[zi].to_radius : gear->tip_radius();
-              AssertThrow(from < to, dealii::ExcMessage("spur_gear(): the refined zone's radii must increase, not " +
-                                                        number_string(from) + " to " + number_string(to) + "."));
-              const double c = std::cos(-prm.rotation), sn = std::sin(-prm.rotation);
-              for (unsigned int i = 0; i <= 800; ++i)
-                {
-                  const dealii::Tensor<1, 2> p =
-                    gear->outline_point(starts[4] + (starts[5] - starts[4]) * i / 800.) - prm.center;
-                  const double rad = p.norm();
-                  if (rad >= from - 1e-12 * scale && rad <= to + 1e-12 * scale)
-                    flank[zi].push_back(dealii::Tensor<1, 2>({c * p[0] - sn * p[1], sn * p[0] + c * p[1]}));
-                }
-              AssertThrow(!flank[zi].empty(),
-                          dealii::ExcMessage("spur_gear(): the refined zone from radius " + number_string(from) +
-                                             " to " + number_string(to) + " holds no point of the flank (form radius " +
-                                             number_string(gear->form_radius()) + ", tip radius " +
-                                             number_string(gear->tip_radius()) + ")."));
-            }
-          const auto distance = [&](const dealii::Point<2> &x) {
-            const dealii::Tensor<1, 2> rel  = x - prm.center;
-            const double               phi  = std::atan2(rel[1], rel[0]) - prm.rotation;
-            const int                  k    = std::lround(phi / (2 * tau));
-            double                     dmin = std::numeric_limits<double>::max();
-            for (unsigned int zi = 0; zi < zones.size(); ++zi)
-              {
-                // the zone's tooth, if it is k - 1, k or k + 1 (modulo z)
-                const int d = ((zones[zi].tooth - k) % int(z) + int(z) + 1) % int(z) - 1;
-                if (d < -1 || d > 1)
-                  continue;
-                // x in the frame of that tooth
-                const double         a = -2 * tau * (k + d) - prm.rotation;
-                dealii::Tensor<1, 2> loc({std::cos(a) * rel[0] - std::sin(a) * rel[1],
-                                          std::sin(a) * rel[0] + std::cos(a) * rel[1]});
-                const auto           side = zones[zi].flank;
-                for (const bool mirrored : {false, true})
-                  {
-                    // the counter-clockwise flank is the upper one, the clockwise its mirror image
-                    if ((mirrored && side == GearMeshSettings::Flank::counter_clockwise) ||
-                        (!mirrored && side == GearMeshSettings::Flank::clockwise))
-                      continue;
-                    const dealii::Tensor<1, 2> q({loc[0], mirrored ? -loc[1] : loc[1]});
-                    for (const auto &p : flank[zi])
-                      dmin = std::min(dmin, (q - p).norm());
-                  }
-              }
-            return dmin;
-          };
-          refine_toward(tria, distance, settings.flank_cell_size, settings.layers);
-        }
+        refine_toward(tria, flank_zone_distance(gear, settings, first, n), settings.flank_cell_size, settings.layers);
     }
 
 
