@@ -324,13 +324,15 @@ main(int argc, char **argv)
         if (!ok)
           failures.push_back(what);
       };
+      // the position nearest to the pitch point (one tooth pair, in the
+      // middle of the cycle) is written for ParaView
+      const unsigned int    at_pitch_point = std::lround(-phi_start / pitch * n_positions) % n_positions;
       std::vector<Position> positions;
       for (unsigned int i = 0; i <= n_positions; ++i)
         {
           // the last position is the first one a pitch later
           const double phi = phi_start + pitch * i / n_positions;
-          // the pitch point with a single pair: written for ParaView
-          positions.push_back(solve_position(pair, phi, ""));
+          positions.push_back(solve_position(pair, phi, i == at_pitch_point ? "step-12" : ""));
         }
 
       std::ofstream csv("step-12.csv");
