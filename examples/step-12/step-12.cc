@@ -440,6 +440,23 @@ main(int argc, char **argv)
           s.push_back(sr);
         SVGPlots::write_line_plot(dir + "sharing.svg", s, "pinion roll angle (degrees)", "share of the normal force",
                                   "Load sharing between the tooth pairs");
+        // the peak pressure along the path of contact (every tooth pair of
+        // every position, at its contact point), against Hertz with the
+        // local radii and the pair's force
+        SVGPlots::Series vem{"peak pressure (VEM, k = 2)", {}}, hertz{"Hertz p0 (local radii, same force)", {}};
+        vem.line = hertz.line = false;
+        hertz.marker_radius   = 5;
+        for (const auto &p : positions)
+          for (const auto &t : p.pairs)
+            {
+              const auto   radii = pair.curvature_radii(t.s);
+              const double R     = radii.first * radii.second / (radii.first + radii.second);
+              vem.points.emplace_back(t.s, t.p_max);
+              hertz.points.emplace_back(t.s, std::sqrt(t.force * Es / (pi * R)));
+            }
+        SVGPlots::write_line_plot(dir + "pressure.svg", {hertz, vem},
+                                  "contact point on the line of action from the pitch point (mm)",
+                                  "peak contact pressure (MPa)", "Peak pressure along the path of contact");
       }
 
       if (!failures.empty())

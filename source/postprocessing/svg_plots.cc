@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
+#include <utility>
 
 namespace dealvem
 {
@@ -273,7 +275,7 @@ namespace dealvem
           out << "<line x1=\"" << L << "\" x2=\"" << W - R << "\" y1=\"" << py(yv) << "\" y2=\""
               << py(yv) << "\" stroke=\"#ddd\"/>\n";
         }
-      out << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 10 << "\">" << escape(x_label)
+      out << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 10 << "\" text-anchor=\"middle\">" << escape(x_label)
           << "</text>\n";
       out << "<text x=\"15\" y=\"" << T - 8 << "\">" << escape(y_label) << "</text>\n";
       for (unsigned int k = 0; k < series.size(); ++k)
@@ -292,13 +294,32 @@ namespace dealvem
               out << "<circle cx=\"" << px(p.first) << "\" cy=\"" << py(p.second) << "\" r=\""
                   << s.marker_radius << "\" fill=\"" << c << "\"/>\n";
         }
-      // legend: a white box in the upper left corner of the plot area
+      // legend: a white box in the corner of the plot area that hides the
+      // fewest data points (upper left first, then upper right, lower
+      // left, lower right)
       if (!series.empty())
         {
           std::size_t longest = 0;
           for (const auto &s : series)
             longest = std::max(longest, s.name.size());
-          const double lx = L + 8, ly = T + 8, lw = 36 + 6.5 * longest, lh = 8 + 16 * series.size();
+          const double lw = 36 + 6.5 * longest, lh = 8 + 16 * series.size();
+          double       lx = L + 8, ly = T + 8;
+          unsigned int fewest = std::numeric_limits<unsigned int>::max();
+          for (const auto &[cx, cy] :
+               {std::pair<double, double>(L + 8, T + 8), std::pair<double, double>(W - R - 8 - lw, T + 8),
+                std::pair<double, double>(L + 8, H - B - 8 - lh),
+                std::pair<double, double>(W - R - 8 - lw, H - B - 8 - lh)})
+            {
+              unsigned int hidden = 0;
+              for (const auto &s : series)
+                for (const auto &p : s.points)
+                  {
+                    const double x = px(p.first), y = py(p.second), m = s.marker_radius + 2;
+                    hidden += (x > cx - m && x < cx + lw + m && y > cy - m && y < cy + lh + m);
+                  }
+              if (hidden < fewest)
+                fewest = hidden, lx = cx, ly = cy;
+            }
           out << "<rect x=\"" << lx << "\" y=\"" << ly << "\" width=\"" << lw << "\" height=\"" << lh
               << "\" fill=\"white\" fill-opacity=\"0.9\" stroke=\"#999\"/>\n";
           for (unsigned int k = 0; k < series.size(); ++k)
