@@ -45,9 +45,10 @@
 //    converted to polygons (from_triangulation(): what
 //    spur_gear(PolygonalMesh, ...) does; a hanging vertex becomes a vertex
 //    of the coarse neighbour, whose halves of the edge get a midpoint node
-//    each, where FE_Q(2) has three constrained ones: VEM has 2 to 4 % fewer
-//    DoFs, FE_Q(2)'s count includes the constrained ones); the fillet
-//    stress is the largest principal stress of
+//    each: three free nodes where FE_Q(2) has the coarse face's midpoint
+//    and three constrained ones, so VEM has 1 to 3 % fewer DoFs, FE_Q(2)'s
+//    count including the constrained ones); the fillet stress is the
+//    largest principal stress of
 //    StressRecovery::vertex_stress() at the fillet's mesh vertices.
 // 3. ISO 6336-3 method B at the highest point of single tooth contact:
 //    s_Fn, rho_F from the 30 degree tangent on the exact outline, h_Fe and
@@ -444,7 +445,8 @@ namespace RootStress
   struct ISOResult
   {
     double s_Fn = 0, rho_F = 0, h_Fe = 0, alpha_Fen = 0, Y_F = 0, Y_S = 0, sigma_F0 = 0, F_t = 0;
-    double iso_s_Fn = 0, iso_rho_F = 0; // from ISO's closed forms, as a check of the outline
+    // from ISO's closed forms, as a check of the outline: unthinned, thinned by a rack shift
+    double iso_s_Fn[2] = {0, 0}, iso_rho_F[2] = {0, 0};
   };
 
   ISOResult
@@ -488,19 +490,22 @@ namespace RootStress
     r.Y_S = (1.2 + 0.13 * L) * std::pow(q_s, 1 / (1.21 + 2.3 / L));
     r.F_t = F_n * std::cos(alpha); // the torque over the reference radius
     // ISO 6336-3's closed forms for the same fillet (basic rack h_fP = 1.25 m,
-    // rho_fP = 0.38 m, no protuberance; the backlash allowance as the profile
-    // shift -j / (2 m tan alpha) of the generating rack)
-    {
-      const double x_E = -backlash / (2 * m * std::tan(alpha)), h_fP = 1.25, rho_fP = 0.38;
-      const double G     = rho_fP - h_fP + x_E;
-      const double E_m   = pi / 4 - h_fP * std::tan(alpha) - (1 - std::sin(alpha)) * rho_fP / std::cos(alpha);
-      const double H     = 2. / z1 * (pi / 2 - E_m) - pi / 3;
-      double       theta = pi / 6;
-      for (unsigned int i = 0; i < 100; ++i)
-        theta = 2 * G / z1 * std::tan(theta) - H;
-      r.iso_s_Fn  = m * (z1 * std::sin(pi / 3 - theta) + std::sqrt(3.) * (G / std::cos(theta) - rho_fP));
-      r.iso_rho_F = m * (rho_fP + 2 * G * G / (std::cos(theta) * (z1 * std::cos(theta) * std::cos(theta) - 2 * G)));
-    }
+    // rho_fP = 0.38 m, no protuberance): for the unthinned tooth, and with
+    // the backlash allowance taken as the profile shift -j / (2 m tan alpha)
+    // of the generating rack
+    for (const unsigned int thinned : {0, 1})
+      {
+        const double x_E = thinned ? -backlash / (2 * m * std::tan(alpha)) : 0., h_fP = 1.25, rho_fP = 0.38;
+        const double G     = rho_fP - h_fP + x_E;
+        const double E_m   = pi / 4 - h_fP * std::tan(alpha) - (1 - std::sin(alpha)) * rho_fP / std::cos(alpha);
+        const double H     = 2. / z1 * (pi / 2 - E_m) - pi / 3;
+        double       theta = pi / 6;
+        for (unsigned int i = 0; i < 100; ++i)
+          theta = 2 * G / z1 * std::tan(theta) - H;
+        r.iso_s_Fn[thinned] = m * (z1 * std::sin(pi / 3 - theta) + std::sqrt(3.) * (G / std::cos(theta) - rho_fP));
+        r.iso_rho_F[thinned] =
+          m * (rho_fP + 2 * G * G / (std::cos(theta) * (z1 * std::cos(theta) * std::cos(theta) - 2 * G)));
+      }
     r.sigma_F0 = r.F_t / (1. * m) * r.Y_F * r.Y_S;
     return r;
   }
@@ -645,7 +650,8 @@ main(int argc, char **argv)
                     << " MPa; FE_Q(2) reference / sigma_F0 = " << std::setprecision(3) << reference / iso.sigma_F0
                     << "\n"
                     << "(ISO's closed forms for the rack-generated fillet: s_Fn = " << std::setprecision(5)
-                    << iso.iso_s_Fn << " mm, rho_F = " << iso.iso_rho_F << " mm)\n";
+                    << iso.iso_s_Fn[0] << " mm, rho_F = " << iso.iso_rho_F[0] << " mm unthinned; " << iso.iso_s_Fn[1]
+                    << " mm, " << iso.iso_rho_F[1] << " mm with the backlash allowance as a profile shift)\n";
         }
     }
   catch (const std::exception &e)
