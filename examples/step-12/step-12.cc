@@ -26,8 +26,11 @@
 // pinion's rotation under the torque, along the line of action), the mesh
 // stiffness F_n / TE, the normal force of each tooth pair (load sharing) and
 // its peak pressure against Hertz with the flanks' radii of curvature at
-// its contact point. The position with a single pair at the pitch point
-// goes to step-12.vtu for ParaView.
+// its contact point, and the root stress of each loaded pinion tooth (the
+// largest principal stress recovered at the vertices of the fillet below
+// its driving flank; on these meshes, not graded toward the fillets, about
+// 20 % below a converged value: benchmarks/gear_root_stress). The position
+// with a single pair at the pitch point goes to step-12.vtu for ParaView.
 // Checks (the program exits with an error if one fails):
 // - statics: the moment of the contact forces about the pinion's centre
 //   balances the torque at every position (1e-3 relative: the forces are
@@ -62,7 +65,9 @@
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/elasticity/material.h>
 #include <dealvem/mesh/spur_gear.h>
+#include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/svg_plots.h>
+#include <dealvem/vem/vem_dof_handler.h>
 
 #include <chrono>
 #include <algorithm>
@@ -168,6 +173,7 @@ namespace Step12
     double p_max = 0;  // largest recovered pressure
     double h = 0;      // mean node spacing of the closed zone, times 2 (edge length, k = 2)
     unsigned int n_closed = 0;
+    double       root_stress = 0; // largest tensile principal stress on the pinion tooth's loaded-side root fillet
   };
 
   struct Position
@@ -280,6 +286,35 @@ namespace Step12
       }
     // (the moment of the forces on the pinion about its centre)
     out.torque_arm /= out.normal_force;
+    // the root stress of each loaded pinion tooth: the largest principal
+    // stress recovered at the mesh vertices (StressRecovery::vertex_stress())
+    // of the fillet below its driving flank, the tension side (piece 5 of
+    // the tooth's outline; benchmarks/gear_root_stress compares this
+    // recovery with FE_Q(2))
+    {
+      VEMDoFHandler<2> dof_handler(r.mesh);
+      dof_handler.distribute_dofs(2);
+      AssertThrow(dof_handler.n_dofs() == r.solution.size(),
+                  dealii::ExcMessage("step-12: the DoFs of the results' mesh"));
+      const ElasticMaterial   steel(pair.E, pair.nu, ElasticMaterial::Model::plane_strain);
+      const StressRecovery<2> recovery(dof_handler, {{0, steel}, {1, steel}}, r.solution);
+      const double            L = g1.outline_pitch_length(), s5 = g1.piece_starts()[5], s6 = g1.piece_starts()[6];
+      for (const auto &e : r.mesh.get_edges())
+        if (e.at_boundary() && e.boundary_id == 1) // the pinion's teeth
+          for (const unsigned int v : e.vertices)
+            {
+              const double c = g1.outline_coordinate(r.mesh.vertex(v));
+              const int    k = static_cast<int>(std::floor(c / L));
+              if (c - k * L < s5 || c - k * L > s6)
+                continue;
+              const auto  &sv = recovery.vertex_stress(v);
+              const double s1 = 0.5 * (sv[0][0] + sv[1][1]) +
+                                std::sqrt(0.25 * (sv[0][0] - sv[1][1]) * (sv[0][0] - sv[1][1]) + sv[0][1] * sv[0][1]);
+              for (auto &t : out.pairs)
+                if ((k - t.tooth) % int(pair.z1) == 0)
+                  t.root_stress = std::max(t.root_stress, s1);
+            }
+    }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
   }
@@ -337,7 +372,7 @@ main(int argc, char **argv)
 
       std::ofstream csv("step-12.csv");
       csv << "roll angle (deg),theta_1 (rad),TE (um),normal force (N/mm),mesh stiffness (N/(mm um)),"
-             "tooth,force share,p_max,Hertz p0,a/h,DoFs,seconds\n";
+             "tooth,force share,p_max,Hertz p0,a/h,DoFs,seconds,root stress (MPa)\n";
       std::cout << std::setw(8) << "roll" << std::setw(10) << "TE um" << std::setw(10) << "c" << std::setw(8)
                 << "pairs" << "  shares, p_max / Hertz - 1 (a/h)" << std::endl;
       double       stiffness_single = 0, stiffness_mean = 0;
@@ -381,8 +416,8 @@ main(int argc, char **argv)
               std::cout << " [tooth " << t.tooth << ": " << std::setprecision(3) << share << ", "
                         << 100 * (t.p_max / p0 - 1) << " % (" << a / t.h << ")]";
               csv << p.phi * 180 / pi << ',' << p.theta << ',' << te << ',' << p.normal_force << ',' << c << ','
-                  << t.tooth << ',' << share << ',' << t.p_max << ',' << p0 << ',' << a / t.h << ',' << p.n_dofs
-                  << ',' << p.seconds << '\n';
+                  << t.tooth << ',' << share << ',' << t.p_max << ',' << p0 << ',' << a / t.h << ',' << p.n_dofs << ','
+                  << p.seconds << ',' << t.root_stress << '\n';
               // Hertz where the zone is resolved and clear of the tip reliefs
               const auto [p1, p2] = pair.gears(p.phi);
               const double rho1 = std::hypot(pair.rb1, radii.first), rho2 = std::hypot(pair.rb2, radii.second);
@@ -393,6 +428,9 @@ main(int argc, char **argv)
                       "peak pressure of tooth " + std::to_string(t.tooth) + " at roll " +
                         std::to_string(p.phi * 180 / pi) + " against Hertz");
             }
+          std::cout << std::endl << std::setw(36) << "root stress (MPa):";
+          for (const auto &t : p.pairs)
+            std::cout << " [tooth " << t.tooth << ": " << std::setprecision(4) << t.root_stress << "]";
           std::cout << std::endl;
           if (n_near == 1)
             {
