@@ -107,8 +107,15 @@ namespace dealvem
       double tip_relief_radius = 0.;
       /// Shape of the tip relief.
       ReliefShape relief_shape = ReliefShape::linear;
-      /// Bore radius (the inner boundary of a meshed gear); 0: half the root radius.
+      /// Bore radius (the inner boundary of a meshed external gear); 0:
+      /// half the root radius. Must stay 0 for an internal gear.
       double bore_radius = 0.;
+      /// An internal gear (a ring gear): the teeth point toward the centre,
+      /// the body lies outside the outline, up to rim_radius.
+      bool internal = false;
+      /// Outer radius of an internal gear's rim; 0: the root radius plus
+      /// 3 modules. Must stay 0 for an external gear.
+      double rim_radius = 0.;
       /// Centre of the gear.
       dealii::Point<2> center;
       /// Polar angle of the axis of tooth 0 (radians, counter-clockwise).
@@ -251,6 +258,15 @@ namespace dealvem
     /// Number of teeth z.
     unsigned int
     n_teeth() const;
+
+    /// Whether the gear is internal (Parameters::internal).
+    bool
+    is_internal() const;
+
+    /// The radius of the meshed body's circle away from the teeth: the
+    /// bore of an external gear, the outer rim of an internal one.
+    double
+    body_radius() const;
 
   private:
     struct Impl;
