@@ -70,9 +70,24 @@ namespace dealvem
     double     phi_root = 0; // polar angle where the fillet meets the root circle
     double     phi_tip  = 0; // polar angle of the tip corner
     double     relief_t = 0; // roll parameter where the tip relief starts
+    // internal gears: the flank's polar angle is psi_b + inv(alpha_rho) (the
+    // tooth widens outward); the root fillet is a circle of radius rho_f
+    // about fillet_c, from the root circle (angle fillet_a0 about the centre
+    // fillet_c) to the flank (angle fillet_a1)
+    bool             internal = false;
+    dealii::Point<2> fillet_c;
+    double           fillet_a0 = 0, fillet_a1 = 0;
 
     std::array<OutlinePiece, 7> pieces;
     std::array<double, 8>       starts{};
+
+    /// The data of an internal gear (Parameters::internal), after the
+    /// checks common to both kinds: radii, the flank's angle, the root
+    /// fillet circle, the tip corner, the rim and the pieces; @p ok throws
+    /// with its message if its condition fails.
+    template <typename Check>
+    void
+    make_internal(const Check &ok);
 
     /// Roll of the gear while the rack corner touches at contact-normal angle beta.
     double
@@ -97,6 +112,12 @@ namespace dealvem
     dealii::Point<2>
     involute(const double t) const
     {
+      if (internal)
+        {
+          // the string unwinds the other way: polar angle psi_b + t - atan(t)
+          const double g = psi_b + t;
+          return dealii::Point<2>(rb * (std::cos(g) + t * std::sin(g)), rb * (std::sin(g) - t * std::cos(g)));
+        }
       const double g = psi_b - t;
       // the base circle's point at angle g plus the unwound string t rb
       return dealii::Point<2>(rb * (std::cos(g) - t * std::sin(g)), rb * (std::sin(g) + t * std::cos(g)));
@@ -106,7 +127,7 @@ namespace dealvem
     dealii::Tensor<1, 2>
     involute_normal(const double t) const
     {
-      const double         g = psi_b - t;
+      const double         g = internal ? psi_b + t : psi_b - t;
       dealii::Tensor<1, 2> n;
       // the string's direction, away from the tooth on the upper flank
       n[0] = -std::sin(g);
@@ -140,6 +161,12 @@ namespace dealvem
           case Piece::tip_arc:
             return dealii::Point<2>(ra * std::cos(q), ra * std::sin(q));
           case Piece::fillet:
+            if (internal)
+              {
+                // q in [0, 1]: the angle about the fillet's centre, linear in q
+                const double a = fillet_a0 + q * (fillet_a1 - fillet_a0);
+                return fillet_c + rho_f * dealii::Tensor<1, 2>({std::cos(a), std::sin(a)});
+              }
             // q = tan(beta): the roll is linear in q
             return fillet(std::atan(q));
           case Piece::involute:
@@ -256,6 +283,80 @@ namespace dealvem
   };
 
 
+  template <typename Check>
+  void
+  SpurGear::Impl::make_internal(const Check &ok)
+  {
+    {
+      Impl        &g = *this;
+      auto        &p = g.prm;
+      const double m = p.module;
+      ok(p.profile_shift == 0, "profile shift of an internal gear is not implemented yet: set 'profile shift' to 0, "
+                               "not " +
+                                 number_string(p.profile_shift) + ".");
+      ok(p.tip_relief == 0, "tip relief of an internal gear is not implemented yet: set 'tip relief' to 0, not " +
+                              number_string(p.tip_relief) + ".");
+      ok(p.bore_radius == 0, "an internal gear has no bore: its body reaches from the teeth out to the rim radius "
+                             "(set 'rim radius', leave 'bore radius' 0).");
+      g.internal     = true;
+      g.ra           = g.r - m * p.addendum; // the tip circle, inside
+      g.rf           = g.r + m * p.dedendum; // the root circle, outside
+      g.rho_f        = p.rack_tip_radius * m;
+      const double s = m * pi / 2 - p.backlash; // the tooth on the reference circle
+      ok(s > 0, "the backlash allowance " + number_string(p.backlash) + " leaves no tooth.");
+      // the flank's polar angle psi_b + inv(alpha_rho): s / (2 r) on the reference circle
+      g.psi_b = s / (2 * g.r) - involute_function(g.alpha);
+      ok(g.ra > g.rb * (1 + 1e-9), "the tip circle of an internal gear (radius " + number_string(g.ra) +
+                                     ") must lie outside the base circle (radius " + number_string(g.rb) +
+                                     "): lower the addendum coefficient or raise the number of teeth.");
+      // the fillet circle touches the root circle from inside (centre at
+      // radius r_f - rho_f) and the flank from the space: its centre is the
+      // flank point P(t) moved by rho_f along the normal into the space,
+      // |P + rho_f n|^2 = (r_b t - rho_f)^2 + r_b^2
+      const double rc = g.rf - g.rho_f;
+      ok(rc > g.rb, "the root fillet radius " + number_string(g.rho_f) + " is too large for the root circle.");
+      g.t_form   = (g.rho_f + std::sqrt(rc * rc - g.rb * g.rb)) / g.rb;
+      g.rho_form = g.rb * std::sqrt(1 + g.t_form * g.t_form);
+      ok(g.rho_form > g.ra, "the root fillet reaches the tip circle: no flank is left (lower 'rack tip radius' " +
+                              number_string(p.rack_tip_radius) + " or raise the dedendum).");
+      const double           a_n      = g.psi_b + g.t_form;
+      const dealii::Point<2> P        = g.involute(g.t_form);
+      g.fillet_c                      = P + g.rho_f * dealii::Tensor<1, 2>({-std::sin(a_n), std::cos(a_n)});
+      g.fillet_a0                     = std::atan2(g.fillet_c[1], g.fillet_c[0]);
+      const dealii::Tensor<1, 2> back = P - g.fillet_c;
+      g.fillet_a1                     = std::atan2(back[1], back[0]);
+      g.fillet_a1 -= 2 * pi * std::round((g.fillet_a1 - g.fillet_a0) / (2 * pi));
+      g.phi_root = g.fillet_a0;
+      ok(g.phi_root < g.tau, "the root fillets of neighbouring teeth would cross (lower 'rack tip radius' " +
+                               number_string(p.rack_tip_radius) + " or the backlash).");
+      g.t_end                    = std::sqrt(g.ra * g.ra / (g.rb * g.rb) - 1.);
+      const dealii::Point<2> tip = g.involute(g.t_end);
+      g.phi_tip                  = std::atan2(tip[1], tip[0]);
+      ok(g.phi_tip > 1e-3 * g.tau, "the teeth are pointed: no tip land is left (lower the addendum).");
+      if (p.rim_radius == 0)
+        p.rim_radius = g.rf + 3 * m;
+      ok(std::isfinite(p.rim_radius) && p.rim_radius > g.rf + m, "the rim radius " + number_string(p.rim_radius) +
+                                                                   " must exceed the root radius plus a module (" +
+                                                                   number_string(g.rf + m) + ").");
+
+      // the seven pieces of a pitch, counter-clockwise: root arc (outside),
+      // fillet, flank down to the tip, tip arc (inside), flank, fillet, root arc
+      g.tabulate(g.pieces[0], Piece::root_arc, false, -g.tau, -g.phi_root);
+      g.tabulate(g.pieces[1], Piece::fillet, true, 0., 1.);
+      g.tabulate(g.pieces[2], Piece::involute, true, g.t_form * g.t_form, g.t_end * g.t_end);
+      g.tabulate(g.pieces[3], Piece::tip_arc, false, -g.phi_tip, g.phi_tip);
+      g.tabulate(g.pieces[4], Piece::involute, false, g.t_end * g.t_end, g.t_form * g.t_form);
+      g.tabulate(g.pieces[5], Piece::fillet, false, 1., 0.);
+      g.tabulate(g.pieces[6], Piece::root_arc, false, g.phi_root, g.tau);
+      // the outline must be a simple curve: radius rising along flank and fillet
+      for (const unsigned int i : {4u, 5u})
+        for (unsigned int k = 1; k <= n_samples; ++k)
+          ok(g.pieces[i].points[k].norm() > g.pieces[i].points[k - 1].norm() - 1e-14 * g.rf,
+             "the flank or fillet of the internal gear is not monotone in radius.");
+    }
+  }
+
+
   SpurGear::SpurGear(const Parameters &parameters)
     : impl(std::make_unique<Impl>())
   {
@@ -286,6 +387,16 @@ namespace dealvem
     g.tau          = pi / p.n_teeth;
     g.r            = m * p.n_teeth / 2;
     g.rb           = g.r * std::cos(g.alpha);
+    ok(p.internal || p.rim_radius == 0, "the rim radius is for internal gears (set 'internal'); an external gear "
+                                        "reaches from its bore to the teeth.");
+    if (p.internal)
+      {
+        g.make_internal(ok);
+        g.starts[0] = 0;
+        for (unsigned int i = 0; i < 7; ++i)
+          g.starts[i + 1] = g.starts[i] + g.pieces[i].length.back();
+        return;
+      }
     g.ra           = g.r + m * (p.addendum + p.profile_shift);
     g.rf           = g.r - m * (p.dedendum - p.profile_shift);
     g.rho_f        = p.rack_tip_radius * m;
@@ -446,7 +557,8 @@ namespace dealvem
   SpurGear::flank_half_angle(const double radius) const
   {
     AssertThrow(radius >= impl->rb, dealii::ExcMessage("SpurGear::flank_half_angle: radius below the base circle."));
-    return impl->psi_b - involute_function(std::acos(impl->rb / radius));
+    const double inv = involute_function(std::acos(impl->rb / radius));
+    return impl->internal ? impl->psi_b + inv : impl->psi_b - inv;
   }
 
   double
@@ -473,6 +585,18 @@ namespace dealvem
   SpurGear::n_teeth() const
   {
     return impl->prm.n_teeth;
+  }
+
+  bool
+  SpurGear::is_internal() const
+  {
+    return impl->internal;
+  }
+
+  double
+  SpurGear::body_radius() const
+  {
+    return impl->internal ? impl->prm.rim_radius : impl->prm.bore_radius;
   }
 
   dealii::Point<2>
@@ -586,6 +710,12 @@ namespace dealvem
               }
           }
     (void)L;
+    if (g.internal)
+      {
+        // the ring between the outline and the rim
+        const double R = g.prm.rim_radius;
+        return 0.5 * R * R * 2 * g.tau * n - sum;
+      }
     const double rb = g.prm.bore_radius;
     return sum - 0.5 * rb * rb * 2 * g.tau * n;
   }

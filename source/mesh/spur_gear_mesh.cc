@@ -106,6 +106,59 @@ namespace dealvem
       }
     };
 
+    /**
+     * half_tooth_blocks() for an internal gear: the tooth points toward the
+     * centre (its tip at the smallest radius), the root blocks and the rim
+     * lie outside the root circle. @p flank holds the flank's points from
+     * the tip corner to the form point, the other points are those of
+     * half_tooth_blocks().
+     */
+    std::vector<std::array<dealii::Point<2>, 4>>
+    internal_half_tooth_blocks(const SpurGear                      &gear,
+                               const std::vector<dealii::Point<2>> &flank,
+                               const dealii::Point<2>              &tip_axis,
+                               const dealii::Point<2>              &form,
+                               const dealii::Point<2>              &fillet_mid,
+                               const double                         phi_mid)
+    {
+      const double                  tau = gear.angular_pitch() / 2;
+      const unsigned int            n   = flank.size() - 1;
+      std::vector<dealii::Point<2>> axis(n + 1);
+      for (unsigned int i = 0; i <= n; ++i)
+        axis[i] = dealii::Point<2>(flank[i][0], 0.);
+      axis[0] = tip_axis;
+      // the root blocks reach out to r_m: the space's half width beyond the root circle
+      const double space_width = gear.root_radius() * (tau - phi_mid);
+      const double r_m         = std::max(gear.root_radius() + space_width, fillet_mid[0] + 0.5 * space_width);
+      AssertThrow(r_m < 0.95 * gear.body_radius(),
+                  dealii::ExcMessage("spur_gear(): the rim radius " + number_string(gear.body_radius()) +
+                                     " leaves no rim outside the teeth (the rim starts at radius " +
+                                     number_string(r_m) + "); choose a larger rim radius."));
+      const dealii::Point<2> fillet_axis(fillet_mid[0], 0.), rim_axis(r_m, 0.);
+      const dealii::Point<2> space = polar(gear.root_radius(), tau), rim_mid = polar(r_m, phi_mid),
+                             rim_space = polar(r_m, tau);
+      std::vector<std::array<dealii::Point<2>, 4>> blocks;
+      for (unsigned int i = 0; i < n; ++i)
+        blocks.push_back({{axis[i], axis[i + 1], flank[i + 1], flank[i]}});
+      blocks.push_back({{axis[n], fillet_axis, fillet_mid, form}});
+      blocks.push_back({{fillet_axis, rim_axis, rim_mid, fillet_mid}});
+      blocks.push_back({{fillet_mid, rim_mid, rim_space, space}});
+      // rim: layers about as thick as the columns are wide, out to the rim radius
+      const double       R        = gear.body_radius();
+      const double       ratio    = 1. + 0.75 * tau;
+      const unsigned int n_layers = std::max(1, static_cast<int>(std::ceil(std::log(R / r_m) / std::log(ratio))));
+      for (unsigned int l = 0; l < n_layers; ++l)
+        {
+          const double inner = r_m * std::pow(R / r_m, double(l) / n_layers);
+          const double outer = (l + 1 == n_layers ? R : r_m * std::pow(R / r_m, double(l + 1) / n_layers));
+          blocks.push_back({{polar(inner, 0.), polar(outer, 0.), polar(outer, phi_mid), polar(inner, phi_mid)}});
+          blocks.push_back({{polar(inner, phi_mid), polar(outer, phi_mid), polar(outer, tau), polar(inner, tau)}});
+        }
+      return blocks;
+    }
+
+
+
     /// The blocks of one half tooth in the tooth's frame (axis along +x,
     /// the upper half), given by their corners; mirrored for the lower half.
     std::vector<std::array<dealii::Point<2>, 4>>
@@ -136,6 +189,9 @@ namespace dealvem
           axis[i]  = dealii::Point<2>(flank[i][0], 0.);
         }
       axis[0] = tip_axis;
+
+      if (gear.is_internal())
+        return internal_half_tooth_blocks(gear, flank, tip_axis, form, fillet_mid, phi_mid);
 
       // the root blocks reach down to r_m: the space's half width below the root circle
       const double space_width = gear.root_radius() * (tau - phi_mid);
@@ -234,12 +290,12 @@ namespace dealvem
               if (face->at_boundary())
                 {
                   if (gear->distance_to_outline(a) < 1e-9 * scale && gear->distance_to_outline(b) < 1e-9 * scale &&
-                      !(on_circle(a, b) && std::abs(a.distance(prm.center) - prm.bore_radius) < 1e-9 * scale))
+                      !(on_circle(a, b) && std::abs(a.distance(prm.center) - gear->body_radius()) < 1e-9 * scale))
                     {
                       face->set_boundary_id(1);
                       face->set_manifold_id(1);
                     }
-                  else if (on_circle(a, b) && std::abs(a.distance(prm.center) - prm.bore_radius) < 1e-9 * scale)
+                  else if (on_circle(a, b) && std::abs(a.distance(prm.center) - gear->body_radius()) < 1e-9 * scale)
                     {
                       face->set_boundary_id(0);
                       face->set_manifold_id(2);
@@ -298,8 +354,11 @@ namespace dealvem
       std::vector<std::vector<dealii::Tensor<1, 2>>> flank(zones.size());
       for (unsigned int zi = 0; zi < zones.size(); ++zi)
         {
-          const double from = zones[zi].from_radius > 0 ? zones[zi].from_radius : gear->form_radius();
-          const double to   = zones[zi].to_radius > 0 ? zones[zi].to_radius : gear->tip_radius();
+          // (an internal gear's tip lies inside its form radius)
+          const double lo   = std::min(gear->form_radius(), gear->tip_radius()),
+                       hi   = std::max(gear->form_radius(), gear->tip_radius());
+          const double from = zones[zi].from_radius > 0 ? zones[zi].from_radius : lo;
+          const double to   = zones[zi].to_radius > 0 ? zones[zi].to_radius : hi;
           AssertThrow(from < to, dealii::ExcMessage("spur_gear(): the refined zone's radii must increase, not " +
                                                     number_string(from) + " to " + number_string(to) + "."));
           const double c = std::cos(-prm.rotation), sn = std::sin(-prm.rotation);

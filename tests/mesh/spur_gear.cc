@@ -176,6 +176,86 @@ namespace
     }
   }
 
+  /**
+   * An internal gear: the flank is the involute whose polar angle from the
+   * tooth's axis is base_half_angle() + inv(alpha_rho) (the tooth widens
+   * outward), the space on the reference circle is half the circular
+   * pitch plus the backlash, the fillet joins flank and root circle with a
+   * continuous tangent and meets the root circle square to the radius, the
+   * tip corner lies on the tip circle, the outline coordinate is the arc
+   * length and inverts, and area() is the ring between outline and rim.
+   */
+  void
+  check_internal_geometry(const SpurGear &gear, const std::string &name)
+  {
+    const auto  &prm = gear.parameters();
+    const auto  &st  = gear.piece_starts();
+    const double L = gear.outline_pitch_length(), rb = gear.base_radius(), r = gear.reference_radius();
+    const auto   P    = [&](const double s) { return gear.outline_point(s); };
+    const auto   rad  = [&](const double s) { return P(s).distance(prm.center); };
+    double       jump = 0, kink = 0;
+    for (unsigned int j = 0; j <= 7; ++j)
+      {
+        const double s = st[j] + L, h = 1e-7 * L;
+        const auto   left = 2 * P(s - h) - P(s - 2 * h), right = 2 * P(s + h) - P(s + 2 * h);
+        jump = std::max(jump, (dealii::Tensor<1, 2>(left) - dealii::Tensor<1, 2>(right)).norm() / L);
+        if (j == 1 || j == 2 || j == 5 || j == 6)
+          {
+            const auto t0 = gear.outline_tangent(s - 1e-5 * L), t1 = gear.outline_tangent(s + 1e-5 * L);
+            kink = std::max(kink, std::acos(std::min(1., t0 * t1 / (t0.norm() * t1.norm()))));
+          }
+      }
+    check_small(jump, 1e-10, name + ": outline continuous at the joints (relative to the pitch)");
+    check_small(kink, 1e-3, name + ": tangent continuous where the fillet meets flank and root (radians)");
+    double spread = 0;
+    for (unsigned int i = 0; i <= 50; ++i)
+      {
+        const double s = st[4] + (st[5] - st[4]) * i / 50.;
+        spread         = std::max(spread, std::abs(angle_from_axis(gear, P(s), 0) - inv(std::acos(rb / rad(s))) -
+                                                   gear.base_half_angle()));
+      }
+    check_small(spread, 1e-12, name + ": flank points lie on the base circle's involute, widening outward (radians)");
+    {
+      double lo = st[4], hi = st[5];
+      for (unsigned int it = 0; it < 200; ++it)
+        {
+          const double mid         = 0.5 * (lo + hi);
+          (rad(mid) < r ? lo : hi) = mid;
+        }
+      const double space = 2 * r * (gear.angular_pitch() / 2 - angle_from_axis(gear, P(0.5 * (lo + hi)), 0));
+      check_small(space / (prm.module * pi / 2 + prm.backlash) - 1, 1e-11,
+                  name + ": space width on the reference circle = m pi / 2 + backlash (relative)");
+    }
+    check_small(rad(st[6]) / gear.root_radius() - 1, 1e-14, name + ": fillet ends on the root circle");
+    {
+      const auto t = gear.outline_tangent(st[6]);
+      const auto d = P(st[6]) - prm.center;
+      check_small(t * d / (t.norm() * d.norm()), 1e-5, name + ": fillet tangent to the root circle");
+    }
+    check_small(rad(st[4]) / gear.tip_radius() - 1, 1e-14, name + ": tip corner on the tip circle");
+    check(rb < gear.tip_radius() && gear.tip_radius() < r && r < gear.form_radius() &&
+            gear.form_radius() < gear.root_radius(),
+          name + ": base < tip < reference < form < root radius");
+    {
+      double back = 0;
+      for (unsigned int i = 0; i < 300; ++i)
+        {
+          const double s = 3 * L * (i + 0.37) / 300 - L;
+          back           = std::max(back, P(gear.outline_coordinate(P(s), s)).distance(P(s)));
+        }
+      check_small(back / gear.root_radius(), 1e-12, name + ": outline_coordinate inverts outline_point");
+      // the ring's area against the shoelace formula on a fine sampling of the outline
+      const auto pts   = gear.outline(0, gear.n_teeth(), 1e-3 * L);
+      double     inner = 0;
+      for (unsigned int i = 0; i + 1 < pts.size(); ++i)
+        inner += 0.5 * ((pts[i] - prm.center)[0] * (pts[i + 1] - prm.center)[1] -
+                        (pts[i] - prm.center)[1] * (pts[i + 1] - prm.center)[0]);
+      const double R = gear.body_radius();
+      check_small(gear.area(0, gear.n_teeth()) / (pi * R * R - inner) - 1, 1e-6,
+                  name + ": area() is the ring between outline and rim (against 1000 chords a pitch)");
+    }
+  }
+
   class Linear : public dealii::Function<2>
   {
   public:
@@ -222,15 +302,18 @@ namespace
             const int    first   = settings.n_refined_teeth == 0 ? settings.first_tooth : settings.first_refined_tooth;
             const int    n_ref   = settings.n_refined_teeth == 0 ? settings.n_teeth : settings.n_refined_teeth;
             const bool   refined = (tooth - first + z) % z < n_ref;
-            if (settings.flank_cell_size > 0 && refined && rm > gear.form_radius() && rm < ra)
+            const double lo = std::min(gear.form_radius(), ra), hi = std::max(gear.form_radius(), ra);
+            if (settings.flank_cell_size > 0 && refined && rm > lo && rm < hi)
               longest = std::max(longest, a.distance(b));
           }
         if (e.boundary_id == 0)
-          bore = std::max({bore, std::abs(a.distance(prm.center) - prm.bore_radius),
-                           std::abs(b.distance(prm.center) - prm.bore_radius)});
+          bore = std::max({bore, std::abs(a.distance(prm.center) - gear.body_radius()),
+                           std::abs(b.distance(prm.center) - gear.body_radius())});
       }
     check_small(off / ra, 1e-12, name + ": tooth vertices on the exact outline (relative to the tip radius)");
-    check_small(bore / ra, 1e-12, name + ": bore vertices on the bore circle");
+    check_small(bore / ra, 1e-12,
+                name +
+                  (gear.is_internal() ? ": rim vertices on the rim circle" : ": bore vertices on the bore circle"));
     check(n_ids[0] > 0 && n_ids[1] > 0 && (whole ? n_ids[2] + n_ids[3] == 0 : n_ids[2] > 0 && n_ids[3] > 0),
           name + ": boundary ids 0 bore, 1 teeth" + (whole ? ", no sides" : ", 2 and 3 the sides") + " (" +
             std::to_string(n_ids[0]) + ", " + std::to_string(n_ids[1]) + ", " + std::to_string(n_ids[2]) + ", " +
@@ -298,6 +381,37 @@ main()
       check_geometry(standard, "m 2, z 20");
       check_geometry(small, "m 1, z 13, x 0.3, 25 deg");
       check_geometry(large, "m 0.5, z 61, x -0.2");
+
+      // internal gears (ring gears)
+      SpurGear::Parameters ia;
+      ia.module   = 2;
+      ia.n_teeth  = 40;
+      ia.internal = true;
+      const SpurGear       ring(ia);
+      SpurGear::Parameters ib = ia;
+      ib.n_teeth              = 57;
+      ib.module               = 0.8;
+      ib.pressure_angle       = 25 * pi / 180;
+      ib.backlash             = 0.03;
+      ib.rack_tip_radius      = 0.25;
+      ib.center               = dealii::Point<2>(-40., 25.);
+      ib.rotation             = -0.7;
+      ib.rim_radius           = 30.;
+      const SpurGear ring_b(ib);
+      check_internal_geometry(ring, "internal m 2, z 40");
+      check_internal_geometry(ring_b, "internal m 0.8, z 57, 25 deg, backlash, off-centre");
+      {
+        PolygonalMeshGenerators::GearMeshSettings s;
+        s.n_global_refinements = 0;
+        check_mesh(ring, s, "internal whole ring", false);
+        s.first_tooth          = 55;
+        s.n_teeth              = 4;
+        s.n_global_refinements = 1;
+        s.flank_cell_size      = 0.05;
+        s.first_refined_tooth  = 56;
+        s.n_refined_teeth      = 2;
+        check_mesh(ring_b, s, "internal sector, graded flanks", true);
+      }
 
       // sector meshes graded toward the flanks, with patch tests
       PolygonalMeshGenerators::GearMeshSettings s;
@@ -417,6 +531,22 @@ main()
       bad                = a;
       bad.pressure_angle = 40 * pi / 180;
       check_throws([&] { SpurGear g(bad); }, "pressure angle", "pressure angle 40 degrees");
+      bad         = ia;
+      bad.n_teeth = 14;
+      check_throws([&] { SpurGear g(bad); }, "outside the base circle",
+                   "internal, 14 teeth: tip inside the base circle");
+      bad               = ia;
+      bad.profile_shift = 0.2;
+      check_throws([&] { SpurGear g(bad); }, "profile shift of an internal gear", "internal with profile shift");
+      bad             = ia;
+      bad.bore_radius = 10;
+      check_throws([&] { SpurGear g(bad); }, "no bore", "internal with a bore radius");
+      bad            = ia;
+      bad.rim_radius = 42;
+      check_throws([&] { SpurGear g(bad); }, "rim radius", "internal, rim inside root + m");
+      bad            = a;
+      bad.rim_radius = 40;
+      check_throws([&] { SpurGear g(bad); }, "rim radius is for internal gears", "external with a rim radius");
     }
   catch (const std::exception &e)
     {

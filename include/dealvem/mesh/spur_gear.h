@@ -69,6 +69,25 @@ namespace dealvem
    *
    * Tooth $k$ has its axis at the polar angle
    * Parameters::rotation + $2\pi k/z$ about Parameters::center.
+   *
+   * <b>Internal gears</b> (Parameters::internal, a ring gear): the teeth
+   * point toward the centre and the body reaches out to
+   * Parameters::rim_radius. The tip circle lies inside, $r_a = r - m h_a^*$,
+   * the root circle outside, $r_f = r + m h_f^*$; the flank is the involute
+   * of the base circle unwound the other way, at polar angle
+   * $\psi = s/(2r) - \operatorname{inv}\alpha + \operatorname{inv}\alpha_\rho$
+   * from the tooth axis (the tooth widens outward; $s = m\pi/2 - j$, so the
+   * space on the reference circle is $m\pi/2 + j$). Such a gear is cut by a
+   * pinion-shaped cutter, whose tip rounds the root; here the root fillet
+   * is the circle of radius $\rho_f = \rho_f^* m$ (Parameters::rack_tip_radius)
+   * tangent to the flank and to the root circle, which the generated
+   * fillet approaches for a cutter of many teeth. The tip circle must lie
+   * outside the base circle (the flank starts there). Not yet for internal
+   * gears: profile shift and tip relief (refused with a message). The
+   * seven pieces of a pitch are the same, from the root arc outside to the
+   * tip arc inside and back; form_radius() is where the fillet meets the
+   * flank (now the flank's outer end) and base_half_angle() the
+   * $s/(2r) - \operatorname{inv}\alpha$ above.
    */
   class SpurGear
   {
@@ -107,8 +126,15 @@ namespace dealvem
       double tip_relief_radius = 0.;
       /// Shape of the tip relief.
       ReliefShape relief_shape = ReliefShape::linear;
-      /// Bore radius (the inner boundary of a meshed gear); 0: half the root radius.
+      /// Bore radius (the inner boundary of a meshed external gear); 0:
+      /// half the root radius. Must stay 0 for an internal gear.
       double bore_radius = 0.;
+      /// An internal gear (a ring gear): the teeth point toward the centre,
+      /// the body lies outside the outline, up to rim_radius.
+      bool internal = false;
+      /// Outer radius of an internal gear's rim; 0: the root radius plus
+      /// 3 modules. Must stay 0 for an external gear.
+      double rim_radius = 0.;
       /// Centre of the gear.
       dealii::Point<2> center;
       /// Polar angle of the axis of tooth 0 (radians, counter-clockwise).
@@ -155,11 +181,11 @@ namespace dealvem
     double
     base_radius() const;
 
-    /// Tip radius r + m (h_a^* + x).
+    /// Tip radius r + m (h_a^* + x) (internal gears: r - m h_a^*).
     double
     tip_radius() const;
 
-    /// Root radius r - m (h_f^* - x).
+    /// Root radius r - m (h_f^* - x) (internal gears: r + m h_f^*).
     double
     root_radius() const;
 
@@ -178,12 +204,14 @@ namespace dealvem
 
     /// Half the tooth's angular thickness at the base circle,
     /// s / (2 r) + inv(alpha): the polar angle, from the tooth axis, where
-    /// the flank's involute leaves the base circle.
+    /// the flank's involute leaves the base circle (internal gears:
+    /// s / (2 r) - inv(alpha), the flank's angle being this plus inv(alpha_rho)).
     double
     base_half_angle() const;
 
     /// Polar angle, from the tooth axis, of the unrelieved flank at radius
-    /// @p radius (base radius <= radius): base_half_angle() - inv(alpha_radius).
+    /// @p radius (base radius <= radius): base_half_angle() - inv(alpha_radius)
+    /// (internal gears: + inv(alpha_radius)).
     double
     flank_half_angle(const double radius) const;
 
@@ -251,6 +279,15 @@ namespace dealvem
     /// Number of teeth z.
     unsigned int
     n_teeth() const;
+
+    /// Whether the gear is internal (Parameters::internal).
+    bool
+    is_internal() const;
+
+    /// The radius of the meshed body's circle away from the teeth: the
+    /// bore of an external gear, the outer rim of an internal one.
+    double
+    body_radius() const;
 
   private:
     struct Impl;
@@ -328,7 +365,9 @@ namespace dealvem
      * zone of the settings (refine_toward()). The cells are flat: a refined
      * quadrilateral's centre is placed from its vertices and its (curved)
      * face midpoints by the transfinite interpolation weights.
-     * Boundary ids: 0 the bore, 1 the teeth (root, fillets, flanks, tips),
+     * An internal gear is meshed the same way outward: its root blocks and
+     * rim lie outside the root circle, up to the rim radius.
+     * Boundary ids: 0 the bore (internal gears: the rim circle), 1 the teeth (root, fillets, flanks, tips),
      * 2 the sector side before the first tooth, 3 the side after the last
      * one (a whole gear has none). The triangulation holds copies of the
      * manifolds (each with its own copy of the gear); all material ids are 0.
