@@ -127,7 +127,8 @@ namespace dealvem
       prm.declare_entry("Flank cell size", "0", Double(0),
                         "Cell size the flanks are refined to (0: no local refinement).");
       prm.declare_entry("Refined teeth", "all", Anything(),
-                        "The teeth whose flanks are refined: 'all' (the meshed ones) or 'first, count'.");
+                        "The teeth whose flanks are refined: 'all' (the meshed ones) or 'first, count' "
+                        "(numbered as 'Teeth', modulo the number of teeth; each must be meshed).");
       prm.declare_entry("Refined radii", "auto", Anything(),
                         "Radii 'from, to' of the refined flank zone; 'auto': the form radius to the tip.");
       prm.declare_entry("Refinement layers", "2", Double(0.1, 100),

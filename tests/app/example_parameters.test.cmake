@@ -154,7 +154,7 @@ message(STATUS "PASS assembly-wall.prm: 9 interfaces in the JSON summary")
 # T1 = 9400 against a clamped gear z2 = 31, m = 4, 20 degrees, the single
 # tooth pair touching at the pitch point (40, 0). The bounds below are the
 # numbers of the mechanics with the tolerances derived in the file's header
-# and here; measured (Release, 7 s): F_n = 249.889 (-0.077 %), gear reaction
+# and here; measured (Release, 4 s): F_n = 249.889 (-0.077 %), gear reaction
 # moment 14558.8 (-0.077 %), centre of pressure (40.0166, -0.0059), x-extent
 # of the closed zone 0.2854, p_max = 1048.61 (-0.22 %).
 run_dealvem("gear-pair.prm" TRUE "rotation of boundary 0 about (0, 0): torque 9400 (applied)"
