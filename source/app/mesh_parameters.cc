@@ -127,7 +127,8 @@ namespace dealvem
       prm.declare_entry("Flank cell size", "0", Double(0),
                         "Cell size the flanks are refined to (0: no local refinement).");
       prm.declare_entry("Refined teeth", "all", Anything(),
-                        "The teeth whose flanks are refined: 'all' (the meshed ones) or 'first, count'.");
+                        "The teeth whose flanks are refined: 'all' (the meshed ones) or 'first, count' "
+                        "(numbered as 'Teeth', modulo the number of teeth; each must be meshed).");
       prm.declare_entry("Refined radii", "auto", Anything(),
                         "Radii 'from, to' of the refined flank zone; 'auto': the form radius to the tip.");
       prm.declare_entry("Refinement layers", "2", Double(0.1, 100),
@@ -286,6 +287,21 @@ namespace dealvem
               what = what.substr(0, end);
             AssertThrow(false, dealii::ExcMessage("Parameter section '" + name + "': " + InputParsing::trim(what)));
           }
+        // a refined tooth outside the meshed sector would leave the mesh
+        // unrefined without a word
+        const unsigned int z = gear.n_teeth;
+        if (gear_mesh.flank_cell_size > 0 && gear_mesh.n_teeth > 0 && gear_mesh.n_teeth < z &&
+            gear_mesh.n_refined_teeth > 0)
+          for (unsigned int i = 0; i < gear_mesh.n_refined_teeth; ++i)
+            {
+              const unsigned int k = (gear_mesh.first_refined_tooth + i) % z;
+              AssertThrow((k + z - gear_mesh.first_tooth % z) % z < gear_mesh.n_teeth,
+                          dealii::ExcMessage("Parameter '" + name + "/Refined teeth': tooth " + std::to_string(k) +
+                                             " is not meshed ('Teeth' is the sector of teeth " +
+                                             std::to_string(gear_mesh.first_tooth % z) + " to " +
+                                             std::to_string((gear_mesh.first_tooth + gear_mesh.n_teeth - 1) % z) +
+                                             ", counted counter-clockwise modulo " + std::to_string(z) + ")."));
+            }
       }
   }
 

@@ -18,7 +18,13 @@
 # - rigid-plate-moment.prm: the errors against the linear-stress solution
 #   of a rigid plate under a force and a moment are below 1e-10;
 # - gmsh-beam.prm (mesh from beam.msh): the errors of pure bending are
-#   below 1e-10 on the file's mesh and on its refinement.
+#   below 1e-10 on the file's mesh and on its refinement;
+# - gear-pair.prm (a spur gear pair, sectors of three teeth, the pinion
+#   under a torque, the gear clamped): the torque balance along the line of
+#   action (normal force T1 / r_b1, the gear's reaction moment T1 z2 / z1,
+#   0.3 %), one tooth pair closed, at the pitch point, the closed zone as
+#   wide as Hertz's, and the peak pressure within 1 % of Hertz with the
+#   flanks' radii at the pitch point (a_H / h = 10 to 11).
 include(${TEST_DIR}/program_checks.cmake)
 set(EXAMPLES ${SOURCE_DIR}/examples/parameters)
 file(REMOVE_RECURSE ${WORK_DIR}/output ${WORK_DIR}/np2)
@@ -143,3 +149,84 @@ if(NOT n EQUAL 9)
   message(FATAL_ERROR "FAIL assembly-wall.prm: JSON contact.interfaces = ${n}, expected 9")
 endif()
 message(STATUS "PASS assembly-wall.prm: 9 interfaces in the JSON summary")
+
+# --- a spur gear pair (gear-pair.prm): pinion z1 = 20 driven by the torque
+# T1 = 9400 against a clamped gear z2 = 31, m = 4, 20 degrees, the single
+# tooth pair touching at the pitch point (40, 0). The bounds below are the
+# numbers of the mechanics with the tolerances derived in the file's header
+# and here; measured (Release, 4 s): F_n = 249.889 (-0.077 %), gear reaction
+# moment 14558.8 (-0.077 %), centre of pressure (40.0166, -0.0059), x-extent
+# of the closed zone 0.2854, p_max = 1048.61 (-0.22 %).
+run_dealvem("gear-pair.prm" TRUE "rotation of boundary 0 about (0, 0): torque 9400 (applied)"
+  ${EXAMPLES}/gear-pair.prm)
+file(READ ${WORK_DIR}/output/gear-pair.json json)
+function(check_between value low high what)
+  if(NOT (value GREATER low AND value LESS high))
+    message(FATAL_ERROR "FAIL ${what}: ${value} not in (${low}, ${high})")
+  endif()
+  message(STATUS "PASS ${what}: ${value} in (${low}, ${high})")
+endfunction()
+# the torque balance: the normal force along the line of action is
+# F_n = T1 / r_b1 = 9400 / (40 cos 20 deg) = 250.082 and its moment about
+# the gear's centre F_n r_b2 = T1 z2 / z1 = 14570. The discrete flank
+# normals turn by up to h / rho (about 0.06 degrees here) from the involute's,
+# and the centre of pressure sits a fraction of h off the pitch point: both
+# change the lever arms by under 0.1 % (measured 0.077 %); 0.3 % is allowed.
+string(JSON fn GET "${json}" interfaces 0 normal_force)
+check_between(${fn} 249.332 250.832 "gear-pair.prm: normal force = T1 / r_b1 = 250.082 (0.3 %)")
+string(JSON m2 GET "${json}" reactions boundary_10 moment)
+check_between(${m2} 14526.3 14613.7
+  "gear-pair.prm: reaction moment of the gear's bore about its centre = T1 z2 / z1 = 14570 (0.3 %)")
+string(JSON m1 GET "${json}" rotations rotation_0 moment_about_centre)
+check_between(${m1} 9399.99 9400.01 "gear-pair.prm: the pinion's bore carries the torque")
+# one tooth pair, at the pitch point: the centre of pressure within 0.05 mm
+# (3.5 h) of (40, 0), every closed pair within 0.5 mm of it (the next tooth
+# pair would touch a base pitch, 11.8 mm, away along the line of action)
+string(JSON cx GET "${json}" interfaces 0 centre_x)
+string(JSON cy GET "${json}" interfaces 0 centre_y)
+check_between(${cx} 39.95 40.05 "gear-pair.prm: centre of pressure, x")
+check_between(${cy} -0.05 0.05 "gear-pair.prm: centre of pressure, y")
+file(STRINGS ${WORK_DIR}/output/gear-pair-interface.csv rows)
+set(n_active 0)
+set(x_min 100000000)
+set(x_max 0)
+foreach(row ${rows})
+  # interface,pair,x,y,normal_x,normal_y,midpoint,active,...
+  if(row MATCHES "^0,[0-9]+,([-0-9.e+]+),([-0-9.e+]+),[^,]*,[^,]*,[01],1,")
+    set(x ${CMAKE_MATCH_1})
+    set(y ${CMAKE_MATCH_2})
+    if(NOT (x GREATER 39.5 AND x LESS 40.5 AND y GREATER -0.5 AND y LESS 0.5))
+      message(FATAL_ERROR "FAIL gear-pair.prm: a closed pair at (${x}, ${y}), away from the pitch point")
+    endif()
+    math(EXPR n_active "${n_active} + 1")
+    # x in units of 1e-5 mm (x is near 40), for the extent
+    if(NOT x MATCHES "^([0-9]+)\\.([0-9][0-9][0-9][0-9][0-9])")
+      message(FATAL_ERROR "FAIL gear-pair.prm: cannot read x = ${x}")
+    endif()
+    math(EXPR xi "${CMAKE_MATCH_1}${CMAKE_MATCH_2}")
+    if(xi LESS x_min)
+      set(x_min ${xi})
+    endif()
+    if(xi GREATER x_max)
+      set(x_max ${xi})
+    endif()
+  endif()
+endforeach()
+string(JSON n_json GET "${json}" contact active_pairs)
+if(n_active LESS 10 OR NOT n_active EQUAL n_json)
+  message(FATAL_ERROR "FAIL gear-pair.prm: ${n_active} closed pairs in the CSV, ${n_json} in the JSON")
+endif()
+message(STATUS "PASS gear-pair.prm: all ${n_active} closed pairs within 0.5 mm of the pitch point")
+# Hertz, cylinders with the flanks' radii of curvature at the pitch point,
+# rho_i = r_i sin 20 deg = 13.681 and 21.205 (R = 8.3158), E* = E / (2 (1 -
+# nu^2)) = 115385: half-width a_H = sqrt(4 F_n R / (pi E*)) = 0.15149 and
+# p_0 = 2 F_n / (pi a_H) = 1050.97 (with the exact F_n). The flank edges at
+# the contact are h = 0.0135 (pinion) and 0.0146 (gear): a_H / h = 10 to 11.
+# The zone lies along the flank tangent, at 20 degrees to the y axis: its
+# x-extent is 2 a_H cos 20 deg = 0.2847, and the outermost closed node may lie
+# up to h cos 20 deg inside or beyond each end: (0.2593, 0.3101).
+math(EXPR extent "${x_max} - ${x_min}")
+check_between(${extent} 25930 31010 "gear-pair.prm: x-extent of the closed zone (1e-5 mm) = 2 a_H cos 20 deg")
+# the peak pressure: step-12 finds 1 % at a/h >= 8 on whole gears
+string(JSON pmax GET "${json}" contact pressure_max)
+check_between(${pmax} 1040.46 1061.48 "gear-pair.prm: peak pressure = Hertz p_0 = 1050.97 (1 %)")
