@@ -900,10 +900,16 @@ namespace dealvem
     const unsigned int a = edge.vertices[0], b = edge.vertices[1];
     const double       L = vertices[a].distance(vertices[b]);
     const double       s = (p - vertices[a]) * (vertices[b] - vertices[a]) / (L * L);
-    AssertThrow(s > 0 && s < 1 && std::abs(cross(vertices[a], vertices[b], p)) <= 1e-9 * L * L,
-                dealii::ExcMessage("split_edge: the point " + point_string(p) +
-                                   " does not lie strictly inside edge " + std::to_string(e) + " of mesh '" +
-                                   name + "'."));
+    // on the edge: to 1e-9 of its length, or to the rounding of coordinates
+    // of size |x| (a point computed on the chord carries eps |x| in each
+    // coordinate, so its cross product with the edge carries about eps |x| L)
+    double X = 0;
+    for (const auto &q : {vertices[a], vertices[b], p})
+      X = std::max({X, std::abs(q[0]), std::abs(q[1])});
+    const double off_tolerance = std::max(1e-9 * L * L, 16 * std::numeric_limits<double>::epsilon() * X * L);
+    AssertThrow(s > 0 && s < 1 && std::abs(cross(vertices[a], vertices[b], p)) <= off_tolerance,
+                dealii::ExcMessage("split_edge: the point " + point_string(p) + " does not lie strictly inside edge " +
+                                   std::to_string(e) + " of mesh '" + name + "'."));
     // Insert the vertex into the owning cells and update the edges in
     // place (no rebuild, so inserting many nodes stays linear): edge e
     // becomes the piece (first vertex, v), the piece (v, second vertex) is

@@ -259,14 +259,15 @@ namespace dealvem
 
     /**
      * Boundary ids and manifold ids of the coarse triangulation of teeth
-     * from @p first: 1 the outline (manifold 1), 0 the bore (manifold 2),
+     * [@p first, @p first + @p n): 1 the outline (manifold 1), 0 the bore (manifold 2),
      * 2 and 3 the sector sides; inner arcs about the centre get manifold 2
      * too, everything else is flat.
      */
     void
     set_gear_ids(dealii::Triangulation<2, 2>           &tria,
                  const std::shared_ptr<const SpurGear> &gear,
-                 const unsigned int                     first)
+                 const unsigned int                     first,
+                 const unsigned int                     n)
     {
       const auto  &prm = gear->parameters();
       const double tau = gear->angular_pitch() / 2;
@@ -302,9 +303,11 @@ namespace dealvem
                     }
                   else
                     {
-                      // a sector side: before the first tooth or after the last one
+                      // a sector side: before the first tooth or after the last
+                      // one; the sides lie at -+ n tau from the sector's middle
+                      // (within -+ pi), so the side of the middle tells which
                       const dealii::Tensor<1, 2> m       = face->center() - prm.center;
-                      const double               a0      = prm.rotation + 2 * tau * first;
+                      const double               a0      = prm.rotation + 2 * tau * first + (n - 1.) * tau;
                       const double               angle   = std::atan2(m[1], m[0]) - a0;
                       const double               wrapped = angle - 2 * pi * std::round(angle / (2 * pi));
                       face->set_boundary_id(wrapped < 0 ? 2 : 3);
@@ -427,7 +430,7 @@ namespace dealvem
                                                     1e-9 * gear->tip_radius());
       tria.clear();
       tria.create_triangulation(blocks.points, blocks.cells, subcell_data);
-      set_gear_ids(tria, gear, first);
+      set_gear_ids(tria, gear, first, n);
       tria.refine_global(settings.n_global_refinements);
       if (settings.flank_cell_size > 0)
         refine_toward(tria, flank_zone_distance(gear, settings, first, n), settings.flank_cell_size, settings.layers);

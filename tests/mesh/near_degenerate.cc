@@ -21,7 +21,9 @@
 // - d = 1e-6 and 0.25: a thin but genuine neck, accepted, area 2 + d to
 //   1e-14.
 // Each rejection names the cell and the two edges of its loop (0 and 2:
-// the bottom edge and the edge into the fourth vertex).
+// the bottom edge and the edge into the fourth vertex). Last, split_edge()
+// on a short edge far from the origin (its tolerance follows the rounding
+// of the coordinates, not only the edge's length).
 #include <dealvem/mesh/polygonal_mesh.h>
 
 #include "../tests.h"
@@ -62,5 +64,43 @@ main()
       testing::check_near(m.total_area(), 2 + d, 1e-14, "pentagon with a neck of width " + std::to_string(d) +
                                                             " is valid, area 2 + d");
     }
+  {
+    // split_edge() far from the origin: a point computed on the chord of a
+    // short, slanted edge carries the rounding eps |x| of its coordinates,
+    // so it lies off the chord by about eps |x| L, far above 1e-9 L^2 when
+    // |x| / L is 1e9; the split is accepted (the tolerance follows the
+    // coordinates' rounding), and a point off the chord by 1e-4 L is not
+    PolygonalMesh<2> m;
+    m.name = "far";
+    const P      o(1.3e6, -0.7e6);
+    const double L = 1.3e-3;
+    for (const P &p : {o, o + dealii::Tensor<1, 2>({L, 0.37 * L}), o + dealii::Tensor<1, 2>({0.2 * L, L})})
+      m.add_vertex(p);
+    m.add_cell({0, 1, 2});
+    m.finalize();
+    unsigned int e = 0;
+    for (; e < m.n_edges(); ++e)
+      if ((m.edge(e).vertices[0] == 0 && m.edge(e).vertices[1] == 1) ||
+          (m.edge(e).vertices[0] == 1 && m.edge(e).vertices[1] == 0))
+        break;
+    const P      a = m.vertex(m.edge(e).vertices[0]), b = m.vertex(m.edge(e).vertices[1]);
+    unsigned int n_split = 0;
+    for (const double t : {0.1234567, 0.5, 0.7654321})
+      {
+        PolygonalMesh<2> c = m;
+        c.split_edge(e, a + t * (b - a));
+        c.validate();
+        ++n_split;
+      }
+    testing::check(n_split == 3, "split_edge() 1e9 edge lengths from the origin accepts points on the chord");
+    const dealii::Tensor<1, 2> normal({-(b - a)[1], (b - a)[0]});
+    testing::check_throws(
+      [&] {
+        PolygonalMesh<2> c = m;
+        c.split_edge(e, a + 0.5 * (b - a) + 1e-4 * normal);
+      },
+      "does not lie strictly inside edge",
+      "split_edge() refuses a point 1e-4 L off the chord (500 units in the last place of its coordinates)");
+  }
   return testing::finish();
 }

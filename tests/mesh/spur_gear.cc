@@ -382,6 +382,17 @@ main()
       check_geometry(small, "m 1, z 13, x 0.3, 25 deg");
       check_geometry(large, "m 0.5, z 61, x -0.2");
 
+      {
+        // a sector of more than half the gear: its sides still get ids 2
+        // (before the first tooth) and 3 (after the last); they were both
+        // 2 when the side's angle was taken from the first tooth's axis
+        PolygonalMeshGenerators::GearMeshSettings s;
+        s.first_tooth          = 3;
+        s.n_teeth              = 12;
+        s.n_global_refinements = 0;
+        check_mesh(standard, s, "sector of 12 of 20 teeth", false);
+      }
+
       // internal gears (ring gears)
       SpurGear::Parameters ia;
       ia.module   = 2;
