@@ -115,7 +115,15 @@ namespace dealvem
                         "radius.");
       prm.declare_entry("Tip relief shape", "linear", dealii::Patterns::Selection("linear|parabolic"),
                         "How the tip relief grows with the roll length: linear or parabolic.");
-      prm.declare_entry("Bore radius", "0", Double(0), "Radius of the bore; 0: half the root radius.");
+      prm.declare_entry("Bore radius", "0", Double(0),
+                        "Radius of the bore of an external gear; 0: half the root radius.");
+      prm.declare_entry("Internal", "false", dealii::Patterns::Bool(),
+                        "An internal (ring) gear: the teeth point toward the centre, the body reaches out to "
+                        "'Rim radius' (boundary id 0 is the rim circle); its root fillet is a circle of radius "
+                        "'Rack tip radius' times m tangent to flank and root circle. No profile shift or tip relief "
+                        "yet.");
+      prm.declare_entry("Rim radius", "0", Double(0),
+                        "Outer radius of an internal gear's rim; 0: the root radius plus 3 modules.");
       prm.declare_entry("Centre", "0, 0", Anything(), "Centre x, y of the gear.");
       prm.declare_entry("Rotation", "0", Double(), "Polar angle of the axis of tooth 0, in degrees.");
       prm.declare_entry("Teeth", "all", Anything(),
@@ -130,7 +138,8 @@ namespace dealvem
                         "The teeth whose flanks are refined: 'all' (the meshed ones) or 'first, count' "
                         "(numbered as 'Teeth', modulo the number of teeth; each must be meshed).");
       prm.declare_entry("Refined radii", "auto", Anything(),
-                        "Radii 'from, to' of the refined flank zone; 'auto': the form radius to the tip.");
+                        "Radii 'from, to' of the refined flank zone; 'auto': the flank from the form radius "
+                        "to the tip.");
       prm.declare_entry("Refinement layers", "2", Double(0.1, 100),
                         "Cells within this many cell sizes of the flank zone are refined.");
       prm.leave_subsection();
@@ -248,6 +257,8 @@ namespace dealvem
     gear.relief_shape      = prm.get("Tip relief shape") == "parabolic" ? SpurGear::ReliefShape::parabolic :
                                                                           SpurGear::ReliefShape::linear;
     gear.bore_radius       = prm.get_double("Bore radius");
+    gear.internal          = prm.get_bool("Internal");
+    gear.rim_radius        = prm.get_double("Rim radius");
     gear.center            = parse_point(prm.get("Centre"), name + "/Centre");
     gear.rotation          = prm.get_double("Rotation") * degree;
     gear_mesh              = PolygonalMeshGenerators::GearMeshSettings();
