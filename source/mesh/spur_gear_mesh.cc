@@ -329,13 +329,15 @@ namespace dealvem
      * The distance of a point from the flank zones of @p settings
      * (GearMeshSettings::zones, or one zone per refined tooth of teeth
      * [@p first, @p first + @p n) with the settings' radii, both flanks),
-     * for refine_toward().
+     * for refine_toward(); with @p fillets, the distance from the root
+     * fillets below those flanks instead (their whole length).
      */
     std::function<double(const dealii::Point<2> &)>
     flank_zone_distance(const std::shared_ptr<const SpurGear> &gear,
                         const GearMeshSettings                &settings,
                         const unsigned int                     first,
-                        const unsigned int                     n)
+                        const unsigned int                     n,
+                        const bool                             fillets)
     {
       const auto        &prm   = gear->parameters();
       const double       tau   = gear->angular_pitch() / 2;
@@ -365,12 +367,14 @@ namespace dealvem
           AssertThrow(from < to, dealii::ExcMessage("spur_gear(): the refined zone's radii must increase, not " +
                                                     number_string(from) + " to " + number_string(to) + "."));
           const double c = std::cos(-prm.rotation), sn = std::sin(-prm.rotation);
+          // the flank (pieces from starts[4]) or the fillet below it (from starts[5])
+          const unsigned int piece = fillets ? 5 : 4;
           for (unsigned int i = 0; i <= 800; ++i)
             {
               const dealii::Tensor<1, 2> p =
-                gear->outline_point(starts[4] + (starts[5] - starts[4]) * i / 800.) - prm.center;
+                gear->outline_point(starts[piece] + (starts[piece + 1] - starts[piece]) * i / 800.) - prm.center;
               const double rad = p.norm();
-              if (rad >= from - 1e-12 * scale && rad <= to + 1e-12 * scale)
+              if (fillets || (rad >= from - 1e-12 * scale && rad <= to + 1e-12 * scale))
                 flank[zi].push_back(dealii::Tensor<1, 2>({c * p[0] - sn * p[1], sn * p[0] + c * p[1]}));
             }
           AssertThrow(!flank[zi].empty(),
@@ -432,8 +436,14 @@ namespace dealvem
       tria.create_triangulation(blocks.points, blocks.cells, subcell_data);
       set_gear_ids(tria, gear, first, n);
       tria.refine_global(settings.n_global_refinements);
+      AssertThrow(settings.fillet_cell_size >= 0 && std::isfinite(settings.fillet_cell_size),
+                  dealii::ExcMessage("spur_gear(): the fillet cell size must not be negative."));
       if (settings.flank_cell_size > 0)
-        refine_toward(tria, flank_zone_distance(gear, settings, first, n), settings.flank_cell_size, settings.layers);
+        refine_toward(tria, flank_zone_distance(gear, settings, first, n, false), settings.flank_cell_size,
+                      settings.layers);
+      if (settings.fillet_cell_size > 0)
+        refine_toward(tria, flank_zone_distance(gear, settings, first, n, true), settings.fillet_cell_size,
+                      settings.layers);
     }
 
 

@@ -309,6 +309,10 @@ namespace dealvem
       unsigned int n_global_refinements = 1;
       /// Cell size at the flanks after the local refinement (0: none).
       double flank_cell_size = 0.;
+      /// Cell size at the root fillets below the refined flanks (the
+      /// zones' flanks; 0: none): where the tooth root stress peaks, on the
+      /// loaded flank's side.
+      double fillet_cell_size = 0.;
       /// Flank zone refined to flank_cell_size: radii from this (0: the form radius) ...
       double refine_from_radius = 0.;
       /// ... to this (0: the tip radius).
