@@ -279,7 +279,7 @@ namespace
     PolygonalMeshGenerators::spur_gear(mesh, gear, settings);
     const auto  &prm = gear.parameters();
     const double ra  = gear.tip_radius();
-    double       off = 0, bore = 0, longest = 0;
+    double       off = 0, bore = 0, longest = 0, longest_fillet = 0;
     unsigned int n_ids[4] = {0, 0, 0, 0};
     const bool   whole    = settings.n_teeth == 0;
     for (const auto &e : mesh.get_edges())
@@ -305,6 +305,9 @@ namespace
             const double lo = std::min(gear.form_radius(), ra), hi = std::max(gear.form_radius(), ra);
             if (settings.flank_cell_size > 0 && refined && rm > lo && rm < hi)
               longest = std::max(longest, a.distance(b));
+            if (settings.fillet_cell_size > 0 && refined &&
+                gear.piece(gear.outline_coordinate(mid)) == SpurGear::Piece::fillet)
+              longest_fillet = std::max(longest_fillet, a.distance(b));
           }
         if (e.boundary_id == 0)
           bore = std::max({bore, std::abs(a.distance(prm.center) - gear.body_radius()),
@@ -321,6 +324,11 @@ namespace
     if (settings.flank_cell_size > 0)
       check(longest <= 1.3 * settings.flank_cell_size * (1 + 1e-9) && longest > 0.3 * settings.flank_cell_size,
             name + ": flank edges at most 1.3 h (" + std::to_string(longest / settings.flank_cell_size) + " h)");
+    if (settings.fillet_cell_size > 0)
+      check(longest_fillet <= 1.3 * settings.fillet_cell_size * (1 + 1e-9) &&
+              longest_fillet > 0.3 * settings.fillet_cell_size,
+            name + ": fillet edges at most 1.3 h_fillet (" +
+              std::to_string(longest_fillet / settings.fillet_cell_size) + " h_fillet)");
     std::cout << "      " << name << ": " << mesh.n_cells() << " polygons, " << mesh.n_vertices() << " vertices"
               << std::endl;
 
@@ -430,9 +438,11 @@ main()
       s.n_teeth              = 3;
       s.n_global_refinements = 0;
       s.flank_cell_size      = 0.05 * a.module;
+      s.fillet_cell_size     = 0.1 * a.module;
       s.first_refined_tooth  = 3;
       s.n_refined_teeth      = 1;
-      check_mesh(standard, s, "m 2, z 20, three teeth", true);
+      check_mesh(standard, s, "m 2, z 20, three teeth, fillets graded", true);
+      s.fillet_cell_size    = 0;
       s.first_tooth         = 12;
       s.n_teeth             = 2;
       s.flank_cell_size     = 0.05;
