@@ -2,7 +2,10 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <dealvem/base/number_string.h>
 #include <dealvem/vem/vem_values.h>
+
+#include <cmath>
 
 #include <string>
 
@@ -60,6 +63,29 @@ namespace dealvem
     cell = c;
     mesh.cell_vertices(c, vertices);
     element.reinit(vertices);
+    {
+      // a cell so elongated that its scaled monomials are no longer
+      // independent in double precision gives a projector of infinities or
+      // NaNs, and every matrix assembled from it is useless
+      const auto &P      = element.get_projector();
+      bool        finite = true;
+      for (unsigned int a = 0; a < P.m() && finite; ++a)
+        for (unsigned int i = 0; i < P.n() && finite; ++i)
+          finite = std::isfinite(P(a, i));
+      if (!finite)
+        {
+          const auto       &g = element.get_geometry();
+          const double      d = g.diameter(), A = g.area();
+          const std::string what = "mesh '" + mesh.name + "': cell " + std::to_string(c) + " (diameter " +
+                                   internal::number_string(d) + ", area " + internal::number_string(A) +
+                                   ") is too elongated for the virtual element: its projector is not finite in "
+                                   "double precision (its scaled monomials are not independent at diameter^2 / "
+                                   "area = " +
+                                   internal::number_string(d * d / A) +
+                                   "). Subdivide the cell or the mesh along its long side.";
+          AssertThrow(false, dealii::ExcMessage(what));
+        }
+    }
     dof_handler.get_dof_indices(c, dof_indices);
     if ((flags & (dealii::update_quadrature_points | dealii::update_JxW_values)) == 0)
       {
