@@ -7,6 +7,8 @@
 // coefficients) and the check of the set-up as a whole.
 #include "contact_problem_internal.h"
 
+#include <dealvem/vem/virtual_element.h>
+
 namespace dealvem
 {
   using namespace internal::ContactProblemImplementation;
@@ -238,9 +240,10 @@ namespace dealvem
   {
     AssertThrow(!bodies.empty(),
                 dealii::ExcMessage("ContactProblem: no body; add one with add_body() or read a parameter file."));
-    AssertThrow(opt.degree == 1 || opt.degree == 2,
+    AssertThrow(opt.degree >= 1 && opt.degree <= VirtualElement<2>::max_degree(),
                 dealii::ExcMessage("Parameter 'Discretization/Order' is " + std::to_string(opt.degree) +
-                                   ": the order k of the virtual elements must be 1 or 2."));
+                                   ": the order k of the virtual elements must lie in 1 to " +
+                                   std::to_string(VirtualElement<2>::max_degree()) + "."));
     InputParsing::check_range(opt.stabilization_factor, 1e-6, 1e6, "Discretization/Stabilization factor");
     const auto &cs = opt.contact;
     InputParsing::check_range(cs.friction_coefficient, 0, 1e6, "Contact/Friction coefficient", false, false,

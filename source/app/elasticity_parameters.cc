@@ -36,6 +36,7 @@
 #include <dealvem/solvers/parallel_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
 #include <dealvem/vem/vem_values.h>
+#include <dealvem/vem/virtual_element.h>
 
 #include <filesystem>
 #include <iomanip>
@@ -76,7 +77,8 @@ namespace dealvem
     prm.leave_subsection();
 
     prm.enter_subsection("Discretization");
-    prm.declare_entry("Order", "2", Integer(1, 2), "Order k of the virtual elements (1 or 2).");
+    prm.declare_entry("Order", "2", Integer(1, VirtualElement<2>::max_degree()),
+                      "Order k of the virtual elements (1 to " + std::to_string(VirtualElement<2>::max_degree()) + ").");
     prm.declare_entry("Stabilization", "automatic", Selection("automatic|diagonal|trace|boundary"),
                       "Stabilization of the element stiffness: 'automatic' (trace for k = 1, diagonal "
                       "for k = 2; trace for both at finite strain, where the diagonal rule is too weak), "
@@ -202,7 +204,7 @@ namespace dealvem
     solver_tolerance      = prm.get_double("Relative tolerance");
     solver_max_iterations = prm.get_integer("Maximum iterations");
     solver_preconditioner = prm.get("Preconditioner");
-    AssertThrow(solver_preconditioner != "p-multigrid" || degree == 2,
+    AssertThrow(solver_preconditioner != "p-multigrid" || PMultigrid::applies_to(VEMElementData(degree)),
                 dealii::ExcMessage("Solver/Preconditioner = p-multigrid needs Discretization/Order = 2 (the "
                                    "coarse level is the order-1 space on the same polygons)."));
     prm.leave_subsection();

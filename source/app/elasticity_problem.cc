@@ -34,6 +34,7 @@
 #include <dealvem/solvers/parallel_solver.h>
 #include <dealvem/vem/vem_dof_handler.h>
 #include <dealvem/vem/vem_values.h>
+#include <dealvem/vem/virtual_element.h>
 
 #include <filesystem>
 #include <iomanip>
@@ -228,7 +229,7 @@ namespace dealvem
     std::vector<std::vector<double>> coarse_modes;
     if (settings.type == LinearSolver::Type::cg_amg)
       solver.set_near_null_space(dof_handler.rigid_body_modes());
-    if (settings.type == LinearSolver::Type::cg_amg && degree == 2)
+    if (settings.type == LinearSolver::Type::cg_amg && PMultigrid::applies_to(dof_handler.get_element_data()))
       {
         PMultigrid::make_prolongation(dof_handler, prolongation_sparsity, prolongation, coarse_modes);
         solver.set_coarse_space(prolongation, coarse_modes);
@@ -318,7 +319,7 @@ namespace dealvem
       dealii::SparsityPattern          prolongation_sparsity;
       dealii::SparseMatrix<double>     prolongation;
       std::vector<std::vector<double>> coarse_modes;
-      if (settings.type == LinearSolver::Type::cg_amg && degree == 2)
+      if (settings.type == LinearSolver::Type::cg_amg && PMultigrid::applies_to(dof_handler.get_element_data()))
         {
           PMultigrid::make_prolongation(dof_handler, prolongation_sparsity, prolongation, coarse_modes);
           solver.set_coarse_space(prolongation, coarse_modes);
@@ -433,7 +434,8 @@ namespace dealvem
     json.set("discretization.stabilization",
              std::string(stabilization == Stabilization::boundary ? "boundary" :
                          stabilization == Stabilization::trace ||
-                             (stabilization == Stabilization::automatic && (degree == 1 || finite_strain.enabled)) ?
+                             (stabilization == Stabilization::automatic &&
+                              (VirtualElement<2>::stabilization_rules(degree).automatic_is_trace || finite_strain.enabled)) ?
                                                                     "trace" :
                                                                     "diagonal"));
     json.set("solver.type", solver_type);

@@ -10,6 +10,7 @@
 #include <dealvem/app/input_parsing.h>
 #include <dealvem/mesh/mesh_io.h>
 #include <dealvem/app/mesh_parameters.h>
+#include <dealvem/solvers/p_multigrid.h>
 #include <dealvem/vem/vem_element_data.h>
 
 #include <muParserError.h>
@@ -448,7 +449,8 @@ namespace dealvem
       if (n_dofs > direct_solver_max_dofs)
         {
           r << n_dofs << " DoFs > " << direct_solver_max_dofs
-            << ": above this size CG with " << (degree == 2 ? "the p-multigrid" : "AMG")
+            << ": above this size CG with "
+            << (PMultigrid::applies_to(VEMElementData(degree)) ? "the p-multigrid" : "AMG")
             << " is faster than a direct factorization (measured crossover, doc/benchmarks.md)";
           reason = r.str();
           return false;

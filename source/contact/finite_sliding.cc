@@ -8,6 +8,8 @@
 
 #include "finite_sliding_impl.h"
 
+#include <dealvem/vem/vem_element_data.h>
+
 namespace dealvem
 {
   using namespace internal::finite_sliding;
@@ -43,8 +45,10 @@ namespace dealvem
   {
     AssertThrow(!interface_data.empty() || parameters.detection.enabled,
                 dealii::ExcMessage("FiniteSliding: no contact interface given, and no detection."));
-    AssertThrow(parameters.degree == 1 || parameters.degree == 2,
-                dealii::ExcMessage("FiniteSliding: the degree must be 1 or 2, not " +
+    // node insertion pairs at most one node inside an edge
+    AssertThrow(parameters.degree >= 1 && VEMElementData(parameters.degree).nodes_per_edge() <= 1,
+                dealii::ExcMessage("FiniteSliding: the degree must be 1 or 2 (at most one node inside an edge), "
+                                   "not " +
                                    std::to_string(parameters.degree) + "."));
     AssertThrow(std::isfinite(parameters.complementarity_constant) && parameters.complementarity_constant >= 0,
                 dealii::ExcMessage("FiniteSliding: the complementarity constant must be positive (or 0 for the "

@@ -116,20 +116,26 @@ namespace dealvem
       const double t   = len > 0 ? (s - chain.s[i]) / len : 0.;
       p.piece          = i;
       p.t              = t;
+      // the trace on the edge: the Lagrange basis on its nodes (first
+      // vertex, the edge's node when k = 2, second vertex; FiniteSliding
+      // takes at most one node inside an edge, which sits at its middle, so
+      // the direction of the mesh's edge does not matter)
+      const VEMElementData &layout = dofs.get_element_data();
+      std::vector<double>   phi, dphi;
+      layout.edge_shape_values(t, phi);
+      layout.edge_shape_derivatives(t, dphi);
       for (unsigned int comp = 0; comp < 2; ++comp)
         {
           const double u0 = u[VEMDoFHandler<2>::node_dof(dofs.vertex_node(chain.vertices[i]), comp)];
           const double u1 = u[VEMDoFHandler<2>::node_dof(dofs.vertex_node(chain.vertices[i + 1]), comp)];
-          if (dofs.get_degree() == 1)
+          p.value[comp]      = phi.front() * u0 + phi.back() * u1;
+          p.derivative[comp] = dphi.front() * u0 + dphi.back() * u1;
+          if (layout.nodes_per_edge() == 1)
             {
-              p.value[comp]      = (1 - t) * u0 + t * u1;
-              p.derivative[comp] = u1 - u0;
-              continue;
+              const double um = u[VEMDoFHandler<2>::node_dof(dofs.edge_node(chain.edges[i], 0), comp)];
+              p.value[comp] += phi[1] * um;
+              p.derivative[comp] += dphi[1] * um;
             }
-          const double um = u[VEMDoFHandler<2>::node_dof(dofs.edge_node(chain.edges[i]), comp)];
-          // quadratic through (0, u0), (1/2, um), (1, u1)
-          p.value[comp]      = u0 * (1 - t) * (1 - 2 * t) + um * 4 * t * (1 - t) + u1 * t * (2 * t - 1);
-          p.derivative[comp] = u0 * (4 * t - 3) + um * (4 - 8 * t) + u1 * (4 * t - 1);
         }
       return p;
     }

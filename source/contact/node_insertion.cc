@@ -8,6 +8,7 @@
 
 #include <dealvem/base/number_string.h>
 #include <dealvem/contact/node_insertion.h>
+#include <dealvem/vem/vem_element_data.h>
 
 #include <algorithm>
 #include <array>
@@ -58,8 +59,11 @@ namespace dealvem
                         BoundaryEdges                   *edges)
   {
     const std::string name = interface_name(master_id, slave_id);
-    AssertThrow(degree == 1 || degree == 2,
-                dealii::ExcMessage(name + "contact node pairs are implemented for order k = 1 and 2, not k = " +
+    // the pairing of rule 5 matches one node inside each edge of the two
+    // sides; more would need them matched in order along the edge
+    AssertThrow(degree >= 1 && VEMElementData(degree).nodes_per_edge() <= 1,
+                dealii::ExcMessage(name + "contact node pairs are implemented for at most one node inside an "
+                                          "edge (order k = 1 and 2), not k = " +
                                    std::to_string(degree) + "."));
     Interface result;
     result.master_id = master_id;

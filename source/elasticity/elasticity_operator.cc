@@ -96,25 +96,25 @@ namespace dealvem
                                                        dealii::FullMatrix<double> &S)
   {
     const PolygonGeometry<dim> &geometry = element.get_geometry();
-    const unsigned int          k = element.get_degree(), n = element.n_dofs_per_cell(), N = geometry.n_vertices();
+    const unsigned int          n = element.n_dofs_per_cell(), N = geometry.n_vertices();
     S.reinit(n, n);
     double perimeter = 0;
     for (unsigned int e = 0; e < N; ++e)
       perimeter += geometry.edge_length(e);
     const double mean_length = perimeter / N;
-    // the stiffness of d/ds on an edge of unit length: nodes (v0, v1), or
-    // (v0, midpoint, v1) as VirtualElement::edge_nodes() lists them
-    const double linear[2][2]    = {{1., -1.}, {-1., 1.}};
-    const double quadratic[3][3] = {{7. / 3, -8. / 3, 1. / 3}, {-8. / 3, 16. / 3, -8. / 3}, {1. / 3, -8. / 3, 7. / 3}};
-    const double m               = (k == 1 ? 2. : 5.);
+    // the stiffness of d/ds on an edge of unit length, in the order of
+    // VirtualElement::edge_nodes() (first vertex, edge nodes, second vertex)
+    const std::vector<double> &edge_stiffness = element.get_element_data().edge_stiffness();
+    const double               weight         = element.get_stabilization_rules().boundary_edge_weight;
     for (unsigned int e = 0; e < N; ++e)
       {
         const std::vector<unsigned int> nodes = element.edge_nodes(e);
-        const double                    w     = std::min(mean_length / geometry.edge_length(e), 1e3) / m;
-        for (unsigned int a = 0; a < nodes.size(); ++a)
-          for (unsigned int b = 0; b < nodes.size(); ++b)
+        const unsigned int              n_e   = nodes.size();
+        const double                    w     = std::min(mean_length / geometry.edge_length(e), 1e3) * weight;
+        for (unsigned int a = 0; a < n_e; ++a)
+          for (unsigned int b = 0; b < n_e; ++b)
             {
-              const double v = w * (k == 1 ? linear[a][b] : quadratic[a][b]);
+              const double v = w * edge_stiffness[a * n_e + b];
               for (unsigned int c = 0; c < 2; ++c)
                 S(2 * nodes[a] + c, 2 * nodes[b] + c) += v;
             }
@@ -142,7 +142,7 @@ namespace dealvem
     AssertDimension(n, element.n_dofs_per_cell());
     const double tau = stabilization_scaling(K, 1.);
     if (stabilization == Stabilization::trace ||
-        (stabilization == Stabilization::automatic && element.get_degree() == 1))
+        (stabilization == Stabilization::automatic && element.get_stabilization_rules().automatic_is_trace))
       {
         K.add(gamma * tau, element.get_stabilization_form());
         return;
@@ -167,7 +167,7 @@ namespace dealvem
     // the x and y components do, so weighting them one by one made the
     // solution depend on the orientation of the model (exact only under
     // turns by multiples of 90 degrees, which swap x and y).
-    const double c_k   = (element.get_degree() == 1 ? 1. : 0.2);
+    const double c_k   = element.get_stabilization_rules().diagonal_weight;
     RowMatrix    I_Pi  = -view(element.get_projector_dof_basis());
     Eigen::VectorXd d(n);
     AssertThrow(n % 2 == 0, dealii::ExcInternalError());

@@ -129,16 +129,16 @@ namespace dealvem
     // documentation). Rows alpha >= 2 of B^c:
     // int grad p_a : grad phi_i = int_dE (grad p_a n) . phi_i - int_E lap p_a . phi_i,
     // the edge term by Gauss-Lobatto on the edge's nodes (exact: the
-    // integrand has degree 2k - 1), the cell term (k = 2, lap p_a constant)
-    // from the cell moment.
+    // integrand has degree 2k - 1), the cell term from the cell moments
+    // (VirtualElement::add_cell_laplacian_term()).
     template <int dim>
     void
     componentwise_projector_complement(const VirtualElement<dim> &element, dealii::FullMatrix<double> &I_Pi)
     {
       const PolygonGeometry<dim> &geometry = element.get_geometry();
       const VEMElementData       &layout   = element.get_element_data();
-      const unsigned int          k = element.get_degree(), n = element.n_dofs_per_cell(),
-                         n_p = element.n_polynomials(), N = geometry.n_vertices();
+      const unsigned int          n = element.n_dofs_per_cell(), n_p = element.n_polynomials(),
+                         N = geometry.n_vertices();
       const std::vector<double>  &edge_weights = layout.edge_quadrature_weights();
       dealii::FullMatrix<double> Bc(n_p, n);
       if (layout.nodes_per_cell() == 0)
@@ -152,8 +152,6 @@ namespace dealvem
           Bc(0, 2 * layout.cell_node(N, 0))     = 1.;
           Bc(1, 2 * layout.cell_node(N, 0) + 1) = 1.;
         }
-      const double            h = geometry.diameter();
-      const dealii::Point<dim> &x_c = geometry.centroid();
       for (unsigned int alpha = 2; alpha < n_p; ++alpha)
         {
           for (unsigned int e = 0; e < N; ++e)
@@ -170,22 +168,7 @@ namespace dealvem
                     Bc(alpha, 2 * nodes[a] + c) += edge_weights[a] * L * flux[c];
                 }
             }
-          if (k == 2)
-            {
-              // the gradient is linear: its differences are exact
-              const dealii::Tensor<2, dim> g0 = element.polynomial_gradient(alpha, x_c);
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  double laplacian = 0;
-                  for (unsigned int j = 0; j < dim; ++j)
-                    {
-                      dealii::Point<dim> x = x_c;
-                      x[j] += h;
-                      laplacian += (element.polynomial_gradient(alpha, x)[c][j] - g0[c][j]) / h;
-                    }
-                  Bc(alpha, 2 * layout.cell_node(N, 0) + c) -= geometry.area() * laplacian;
-                }
-            }
+          element.add_cell_laplacian_term(alpha, -1., Bc);
         }
       const dealii::FullMatrix<double> &D = element.get_D();
       dealii::FullMatrix<double>        Gc(n_p, n_p), Pi_c(n_p, n), DPi(n, n);
@@ -225,10 +208,10 @@ namespace dealvem
                     dealii::ExcMessage("FiniteStrainOperator: the polygon with centroid " +
                                        [&] {
                                          std::ostringstream p;
-                                         p << "(" << x_c << ")";
+                                         p << "(" << geometry.centroid() << ")";
                                          return p.str();
                                        }() +
-                                       ", diameter " + std::to_string(h) + " and area " +
+                                       ", diameter " + std::to_string(geometry.diameter()) + " and area " +
                                        std::to_string(geometry.area()) +
                                        " is too thin for the virtual element's projector (its matrix is singular "
                                        "to round-off): refine the mesh across its long side, or check the "
@@ -280,7 +263,7 @@ namespace dealvem
     const double gamma_tau = ElasticityOperator<dim>::stabilization_scaling(D, gamma);
     dealii::Vector<double> s(n);
     const bool             trace = rule == Stabilization::trace || rule == Stabilization::automatic;
-    const double           c_k   = (element.get_degree() == 1 ? 1. : 0.2);
+    const double           c_k   = element.get_stabilization_rules().diagonal_weight;
     for (unsigned int i = 0; i < n; ++i)
       s[i] = trace ? gamma_tau : gamma * c_k * std::max(D(i, i), 1e-3 * gamma_tau / gamma);
     dealii::FullMatrix<double> I_Pi;

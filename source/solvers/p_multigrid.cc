@@ -8,6 +8,7 @@
 
 #include <dealvem/solvers/p_multigrid.h>
 #include <dealvem/vem/vem_dof_handler.h>
+#include <dealvem/vem/vem_element_data.h>
 #include <dealvem/vem/virtual_element.h>
 
 #include <algorithm>
@@ -75,15 +76,29 @@ namespace dealvem
 
 
 
+  bool
+  PMultigrid::applies_to(const VEMElementData &layout)
+  {
+    return layout.nodes_per_edge() >= 1 && layout.nodes_per_cell() <= 1;
+  }
+
+
+
   void
   PMultigrid::make_prolongation(const VEMDoFHandler<2>           &dof_handler,
                                 dealii::SparsityPattern          &sparsity,
                                 dealii::SparseMatrix<double>     &P,
                                 std::vector<std::vector<double>> &coarse_modes)
   {
-    AssertThrow(dof_handler.get_degree() == 2,
-                dealii::ExcMessage("p-multigrid: the fine space must have degree 2 (got " +
-                                   std::to_string(dof_handler.get_degree()) + ")."));
+    const VEMElementData &layout = dof_handler.get_element_data();
+    AssertThrow(applies_to(layout),
+                dealii::ExcMessage("p-multigrid: the fine space " + layout.get_name() +
+                                   " needs edge nodes and at most one moment per cell (k = 2); it has " +
+                                   std::to_string(layout.nodes_per_edge()) + " node(s) per edge and " +
+                                   std::to_string(layout.nodes_per_cell()) + " moment(s) per cell."));
+    const unsigned int          n_e      = layout.nodes_per_edge();
+    const bool                  has_mean = layout.nodes_per_cell() == 1;
+    const std::vector<double>  &t        = layout.edge_node_positions();
     dof_handler.check_mesh_unchanged();
     const PolygonalMesh<2> &mesh = dof_handler.get_mesh();
     VEMDoFHandler<2>        coarse(mesh);
@@ -101,10 +116,15 @@ namespace dealvem
           for (unsigned int d = 0; d < 2; ++d)
             {
               dsp.add(fine_dofs[2 * i + d], coarse_dofs[2 * i + d]);
-              dsp.add(fine_dofs[2 * (N + i) + d], coarse_dofs[2 * i + d]);
-              dsp.add(fine_dofs[2 * (N + i) + d], coarse_dofs[2 * ((i + 1) % N) + d]);
-              for (unsigned int j = 0; j < N; ++j)
-                dsp.add(fine_dofs[2 * (2 * N) + d], coarse_dofs[2 * j + d]);
+              for (unsigned int j = 0; j < n_e; ++j)
+                {
+                  const unsigned int node = layout.edge_node(N, i, j);
+                  dsp.add(fine_dofs[2 * node + d], coarse_dofs[2 * i + d]);
+                  dsp.add(fine_dofs[2 * node + d], coarse_dofs[2 * ((i + 1) % N) + d]);
+                }
+              if (has_mean)
+                for (unsigned int j = 0; j < N; ++j)
+                  dsp.add(fine_dofs[2 * layout.cell_node(N, 0) + d], coarse_dofs[2 * j + d]);
             }
       }
     sparsity.copy_from(dsp);
@@ -118,21 +138,27 @@ namespace dealvem
         dof_handler.get_dof_indices(c, fine_dofs);
         coarse.get_dof_indices(c, coarse_dofs);
         const unsigned int N = coarse_dofs.size() / 2;
-        AssertThrow(fine_dofs.size() == 2 * (2 * N + 1),
-                    dealii::ExcMessage("p-multigrid: cell " + std::to_string(c) +
-                                       " has inconsistent k = 1 and k = 2 DoF counts."));
-        mesh.cell_vertices(c, vertices);
-        moment_rows(vertices, element_k1, rows);
+        AssertThrow(fine_dofs.size() == layout.n_dofs_per_cell(N),
+                    dealii::ExcMessage("p-multigrid: cell " + std::to_string(c) + " has inconsistent k = 1 and " +
+                                       layout.get_name() + " DoF counts."));
         for (unsigned int i = 0; i < N; ++i)
           for (unsigned int d = 0; d < 2; ++d)
             {
               P.set(fine_dofs[2 * i + d], coarse_dofs[2 * i + d], 1.);
-              P.set(fine_dofs[2 * (N + i) + d], coarse_dofs[2 * i + d], 0.5);
-              P.set(fine_dofs[2 * (N + i) + d], coarse_dofs[2 * ((i + 1) % N) + d], 0.5);
+              for (unsigned int j = 0; j < n_e; ++j)
+                {
+                  const unsigned int node = layout.edge_node(N, i, j);
+                  P.set(fine_dofs[2 * node + d], coarse_dofs[2 * i + d], 1. - t[j]);
+                  P.set(fine_dofs[2 * node + d], coarse_dofs[2 * ((i + 1) % N) + d], t[j]);
+                }
             }
+        if (!has_mean)
+          continue;
+        mesh.cell_vertices(c, vertices);
+        moment_rows(vertices, element_k1, rows);
         for (unsigned int d = 0; d < 2; ++d)
           for (unsigned int j = 0; j < N; ++j)
-            P.set(fine_dofs[2 * (2 * N) + d], coarse_dofs[2 * j + d], rows(d, 2 * j + d));
+            P.set(fine_dofs[2 * layout.cell_node(N, 0) + d], coarse_dofs[2 * j + d], rows(d, 2 * j + d));
       }
   }
 } // namespace dealvem

@@ -48,9 +48,12 @@ namespace dealvem
   VEMDoFHandler<dim>::distribute_dofs(const unsigned int k)
   {
     AssertThrow(mesh != nullptr, dealii::ExcMessage("VEMDoFHandler: no mesh attached; call reinit(mesh) first."));
-    AssertThrow(k == 1 || k == 2,
-                dealii::ExcMessage("VEMDoFHandler: the order must be 1 or 2, got " +
-                                   std::to_string(k) + "."));
+    // the layout of every order is numbered alike; the element checks the
+    // orders it implements (VirtualElement::max_degree())
+    AssertThrow(k >= 1 && k <= VirtualElement<dim>::max_degree(),
+                dealii::ExcMessage("VEMDoFHandler: the order must lie in 1 to " +
+                                   std::to_string(VirtualElement<dim>::max_degree()) + ", got " + std::to_string(k) +
+                                   "."));
     distribute_dofs(VEMElementData(k));
   }
 

@@ -32,6 +32,54 @@ namespace dealvem
           edge_positions.push_back(rule.point(q)[0]);
         edge_weights = rule.get_weights();
       }
+    edge_nodes.push_back(0.);
+    edge_nodes.insert(edge_nodes.end(), edge_positions.begin(), edge_positions.end());
+    edge_nodes.push_back(1.);
+    const unsigned int     n = degree + 1;
+    const dealii::QGauss<1> gauss(degree);
+    std::vector<double>     d;
+    edge_stiffness_matrix.assign(n * n, 0.);
+    for (unsigned int q = 0; q < gauss.size(); ++q)
+      {
+        edge_shape_derivatives(gauss.point(q)[0], d);
+        for (unsigned int a = 0; a < n; ++a)
+          for (unsigned int b = 0; b < n; ++b)
+            edge_stiffness_matrix[a * n + b] += gauss.weight(q) * d[a] * d[b];
+      }
+  }
+
+
+
+  void
+  VEMElementData::edge_shape_values(const double s, std::vector<double> &values) const
+  {
+    const unsigned int n = edge_nodes.size();
+    values.assign(n, 1.);
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int b = 0; b < n; ++b)
+        if (b != a)
+          values[a] *= (s - edge_nodes[b]) / (edge_nodes[a] - edge_nodes[b]);
+  }
+
+
+
+  void
+  VEMElementData::edge_shape_derivatives(const double s, std::vector<double> &derivatives) const
+  {
+    // the product rule on the Lagrange polynomial: one factor differentiated
+    // at a time
+    const unsigned int n = edge_nodes.size();
+    derivatives.assign(n, 0.);
+    for (unsigned int a = 0; a < n; ++a)
+      for (unsigned int c = 0; c < n; ++c)
+        if (c != a)
+          {
+            double term = 1. / (edge_nodes[a] - edge_nodes[c]);
+            for (unsigned int b = 0; b < n; ++b)
+              if (b != a && b != c)
+                term *= (s - edge_nodes[b]) / (edge_nodes[a] - edge_nodes[b]);
+            derivatives[a] += term;
+          }
   }
 
 

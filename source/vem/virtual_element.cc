@@ -117,8 +117,9 @@ namespace dealvem
   VirtualElement<dim>::VirtualElement(const unsigned int degree)
     : degree(degree)
     , data([](const unsigned int k) {
-      AssertThrow(k == 1 || k == 2,
-                  dealii::ExcMessage("VirtualElement: the order k must be 1 or 2, got " + std::to_string(k) + "."));
+      AssertThrow(k >= 1 && k <= max_degree(),
+                  dealii::ExcMessage("VirtualElement: the order k must lie in 1 to " + std::to_string(max_degree()) +
+                                     ", got " + std::to_string(k) + "."));
       return k;
     }(degree))
     , n_vertices(0)
@@ -634,6 +635,49 @@ namespace dealvem
 
 
   template <int dim>
+  const typename VirtualElement<dim>::StabilizationRules &
+  VirtualElement<dim>::stabilization_rules(const unsigned int degree)
+  {
+    // one entry per order, 1 to max_degree()
+    static const StabilizationRules rules[] = {{true, 1., 0.5}, {false, 0.2, 0.2}};
+    static_assert(sizeof(rules) / sizeof(rules[0]) == max_degree(), "one entry of rules per order");
+    AssertThrow(degree >= 1 && degree <= max_degree(),
+                dealii::ExcMessage("VirtualElement: no stabilization rules for the order " + std::to_string(degree) +
+                                   " (1 to " + std::to_string(max_degree()) + ")."));
+    return rules[degree - 1];
+  }
+
+
+
+  template <int dim>
+  void
+  VirtualElement<dim>::add_cell_laplacian_term(const unsigned int          alpha,
+                                               const double                factor,
+                                               dealii::FullMatrix<double> &B_out) const
+  {
+    AssertIndexRange(alpha, n_polynomials());
+    AssertDimension(B_out.n(), n_dofs);
+    if (data.nodes_per_cell() == 0)
+      return; // k = 1: p is linear
+    // k = 2: the Laplacian is constant and int_E phi_j is |E| times the
+    // cell-mean DoF
+    const double h = geometry->diameter();
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        double laplacian = 0;
+        for (unsigned int m = 3; m < 6; ++m)
+          if (coef[alpha][c][m] != 0.)
+            {
+              const dealii::Tensor<2, 2> H = monomial_scaled_hessian(m);
+              laplacian += coef[alpha][c][m] * (H[0][0] + H[1][1]) / (h * h);
+            }
+        B_out(alpha, 2 * data.cell_node(n_vertices, 0) + c) += factor * geometry->area() * laplacian;
+      }
+  }
+
+
+
+  template <int dim>
   void
   VirtualElement<dim>::set_cell_similarity(const bool enable)
   {
@@ -868,12 +912,9 @@ namespace dealvem
         const double             s = q.point(k)[0];
         const dealii::Point<dim> x = a + s * (b - a);
         g.vector_value(x, gv);
-        // 1D Lagrange basis on the nodes of the edge
+        // the Lagrange basis on the nodes of the edge
         std::vector<double> phi;
-        if (degree == 1)
-          phi = {1. - s, s};
-        else
-          phi = {(1. - s) * (1. - 2. * s), 4. * s * (1. - s), s * (2. * s - 1.)};
+        data.edge_shape_values(s, phi);
         for (unsigned int j = 0; j < nodes.size(); ++j)
           for (unsigned int c = 0; c < 2; ++c)
             F[2 * nodes[j] + c] += q.weight(k) * L * phi[j] * gv[c];
@@ -955,16 +996,8 @@ namespace dealvem
         const dealii::Point<dim> X = a + s * (b - a);
         const double             p = pressure.value(X);
         std::vector<double>      phi, dphi;
-        if (degree == 1)
-          {
-            phi  = {1. - s, s};
-            dphi = {-1., 1.};
-          }
-        else
-          {
-            phi  = {(1. - s) * (1. - 2. * s), 4. * s * (1. - s), s * (2. * s - 1.)};
-            dphi = {4. * s - 3., 4. - 8. * s, 4. * s - 1.};
-          }
+        data.edge_shape_values(s, phi);
+        data.edge_shape_derivatives(s, dphi);
         for (unsigned int i = 0; i < nodes.size(); ++i)
           for (unsigned int j = 0; j < nodes.size(); ++j)
             M(i, j) -= sign * q.weight(k) * p * phi[i] * dphi[j];

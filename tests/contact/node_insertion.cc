@@ -677,8 +677,8 @@ main(int argc, char **argv)
                           "(master id 3, slave id 0): both boundary ids 3 and 0 belong to the same body",
                           "i) both ids on the same body");
     testing::check_throws([&] { Mesh m = two; NodeInsertion::insert(m, 3, 6, 3, settings); },
-                          "(master id 3, slave id 6): contact node pairs are implemented for order k = 1 and "
-                          "2, not k = 3",
+                          "(master id 3, slave id 6): contact node pairs are implemented for at most one node "
+                          "inside an edge (order k = 1 and 2), not k = 3",
                           "i) degree 3");
     // the upper block keeps the ids 0..3: id 3 is on both bodies
     const Mesh same_ids = join(block(0, 0, 1, 1, 3, 3, 0, 0), block(0, 1, 1, 2, 4, 4, 1, 0));

@@ -172,7 +172,8 @@ main(int argc, char **argv)
       std::vector<std::vector<double>> cm;
       PMultigrid::make_prolongation(k1, s, m, cm);
     },
-    "fine space must have degree 2", "prolongation from a degree-1 DoF handler");
+    "needs edge nodes and at most one moment per cell (k = 2); it has 0 node(s) per edge",
+    "prolongation from a degree-1 DoF handler");
   testing::check_throws(
     [&] {
       LinearSolver::Settings s;

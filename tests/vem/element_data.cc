@@ -15,7 +15,9 @@
 //      directions: every local edge node sits where the cell's own edge
 //      parametrisation puts it (to 4e-15 on the 2 x 1 domain), every global
 //      node is used, n_dofs = 2 (V + 2 E + 3 C);
-//   4. misuse is refused: order 0, VirtualElement of order 3, rigid-body
+//   4. the Lagrange basis of an edge (k = 1 to 4) and its d/ds stiffness,
+//      against the closed forms for k = 1 and 2; the stabilization rules;
+//   5. misuse is refused: order 0, VirtualElement of order 3, rigid-body
 //      modes of a layout with three moments per cell.
 #include <deal.II/base/point.h>
 
@@ -145,9 +147,80 @@ main()
                           "rigid-body modes of three moments per cell are refused");
   }
 
-  // 4. misuse
+  // 4. the edge basis, k = 1 to 4: one at its own node and zero at the
+  // others, a partition of unity whose derivatives sum to zero, the
+  // derivatives against differences (the basis has degree k, so a central
+  // difference with step 1e-3 is within 1e-5 of the derivative), and the
+  // edge stiffness against its closed form for k = 1 and 2 and, for every
+  // k, zero on constants and s^T K s = 1 for the trace s (int_0^1 1 ds)
+  {
+    double worst_kronecker = 0, worst_unity = 0, worst_difference = 0, worst_stiffness = 0;
+    for (unsigned int k = 1; k <= 4; ++k)
+      {
+        const VEMElementData layout(k);
+        std::vector<double>  nodes{0.};
+        nodes.insert(nodes.end(), layout.edge_node_positions().begin(), layout.edge_node_positions().end());
+        nodes.push_back(1.);
+        std::vector<double> phi, dphi, plus, minus;
+        for (unsigned int a = 0; a <= k; ++a)
+          {
+            layout.edge_shape_values(nodes[a], phi);
+            for (unsigned int b = 0; b <= k; ++b)
+              worst_kronecker = std::max(worst_kronecker, std::abs(phi[b] - (a == b ? 1. : 0.)));
+          }
+        for (const double s : {0.13, 0.5, 0.77})
+          {
+            layout.edge_shape_values(s, phi);
+            layout.edge_shape_derivatives(s, dphi);
+            layout.edge_shape_values(s + 1e-3, plus);
+            layout.edge_shape_values(s - 1e-3, minus);
+            double sum = 0, dsum = 0;
+            for (unsigned int a = 0; a <= k; ++a)
+              {
+                sum += phi[a];
+                dsum += dphi[a];
+                worst_difference = std::max(worst_difference, std::abs((plus[a] - minus[a]) / 2e-3 - dphi[a]));
+              }
+            worst_unity = std::max({worst_unity, std::abs(sum - 1), std::abs(dsum)});
+          }
+        const std::vector<double> &K = layout.edge_stiffness();
+        double                     sKs = 0;
+        for (unsigned int a = 0; a <= k; ++a)
+          {
+            double row = 0;
+            for (unsigned int b = 0; b <= k; ++b)
+              {
+                row += K[a * (k + 1) + b];
+                sKs += nodes[a] * K[a * (k + 1) + b] * nodes[b];
+              }
+            worst_stiffness = std::max(worst_stiffness, std::abs(row));
+          }
+        worst_stiffness = std::max(worst_stiffness, std::abs(sKs - 1));
+      }
+    testing::check_small(worst_kronecker, 1e-14, "edge basis: one at its node, zero at the others (k = 1 to 4)");
+    testing::check_small(worst_unity, 1e-13, "edge basis: a partition of unity, derivatives summing to zero");
+    testing::check_small(worst_difference, 1e-5, "edge basis: derivatives against central differences");
+    testing::check_small(worst_stiffness, 1e-13, "edge stiffness: zero on constants, 1 on the trace s");
+    const std::vector<double> linear{1., -1., -1., 1.},
+      quadratic{7. / 3, -8. / 3, 1. / 3, -8. / 3, 16. / 3, -8. / 3, 1. / 3, -8. / 3, 7. / 3};
+    double closed_form = 0;
+    for (unsigned int i = 0; i < 4; ++i)
+      closed_form = std::max(closed_form, std::abs(VEMElementData(1).edge_stiffness()[i] - linear[i]));
+    for (unsigned int i = 0; i < 9; ++i)
+      closed_form = std::max(closed_form, std::abs(VEMElementData(2).edge_stiffness()[i] - quadratic[i]));
+    testing::check_small(closed_form, 4e-15, "edge stiffness of k = 1 and 2 against the closed forms");
+    testing::check(VirtualElement<2>::stabilization_rules(1).automatic_is_trace &&
+                     !VirtualElement<2>::stabilization_rules(2).automatic_is_trace &&
+                     VirtualElement<2>::stabilization_rules(2).diagonal_weight == 0.2 &&
+                     VirtualElement<2>::stabilization_rules(2).boundary_edge_weight == 0.2,
+                   "the stabilization rules of k = 1 and 2");
+  }
+
+  // 5. misuse
   testing::check_throws([] { VEMElementData(0); }, "order k must be at least 1", "order 0 is refused");
-  testing::check_throws([] { VirtualElement<2>(3); }, "order k must be 1 or 2, got 3",
+  testing::check_throws([] { VirtualElement<2>(3); }, "order k must lie in 1 to 2, got 3",
                         "VirtualElement of order 3 is refused");
+  testing::check_throws([] { VirtualElement<2>::stabilization_rules(3); }, "no stabilization rules for the order 3",
+                        "stabilization rules of order 3 are refused");
   return testing::finish();
 }

@@ -98,6 +98,36 @@ namespace dealvem
     }
 
     /**
+     * The Lagrange basis of the trace on an edge: the polynomials of degree
+     * k that are one at one node of the edge and zero at the others, the
+     * nodes in the order of edge_quadrature_weights() (first vertex, edge
+     * nodes, second vertex). @p s is the fraction in [0, 1] of the edge's
+     * length from its first vertex; @p values gets k + 1 entries. The trace
+     * of every function of the space on an edge is a polynomial of degree k,
+     * so these interpolate it exactly: (1 - s, s) for k = 1.
+     */
+    void
+    edge_shape_values(const double s, std::vector<double> &values) const;
+
+    /// The derivatives of edge_shape_values() with respect to @p s (per unit
+    /// fraction of the edge; divide by the edge length for d/dx along it).
+    void
+    edge_shape_derivatives(const double s, std::vector<double> &derivatives) const;
+
+    /**
+     * The stiffness of d/ds on an edge of unit length in the edge basis,
+     * $\int_0^1 \phi_a'(s)\,\phi_b'(s)\,ds$, row-major (k + 1) x (k + 1),
+     * computed once by the k-point Gauss rule (exact: the integrand has
+     * degree 2k - 2). ElasticityOperator's boundary stabilization sums it
+     * over the edges.
+     */
+    const std::vector<double> &
+    edge_stiffness() const
+    {
+      return edge_stiffness_matrix;
+    }
+
+    /**
      * The kind of entity a local node belongs to: a vertex, the interior of
      * an edge, or the interior of the cell (a moment).
      */
@@ -163,6 +193,10 @@ namespace dealvem
     unsigned int        degree;
     std::vector<double> edge_positions;
     std::vector<double> edge_weights;
+    // the nodes of an edge on [0, 1] (0, the edge positions, 1), and the
+    // matrix of edge_stiffness()
+    std::vector<double> edge_nodes;
+    std::vector<double> edge_stiffness_matrix;
   };
 } // namespace dealvem
 

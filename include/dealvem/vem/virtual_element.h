@@ -135,8 +135,52 @@ namespace dealvem
   class VirtualElement
   {
   public:
-    /// Order k = 1 or 2 (AssertThrow otherwise).
+    /// Order k, from 1 to max_degree() (AssertThrow otherwise).
     explicit VirtualElement(const unsigned int degree);
+
+    /**
+     * The highest order this class implements (2). The programs read the
+     * range of 'Discretization/Order' from here, and VEMDoFHandler numbers
+     * any order (it reads VEMElementData); so a new order changes this
+     * number and the order-dependent parts of the projector in
+     * virtual_element.cc (see doc/architecture.md, "Seams").
+     */
+    static constexpr unsigned int
+    max_degree()
+    {
+      return 2;
+    }
+
+    /**
+     * The order-dependent constants of the stabilizations that
+     * ElasticityOperator and FiniteStrainOperator apply (Stabilization):
+     * they belong to the element, as the projector does, so that those
+     * operators hold no branch on the order.
+     */
+    struct StabilizationRules
+    {
+      /// Whether Stabilization::automatic means the trace form (k = 1) or
+      /// the diagonal (dofi-dofi) form (k = 2) for a linear law.
+      bool automatic_is_trace;
+      /// The factor $c_k$ of the diagonal form, $c_k \max(K_{aa}, 10^{-3}	au)$:
+      /// 1 for k = 1, 1/5 for k = 2 (doc/architecture.md, "The stabilization
+      /// is the root of the raw error at k = 2").
+      double diagonal_weight;
+      /// The factor of an edge's d/ds stiffness (VEMElementData::edge_stiffness())
+      /// in the boundary form: 1/2 for k = 1, 1/5 for k = 2.
+      double boundary_edge_weight;
+    };
+
+    /// The rules of order @p degree (AssertThrow outside 1 to max_degree()).
+    static const StabilizationRules &
+    stabilization_rules(const unsigned int degree);
+
+    /// The rules of this element's order.
+    const StabilizationRules &
+    get_stabilization_rules() const
+    {
+      return stabilization_rules(degree);
+    }
 
     ~VirtualElement();
 
@@ -158,11 +202,11 @@ namespace dealvem
       return 2;
     }
 
-    /// Number of vector polynomials $n_p$ (6 or 12).
+    /// Number of vector polynomials $n_p = (k+1)(k+2)$ (6 or 12).
     unsigned int
     n_polynomials() const
     {
-      return degree == 1 ? 6 : 12;
+      return (degree + 1) * (degree + 2);
     }
 
     /// The layout of the DoFs (nodes per vertex, edge and cell, the edge
@@ -312,13 +356,27 @@ namespace dealvem
       return S;
     }
 
+    /**
+     * Adds @p factor times $\int_E \Delta p_\alpha\cdot\varphi_j$ to
+     * row @p alpha of @p B, for every local DoF j: the cell term of a
+     * projector defined by the full gradient,
+     * $\int_E \nabla p_\alpha : \nabla\varphi_j = \int_{\partial E}
+     * (\nabla p_\alpha n)\cdot\varphi_j - \int_E \Delta p_\alpha\cdot\varphi_j$.
+     * $\Delta p_\alpha$ has degree k - 2, so the integral is a combination
+     * of the cell moments (nothing for k = 1; the cell mean times the
+     * constant Laplacian times |E| for k = 2). FiniteStrainOperator's
+     * componentwise projector calls it.
+     */
+    void
+    add_cell_laplacian_term(const unsigned int alpha, const double factor, dealii::FullMatrix<double> &B) const;
+
     /// Number $n_m$ of the scaled monomials of degree $\le k-1$, the basis
     /// of the gradient projection: 1 ($k=1$: the constant) or 3 ($k=2$:
     /// $1,\xi,\eta$).
     unsigned int
     n_gradient_monomials() const
     {
-      return degree == 1 ? 1 : 3;
+      return degree * (degree + 1) / 2;
     }
 
     /// The Gram matrix $M_{mn} = \int_E q_m q_n$ of the scaled monomials
