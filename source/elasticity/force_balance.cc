@@ -327,11 +327,14 @@ namespace dealvem
                   << ". Net force (" << F[0] << ", " << F[1] << ") = applied (" << b.applied[0] << ", "
                   << b.applied[1] << ") + reactions (" << b.reaction[0] << ", " << b.reaction[1]
                   << ") + contact (" << b.contact[0] << ", " << b.contact[1]
-                  << "). Typical cause: a body many orders of magnitude stiffer than the body that supports it "
-                     "(its strain drowns in its rigid displacement; the contact forces between them carry that "
-                     "error to both). Bring the Young's moduli of the bodies "
-                     "closer together (a stiffness ratio up to about 1e6 is resolved), or model the stiff body "
-                     "as a rigid boundary part.";
+                  << "). Its strain drowns in a rigid displacement far larger than it. Typical causes: (1) a "
+                     "load too small for the gap it first closes: a gear turned by a small torque through its "
+                     "backlash, or a part pushed by a small force across an open gap, before the contact "
+                     "holds it. Place the bodies in contact (turn the gear until its flank touches) or raise "
+                     "the load. (2) A body many orders of magnitude stiffer than the body that supports it (the "
+                     "contact forces between them carry the error to both). Bring the Young's moduli of the "
+                     "bodies closer together (a stiffness ratio up to about 1e6 is resolved), or model the stiff "
+                     "body as a rigid boundary part.";
               AssertThrow(false, dealii::ExcMessage(msg.str()));
             }
           msg << "Verification failed after the solve of " << where << ": body " << int(b.body)

@@ -138,9 +138,13 @@ namespace dealvem
     double
     relief(const double t) const
     {
-      if (prm.tip_relief <= 0 || t <= relief_t)
+      if (prm.tip_relief <= 0)
         return 0.;
-      const double xi = (t - relief_t) / (t_end - relief_t); // roll length fraction
+      // the roll length fraction from the relief's start to the tip corner;
+      // an internal gear's tip lies at the small roll parameters
+      const double xi = (t - relief_t) / (t_end - relief_t);
+      if (xi <= 0)
+        return 0.;
       return prm.tip_relief * (prm.relief_shape == ReliefShape::linear ? xi : xi * xi);
     }
 
@@ -291,18 +295,18 @@ namespace dealvem
       Impl        &g = *this;
       auto        &p = g.prm;
       const double m = p.module;
-      ok(p.profile_shift == 0, "profile shift of an internal gear is not implemented yet: set 'profile shift' to 0, "
-                               "not " +
-                                 number_string(p.profile_shift) + ".");
-      ok(p.tip_relief == 0, "tip relief of an internal gear is not implemented yet: set 'tip relief' to 0, not " +
-                              number_string(p.tip_relief) + ".");
       ok(p.bore_radius == 0, "an internal gear has no bore: its body reaches from the teeth out to the rim radius "
                              "(set 'rim radius', leave 'bore radius' 0).");
+      // the profile shift x as ISO 21771 signs it for internal gears (with
+      // z < 0 in its formulas): a positive x moves the tooth profile toward
+      // the centre, which thickens the teeth on the reference circle and
+      // moves the tip and root circles inward
+      const double x = p.profile_shift;
       g.internal     = true;
-      g.ra           = g.r - m * p.addendum; // the tip circle, inside
-      g.rf           = g.r + m * p.dedendum; // the root circle, outside
+      g.ra           = g.r - m * (p.addendum + x); // the tip circle, inside
+      g.rf           = g.r + m * (p.dedendum - x); // the root circle, outside
       g.rho_f        = p.rack_tip_radius * m;
-      const double s = m * pi / 2 - p.backlash; // the tooth on the reference circle
+      const double s = m * (pi / 2 + 2 * x * std::tan(g.alpha)) - p.backlash; // the tooth on the reference circle
       ok(s > 0, "the backlash allowance " + number_string(p.backlash) + " leaves no tooth.");
       // the flank's polar angle psi_b + inv(alpha_rho): s / (2 r) on the reference circle
       g.psi_b = s / (2 * g.r) - involute_function(g.alpha);
@@ -329,10 +333,26 @@ namespace dealvem
       g.phi_root = g.fillet_a0;
       ok(g.phi_root < g.tau, "the root fillets of neighbouring teeth would cross (lower 'rack tip radius' " +
                                number_string(p.rack_tip_radius) + " or the backlash).");
-      g.t_end                    = std::sqrt(g.ra * g.ra / (g.rb * g.rb) - 1.);
-      const dealii::Point<2> tip = g.involute(g.t_end);
+      // tip relief: from the relief radius inward to the tip circle. In the
+      // frame of the string's base point the involute point is r_b (1, -t)
+      // and the normal (0, 1), so the relieved flank reaches the tip circle
+      // where r_b^2 + (r_b t + C_a)^2 = r_a^2, at t = t_a - C_a / r_b
+      const double t_a = std::sqrt(g.ra * g.ra / (g.rb * g.rb) - 1.);
+      if (p.tip_relief > 0)
+        {
+          if (p.tip_relief_radius == 0)
+            p.tip_relief_radius = 0.5 * (g.r + g.ra);
+          ok(p.tip_relief_radius > g.ra && p.tip_relief_radius < g.rho_form,
+             "the tip relief radius " + number_string(p.tip_relief_radius) + " of an internal gear must lie between "
+             "the tip radius " + number_string(g.ra) + " and the form radius " + number_string(g.rho_form) + ".");
+          g.relief_t = std::sqrt(p.tip_relief_radius * p.tip_relief_radius / (g.rb * g.rb) - 1.);
+          ok(p.tip_relief < 0.5 * g.rb * t_a && p.tip_relief < 0.5 * g.ra * (involute_function(std::atan(t_a)) + g.psi_b),
+             "the tip relief " + number_string(p.tip_relief) + " removes the tooth's tip land.");
+        }
+      g.t_end                    = t_a - p.tip_relief / g.rb;
+      const dealii::Point<2> tip = g.flank(g.t_end);
       g.phi_tip                  = std::atan2(tip[1], tip[0]);
-      ok(g.phi_tip > 1e-3 * g.tau, "the teeth are pointed: no tip land is left (lower the addendum).");
+      ok(g.phi_tip > 1e-3 * g.tau, "the teeth are pointed: no tip land is left (lower the addendum or the shift).");
       if (p.rim_radius == 0)
         p.rim_radius = g.rf + 3 * m;
       ok(std::isfinite(p.rim_radius) && p.rim_radius > g.rf + m, "the rim radius " + number_string(p.rim_radius) +

@@ -36,6 +36,11 @@
 // - the graded triangulation written by MeshIO::write_msh is
 //   read back by MeshIO::read_msh as the same polygons, area and boundary
 //   ids (the gmsh output);
+// - internal gears (four rings, among them profile shifts +0.3 and -0.25
+//   with parabolic and linear tip relief): the checks of
+//   check_internal_geometry() below, the tip corner C_a from the involute
+//   (its nearest point found by golden section, 1e-9 relative), and their
+//   meshes;
 // - data that give no gear are refused with a message naming the cause.
 #include <deal.II/base/function.h>
 #include <deal.II/grid/tria.h>
@@ -207,14 +212,42 @@ namespace
       }
     check_small(jump, 1e-10, name + ": outline continuous at the joints (relative to the pitch)");
     check_small(kink, 1e-3, name + ": tangent continuous where the fillet meets flank and root (radians)");
-    double spread = 0;
+    // the involute's polar angle at radius rho, and a point of it
+    const auto involute_angle = [&](const double rho) { return gear.base_half_angle() + inv(std::acos(rb / rho)); };
+    const auto involute_at    = [&](const double rho) {
+      return dealii::Point<2>(rho * std::cos(involute_angle(rho)), rho * std::sin(involute_angle(rho)));
+    };
+    // the relieved part of the flank lies inside the relief radius
+    const double relieved_below = prm.tip_relief > 0 ? prm.tip_relief_radius : 0.;
+    double       spread         = 0;
     for (unsigned int i = 0; i <= 50; ++i)
       {
         const double s = st[4] + (st[5] - st[4]) * i / 50.;
-        spread         = std::max(spread, std::abs(angle_from_axis(gear, P(s), 0) - inv(std::acos(rb / rad(s))) -
-                                                   gear.base_half_angle()));
+        if (rad(s) >= relieved_below)
+          spread = std::max(spread, std::abs(angle_from_axis(gear, P(s), 0) - involute_angle(rad(s))));
       }
     check_small(spread, 1e-12, name + ": flank points lie on the base circle's involute, widening outward (radians)");
+    if (prm.tip_relief > 0)
+      {
+        // the tip corner's distance from the involute (golden section on
+        // the radius of the involute's point) is the relief C_a
+        const double           rho_q = rad(st[4]), theta_q = angle_from_axis(gear, P(st[4]), 0);
+        const dealii::Point<2> q(rho_q * std::cos(theta_q), rho_q * std::sin(theta_q));
+        double                 lo = std::max(rb, rho_q - 4 * prm.tip_relief), hi = rho_q + 4 * prm.tip_relief;
+        const double           golden = 0.5 * (std::sqrt(5.) - 1);
+        for (unsigned int it = 0; it < 200; ++it)
+          {
+            const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+            if (involute_at(a).distance(q) < involute_at(b).distance(q))
+              hi = b;
+            else
+              lo = a;
+          }
+        const double depth = involute_at(0.5 * (lo + hi)).distance(q);
+        check_small(depth / prm.tip_relief - 1, 1e-9, name + ": the tip corner lies C_a inside the involute (relative)");
+        check(angle_from_axis(gear, P(st[4]), 0) < involute_angle(rho_q),
+              name + ": the relief removes material (the corner lies inside the tooth)");
+      }
     {
       double lo = st[4], hi = st[5];
       for (unsigned int it = 0; it < 200; ++it)
@@ -223,8 +256,10 @@ namespace
           (rad(mid) < r ? lo : hi) = mid;
         }
       const double space = 2 * r * (gear.angular_pitch() / 2 - angle_from_axis(gear, P(0.5 * (lo + hi)), 0));
-      check_small(space / (prm.module * pi / 2 + prm.backlash) - 1, 1e-11,
-                  name + ": space width on the reference circle = m pi / 2 + backlash (relative)");
+      const double expected = prm.module * (pi / 2 - 2 * prm.profile_shift * std::tan(prm.pressure_angle)) +
+                              prm.backlash;
+      check_small(space / expected - 1, 1e-11,
+                  name + ": space width on the reference circle = m (pi / 2 - 2 x tan alpha) + backlash (relative)");
     }
     check_small(rad(st[6]) / gear.root_radius() - 1, 1e-14, name + ": fillet ends on the root circle");
     {
@@ -417,8 +452,29 @@ main()
       ib.rotation             = -0.7;
       ib.rim_radius           = 30.;
       const SpurGear ring_b(ib);
+      // profile shifts of both signs, and tip relief (linear, parabolic)
+      SpurGear::Parameters ic = ia;
+      ic.module               = 1.5;
+      ic.n_teeth              = 48;
+      ic.profile_shift        = 0.3;
+      ic.tip_relief           = 0.015;
+      ic.relief_shape         = SpurGear::ReliefShape::parabolic;
+      ic.center               = dealii::Point<2>(3e3, -1e3);
+      const SpurGear       ring_c(ic);
+      SpurGear::Parameters id = ia;
+      id.n_teeth              = 61;
+      id.profile_shift        = -0.25;
+      id.tip_relief           = 0.02;
+      id.tip_relief_radius    = 59.;
+      id.backlash             = 0.05;
+      const SpurGear ring_d(id);
       check_internal_geometry(ring, "internal m 2, z 40");
       check_internal_geometry(ring_b, "internal m 0.8, z 57, 25 deg, backlash, off-centre");
+      check_internal_geometry(ring_c, "internal m 1.5, z 48, x 0.3, parabolic relief 0.015, far from the origin");
+      check_internal_geometry(ring_d, "internal m 2, z 61, x -0.25, linear relief 0.02 from radius 59, backlash");
+      check(std::abs(ring_c.tip_radius() - (36. - 1.5 * 1.3)) < 1e-12 &&
+              std::abs(ring_c.root_radius() - (36. + 1.5 * 0.95)) < 1e-12,
+            "internal, x 0.3: tip radius r - m (h_a + x), root radius r + m (h_f - x)");
       {
         PolygonalMeshGenerators::GearMeshSettings s;
         s.n_global_refinements = 0;
@@ -430,6 +486,12 @@ main()
         s.first_refined_tooth  = 56;
         s.n_refined_teeth      = 2;
         check_mesh(ring_b, s, "internal sector, graded flanks", true);
+        s.first_tooth         = 46;
+        s.n_teeth             = 3;
+        s.flank_cell_size     = 0.1;
+        s.first_refined_tooth = 47;
+        s.n_refined_teeth     = 1;
+        check_mesh(ring_c, s, "internal sector with shift and tip relief, graded flanks", true);
       }
 
       // sector meshes graded toward the flanks, with patch tests
@@ -556,9 +618,14 @@ main()
       bad.n_teeth = 14;
       check_throws([&] { SpurGear g(bad); }, "outside the base circle",
                    "internal, 14 teeth: tip inside the base circle");
-      bad               = ia;
-      bad.profile_shift = 0.2;
-      check_throws([&] { SpurGear g(bad); }, "profile shift of an internal gear", "internal with profile shift");
+      bad                   = ia;
+      bad.tip_relief        = 0.02;
+      bad.tip_relief_radius = 41;
+      check_throws([&] { SpurGear g(bad); }, "tip relief radius 41 of an internal gear must lie between",
+                   "internal, relief radius beyond the form radius");
+      bad            = ia;
+      bad.tip_relief = 0.8;
+      check_throws([&] { SpurGear g(bad); }, "removes the tooth's tip land", "internal, relief larger than the land");
       bad             = ia;
       bad.bore_radius = 10;
       check_throws([&] { SpurGear g(bad); }, "no bore", "internal with a bore radius");
