@@ -164,6 +164,26 @@ namespace
         back           = std::max(back, std::abs(rack.outline_coordinate(P(s)) - s) / L);
       }
     check_small(back, 1e-13, name + ": outline_coordinate inverts outline_point (relative to the pitch)");
+
+    // outline(): from the left end to the right end on the root line, at
+    // most the spacing apart, every point on the outline
+    {
+      const double spacing = 0.07 * m;
+      const auto   pts     = rack.outline(spacing);
+      const auto   ext     = rack.extent();
+      double       gap = 0, dist = 0;
+      for (unsigned int i = 0; i < pts.size(); ++i)
+        {
+          dist = std::max(dist, rack.distance_to_outline(pts[i]));
+          if (i > 0)
+            gap = std::max(gap, pts[i].distance(pts[i - 1]));
+        }
+      check(gap <= spacing * (1 + 1e-12) && dist < 1e-13 * m &&
+              pts.front().distance(dealii::Point<2>(ext[0], rack.root_height())) < 1e-13 * m &&
+              pts.back().distance(dealii::Point<2>(ext[1], rack.root_height())) < 1e-13 * m,
+            name + ": outline() runs from side to side on the outline, points at most the spacing apart (" +
+              std::to_string(pts.size()) + " points)");
+    }
   }
 
   class Linear : public dealii::Function<2>
@@ -363,6 +383,11 @@ main()
       bad          = a;
       bad.addendum = 2.5;
       check_throws([&] { GearRack r(bad); }, "teeth are pointed", "addendum 2.5: pointed teeth");
+      bad          = a;
+      bad.addendum = 0;
+      bad.dedendum = 0.1;
+      check_throws([&] { GearRack r(bad); }, "the fillet would reach the tip line",
+                   "addendum 0, dedendum 0.1: the fillet reaches the tip");
       bad            = a;
       bad.body_depth = -1;
       check_throws([&] { GearRack r(bad); }, "body depth must not be negative", "negative body depth");
