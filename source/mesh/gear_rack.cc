@@ -68,14 +68,14 @@ namespace dealvem
     y_root = -(prm.dedendum - prm.profile_shift) * m;
     AssertThrow(2 * half_width(y_root) < p,
                 fail("the teeth overlap at the root line: their thickness there, " +
-                       number_string(2 * half_width(y_root)) + ", reaches the pitch " + number_string(p) +
-                       " (backlash " + number_string(prm.backlash) + ", dedendum " + number_string(prm.dedendum) +
-                       ", profile shift " + number_string(prm.profile_shift) + ")."));
+                     number_string(2 * half_width(y_root)) + ", reaches the pitch " + number_string(p) + " (backlash " +
+                     number_string(prm.backlash) + ", dedendum " + number_string(prm.dedendum) + ", profile shift " +
+                     number_string(prm.profile_shift) + ")."));
     half_tip = half_width(y_tip);
-    AssertThrow(half_tip > 0, fail("the teeth are pointed: the tip land would be " + number_string(2 * half_tip) +
-                                   " wide (addendum " + number_string(prm.addendum) + ", profile shift " +
-                                   number_string(prm.profile_shift) + ", backlash " + number_string(prm.backlash) +
-                                   ")."));
+    AssertThrow(half_tip > 0,
+                fail("the teeth are pointed: the tip land would be " + number_string(2 * half_tip) +
+                     " wide (addendum " + number_string(prm.addendum) + ", profile shift " +
+                     number_string(prm.profile_shift) + ", backlash " + number_string(prm.backlash) + ")."));
     // the fillet: centre rho above the root line and rho from the flank along its normal
     const double rho = prm.root_fillet_radius * m;
     fillet_y         = y_root + rho;
@@ -322,8 +322,8 @@ namespace dealvem
   GearRack::outline(const double spacing) const
   {
     AssertThrow(std::isfinite(spacing) && spacing > 0,
-                dealii::ExcMessage("GearRack::outline(): the spacing must be positive, not " +
-                                   number_string(spacing) + "."));
+                dealii::ExcMessage("GearRack::outline(): the spacing must be positive, not " + number_string(spacing) +
+                                   "."));
     std::vector<dealii::Point<2>> points{outline_point(0.)};
     for (unsigned int k = 0; k < prm.n_teeth; ++k)
       for (unsigned int j = 0; j < 7; ++j)

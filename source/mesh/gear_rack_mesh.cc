@@ -87,7 +87,7 @@ namespace dealvem
       };
       // the right flank runs from the tip corner (st[4]) down to the form point (st[5])
       const double       half_width = 0.5 * rack.tooth_thickness(prm.pitch_line_height);
-      const unsigned int n_flank = std::max(1, static_cast<int>(std::lround((st[5] - st[4]) / (1.2 * half_width))));
+      const unsigned int n_flank    = std::max(1, static_cast<int>(std::lround((st[5] - st[4]) / (1.2 * half_width))));
       std::vector<dealii::Point<2>> flank(n_flank + 1), axis(n_flank + 1);
       for (unsigned int i = 0; i <= n_flank; ++i)
         {
@@ -100,9 +100,9 @@ namespace dealvem
       const dealii::Point<2> form = flank[n_flank], fillet_mid = local(has_fillet ? 0.5 * (st[5] + st[6]) : st[5]);
       const dealii::Point<2> space(p / 2, rack.root_height() - prm.pitch_line_height);
       // the root blocks reach down to y_m: about the space's half width below the root line
-      const double           w   = p / 2 - fillet_mid[0];
-      const double           y_m = std::min(space[1] - w, fillet_mid[1] - 0.5 * w);
-      const double           y_b = rack.bottom_height() - prm.pitch_line_height;
+      const double w   = p / 2 - fillet_mid[0];
+      const double y_m = std::min(space[1] - w, fillet_mid[1] - 0.5 * w);
+      const double y_b = rack.bottom_height() - prm.pitch_line_height;
       AssertThrow(y_m - y_b > 0.05 * (space[1] - y_b),
                   dealii::ExcMessage("gear_rack(): the body depth " + number_string(prm.body_depth) +
                                      " leaves no body under the teeth (the root blocks reach " +
@@ -248,13 +248,13 @@ namespace dealvem
                                          " is not one of the rack's " + std::to_string(rack->n_teeth()) + " teeth."));
           const double from = std::max(H + std::max(z.from_height, -1e300), rack->form_height());
           const double to   = std::min(H + std::min(z.to_height, 1e300), rack->tip_height());
-          AssertThrow(from < to, dealii::ExcMessage("gear_rack(): the refined zone of tooth " + std::to_string(z.tooth) +
-                                                    " holds no point of the flank (heights " + number_string(from - H) +
-                                                    " to " + number_string(to - H) + " above the pitch line)."));
+          AssertThrow(from < to,
+                      dealii::ExcMessage("gear_rack(): the refined zone of tooth " + std::to_string(z.tooth) +
+                                         " holds no point of the flank (heights " + number_string(from - H) + " to " +
+                                         number_string(to - H) + " above the pitch line)."));
           const double c = rack->tooth_axis(z.tooth);
           for (const int side : {-1, 1})
-            if (z.flank == RackMeshSettings::Flank::both ||
-                (side < 0) == (z.flank == RackMeshSettings::Flank::left))
+            if (z.flank == RackMeshSettings::Flank::both || (side < 0) == (z.flank == RackMeshSettings::Flank::left))
               parts.push_back({dealii::Point<2>(c + side * 0.5 * rack->tooth_thickness(from), from),
                                dealii::Point<2>(c + side * 0.5 * rack->tooth_thickness(to), to), side});
         }

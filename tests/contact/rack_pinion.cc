@@ -134,8 +134,8 @@ main(int argc, char **argv)
             centre += -pr.multiplier * dealii::Tensor<1, 2>(pr.location);
             p_max    = std::max(p_max, pr.pressure);
             farthest = std::max(farthest, pr.location.distance(pitch_point));
-            lo    = std::min(lo, dealii::Tensor<1, 2>(pr.location) * along_flank);
-            hi    = std::max(hi, dealii::Tensor<1, 2>(pr.location) * along_flank);
+            lo       = std::min(lo, dealii::Tensor<1, 2>(pr.location) * along_flank);
+            hi       = std::max(hi, dealii::Tensor<1, 2>(pr.location) * along_flank);
           }
       centre /= normal_force;
       const double mean_edge = 2 * (hi - lo) / std::max(1u, n_active - 1);
@@ -158,9 +158,9 @@ main(int argc, char **argv)
           rack_x += reaction.force[0];
       std::cout << "      bore torque " << torque << " (rotation " << res.steps.back().rotations.at(0).angle
                 << "), normal force x r_b / T - 1 = " << force.norm() * rb / torque - 1
-                << ", rack support force along the pitch line x r / T + 1 = " << rack_x * r / torque + 1
-                << std::endl;
-      check(torque > 0, "the bore's constraints turn the pinion counter-clockwise (T = " + std::to_string(torque) + ")");
+                << ", rack support force along the pitch line x r / T + 1 = " << rack_x * r / torque + 1 << std::endl;
+      check(torque > 0,
+            "the bore's constraints turn the pinion counter-clockwise (T = " + std::to_string(torque) + ")");
       // the pair forces are parallel (the rack flank's normal), so each one's
       // lever about the centre is r_b less its point's offset along the
       // flank: the pinion's moment balance is T = F (r_b - s_cp) with s_cp
@@ -177,7 +177,7 @@ main(int argc, char **argv)
                   "rack support reaction along the pitch line = -T / r, the tangential force (relative)");
 
       // (c) Hertz: the involute's radius of curvature at the centre of pressure on a flat flank
-      const double R  = std::sqrt(centre.distance_square(c1) - rb * rb), Es = E / (2 * (1 - nu * nu));
+      const double R = std::sqrt(centre.distance_square(c1) - rb * rb), Es = E / (2 * (1 - nu * nu));
       const double p0 = std::sqrt(normal_force * Es / (pi * R)), a = std::sqrt(4 * normal_force * R / (pi * Es));
       std::cout << "      Hertz: R " << R << " (r sin alpha " << r * std::sin(alpha) << "), p0 " << p0 << ", a " << a
                 << ", a/h " << a / mean_edge << ", p_max / p0 - 1 = " << p_max / p0 - 1 << std::endl;
@@ -194,7 +194,7 @@ main(int argc, char **argv)
       std::cerr << "Exception: " << e.what() << std::endl;
       return 1;
     }
-  std::cout << "      run time "
-            << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s" << std::endl;
+  std::cout << "      run time " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+            << " s" << std::endl;
   return testing::finish();
 }

@@ -79,7 +79,7 @@ namespace
           if (rho > 0 && (j == 1 || j == 2 || j == 5 || j == 6))
             {
               const auto t0 = rack.outline_tangent(s - 1e-9 * L), t1 = rack.outline_tangent(s + 1e-9 * L);
-              kink          = std::max(kink, std::acos(std::min(1., t0 * t1)));
+              kink = std::max(kink, std::acos(std::min(1., t0 * t1)));
             }
         }
     check_small(jump, 1e-12, name + ": outline continuous at the joints (relative to the pitch)");
@@ -117,7 +117,7 @@ namespace
     // the fillet: an arc of radius rho tangent to flank and root line
     if (rho > 0)
       {
-        const double y_f = prm.pitch_line_height - (prm.dedendum - prm.profile_shift) * m;
+        const double y_f    = prm.pitch_line_height - (prm.dedendum - prm.profile_shift) * m;
         double       radius = 0;
         for (unsigned int k = 0; k < n; ++k)
           {
@@ -145,11 +145,11 @@ namespace
     // region under the fillet (a rectangle less a circular segment)
     {
       const double tan_a = std::tan(a), y_t = (prm.addendum + prm.profile_shift) * m,
-                   y_f = -(prm.dedendum - prm.profile_shift) * m;
-      const double s_p = m * (pi / 2 + 2 * prm.profile_shift * tan_a) - prm.backlash;
-      const double w_t = s_p / 2 - y_t * tan_a;               // half the tip land
-      const double y_T = y_f + rho * (1 - std::sin(a));        // form point
-      const double x_T = s_p / 2 - y_T * tan_a;                // ... on the flank line
+                   y_f        = -(prm.dedendum - prm.profile_shift) * m;
+      const double s_p        = m * (pi / 2 + 2 * prm.profile_shift * tan_a) - prm.backlash;
+      const double w_t        = s_p / 2 - y_t * tan_a;         // half the tip land
+      const double y_T        = y_f + rho * (1 - std::sin(a)); // form point
+      const double x_T        = s_p / 2 - y_T * tan_a;         // ... on the flank line
       const double half_tooth = w_t * (y_t - y_f) + (x_T - w_t) * (y_t - y_f + y_T - y_f) / 2 +
                                 rho * rho * (std::cos(a) - 0.5 * std::sin(a) * std::cos(a) - 0.5 * (pi / 2 - a));
       const double exact = n * (pi * m * prm.body_depth + 2 * half_tooth);
@@ -226,15 +226,15 @@ namespace
         const auto a = mesh.vertex(e.vertices[0]), b = mesh.vertex(e.vertices[1]);
         if (e.boundary_id == 1)
           {
-            off = std::max({off, rack.distance_to_outline(a), rack.distance_to_outline(b)});
+            off                = std::max({off, rack.distance_to_outline(a), rack.distance_to_outline(b)});
             const double s_mid = rack.outline_coordinate(0.5 * (a + b));
             const auto   piece = rack.piece(s_mid);
             // the tooth and side of the edge
             const unsigned int k    = std::lround((0.5 * (a[0] + b[0]) - prm.position) / rack.pitch());
             const int          side = 0.5 * (a[0] + b[0]) > rack.tooth_axis(k) ? 1 : -1;
             if (piece == GearRack::Piece::flank)
-              flank_off = std::max(
-                {flank_off, flank_line_distance(prm, k, side, a), flank_line_distance(prm, k, side, b)});
+              flank_off =
+                std::max({flank_off, flank_line_distance(prm, k, side, a), flank_line_distance(prm, k, side, b)});
             // in a refined zone?
             for (const auto &z : zones)
               if (z.tooth == k && (z.flank == PolygonalMeshGenerators::RackMeshSettings::Flank::both ||
@@ -287,8 +287,7 @@ namespace
                 err  = std::max(err, std::abs(x[2 * v + c] - exact.value(mesh.vertex(v), c)));
                 size = std::max(size, std::abs(exact.value(mesh.vertex(v), c)));
               }
-          std::cout << "      " << name << ": patch test k = " << k << ", relative error " << err / size
-                    << std::endl;
+          std::cout << "      " << name << ": patch test k = " << k << ", relative error " << err / size << std::endl;
           check_small(err / size, 1e-11, name + ": linear patch test, k = " + std::to_string(k));
         }
   }

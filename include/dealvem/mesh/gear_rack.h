@@ -214,7 +214,7 @@ namespace dealvem
     /// the fillet centre (right side) and the form point's x.
     double half_tip, y_tip, y_form, y_root, fillet_x, fillet_y, form_x;
     /// Lengths of the root line half, the fillet and the flank of a pitch.
-    double root_length, fillet_length, flank_length;
+    double                root_length, fillet_length, flank_length;
     std::array<double, 8> starts;
 
     /// The point and the unit tangent at the outline coordinate @p u of
