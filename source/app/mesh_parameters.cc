@@ -18,6 +18,8 @@ namespace dealvem
   {
     void
     declare_gear_parameters(dealii::ParameterHandler &prm);
+    void
+    declare_rack_parameters(dealii::ParameterHandler &prm);
   }
 
 
@@ -30,10 +32,11 @@ namespace dealvem
     using dealii::Patterns::Selection;
     prm.declare_entry("Type", "voronoi",
                       Selection("structured quads|structured triangles|perturbed quads|voronoi|"
-                                "nonconvex|spur gear|vtk file|gridin file"),
+                                "nonconvex|spur gear|gear rack|vtk file|gridin file"),
                       "Mesh source. Generators work on the rectangle given by the corners; 'spur gear' "
                       "meshes the involute gear of the subsection 'Gear' (boundary ids 0 bore, 1 teeth, "
-                      "2 and 3 the sides of a sector); "
+                      "2 and 3 the sides of a sector), 'gear rack' the rack of the subsection 'Rack' (0 the back "
+                      "line, 1 the teeth, 2 the left side, 3 the right side); "
                       "'vtk file' reads a polygon mesh in legacy VTK format; 'gridin file' "
                       "reads any format of deal.II's GridIn (gmsh .msh: physical lines become "
                       "boundary ids, physical surfaces material ids). In a convergence study a "
@@ -79,6 +82,7 @@ namespace dealvem
                       "pi), applied before the shift; edges stay straight and the mapped mesh is "
                       "validated. Example for a sloped top: 'x, y*(1 + 0.2*x)'. Empty: none.");
     declare_gear_parameters(prm);
+    declare_rack_parameters(prm);
   }
 
 
@@ -140,6 +144,53 @@ namespace dealvem
       prm.declare_entry("Refined radii", "auto", Anything(),
                         "Radii 'from, to' of the refined flank zone; 'auto': the flank from the form radius "
                         "to the tip.");
+      prm.declare_entry("Refinement layers", "2", Double(0.1, 100),
+                        "Cells within this many cell sizes of the flank zone are refined.");
+      prm.leave_subsection();
+    }
+
+    /// The entries of subsection 'Rack' (Type = gear rack).
+    void
+    declare_rack_parameters(dealii::ParameterHandler &prm)
+    {
+      using dealii::Patterns::Anything;
+      using dealii::Patterns::Double;
+      using dealii::Patterns::Integer;
+      prm.enter_subsection("Rack");
+      prm.declare_entry("Module", "1", Double(0), "Module m of the rack (Type = gear rack).");
+      prm.declare_entry("Number of teeth", "5", Integer(1, 10000), "Number of teeth.");
+      prm.declare_entry("Pressure angle", "20", Double(0, 45),
+                        "Angle of the straight flanks from the normal of the pitch line, in degrees.");
+      prm.declare_entry("Profile shift", "0", Double(-2, 2),
+                        "Profile offset coefficient x: the datum line of the profile x m above the pitch line.");
+      prm.declare_entry("Addendum", "1", Double(0), "Addendum coefficient h_a* (tip line (h_a* + x) m above the "
+                                                    "pitch line).");
+      prm.declare_entry("Dedendum", "1.25", Double(0),
+                        "Dedendum coefficient h_f* (root line (h_f* - x) m below the pitch line).");
+      prm.declare_entry("Root fillet radius", "0.38", Double(0),
+                        "Root fillet radius coefficient rho_f* (a circle of radius rho_f* m tangent to flank "
+                        "and root line); 0: sharp root corners.");
+      prm.declare_entry("Backlash", "0", Double(),
+                        "Backlash allowance: each tooth thinned by this length along the pitch line.");
+      prm.declare_entry("Body depth", "0", Double(0),
+                        "Depth of the body below the root line (the back line, boundary id 0, lies this "
+                        "far below it); 0: 3 modules.");
+      prm.declare_entry("Pitch line height", "0", Double(), "Height y of the pitch line (the teeth point to +y).");
+      prm.declare_entry("Position", "0", Double(), "Position x of the axis of tooth 0.");
+      prm.declare_entry("Global refinements", "1", Integer(0, 8),
+                        "Global refinements of the block mesh (about 6 cells across a tooth at 0).");
+      prm.declare_entry("Flank cell size", "0", Double(0),
+                        "Cell size the refined flanks are refined to (0: no local refinement).");
+      prm.declare_entry("Fillet cell size", "0", Double(0),
+                        "Cell size the root fillets below the refined flanks are refined to (0: none).");
+      prm.declare_entry("Refined teeth", "all", Anything(),
+                        "The teeth whose flanks are refined: 'all' or 'first, count' (teeth numbered from "
+                        "0, left to right).");
+      prm.declare_entry("Refined flank", "both", dealii::Patterns::Selection("both|left|right"),
+                        "The flank of each refined tooth: both, left (facing -x) or right (facing +x).");
+      prm.declare_entry("Refined heights", "auto", Anything(),
+                        "Heights 'from, to' above the pitch line of the refined flank zone; 'auto': the "
+                        "flank from the fillet to the tip.");
       prm.declare_entry("Refinement layers", "2", Double(0.1, 100),
                         "Cells within this many cell sizes of the flank zone are refined.");
       prm.leave_subsection();
@@ -234,6 +285,7 @@ namespace dealvem
                 dealii::ExcMessage("Parameter '" + section + "/File name' is empty but 'Type' is '" +
                                    type + "'."));
     parse_gear_parameters(prm);
+    parse_rack_parameters(prm);
   }
 
 
@@ -319,6 +371,77 @@ namespace dealvem
 
 
   void
+  MeshParameters::parse_rack_parameters(dealii::ParameterHandler &prm)
+  {
+    const std::string name = section + "/Rack";
+    prm.enter_subsection("Rack");
+    rack                    = GearRack::Parameters();
+    rack.module             = prm.get_double("Module");
+    rack.n_teeth            = prm.get_integer("Number of teeth");
+    rack.pressure_angle     = prm.get_double("Pressure angle") * degree;
+    rack.profile_shift      = prm.get_double("Profile shift");
+    rack.addendum           = prm.get_double("Addendum");
+    rack.dedendum           = prm.get_double("Dedendum");
+    rack.root_fillet_radius = prm.get_double("Root fillet radius");
+    rack.backlash           = prm.get_double("Backlash");
+    rack.body_depth         = prm.get_double("Body depth");
+    rack.pitch_line_height  = prm.get_double("Pitch line height");
+    rack.position           = prm.get_double("Position");
+    rack_mesh               = PolygonalMeshGenerators::RackMeshSettings();
+    rack_mesh.n_global_refinements = prm.get_integer("Global refinements");
+    rack_mesh.flank_cell_size      = prm.get_double("Flank cell size");
+    rack_mesh.fillet_cell_size     = prm.get_double("Fillet cell size");
+    rack_mesh.layers               = prm.get_double("Refinement layers");
+    const auto [first, count]      = parse_teeth(prm.get("Refined teeth"), name + "/Refined teeth");
+    using Flank                    = PolygonalMeshGenerators::RackMeshSettings::Flank;
+    const std::string flank        = prm.get("Refined flank");
+    PolygonalMeshGenerators::RackMeshSettings::FlankZone zone;
+    zone.flank                = flank == "left" ? Flank::left : flank == "right" ? Flank::right : Flank::both;
+    const std::string heights = InputParsing::trim(prm.get("Refined heights"));
+    if (heights != "auto")
+      {
+        const dealii::Point<2> h = parse_point(heights, name + "/Refined heights");
+        AssertThrow(h[1] > h[0], dealii::ExcMessage("Parameter '" + name + "/Refined heights': expected 'auto' or "
+                                                    "'from, to' with from < to, got '" + heights + "'."));
+        zone.from_height = h[0];
+        zone.to_height   = h[1];
+      }
+    prm.leave_subsection();
+    const unsigned int n_refined = count == 0 ? rack.n_teeth : count;
+    for (unsigned int k = first; k < first + n_refined; ++k)
+      {
+        AssertThrow(type != "gear rack" || k < rack.n_teeth,
+                    dealii::ExcMessage("Parameter '" + name + "/Refined teeth': tooth " + std::to_string(k) +
+                                       " is not one of the rack's " + std::to_string(rack.n_teeth) +
+                                       " teeth (0 to " + std::to_string(rack.n_teeth - 1) + ")."));
+        zone.tooth = k;
+        rack_mesh.zones.push_back(zone);
+      }
+    if (type == "gear rack")
+      {
+        // check the data now, naming the section
+        try
+          {
+            const GearRack check(rack);
+            rack = check.parameters();
+          }
+        catch (const std::exception &e)
+          {
+            std::string what = e.what();
+            const auto  at   = what.find("GearRack: ");
+            if (at != std::string::npos)
+              what = what.substr(at + 10);
+            const auto end = what.find("Stacktrace");
+            if (end != std::string::npos)
+              what = what.substr(0, end);
+            AssertThrow(false, dealii::ExcMessage("Parameter section '" + name + "': " + InputParsing::trim(what)));
+          }
+      }
+  }
+
+
+
+  void
   MeshParameters::create_mesh(PolygonalMesh<2>  &mesh,
                               const unsigned int refinement,
                               const std::string &base_directory) const
@@ -340,6 +463,12 @@ namespace dealvem
         auto settings = gear_mesh;
         settings.n_global_refinements += refinement;
         G::spur_gear(mesh, SpurGear(gear), settings);
+      }
+    else if (type == "gear rack")
+      {
+        auto settings = rack_mesh;
+        settings.n_global_refinements += refinement;
+        G::gear_rack(mesh, GearRack(rack), settings);
       }
     else
       {
@@ -432,6 +561,8 @@ namespace dealvem
         << (gear_mesh.n_teeth == 0 ? std::string(", whole") :
                                      ", teeth " + std::to_string(gear_mesh.first_tooth) + " to " +
                                        std::to_string(gear_mesh.first_tooth + gear_mesh.n_teeth - 1));
+    else if (type == "gear rack")
+      s << ", " << rack.n_teeth << " teeth, m " << rack.module;
     else
       s << ", " << nx << " x " << ny;
     return s.str();

@@ -10,6 +10,7 @@
 
 #include <dealvem/mesh/mesh_io.h>
 #include <dealvem/mesh/polygonal_mesh.h>
+#include <dealvem/mesh/gear_rack.h>
 #include <dealvem/mesh/spur_gear.h>
 
 #include <string>
@@ -21,7 +22,8 @@ namespace dealvem
    * a generator (structured quads or triangles, perturbed quads,
    * centroidal Voronoi, the non-convex family) on a rectangle, a spur
    * gear or a sector of one (subsection 'Gear': SpurGear and
-   * PolygonalMeshGenerators::spur_gear()), a polygon
+   * PolygonalMeshGenerators::spur_gear()), a gear rack (subsection
+   * 'Rack': GearRack and PolygonalMeshGenerators::gear_rack()), a polygon
    * mesh file (legacy VTK, see MeshIO), a gmsh .msh file (MeshIO::read_msh:
    * physical curves as boundary ids, physical surfaces as material ids, both
    * nameable in the parameter file by their physical names), or any other
@@ -80,6 +82,12 @@ namespace dealvem
     /// Subsection 'Gear': the part meshed and the grading (each refinement
     /// of a convergence study adds a global refinement).
     PolygonalMeshGenerators::GearMeshSettings gear_mesh;
+    /// Subsection 'Rack' of Type = "gear rack": the rack's data (angles
+    /// converted to radians).
+    GearRack::Parameters rack;
+    /// Subsection 'Rack': the grading (each refinement of a convergence
+    /// study adds a global refinement).
+    PolygonalMeshGenerators::RackMeshSettings rack_mesh;
 
     /// Declare the entries in the current subsection of @p prm.
     static void
@@ -122,6 +130,11 @@ namespace dealvem
     /// naming the section in the message).
     void
     parse_gear_parameters(dealii::ParameterHandler &prm);
+
+    /// Read subsection 'Rack' (and check the rack when Type = "gear rack",
+    /// naming the section in the message).
+    void
+    parse_rack_parameters(dealii::ParameterHandler &prm);
 
     /// A one-line description, e.g. "voronoi, 64 cells, 20 Lloyd iterations".
     std::string
