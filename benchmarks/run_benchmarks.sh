@@ -215,8 +215,8 @@ if [ "${HERTZ_PEER:-1}" != "0" ]; then
   { echo; sed 's/^#/##/' "$TMP/hertz.md"; } >> "$OUT"
 fi
 # the gear pair of examples/parameters/gear-pair.prm at the pitch point,
-# dealvem against GetFEM on the same meshes (p_max, torque, solve time;
-# about 4 minutes); GEAR_PEER=0 skips it
+# dealvem against GetFEM on the same meshes (p_max, torque, transmission
+# error, solve time; about 6 minutes); GEAR_PEER=0 skips it
 if [ "${GEAR_PEER:-1}" != "0" ]; then
   BUILD_DIR="$BUILD" OUT="$TMP/gear.md" WORK="$TMP/gear" bash "$ROOT/benchmarks/gear_peer/run.sh" > /dev/null
   { echo; sed 's/^#/##/' "$TMP/gear.md"; } >> "$OUT"

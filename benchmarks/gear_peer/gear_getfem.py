@@ -14,15 +14,22 @@ edges) and solves, with Lagrange P2 (or P1) displacements, GetFEM 5.4:
   the pinion's bore (id 0) turned rigidly about the pinion's centre c1 by the
   angle theta: u = (R(theta) - I)(x - c1) at its nodes (both by
   add_Dirichlet_condition_with_simplification; the P2 nodes on a straight
-  bore chord get the same exact rotation);
+  bore chord get the same exact rotation); or, with --torque T, tied to a
+  small rotation about c1 whose angle is an unknown and whose dual is T
+  (dealvem's 'torque' mode of 'Rotation about centre');
 * frictionless unilateral contact between the pinion's teeth (id 1, master)
   and the gear's teeth (id 1 of its file, slave), the integral (mortar-type)
   Alart-Curnier formulation of hertz_getfem.py written in GetFEM's weak form
   language, with a scalar P1 pressure p on the slave flank:
 
       int_S p (v_slave - v_master(T x)) . n  ds
-      + int_S (1/r) (p - pos_part(p - r g)) q  ds = 0,
+      + int_S (p - pos_part(p - r g)) q  ds = 0,
       g = (T x + u_master(T x) - x - u_slave) . n,
+
+  (hertz_getfem.py divides the second integral by r; the equations are the
+  same, but GetFEM's Newton tests one norm over all rows, and with 1/r these
+  rows are so small against the force rows that an iterate with a wrong
+  contact set passed as converged under the torque load),
 
   n the slave's outward normal and T x the point of the master flank that a
   ray from x along n meets (GetFEM's raytracing interpolate transformation).
@@ -32,15 +39,19 @@ edges) and solves, with Lagrange P2 (or P1) displacements, GetFEM 5.4:
   depend on the unknowns (its derivative, which GetFEM leaves out, is zero).
   Points whose ray meets no master face are open (p = 0). r = 0.1 E*/h (the
   choice hertz_getfem.py documents), h the longest slave edge within 0.5 mm
-  of the pitch point. Tried on run.sh's level 1: r = 0.01 and 1 E*/h move
-  the peak pressure by +0.10 % and +0.13 % and the torque by -0.005 % and
-  -0.007 %; 4 or 16 pieces per edge in the contact quadrature instead of 8
-  move both by less than 0.01 %.
+  of the pitch point. The semi-smooth system is solved by GetFEM's Newton
+  (MUMPS) from a uniform pressure of 1000 MPa on the window (as
+  hertz_getfem.py starts from p0): the first step closes the window where
+  the gap is smallest, which also holds a pinion that is free to turn under
+  a torque. Tried on run.sh's level 1 (angle): r = 0.01 and 1 E*/h move the
+  peak pressure by +0.007 % and -0.006 % and the torque by less than 0.001 %
+  (8 and 7 Newton iterations instead of 5); 4 or 16 pieces per edge in the
+  contact quadrature instead of 8 move both by less than 0.003 %.
 
   The contact boundaries are the faces of the teeth within a window about the
   pitch point (slave: --slave-window, default 1 mm; master: 1.5 times that):
-  the rest of the teeth is apart by the backlash and tip relief. run.sh checks
-  that every pair dealvem closes lies inside the slave window.
+  the rest of the teeth is apart by the backlash and tip relief (compare.py
+  reports how far from the pitch point dealvem's farthest closed pair lies).
 
 Output (JSON): sizes, Newton iterations, timings, the contact force and its
 moments about both centres (the transmitted torques), and the nodal profile
@@ -141,16 +152,30 @@ def solve(a):
     md.add_isotropic_linearized_elasticity_brick(mim_p, "u1", "lambda", "mu")
     md.add_isotropic_linearized_elasticity_brick(mim_g, "u2", "lambda", "mu")
 
-    # the bores: the gear's clamped, the pinion's turned by theta about c1
+    # the bores: the gear's clamped, the pinion's turned about c1
     md.add_Dirichlet_condition_with_simplification("u2", RG_BORE)
-    xy = mfu_p.basic_dof_nodes()  # 2 x ndof, each node twice (x and y DoF)
-    ct, st = math.cos(a.angle), math.sin(a.angle)
-    dx, dy = xy[0] - c1[0], xy[1] - c1[1]
-    rot = np.empty(mfu_p.nbdof())
-    rot[0::2] = ((ct - 1) * dx - st * dy)[0::2]
-    rot[1::2] = (st * dx + (ct - 1) * dy)[1::2]
-    md.add_initialized_fem_data("bore_rotation", mfu_p, rot)
-    md.add_Dirichlet_condition_with_simplification("u1", RG_BORE, "bore_rotation")
+    if a.torque is None:
+        # by the angle theta, exactly: u = (R(theta) - I)(x - c1) at the nodes
+        xy = mfu_p.basic_dof_nodes()  # 2 x ndof, each node twice (x and y DoF)
+        ct, st = math.cos(a.angle), math.sin(a.angle)
+        dx, dy = xy[0] - c1[0], xy[1] - c1[1]
+        rot = np.empty(mfu_p.nbdof())
+        rot[0::2] = ((ct - 1) * dx - st * dy)[0::2]
+        rot[1::2] = (st * dx + (ct - 1) * dy)[1::2]
+        md.add_initialized_fem_data("bore_rotation", mfu_p, rot)
+        md.add_Dirichlet_condition_with_simplification("u1", RG_BORE, "bore_rotation")
+    else:
+        # by the torque T: the bore's trace tied (a multiplier in the trace
+        # space) to the small rotation phi (-(y - c1y), x - c1x) with phi an
+        # unknown, T the dual of phi (spread over the bore's length): the
+        # bore turns rigidly about c1 without translating, as dealvem's
+        # 'torque' mode
+        md.add_variable("phi", 1)
+        md.add_multiplier("tie", mfu_p, "u1", mim_p, RG_BORE)
+        turn = "[-(X(2)-%r), X(1)-%r]" % (c1[1], c1[0])
+        md.add_linear_term(mim_p, "tie.(Test_u1 - Test_phi*%s) + Test_tie.(u1 - phi*%s)" % (turn, turn), RG_BORE)
+        bore_length = gf.asm_generic(mim_p, 0, "1", RG_BORE)
+        md.add_source_term(mim_p, "%r*Test_phi" % (a.torque / bore_length), RG_BORE)
 
     # contact: the pairing in the reference configuration (zero displacement)
     md.add_initialized_fem_data("zero_p", mfu_p, np.zeros(mfu_p.nbdof()))
@@ -163,11 +188,21 @@ def solve(a):
     r = a.r_factor * e_star / h
     md.add_initialized_data("r", [r])
     gap = "((Interpolate(X,T) + Interpolate(u1,T) - X - u2).Normal)"
-    md.add_nonlinear_term(mim_contact, "(1/r)*p*Test_p", RG_WINDOW)
+    # the complementarity rows are written without hertz_peer's factor 1/r
+    # (the same equations): GetFEM's Newton measures one norm over all rows,
+    # and with 1/r these rows are about 1e-6 of the force rows, so that an
+    # iterate with a wrong contact set could pass as converged (it did under
+    # the torque load)
+    md.add_nonlinear_term(mim_contact, "p*Test_p", RG_WINDOW)
     md.add_nonlinear_term(
         mim_contact,
         "Interpolate_filter(T, p*(Test_u2 - Interpolate(Test_u1,T)).Normal"
-        " - (1/r)*pos_part(p - r*%s)*Test_p, 1)" % gap, RG_WINDOW)
+        " - pos_part(p - r*%s)*Test_p, 1)" % gap, RG_WINDOW)
+    # start from a uniform pressure (as hertz_getfem.py): the first Newton
+    # step then closes the window where the gap is smallest (a free pinion
+    # under a torque is held), instead of pressing the flanks through each
+    # other with every node open
+    md.set_variable("p", a.start_pressure * np.ones(md.variable("p").size))
 
     t_setup = time.perf_counter()
     args = ["max_res", a.max_res, "max_iter", 50, "lsolver", a.lsolver]
@@ -199,7 +234,9 @@ def solve(a):
     return {
         "code": "GetFEM",
         "order": a.order,
-        "angle": a.angle,
+        "load": "angle" if a.torque is None else "torque",
+        "torque": a.torque,
+        "angle": a.angle if a.torque is None else float(md.variable("phi")[0]),
         "triangles": int(len(body["pinion"]["tris"]) + len(body["gear"]["tris"])),
         "polygons": int(body["pinion"]["polygons"] + body["gear"]["polygons"]),
         "vertices": int(len(body["pinion"]["points"]) + len(body["gear"]["points"])),
@@ -230,7 +267,11 @@ def main():
     ap.add_argument("--pinion-centre", type=float, nargs=2, default=(0.0, 0.0))
     ap.add_argument("--gear-centre", type=float, nargs=2, required=True)
     ap.add_argument("--pitch-point", type=float, nargs=2, required=True)
-    ap.add_argument("--angle", type=float, required=True, help="rotation of the pinion's bore (rad, ccw)")
+    load = ap.add_mutually_exclusive_group(required=True)
+    load.add_argument("--angle", type=float, help="rotation of the pinion's bore (rad, ccw)")
+    load.add_argument("--torque", type=float, help="torque on the pinion's bore (ccw; its angle an unknown)")
+    ap.add_argument("--start-pressure", type=float, default=1000.0,
+                    help="the uniform pressure the Newton iteration starts from")
     ap.add_argument("--young", type=float, default=210000.0)
     ap.add_argument("--poisson", type=float, default=0.3)
     ap.add_argument("--order", type=int, choices=(1, 2), default=2)
@@ -251,11 +292,11 @@ def main():
     np.savetxt(a.profile, res.pop("profile"), delimiter=",", header="x,y,pressure,gap", comments="", fmt="%.15g")
     with open(a.json, "w") as f:
         json.dump(res, f, indent=1)
-    print("GetFEM P%d: %d displacement DoFs + %d pressure DoFs, %d Newton iterations%s, torque %.2f (pinion) "
-          "%.2f (gear), solve %.2f s, total %.2f s"
+    print("GetFEM P%d: %d displacement DoFs + %d pressure DoFs, %d Newton iterations%s, angle %.6g, torque %.2f "
+          "(pinion) %.2f (gear), solve %.2f s, total %.2f s"
           % (a.order, res["dofs_displacement"], res["dofs_pressure"], res["newton_iterations"],
-             "" if res["converged"] else " (NOT CONVERGED)", res["moment_pinion"], res["moment_gear"],
-             res["seconds_solve"], res["seconds_total"]))
+             "" if res["converged"] else " (NOT CONVERGED)", res["angle"], res["moment_pinion"],
+             res["moment_gear"], res["seconds_solve"], res["seconds_total"]))
     return 0 if res["converged"] else 1
 
 

@@ -5,13 +5,16 @@
 # the same meshes, one process per solve, one thread each; writes a Markdown
 # report to stdout and to $OUT (progress on stderr).
 #
-# The load is a prescribed rotation of the pinion's bore about its centre
-# by ANGLE (rad, counter-clockwise), u = (R(ANGLE) - I)(x - c1), with the
-# gear's bore clamped: both codes take it as Dirichlet data. The
+# The gear's bore is clamped. The main load is a prescribed rotation of
+# the pinion's bore about its centre by ANGLE (rad, counter-clockwise),
+# u = (R(ANGLE) - I)(x - c1): both codes take it as Dirichlet data. The
 # transmission error is then the angle itself, the same in both; what is
 # compared is the torque it takes (the mesh stiffness T/ANGLE, the figure
 # that the transmission error under a given torque follows from), the peak
-# contact pressure, the contact width and the solve time.
+# contact pressure, the contact width and the solve time. The second load
+# (LOADS) is the torque TORQUE on the pinion's bore with its angle an
+# unknown (the bore turns rigidly about its centre): that angle is the
+# transmission error, compared directly.
 #
 # The meshes: benchmark_gear_peer_mesh (gear_peer_mesh.cc) builds each gear
 # with the program's own 'Mesh' section code (Type = spur gear) and writes it
@@ -35,6 +38,8 @@
 #                0.01 mm (the bodies away from the contact refined too)
 #   ANGLE        the pinion's rotation in rad (default 0.0017, about the
 #                angle that gear-pair.prm's torque 9400 N mm/mm gives)
+#   TORQUE       the torque of the second load (default 9400 N mm/mm)
+#   LOADS        "angle torque" (default), "angle" or "torque"
 #   CHECK_DIRECT 1: also run dealvem on the gears meshed in the run (default 1)
 #   WORK         work directory (default: a new /tmp/gear_peer.XXXXXX, kept)
 #   OUT          the report (default: $WORK/results.md)
@@ -44,6 +49,8 @@ ROOT="$(cd "$HERE/../.." && pwd)"
 BUILD="${BUILD_DIR:-$ROOT/build}"
 LEVELS="${LEVELS:-0 1 2 3}"
 ANGLE="${ANGLE:-0.0017}"
+TORQUE="${TORQUE:-9400}"
+LOADS="${LOADS:-angle torque}"
 CHECK_DIRECT="${CHECK_DIRECT:-1}"
 WORK="${WORK:-$(mktemp -d /tmp/gear_peer.XXXXXX)}"
 OUT="${OUT:-$WORK/results.md}"
@@ -93,7 +100,7 @@ log "work directory: $WORK"
   echo "dealvem:     $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo '?') (work tree), $DEALVEM"
   echo "GetFEM:      python3-getfem $(dpkg-query -W -f='${Version}' python3-getfem 2>/dev/null || echo '?')"
   echo "threads:     1 per process (DEAL_II_NUM_THREADS, OMP_NUM_THREADS, OPENBLAS_NUM_THREADS)"
-  echo "angle:       $ANGLE rad (pinion bore, counter-clockwise about (0, 0))"
+  echo "loads:       $LOADS: angle $ANGLE rad or torque $TORQUE N mm/mm (pinion bore, counter-clockwise about (0, 0))"
 } > "$WORK/machine.txt"
 
 # the mesh settings of a level: global refinements, flank cell size
@@ -163,9 +170,11 @@ make_meshes() {
   log "level $l: $(tail -n 2 "$WORK/mesh/mesher.log" | sed 's/ (spur gear.*//' | tr '\n' ';')"
 }
 
-# --- one dealvem solve: name, level, source of the meshes (vtk | direct)
+# --- one dealvem solve: name, level, source of the meshes (vtk | direct),
+# load (angle | torque)
 run_dealvem() {
-  local name=$1 l=$2 source=$3
+  local name=$1 l=$2 source=$3 load=$4 rotation="angle $ANGLE"
+  [ "$load" = angle ] || rotation="torque $TORQUE"
   {
     echo "set Number of bodies = 2"
     if [ "$source" = vtk ]; then
@@ -218,7 +227,7 @@ subsection Contact
 end
 subsection Boundary conditions and loads
   set Dirichlet             = 10 : xy : 0, 0
-  set Rotation about centre = 0 : 0, 0 : angle $ANGLE
+  set Rotation about centre = 0 : 0, 0 : $rotation
 end
 subsection Output
   set Folder         = output
@@ -237,10 +246,11 @@ EOF
 }
 
 run_getfem() {
-  local name=$1 l=$2
+  local name=$1 l=$2 load=$3 value=$ANGLE
+  [ "$load" = angle ] || value=$TORQUE
   (cd "$WORK" && "$TIME" -v -o "$name.time" "$PY" "$HERE/gear_getfem.py" \
     --pinion "mesh/pinion-$l.vtk" --gear "mesh/gear-$l.vtk" --gear-centre 102 0 --pitch-point 40 0 \
-    --angle "$ANGLE" --order 2 --json "$name.json" --profile "$name.csv" > "$name.log" 2>&1) ||
+    "--$load" "$value" --order 2 --json "$name.json" --profile "$name.csv" > "$name.log" 2>&1) ||
     { log "GetFEM failed: $name (see $WORK/$name.log)"; return 1; }
   log "$name: $(tail -n 1 "$WORK/$name.log")"
 }
@@ -248,14 +258,17 @@ run_getfem() {
 status=0
 for l in $LEVELS; do
   make_meshes "$l" || { status=1; continue; }
-  run_dealvem "dealvem-$l" "$l" vtk || status=1
-  run_getfem "getfem-$l" "$l" || status=1
+  for load in $LOADS; do
+    case "$load" in angle) tag="" ;; torque) tag="torque-" ;; *) log "LOADS: angle and/or torque"; exit 1 ;; esac
+    run_dealvem "dealvem-$tag$l" "$l" vtk "$load" || status=1
+    run_getfem "getfem-$tag$l" "$l" "$load" || status=1
+  done
   if [ "$CHECK_DIRECT" = 1 ]; then
-    run_dealvem "dealvem-direct-$l" "$l" direct || status=1
+    run_dealvem "dealvem-direct-$l" "$l" direct angle || status=1
   fi
 done
 echo "load end:    $(cut -d' ' -f1-3 /proc/loadavg)" >> "$WORK/machine.txt"
 
-"$PY" "$HERE/compare.py" --work "$WORK" --levels "$LEVELS" --angle "$ANGLE" --out "$OUT"
+"$PY" "$HERE/compare.py" --work "$WORK" --levels "$LEVELS" --angle "$ANGLE" --torque "$TORQUE" --out "$OUT"
 log "report: $OUT (runs kept in $WORK)"
 exit $status
