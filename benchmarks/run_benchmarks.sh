@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Build (./build) and run the benchmarks; write doc/benchmarks.md (with the
-# Hertz peer comparison of benchmarks/hertz_peer/run.sh at its end).
+# peer comparisons against GetFEM of benchmarks/hertz_peer/run.sh and
+# benchmarks/gear_peer/run.sh at its end).
 # Each case runs in its own process so that the peak memory is its own.
 # MAX_DOFS limits the elasticity sizes (default 1e6); CONTACT_SIZES the
 # contact sizes n (default "30 100 210").
@@ -212,5 +213,12 @@ done
 if [ "${HERTZ_PEER:-1}" != "0" ]; then
   BUILD_DIR="$BUILD" OUT="$TMP/hertz.md" WORK="$TMP/hertz" bash "$ROOT/benchmarks/hertz_peer/run.sh" > /dev/null
   { echo; sed 's/^#/##/' "$TMP/hertz.md"; } >> "$OUT"
+fi
+# the gear pair of examples/parameters/gear-pair.prm at the pitch point,
+# dealvem against GetFEM on the same meshes (p_max, torque, transmission
+# error, solve time; about 6 minutes); GEAR_PEER=0 skips it
+if [ "${GEAR_PEER:-1}" != "0" ]; then
+  BUILD_DIR="$BUILD" OUT="$TMP/gear.md" WORK="$TMP/gear" bash "$ROOT/benchmarks/gear_peer/run.sh" > /dev/null
+  { echo; sed 's/^#/##/' "$TMP/gear.md"; } >> "$OUT"
 fi
 echo "wrote $OUT"
