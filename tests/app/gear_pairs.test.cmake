@@ -36,40 +36,38 @@ function(gear_results base out)
   set(${out} ${fn} ${m2} ${pmax} ${angle} PARENT_SCOPE)
 endfunction()
 
+# replaces in the text of variable prm each "from|to" pair of the arguments;
+# a line this test edits that the example no longer has stops it
+function(edit_prm)
+  foreach(pair ${ARGN})
+    string(REPLACE "|" ";" pair "${pair}")
+    list(GET pair 0 from)
+    list(GET pair 1 to)
+    string(FIND "${prm}" "${from}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "gear-pair.prm has no line '${from}' (this test edits it)")
+    endif()
+    string(REPLACE "${from}" "${to}" prm "${prm}")
+  endforeach()
+  set(prm "${prm}" PARENT_SCOPE)
+endfunction()
+
 file(READ ${SOURCE_DIR}/examples/parameters/gear-pair.prm prm)
-foreach(pair "set Global refinements  = 1|set Global refinements  = 0"
-             "set Flank cell size     = 0.02|set Flank cell size     = 0.1"
-             "set Base name      = gear-pair|set Base name      = gear-coarse\n  set Write VTU      = false")
-  string(REPLACE "|" ";" pair "${pair}")
-  list(GET pair 0 from)
-  list(GET pair 1 to)
-  string(FIND "${prm}" "${from}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "gear-pair.prm has no line '${from}' (this test edits it)")
-  endif()
-  string(REPLACE "${from}" "${to}" prm "${prm}")
-endforeach()
+edit_prm("set Global refinements  = 1|set Global refinements  = 0"
+         "set Flank cell size     = 0.02|set Flank cell size     = 0.1"
+         "set Base name      = gear-pair|set Base name      = gear-coarse\n  set Write VTU      = false")
 file(WRITE ${WORK_DIR}/gear-coarse.prm "${prm}")
 run_dealvem("gear pair, coarse" TRUE "rotation of boundary 0 about (0, 0): torque 9400 (applied)"
   ${WORK_DIR}/gear-coarse.prm)
 gear_results(gear-coarse here)
 
-foreach(pair "set Centre              = 0, 0|set Centre              = -3000, 7000"
-             "set Rotation            = -4.428380275608647|set Rotation            = -147.42838027560865"
-             "set Centre              = 102, 0|set Centre              = -3081.4608220248238, 6938.614867638491"
-             "set Rotation            = 177.14298046734925|set Rotation            = 34.14298046734925"
-             "set Rotation about centre = 0 : 0, 0 :|set Rotation about centre = 0 : -3000, 7000 :"
-             "set Moment point   = 102, 0|set Moment point   = -3081.4608220248238, 6938.614867638491"
-             "set Base name      = gear-coarse|set Base name      = gear-moved")
-  string(REPLACE "|" ";" pair "${pair}")
-  list(GET pair 0 from)
-  list(GET pair 1 to)
-  string(FIND "${prm}" "${from}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "gear-pair.prm has no line '${from}' (this test edits it)")
-  endif()
-  string(REPLACE "${from}" "${to}" prm "${prm}")
-endforeach()
+edit_prm("set Centre              = 0, 0|set Centre              = -3000, 7000"
+         "set Rotation            = -4.428380275608647|set Rotation            = -147.42838027560865"
+         "set Centre              = 102, 0|set Centre              = -3081.4608220248238, 6938.614867638491"
+         "set Rotation            = 177.14298046734925|set Rotation            = 34.14298046734925"
+         "set Rotation about centre = 0 : 0, 0 :|set Rotation about centre = 0 : -3000, 7000 :"
+         "set Moment point   = 102, 0|set Moment point   = -3081.4608220248238, 6938.614867638491"
+         "set Base name      = gear-coarse|set Base name      = gear-moved")
 file(WRITE ${WORK_DIR}/gear-moved.prm "${prm}")
 run_dealvem("gear pair, moved and turned" TRUE
   "rotation of boundary 0 about (-3000, 7000): torque 9400 (applied)" ${WORK_DIR}/gear-moved.prm)

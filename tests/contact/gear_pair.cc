@@ -57,28 +57,6 @@ namespace
   const double       m = 1, E = 210e3, nu = 0.3, theta = 4e-4, h = 0.005, j = 0.05, alpha = 20 * pi / 180;
   const unsigned int z1 = 20, z2 = 31;
 
-  /// Rigid rotation about a centre by a fixed angle, as Dirichlet data.
-  class Rotation : public dealii::Function<2>
-  {
-  public:
-    Rotation(const dealii::Point<2> &c, const double angle)
-      : dealii::Function<2>(2)
-      , c(c)
-      , angle(angle)
-    {}
-    double
-    value(const dealii::Point<2> &p, const unsigned int comp) const override
-    {
-      const double x = p[0] - c[0], y = p[1] - c[1];
-      const double cs = std::cos(angle), sn = std::sin(angle);
-      return comp == 0 ? cs * x - sn * y - x : sn * x + cs * y - y;
-    }
-
-  private:
-    dealii::Point<2> c;
-    double           angle;
-  };
-
   /// x -> shift + scale R(turn) x.
   struct Placement
   {
@@ -143,7 +121,8 @@ namespace
     problem.add_body(mesh2, ElasticMaterial(E, nu, ElasticMaterial::Model::plane_strain), 10);
     problem.add_contact_pair(1, 11);
     auto &bc = problem.boundary_conditions();
-    bc.add_dirichlet(0, {{true, true}}, std::make_shared<Rotation>(p1.center, theta));
+    bc.add_rotation_about_centre(0, p1.center, std::make_shared<dealii::Functions::ConstantFunction<2>>(theta), false,
+                                 "pinion bore");
     bc.add_dirichlet(10, {{true, true}}, std::make_shared<dealii::Functions::ZeroFunction<2>>(2));
     auto &o              = problem.options();
     o.contact.normal     = ContactSettings::Normal::unilateral;
