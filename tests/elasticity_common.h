@@ -21,6 +21,8 @@
 #include <dealvem/mesh/generators.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -102,6 +104,43 @@ namespace testing
     solver.vmult(x, b);
     constraints.distribute(x);
     return x;
+  }
+
+  /**
+   * The linear patch test on @p mesh at order @p k: the linear field
+   * 1e-3 (0.3 + 2x - 0.7y, -0.2 + 0.4x + 1.1y) as Dirichlet data on the
+   * boundary ids 0 to 3 (the whole boundary of the meshes that call it),
+   * plane strain, UMFPACK. Returns the largest vertex error over the
+   * largest vertex value, round-off when the element passes.
+   */
+  inline double
+  linear_patch_test_error(const dealvem::PolygonalMesh<2> &mesh, const unsigned int k)
+  {
+    class Linear : public dealii::Function<2>
+    {
+    public:
+      Linear()
+        : dealii::Function<2>(2)
+      {}
+      double
+      value(const dealii::Point<2> &p, const unsigned int c) const override
+      {
+        return c == 0 ? 1e-3 * (0.3 + 2 * p[0] - 0.7 * p[1]) : 1e-3 * (-0.2 + 0.4 * p[0] + 1.1 * p[1]);
+      }
+    };
+    dealvem::VEMDoFHandler<2> dof_handler(mesh);
+    dof_handler.distribute_dofs(k);
+    const dealvem::ElasticMaterial material(200e3, 0.3, dealvem::ElasticMaterial::Model::plane_strain);
+    const Linear                   exact;
+    const auto                     x   = solve_dirichlet_problem(dof_handler, material, exact, nullptr);
+    double                         err = 0, size = 0;
+    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          err  = std::max(err, std::abs(x[2 * v + c] - exact.value(mesh.vertex(v), c)));
+          size = std::max(size, std::abs(exact.value(mesh.vertex(v), c)));
+        }
+    return err / size;
   }
 } // namespace testing
 

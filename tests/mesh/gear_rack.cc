@@ -186,19 +186,6 @@ namespace
     }
   }
 
-  class Linear : public dealii::Function<2>
-  {
-  public:
-    Linear()
-      : dealii::Function<2>(2)
-    {}
-    double
-    value(const dealii::Point<2> &p, const unsigned int c) const override
-    {
-      return c == 0 ? 1e-3 * (0.3 + 2 * p[0] - 0.7 * p[1]) : 1e-3 * (-0.2 + 0.4 * p[0] + 1.1 * p[1]);
-    }
-  };
-
   void
   check_mesh(const GearRack                                  &rack,
              const PolygonalMeshGenerators::RackMeshSettings &settings,
@@ -275,20 +262,9 @@ namespace
     if (patch_test)
       for (const unsigned int k : {1u, 2u})
         {
-          VEMDoFHandler<2> dof_handler(mesh);
-          dof_handler.distribute_dofs(k);
-          const ElasticMaterial material(200e3, 0.3, ElasticMaterial::Model::plane_strain);
-          Linear                exact;
-          const auto            x   = testing::solve_dirichlet_problem(dof_handler, material, exact, nullptr);
-          double                err = 0, size = 0;
-          for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-            for (unsigned int c = 0; c < 2; ++c)
-              {
-                err  = std::max(err, std::abs(x[2 * v + c] - exact.value(mesh.vertex(v), c)));
-                size = std::max(size, std::abs(exact.value(mesh.vertex(v), c)));
-              }
-          std::cout << "      " << name << ": patch test k = " << k << ", relative error " << err / size << std::endl;
-          check_small(err / size, 1e-11, name + ": linear patch test, k = " + std::to_string(k));
+          const double error = testing::linear_patch_test_error(mesh, k);
+          std::cout << "      " << name << ": patch test k = " << k << ", relative error " << error << std::endl;
+          check_small(error, 1e-11, name + ": linear patch test, k = " + std::to_string(k));
         }
   }
 } // namespace
