@@ -105,12 +105,12 @@ namespace dealvem
     // the stiffness of d/ds on an edge of unit length, in the order of
     // VirtualElement::edge_nodes() (first vertex, edge nodes, second vertex)
     const std::vector<double> &edge_stiffness = element.get_element_data().edge_stiffness();
-    const double               weight         = element.get_stabilization_rules().boundary_edge_weight;
+    const double               divisor        = element.get_stabilization_rules().boundary_edge_divisor;
     for (unsigned int e = 0; e < N; ++e)
       {
         const std::vector<unsigned int> nodes = element.edge_nodes(e);
         const unsigned int              n_e   = nodes.size();
-        const double                    w     = std::min(mean_length / geometry.edge_length(e), 1e3) * weight;
+        const double                    w     = std::min(mean_length / geometry.edge_length(e), 1e3) / divisor;
         for (unsigned int a = 0; a < n_e; ++a)
           for (unsigned int b = 0; b < n_e; ++b)
             {

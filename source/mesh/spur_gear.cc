@@ -711,7 +711,25 @@ namespace dealvem
     // 8-point Gauss rule per piece subinterval
     static const double xg[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
     static const double wg[4] = {0.3626837833783620, 0.3137066533153911, 0.2223810344533745, 0.1012285362903763};
-    double              sum   = 0;
+    // the integral over [q0, q1] of one piece
+    const auto integral = [&](const OutlinePiece &piece, const double q0, const double q1) {
+      double part = 0;
+      for (unsigned int gq = 0; gq < 8; ++gq)
+        {
+          const double xi = (gq < 4 ? -xg[gq] : xg[gq - 4]), w = wg[gq % 4];
+          const double q  = 0.5 * (q0 + q1) + 0.5 * (q1 - q0) * xi;
+          const double h  = 1e-5 * std::abs(q1 - q0);
+          const auto   c  = g.piece_point(piece, q);
+          const auto   dc = (g.piece_point(piece, q + h) - g.piece_point(piece, q - h)) / (2 * h);
+          part += 0.5 * w * 0.5 * (q1 - q0) * (c[0] * dc[1] - c[1] * dc[0]);
+        }
+      return part;
+    };
+    // the flank's kink where the tip relief starts (q = t^2 on an involute
+    // piece): the Gauss rule is split there, so that it integrates smooth
+    // pieces only (a kink inside a rule costs 4e-6 of a ring's area)
+    const double kink  = (g.prm.tip_relief > 0 ? g.relief_t * g.relief_t : -1.);
+    double       sum   = 0;
     for (unsigned int k = first; k < first + n; ++k)
       for (unsigned int j = 0; j < 7; ++j)
         for (unsigned int i = 0; i < n_samples; ++i)
@@ -719,15 +737,10 @@ namespace dealvem
             // integrate in the piece's parameter q over one sample interval
             const auto  &piece = g.pieces[j];
             const double q0 = piece.q[i], q1 = piece.q[i + 1];
-            for (unsigned int gq = 0; gq < 8; ++gq)
-              {
-                const double xi = (gq < 4 ? -xg[gq] : xg[gq - 4]), w = wg[gq % 4];
-                const double q  = 0.5 * (q0 + q1) + 0.5 * (q1 - q0) * xi;
-                const double h  = 1e-5 * std::abs(q1 - q0);
-                const auto   c  = g.piece_point(piece, q);
-                const auto   dc = (g.piece_point(piece, q + h) - g.piece_point(piece, q - h)) / (2 * h);
-                sum += 0.5 * w * 0.5 * (q1 - q0) * (c[0] * dc[1] - c[1] * dc[0]);
-              }
+            if (piece.kind == Piece::involute && kink > std::min(q0, q1) && kink < std::max(q0, q1))
+              sum += integral(piece, q0, kink) + integral(piece, kink, q1);
+            else
+              sum += integral(piece, q0, q1);
           }
     (void)L;
     if (g.internal)

@@ -35,16 +35,26 @@ namespace dealvem
     edge_nodes.push_back(0.);
     edge_nodes.insert(edge_nodes.end(), edge_positions.begin(), edge_positions.end());
     edge_nodes.push_back(1.);
-    const unsigned int     n = degree + 1;
-    const dealii::QGauss<1> gauss(degree);
-    std::vector<double>     d;
-    edge_stiffness_matrix.assign(n * n, 0.);
-    for (unsigned int q = 0; q < gauss.size(); ++q)
+    // the edge stiffness: written out for k = 1 and 2 (the correctly
+    // rounded fractions the boundary stabilization always used), else by
+    // the k-point Gauss rule
+    const unsigned int n = degree + 1;
+    if (degree == 1)
+      edge_stiffness_matrix = {1., -1., -1., 1.};
+    else if (degree == 2)
+      edge_stiffness_matrix = {7. / 3, -8. / 3, 1. / 3, -8. / 3, 16. / 3, -8. / 3, 1. / 3, -8. / 3, 7. / 3};
+    else
       {
-        edge_shape_derivatives(gauss.point(q)[0], d);
-        for (unsigned int a = 0; a < n; ++a)
-          for (unsigned int b = 0; b < n; ++b)
-            edge_stiffness_matrix[a * n + b] += gauss.weight(q) * d[a] * d[b];
+        const dealii::QGauss<1> gauss(degree);
+        std::vector<double>     d;
+        edge_stiffness_matrix.assign(n * n, 0.);
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          {
+            edge_shape_derivatives(gauss.point(q)[0], d);
+            for (unsigned int a = 0; a < n; ++a)
+              for (unsigned int b = 0; b < n; ++b)
+                edge_stiffness_matrix[a * n + b] += gauss.weight(q) * d[a] * d[b];
+          }
       }
   }
 
@@ -53,6 +63,18 @@ namespace dealvem
   void
   VEMElementData::edge_shape_values(const double s, std::vector<double> &values) const
   {
+    // k = 1 and 2 written out as the element's edge loads always evaluated
+    // them (the same roundings)
+    if (degree == 1)
+      {
+        values = {1. - s, s};
+        return;
+      }
+    if (degree == 2)
+      {
+        values = {(1. - s) * (1. - 2. * s), 4. * s * (1. - s), s * (2. * s - 1.)};
+        return;
+      }
     const unsigned int n = edge_nodes.size();
     values.assign(n, 1.);
     for (unsigned int a = 0; a < n; ++a)
@@ -66,6 +88,16 @@ namespace dealvem
   void
   VEMElementData::edge_shape_derivatives(const double s, std::vector<double> &derivatives) const
   {
+    if (degree == 1)
+      {
+        derivatives = {-1., 1.};
+        return;
+      }
+    if (degree == 2)
+      {
+        derivatives = {4. * s - 3., 4. - 8. * s, 4. * s - 1.};
+        return;
+      }
     // the product rule on the Lagrange polynomial: one factor differentiated
     // at a time
     const unsigned int n = edge_nodes.size();

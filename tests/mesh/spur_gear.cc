@@ -439,13 +439,13 @@ main()
       id.n_teeth              = 61;
       id.profile_shift        = -0.25;
       id.tip_relief           = 0.02;
-      id.tip_relief_radius    = 59.;
+      id.tip_relief_radius    = 60.2;
       id.backlash             = 0.05;
       const SpurGear ring_d(id);
       check_internal_geometry(ring, "internal m 2, z 40");
       check_internal_geometry(ring_b, "internal m 0.8, z 57, 25 deg, backlash, off-centre");
       check_internal_geometry(ring_c, "internal m 1.5, z 48, x 0.3, parabolic relief 0.015, far from the origin");
-      check_internal_geometry(ring_d, "internal m 2, z 61, x -0.25, linear relief 0.02 from radius 59, backlash");
+      check_internal_geometry(ring_d, "internal m 2, z 61, x -0.25, linear relief 0.02 from radius 60.2, backlash");
       check(std::abs(ring_c.tip_radius() - (36. - 1.5 * 1.3)) < 1e-12 &&
               std::abs(ring_c.root_radius() - (36. + 1.5 * 0.95)) < 1e-12,
             "internal, x 0.3: tip radius r - m (h_a + x), root radius r + m (h_f - x)");
@@ -594,8 +594,8 @@ main()
                    "internal, 14 teeth: tip inside the base circle");
       bad                   = ia;
       bad.tip_relief        = 0.02;
-      bad.tip_relief_radius = 41;
-      check_throws([&] { SpurGear g(bad); }, "tip relief radius 41 of an internal gear must lie between",
+      bad.tip_relief_radius = 43;
+      check_throws([&] { SpurGear g(bad); }, "tip relief radius 43 of an internal gear must lie between",
                    "internal, relief radius beyond the form radius");
       bad            = ia;
       bad.tip_relief = 0.8;

@@ -166,9 +166,9 @@ namespace dealvem
       /// 1 for k = 1, 1/5 for k = 2 (doc/architecture.md, "The stabilization
       /// is the root of the raw error at k = 2").
       double diagonal_weight;
-      /// The factor of an edge's d/ds stiffness (VEMElementData::edge_stiffness())
-      /// in the boundary form: 1/2 for k = 1, 1/5 for k = 2.
-      double boundary_edge_weight;
+      /// The divisor of an edge's d/ds stiffness (VEMElementData::edge_stiffness())
+      /// in the boundary form: 2 for k = 1, 5 for k = 2.
+      double boundary_edge_divisor;
     };
 
     /// The rules of order @p degree (AssertThrow outside 1 to max_degree()).
