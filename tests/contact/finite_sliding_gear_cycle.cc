@@ -53,9 +53,9 @@
 //
 // Default: s_max = 0.3 (a fifth of a base pitch), 6 roll angles (46 s in
 // Release: 9.8k DoFs, 2-3 pairing passes and 17-20 Newton updates a step).
-// With --study: s_max = 0.45, 10 roll angles, graded 0.1 beyond the path
-// (ctest label "long"; measured: torque -0.015 to -0.038 %, peak pressure
-// -0.94 to +0.71 %, a/h 10.5-12).
+// With --study: s_max = 0.45, 10 roll angles (ctest label "long"; 12k
+// DoFs; measured: torque -0.015 to -0.038 %, peak pressure -0.94 to +0.71 %,
+// a/h 10.5-12).
 // --angles N, --s-max S, --h H, --margin M, --tolerance T and --theta T
 // change the settings for other studies.
 #include <deal.II/base/function.h>
@@ -372,11 +372,6 @@ main(int argc, char **argv)
         {
           st.s_max    = 0.45;
           st.n_angles = 10;
-          // (graded 0.1 beyond the path: with 0.03, a vertex pair on the
-          // coarse flank beyond the graded band, open by 0.011 and its
-          // partners 0.011 apart along the side, held the pairing offset
-          // at 0.0039 in every pass at s = 0.35, and the step failed)
-          st.margin   = 0.1;
         }
       else if (arg == "--angles" && i + 1 < argc)
         st.n_angles = std::stoul(argv[++i]);
