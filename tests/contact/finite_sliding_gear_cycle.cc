@@ -91,8 +91,8 @@ namespace
   const double       rb1 = r1 * std::cos(alpha), rb2 = r2 * std::cos(alpha);
 
   // Pairs are made within 0.01 of the interface's size (about 0.1 mm, 2.5
-  // contact half-widths; the gaps there are below 3 micrometres): the flanks
-  // of the teeth that do not touch stay unpaired. (With the default 0.25,
+  // contact half-widths): the flanks of the teeth that do not touch stay
+  // unpaired. (With the default 0.25,
   // 2.6 mm here, the pairing passes of finite sliding's first step stalled
   // at an offset of 0.0387 of a sub-edge, the same in every pass and at
   // every cut-back; the pair that held it was not traced.)
