@@ -131,7 +131,7 @@ namespace dealvem
    *    length of the slave sub-edges at the pair (the chord over which its
    *    normal turns) is below Parameters::pairing_tolerance
    *    (StepRecord::pairing_offset, StepRecord::n_passes; an open pair
-   *    counts with the part of that distance beyond its gap, so that a
+   *    counts with what that distance grew in the pass beyond its gap: a
    *    pairing that lost the contact, every pair open and the bodies
    *    overlapping where no pair looks, is made again; an interface whose
    *    parts no longer face each other, a body slid off its partner, has
@@ -344,9 +344,9 @@ namespace dealvem
       unsigned int n_passes = 0;
       /// After the last pass: the largest tangential distance of the
       /// partners of an active vertex pair over the length of the slave
-      /// sub-edges at the pair; for an open pair, the part of that distance
-      /// beyond its gap (partners that slid apart by more than their gap
-      /// may no longer see the other side where it is).
+      /// sub-edges at the pair; for an open pair, what that distance grew
+      /// in the pass beyond its gap (partners that slid apart by more than
+      /// their gap may no longer see the other side where it is).
       double pairing_offset = 0;
       /// Active pairs of two vertices of the original mesh in the last pass
       /// (merged by the insertion: closer than the merge fraction of
