@@ -16,6 +16,38 @@ namespace dealvem
 {
   namespace
   {
+    /**
+     * The parameters of a generator class G (SpurGear, GearRack) as G's
+     * constructor completes them, checked now: G's refusal is rethrown
+     * with the parameter section @p section named in place of G's own
+     * prefix ("SpurGear: ", "GearRack: ") and without
+     * the stack trace.
+     */
+    template <class G>
+    typename G::Parameters
+    checked_in_section(const typename G::Parameters &parameters, const std::string &section)
+    {
+      try
+        {
+          return G(parameters).parameters();
+        }
+      catch (const std::exception &e)
+        {
+          std::string what = e.what();
+          for (const std::string prefix : {"SpurGear: ", "GearRack: "})
+            if (const auto at = what.find(prefix); at != std::string::npos)
+              {
+                what = what.substr(at + prefix.size());
+                break;
+              }
+          if (const auto end = what.find("Stacktrace"); end != std::string::npos)
+            what = what.substr(0, end);
+          AssertThrow(false,
+                      dealii::ExcMessage("Parameter section '" + section + "': " + InputParsing::trim(what)));
+        }
+      return parameters; // not reached
+    }
+
     void
     declare_gear_parameters(dealii::ParameterHandler &prm);
     void
@@ -334,22 +366,7 @@ namespace dealvem
     if (type == "spur gear")
       {
         // check the data now, naming the section
-        try
-          {
-            const SpurGear check(gear);
-            gear = check.parameters();
-          }
-        catch (const std::exception &e)
-          {
-            std::string what = e.what();
-            const auto  at   = what.find("SpurGear: ");
-            if (at != std::string::npos)
-              what = what.substr(at + 10);
-            const auto end = what.find("Stacktrace");
-            if (end != std::string::npos)
-              what = what.substr(0, end);
-            AssertThrow(false, dealii::ExcMessage("Parameter section '" + name + "': " + InputParsing::trim(what)));
-          }
+        gear = checked_in_section<SpurGear>(gear, name);
         // a refined tooth outside the meshed sector would leave the mesh
         // unrefined without a word
         const unsigned int z = gear.n_teeth;
@@ -420,22 +437,7 @@ namespace dealvem
     if (type == "gear rack")
       {
         // check the data now, naming the section
-        try
-          {
-            const GearRack check(rack);
-            rack = check.parameters();
-          }
-        catch (const std::exception &e)
-          {
-            std::string what = e.what();
-            const auto  at   = what.find("GearRack: ");
-            if (at != std::string::npos)
-              what = what.substr(at + 10);
-            const auto end = what.find("Stacktrace");
-            if (end != std::string::npos)
-              what = what.substr(0, end);
-            AssertThrow(false, dealii::ExcMessage("Parameter section '" + name + "': " + InputParsing::trim(what)));
-          }
+        rack = checked_in_section<GearRack>(rack, name);
       }
   }
 
