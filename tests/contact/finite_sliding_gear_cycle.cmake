@@ -1,5 +1,5 @@
 # Three finite-sliding steps of a gear pair where a tooth pair leaves
-# contact, at 19k DoFs, and three small-strain contact solves: MEASURED_DEFAULT
+# contact, at 15k DoFs, and three small-strain contact solves: 40 s of CPU
 # in Release, so the sanitizer run leaves it to the normal suite, like
 # contact/finite_sliding.
 set_tests_properties(${_test} PROPERTIES LABELS "contact;sanitize_slow")
