@@ -70,7 +70,12 @@
 // With --pitch (ctest label "long"): one base pitch, s from -1.553 to
 // 1.399 (the zone of single contact in the middle, tooth pair 1 leaving at
 // the start and pair -1 entering at the end), 16 roll angles (0.197 mm, 4.7
-// contact half-widths, a step; MEASURED_PITCH).
+// contact half-widths, a step; 54k DoFs, 3 pairing passes and 16-24
+// Newton updates a step, one cut-back; 13.6 min of CPU in Release).
+// Measured: pair 1 leaves between s = -1.16 and -0.96, pair -1 enters
+// between 0.81 and 1.01 (both models); the torque within 0.047 %, the
+// shares within 3.2e-4, the peak pressures of the 16 resolved zones within
+// -1.0 to +1.3 %.
 // --angles N, --from S, --to S, --s-max S (from -S to S), --h H,
 // --margin M, --relief C, --tolerance T and --theta T change the settings
 // for other studies.
