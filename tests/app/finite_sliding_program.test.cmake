@@ -34,6 +34,8 @@ string(JSON converged GET "${json}" converged_steps)
 if(NOT status STREQUAL "complete" OR NOT converged EQUAL 12)
   message(FATAL_ERROR "FAIL finite sliding: status ${status}, ${converged} of 12 steps converged")
 endif()
+check_timings("finite sliding timings" "${json}" mesh "contact detection" setup report "finite sliding solve"
+              postprocessing "output vtu" "output csv" "output json")
 file(READ ${WORK_DIR}/output/${base}.pvd pvd)
 file(STRINGS ${WORK_DIR}/output/${base}-history.csv csv)
 list(LENGTH csv lines)

@@ -149,6 +149,8 @@ if(micro LESS 8655694 OR micro GREATER 8742686)
   message(FATAL_ERROR "FAIL Cook's membrane: tip u_y = ${uy} is not within 0.5 % of 8.69919")
 endif()
 message(STATUS "PASS Cook's membrane (${dofs} DoFs): tip u_y = ${uy}, within 0.5 % of 8.69919")
+check_timings("Cook's membrane timings" "${json}" mesh setup "finite strain solve" postprocessing verification
+              "output vtu" "output json")
 
 # --- a rotation by 90 degrees: stress-free
 run_dealvem("finite-strain-rotation.prm" TRUE "Newton history" ${EXAMPLES}/finite-strain-rotation.prm)
