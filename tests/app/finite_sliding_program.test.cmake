@@ -9,7 +9,8 @@
 #   appears in the .pvd, the history CSV has a line per step, and in every
 #   step where all active pairs slip (measured: steps 3, 4 and 5) the
 #   friction force is mu times the normal force to 1e-10 relative (the
-#   Coulomb law at every pair); at least three such steps;
+#   Coulomb law at every pair); at least three such steps; the JSON
+#   timings cover the run (check_timings());
 # - the outputs of a turning or sliding part at every step (the balance of
 #   the support reactions, the interface resultant and its moment against
 #   the reaction on the block, the node pairs' CSV: see below);

@@ -9,7 +9,9 @@
 #   a moment point that is not two finite numbers is refused;
 # - a rigid top plate loaded by its resultant (tests/app/rigid-top.prm,
 #   k = 2 and k = 1): uniform compression, errors at round-off;
-# - bad input exits non-zero with a message naming the problem.
+# - bad input exits non-zero with a message naming the problem;
+# - the JSON timings of the cantilever and the patch test cover the run:
+#   their stages add up to its wall time (check_timings()).
 include(${TEST_DIR}/program_checks.cmake)
 
 file(REMOVE_RECURSE ${WORK_DIR}/output)
