@@ -45,7 +45,9 @@ namespace dealvem
     class Scope
     {
     public:
+      /// Enters @p stage of @p timer, pausing the stage that runs.
       Scope(StageTimer &timer, const std::string &stage);
+      /// Leaves the stage; the one it paused runs again.
       ~Scope();
       Scope(const Scope &) = delete;
       Scope &
