@@ -159,17 +159,28 @@ namespace dealvem
     data    = std::make_unique<CycleData>();
     data->prefix = output_prefix(opt.output_folder, opt.base_name, cycle, n_cycles);
 
+    // the stages of the cycle's timings (the functions time the parts that
+    // belong to another stage themselves: contact detection, the sparsity
+    // pattern as assembly, the verification and files of a step)
+    StageTimer &timer = data->timer;
     make_meshes(cycle);
     insert_nodes();
-    setup_system();
+    {
+      StageTimer::Scope t(timer, "setup");
+      setup_system();
+    }
     for (unsigned int step = 1; step <= opt.n_load_steps; ++step)
       {
         const double time = opt.final_time * step / opt.n_load_steps;
         assemble_system(time);
         solve(step, time);
+        StageTimer::Scope t(timer, "postprocessing");
         process_step(step, time);
       }
-    postprocess();
+    {
+      StageTimer::Scope t(timer, "postprocessing");
+      postprocess();
+    }
     output_results();
   }
 
@@ -179,7 +190,7 @@ namespace dealvem
   void
   ContactProblem::make_meshes(const unsigned int cycle)
   {
-    dealii::TimerOutput::Scope t(data->timer, "mesh");
+    StageTimer::Scope t(data->timer, "mesh");
     make_body_meshes(cycle, results.mesh, data->materials);
     data->original_vertices = results.mesh.get_vertices();
   }
@@ -217,7 +228,7 @@ namespace dealvem
   void
   ContactProblem::insert_nodes()
   {
-    dealii::TimerOutput::Scope t(data->timer, "node insertion");
+    StageTimer::Scope t(data->timer, "node insertion");
     PolygonalMesh<2>          &mesh       = results.mesh;
     auto                      &interfaces = results.interfaces;
     // the explicit pairs, then the detected ones
@@ -225,7 +236,7 @@ namespace dealvem
     cycle_friction = pair_friction;
     if (opt.detect_pairs)
       {
-        dealii::TimerOutput::Scope detection_timer(data->timer, "contact detection");
+        StageTimer::Scope detection_timer(data->timer, "contact detection");
         std::set<dealii::types::boundary_id> excluded = bc.used_boundary_ids();
         for (const auto &p : contact_pairs)
           excluded.insert({p.first, p.second});
@@ -350,7 +361,7 @@ namespace dealvem
     d.n = d.dof_handler.n_dofs();
     d.m = d.contact->n_multipliers();
     {
-      dealii::TimerOutput::Scope     t(d.timer, "assembly");
+      StageTimer::Scope t(d.timer, "assembly");
       dealii::DynamicSparsityPattern dsp(d.n + d.m);
       // distributed: the stiffness is assembled per process by the solver,
       // this matrix holds only the contact blocks
@@ -421,7 +432,7 @@ namespace dealvem
   ContactProblem::assemble_system(const double time)
   {
     CycleData                 &d = *data;
-    dealii::TimerOutput::Scope t(d.timer, "assembly");
+    StageTimer::Scope t(d.timer, "assembly");
     bc.set_time(time);
     d.constraints.clear();
     bc.apply_constraints(d.dof_handler, d.constraints, &d.supports, &d.rotation_parts);
@@ -489,7 +500,7 @@ namespace dealvem
     CycleData &d = *data;
     try
       {
-        dealii::TimerOutput::Scope t(d.timer, "solve");
+        StageTimer::Scope t(d.timer, "solve");
         d.solve_result = d.contact_solver->solve_step(d.system_matrix, d.system_rhs, d.work_matrix, d.x);
       }
     catch (...)

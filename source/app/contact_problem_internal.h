@@ -37,6 +37,7 @@
 #include <dealvem/base/number_string.h>
 #include <dealvem/base/output_file.h>
 #include <dealvem/base/run_files.h>
+#include <dealvem/base/stage_timer.h>
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/postprocessing/svg_plots.h>
 #include <dealvem/postprocessing/vtu_output.h>
@@ -70,7 +71,9 @@ namespace dealvem
   // handler before the mesh, which lives in Results).
   struct ContactProblem::CycleData
   {
-    dealii::TimerOutput timer{std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times};
+    /// The stages of the cycle, timed from the start of the cycle (the
+    /// JSON's `timings`).
+    StageTimer timer;
     MaterialLibrary<2>                                    materials;
     std::vector<dealii::Point<2>>                         original_vertices;
     VEMDoFHandler<2>                                      dof_handler;

@@ -431,6 +431,7 @@ namespace dealvem
     const CycleData &d = *data;
     if (opt.write_csv)
       {
+        StageTimer::Scope t(data->timer, "output csv");
         write_interface_csv(step_prefix(d.prefix, step) + "-interface.csv", results.pairs);
         write_resultants_csv(step_prefix(d.prefix, step) + "-resultants.csv", results.interface_results);
         write_reactions_csv(d.prefix + "-reactions.csv", results.steps);
@@ -438,6 +439,7 @@ namespace dealvem
       }
     if (opt.write_vtu)
       {
+        StageTimer::Scope t(data->timer, "output vtu");
         StressRecovery<2> step_stresses(d.dof_handler, d.materials, results.solution);
         write_vtu_file(step_prefix(d.prefix, step) + ".vtu", d.dof_handler, results.solution, step_stresses);
         // the time series so far, rewritten after every step
@@ -473,9 +475,13 @@ namespace dealvem
       for (const auto kB : peaks)
         results.peak_memory_MB.push_back(kB / 1024.);
     }
-    print_report();
+    {
+      StageTimer::Scope t(data->timer, "report");
+      print_report();
+    }
     if (opt.write_csv)
       {
+        StageTimer::Scope t(data->timer, "output csv");
         write_interface_csv(data->prefix + "-interface.csv", results.pairs);
         write_resultants_csv(data->prefix + "-resultants.csv", results.interface_results);
         write_reactions_csv(data->prefix + "-reactions.csv", results.steps);
@@ -489,6 +495,7 @@ namespace dealvem
       }
     if (opt.write_vtu)
       {
+        StageTimer::Scope t(data->timer, "output vtu");
         write_vtu_file(data->prefix + ".vtu", data->dof_handler, results.solution, *data->stresses);
         pcout << "  ParaView file (all bodies, field body_id): " << data->prefix << ".vtu" << std::endl;
         if (opt.n_load_steps > 1)
@@ -496,9 +503,15 @@ namespace dealvem
                     << ".pvd" << std::endl;
       }
     if (opt.write_pictures)
-      write_pictures_files();
+      {
+        StageTimer::Scope t(data->timer, "output svg");
+        write_pictures_files();
+      }
     if (opt.write_json)
-      write_json_summary();
+      {
+        StageTimer::Scope t(data->timer, "output json");
+        write_json_summary();
+      }
   }
 
 
@@ -791,7 +804,9 @@ namespace dealvem
         }
     if (!results.steps.empty())
       RotationOutput::json(json, "rotations.", results.steps.back().rotations);
-    for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
+    // the stages of the cycle so far (writing this file itself is not in
+    // them)
+    for (const auto &s : d.timer.breakdown())
       json.set("timings." + s.first, s.second);
     json.write(prefix + ".json");
     pcout << "  summary: " << prefix << ".json" << std::endl;

@@ -40,8 +40,11 @@ namespace dealvem
     step_result.pairs               = results.pairs;
     results.dissipated_energy += step_result.dissipated_energy;
 
-    check_step_finite(step, time, step_result);
-    verify_step(step, time, tangential_force, step_result);
+    {
+      StageTimer::Scope t(data->timer, "verification");
+      check_step_finite(step, time, step_result);
+      verify_step(step, time, tangential_force, step_result);
+    }
     results.steps.push_back(step_result);
 
     if (opt.n_load_steps > 1 || friction)
@@ -482,8 +485,7 @@ namespace dealvem
         results.cell_stress[c] = {{s[0][0], s[1][1], s[0][1]}};
       }
 
-    for (const auto &s : d.timer.get_summary_data(dealii::TimerOutput::total_wall_time))
-      results.timings[s.first] = s.second;
+    results.timings = d.timer.stages();
 
   }
 } // namespace dealvem

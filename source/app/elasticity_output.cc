@@ -55,11 +55,17 @@ namespace dealvem
   void
   ElasticityProblem::output_results(const unsigned int cycle)
   {
-    check_displacement_scale(cycle);
-    dealii::Vector<double>                unbalanced;
-    const std::vector<ForceBalance::Body> balance = verify_balance(cycle, &unbalanced);
-    if (bc.has_rotations() && !finite_strain.enabled)
-      report_rotations("cycles." + std::to_string(cycle) + ".", unbalanced, false);
+    // (what the stages below do not take is postprocessing)
+    StageTimer::Scope               t(*timer, "postprocessing");
+    std::vector<ForceBalance::Body> balance;
+    dealii::Vector<double>          unbalanced;
+    {
+      StageTimer::Scope v(*timer, "verification");
+      check_displacement_scale(cycle);
+      balance = verify_balance(cycle, &unbalanced);
+      if (bc.has_rotations() && !finite_strain.enabled)
+        report_rotations("cycles." + std::to_string(cycle) + ".", unbalanced, false);
+    }
     // the cells this process computes: all, or (distributed) its own, with
     // the ghost layer for the nodal stress averages
     std::vector<unsigned int> stress_cells;
@@ -74,7 +80,7 @@ namespace dealvem
     ErrorNorms              errors;
     if (exact)
       {
-        dealii::TimerOutput::Scope t(*timer, "errors");
+        StageTimer::Scope t(*timer, "errors");
         if (distributed)
           errors = sum_over_processes(compute_errors(dof_handler, materials, solution, *exact,
                                                      partition.locally_owned_cells()),
@@ -82,7 +88,10 @@ namespace dealvem
         else
           errors = compute_errors(dof_handler, materials, solution, *exact);
       }
-    check_finite_results(cycle, stresses, errors);
+    {
+      StageTimer::Scope v(*timer, "verification");
+      check_finite_results(cycle, stresses, errors);
+    }
     const std::string prefix = output_prefix(output_folder, base_name, cycle, n_cycles);
     const std::string vtu    = prefix + (distributed ? ".pvtu" : finite_strain.enabled ? ".pvd" : ".vtu");
     write_vtu_output(prefix, vtu, stresses);
@@ -229,7 +238,7 @@ namespace dealvem
   {
     if (write_vtu && !finite_strain.enabled)
       {
-        dealii::TimerOutput::Scope t(*timer, "output");
+        StageTimer::Scope t(*timer, "output vtu");
         if (distributed)
           {
             // one piece per process, named <prefix>.<process>.vtu, and the
@@ -332,7 +341,7 @@ namespace dealvem
       }
     if (write_vtu)
       json.set(key + "vtu", vtu);
-    for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
+    for (const auto &s : timer->stages_since(cycle_start_stages))
       json.set(key + "timings." + s.first, s.second);
     if (exact)
       {
@@ -365,9 +374,7 @@ namespace dealvem
             << std::endl;
     cycle_dofs.push_back(dof_handler.n_dofs());
     last_n_dofs = dof_handler.n_dofs();
-    last_timings.clear();
-    for (const auto &s : timer->get_summary_data(dealii::TimerOutput::total_wall_time))
-      last_timings[s.first] = s.second;
+    last_timings = timer->stages_since(cycle_start_stages);
     if (gather_solution)
       {
         if (distributed)
@@ -384,7 +391,10 @@ namespace dealvem
       }
     if (write_json && this_process == 0)
       {
+        StageTimer::Scope t(*timer, "output json");
         json.set("status", cycle + 1 < n_cycles ? "running" : "complete");
+        for (const auto &s : timer->breakdown())
+          json.set("timings." + s.first, s.second);
         json.write(output_folder + "/" + base_name + ".json");
         json_written = true;
       }

@@ -64,7 +64,7 @@ namespace dealvem
   void
   ElasticityProblem::make_mesh(const unsigned int cycle)
   {
-    dealii::TimerOutput::Scope t(*timer, "mesh");
+    StageTimer::Scope t(*timer, "mesh");
     mesh.clear();
     mesh_parameters.create_mesh(mesh, cycle, prm_directory);
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
@@ -124,7 +124,7 @@ namespace dealvem
   void
   ElasticityProblem::setup_system()
   {
-    dealii::TimerOutput::Scope t(*timer, "setup");
+    StageTimer::Scope t(*timer, "setup");
     dof_handler.reinit(mesh);
     dof_handler.distribute_dofs(VEMElementData(degree));
     constraints.clear();
@@ -144,7 +144,7 @@ namespace dealvem
   void
   ElasticityProblem::assemble_system()
   {
-    dealii::TimerOutput::Scope t(*timer, "assembly");
+    StageTimer::Scope t(*timer, "assembly");
     ElasticityAssembler<2>     assembler(dof_handler, materials, gamma, stabilization);
     bc.add_loads(assembler);
     assembler.assemble(constraints, system_matrix, system_rhs);
@@ -219,7 +219,7 @@ namespace dealvem
   void
   ElasticityProblem::solve()
   {
-    dealii::TimerOutput::Scope t(*timer, "solve");
+    StageTimer::Scope t(*timer, "solve");
     const LinearSolver::Settings settings = linear_solver_settings();
     LinearSolver                 solver(settings);
     // k = 2 with CG: the k = 1 space on the same polygons as the coarse
@@ -251,7 +251,7 @@ namespace dealvem
   void
   ElasticityProblem::setup_distributed_system()
   {
-    dealii::TimerOutput::Scope t(*timer, "setup");
+    StageTimer::Scope t(*timer, "setup");
     dof_handler.reinit(mesh);
     dof_handler.distribute_dofs(VEMElementData(degree));
     partition.reinit(dof_handler, mpi_communicator);
@@ -275,7 +275,7 @@ namespace dealvem
   void
   ElasticityProblem::assemble_distributed_system()
   {
-    dealii::TimerOutput::Scope t(*timer, "assembly");
+    StageTimer::Scope t(*timer, "assembly");
     ElasticityAssembler<2>     assembler(dof_handler, materials, gamma, stabilization);
     bc.add_loads(assembler);
     assembler.assemble(constraints, partition.locally_owned_cells(), distributed_matrix, distributed_rhs);
@@ -310,7 +310,7 @@ namespace dealvem
   ElasticityProblem::solve_distributed()
   {
     {
-      dealii::TimerOutput::Scope t(*timer, "solve");
+      StageTimer::Scope t(*timer, "solve");
       const LinearSolver::Settings settings = linear_solver_settings();
       ParallelLinearSolver         solver(settings);
       if (settings.type == LinearSolver::Type::cg_amg)
@@ -330,7 +330,7 @@ namespace dealvem
       solver_iterations  = solver.last_iterations();
       solver_setup_time  = solver.last_setup_time();
     }
-    dealii::TimerOutput::Scope t(*timer, "ghost exchange");
+    StageTimer::Scope t(*timer, "ghost exchange");
     std::vector<unsigned int>  cells = partition.locally_owned_cells();
     cells.insert(cells.end(), partition.ghost_cells().begin(), partition.ghost_cells().end());
     const dealii::IndexSet                needed = partition.dofs_of_cells(cells);
@@ -389,6 +389,7 @@ namespace dealvem
   void
   ElasticityProblem::run_cycles()
   {
+    timer        = std::make_unique<StageTimer>();
     json_written = false;
     // a hyperelastic law enters the small-strain paths (assembly, stresses,
     // errors) by its linearization, the linear law of the same E and nu
@@ -442,8 +443,7 @@ namespace dealvem
 
     for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
       {
-        timer = std::make_unique<dealii::TimerOutput>(std::cout, dealii::TimerOutput::never,
-                                                      dealii::TimerOutput::wall_times);
+        cycle_start_stages = timer->stages();
         make_mesh(cycle);
         if (distributed)
           {
@@ -499,7 +499,11 @@ namespace dealvem
     pcout << std::defaultfloat << std::setprecision(6) << std::endl;
     if (write_json && this_process == 0)
       {
+        // the stages of the whole run (writing this file itself is not
+        // in them)
         json.set("status", "complete");
+        for (const auto &s : timer->breakdown())
+          json.set("timings." + s.first, s.second);
         json.write(output_folder + "/" + base_name + ".json");
       }
 
@@ -525,6 +529,26 @@ namespace dealvem
       s << "-step-" << std::setw(3) << std::setfill('0') << step;
       return s.str();
     }
+
+    // The JSON record under @p key of the finite-strain load step @p r at
+    // the time @p time (also of the failed one).
+    void
+    record_newton_step(JsonSummary                             &json,
+                       const std::string                       &key,
+                       const FiniteStrainSolver<2>::StepRecord &r,
+                       const double                             time)
+    {
+      const std::string k = key + "steps." + std::to_string(r.step) + ".";
+      json.set(k + "load_factor", r.load_factor);
+      json.set(k + "time", time);
+      json.set(k + "converged", r.converged ? "true" : "false");
+      json.set(k + "newton_iterations", double(r.iterations.empty() ? 0 : r.iterations.size() - 1));
+      if (!r.iterations.empty())
+        {
+          json.set(k + "residual", r.iterations.back().residual_norm);
+          json.set(k + "relative_residual", r.iterations.back().relative_residual);
+        }
+    }
   } // namespace
 
 
@@ -532,7 +556,7 @@ namespace dealvem
   void
   ElasticityProblem::solve_finite_strain(const unsigned int cycle)
   {
-    dealii::TimerOutput::Scope t(*timer, "finite strain solve");
+    StageTimer::Scope t(*timer, "finite strain solve");
     // the trace rule is the finite-strain default for both orders (see
     // FiniteStrainAssembler); an explicit choice is passed on
     const Stabilization      rule = (stabilization == Stabilization::automatic ? Stabilization::trace : stabilization);
@@ -566,23 +590,16 @@ namespace dealvem
           << (timed ? " at the times t of the expressions" : " (load factors n/N of the data)")
           << (bc.has_pressure() ? ", " + pressure_load_name(finite_strain.pressure_load) + " pressure" : "")
           << std::endl;
-    // the JSON record of a step (also of the failed one)
     const auto record_step = [&](const FiniteStrainSolver<2>::StepRecord &r) {
-      const std::string k = key + "steps." + std::to_string(r.step) + ".";
-      json.set(k + "load_factor", r.load_factor);
-      json.set(k + "time", r.step * final_time / n_load_steps);
-      json.set(k + "converged", r.converged ? "true" : "false");
-      json.set(k + "newton_iterations", double(r.iterations.empty() ? 0 : r.iterations.size() - 1));
-      if (!r.iterations.empty())
-        {
-          json.set(k + "residual", r.iterations.back().residual_norm);
-          json.set(k + "relative_residual", r.iterations.back().relative_residual);
-        }
+      record_newton_step(json, key, r, r.step * final_time / n_load_steps);
     };
     const auto write_summary = [&](const std::string &status) {
       if (write_json && this_process == 0)
         {
+          StageTimer::Scope o(*timer, "output json");
           json.set("status", status);
+          for (const auto &s : timer->breakdown())
+            json.set("timings." + s.first, s.second);
           json.write(output_folder + "/" + base_name + ".json");
           json_written = true;
         }
@@ -648,12 +665,15 @@ namespace dealvem
         record_step(r);
         newton_updates += r.iterations.size() - 1;
         solution = solver.get_solution();
-        const FiniteStrainFields fields = compute_finite_strain_fields(dof_handler, laws, solution);
-        max_cauchy_norm                 = fields.max_cell_cauchy_norm;
-        json.set(key + "steps." + std::to_string(n) + ".max_cauchy_norm", max_cauchy_norm);
-        report_load_step(n, load_factor, time, r, monitor, key);
+        {
+          StageTimer::Scope p(*timer, "postprocessing");
+          max_cauchy_norm = compute_finite_strain_fields(dof_handler, laws, solution).max_cell_cauchy_norm;
+          json.set(key + "steps." + std::to_string(n) + ".max_cauchy_norm", max_cauchy_norm);
+          report_load_step(n, load_factor, time, r, monitor, key);
+        }
         if (bc.has_rotations())
           {
+            StageTimer::Scope v(*timer, "verification");
             // the reactions at the converged step: r = lambda f_ext - f_int(u)
             dealii::Vector<double> unbalanced;
             assembler.assemble(solution, load_factor, unbalanced, constraints, nullptr, nullptr);
@@ -661,6 +681,7 @@ namespace dealvem
           }
         if (write_vtu)
           {
+            StageTimer::Scope       o(*timer, "output vtu");
             const std::string       file = prefix + step_suffix(n) + ".vtu";
             write_finite_strain_vtu_file(file, dof_handler, laws, solution);
             series.emplace_back(time, std::filesystem::path(file).filename().string());

@@ -224,6 +224,8 @@ namespace dealvem
     /// The history CSV; its header is written with the first step, which
     /// names the supports.
     std::ostringstream                        csv;
+    /// The stages of the run, timed from its start (the JSON's `timings`).
+    StageTimer                                timer;
   };
 
 
@@ -232,19 +234,42 @@ namespace dealvem
   ContactProblem::run_finite_sliding()
   {
     FiniteSlidingRun run(*this);
-    run.check_settings();
-    run.make_mesh();
-    run.make_interfaces();
-    run.make_sliding();
-    run.start_report();
+    // the stages of the timings (the solve of a step is FiniteSliding's
+    // pairing passes and Newton iterations together; the files time
+    // themselves)
+    StageTimer &timer = run.timer;
+    {
+      StageTimer::Scope t(timer, "mesh");
+      run.check_settings();
+      run.make_mesh();
+    }
+    {
+      StageTimer::Scope t(timer, "contact detection");
+      run.make_interfaces();
+    }
+    {
+      StageTimer::Scope t(timer, "setup");
+      run.make_sliding();
+    }
+    {
+      StageTimer::Scope t(timer, "report");
+      run.start_report();
+    }
     for (unsigned int n = 1; n <= opt.n_load_steps; ++n)
       {
         const double time = opt.final_time * n / opt.n_load_steps;
-        run.solve_step(n, time);
-        const auto  &r       = run.sliding->get_history().back();
-        unsigned int updates = 0;
-        const auto   outputs = run.report_step(n, time, r, updates);
-        run.record_step(n, time, r, updates, outputs);
+        {
+          StageTimer::Scope t(timer, "finite sliding solve");
+          run.solve_step(n, time);
+        }
+        SlidingStepOutputs outputs;
+        {
+          StageTimer::Scope t(timer, "postprocessing");
+          const auto       &r       = run.sliding->get_history().back();
+          unsigned int      updates = 0;
+          outputs                   = run.report_step(n, time, r, updates);
+          run.record_step(n, time, r, updates, outputs);
+        }
         run.write_step_files(n, time, outputs);
         run.write_json("running");
       }
@@ -500,7 +525,11 @@ namespace dealvem
   {
     if (opt.write_json)
       {
+        // (writing this file itself is not in its timings)
+        StageTimer::Scope t(timer, "output json");
         json.set("status", status);
+        for (const auto &s : timer.breakdown())
+          json.set("timings." + s.first, s.second);
         json.write(prefix + ".json");
       }
   }
@@ -656,10 +685,14 @@ namespace dealvem
                                                      const SlidingStepOutputs &outputs)
   {
     if (opt.write_csv)
-      write_finite_sliding_pairs(step_prefix(prefix, n) + "-interface.csv", outputs.pairs);
+      {
+        StageTimer::Scope t(timer, "output csv");
+        write_finite_sliding_pairs(step_prefix(prefix, n) + "-interface.csv", outputs.pairs);
+      }
     json.set("converged_steps", double(n));
     if (opt.write_vtu)
       {
+        StageTimer::Scope  t(timer, "output vtu");
         std::ostringstream file;
         file << prefix << "-step-" << std::setw(3) << std::setfill('0') << n << ".vtu";
         write_finite_strain_vtu_file(file.str(), sliding->get_dof_handler(), laws, sliding->get_solution());
@@ -668,7 +701,8 @@ namespace dealvem
       }
     if (opt.write_csv)
       {
-        OutputFile out(prefix + "-history.csv");
+        StageTimer::Scope t(timer, "output csv");
+        OutputFile        out(prefix + "-history.csv");
         out.stream() << csv.str();
         out.commit();
       }

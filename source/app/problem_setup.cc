@@ -828,7 +828,8 @@ namespace dealvem
                       "Newton: the free residual norm must fall below this times the larger of the external "
                       "and internal force norms (0 < tolerance < 1).");
     prm.declare_entry("Update tolerance", "1e-10", Double(0, 1),
-                      "Newton: the last update must be below this times the displacement norm "
+                      "Newton: the next update, estimated from the contraction of the last iteration "
+                      "(else the last update), must be below this times the displacement norm "
                       "(0 < tolerance < 1).");
     prm.declare_entry("Line search", "true", Bool(),
                       "Newton: backtrack along the update (step lengths 1, 1/2, ..., 2^-10) until the "

@@ -92,6 +92,39 @@ namespace dealvem
           return false;
       return true;
     }
+
+    // The update test's measure at an iterate whose merit (free residual,
+    // with contact also phi) is @p merit: the size of the update that one
+    // more Newton iteration would take. Testing only the last update taken
+    // (@p last_update) costs, at the end of every step, one more
+    // factorization and solve whose update is round-off: the residual
+    // after Newton's last update is already at its floor, but that update
+    // itself was of the size of the error before it. Once the iteration
+    // contracts fast, the next update is estimated instead as the last one
+    // times the contraction seen over the last iteration, the larger of
+    // the residual's ratio (merit now / merit where the last update
+    // started) and the updates' ratio (last / the one before): a linear
+    // bound on what is quadratic convergence, so the estimate errs on the
+    // large side. It is used only after a full (alpha = 1) update that
+    // kept the prescribed values (whose residual ratio measures Newton's
+    // rate), from the third iterate of a step on, and while the contraction
+    // is below 1/2; otherwise the measure is the last update, as before.
+    template <typename Record>
+    double
+    remaining_update(const Record &record, const double last_update, const bool last_moved_prescribed,
+                     const double merit)
+    {
+      const auto        &its = record.iterations;
+      const std::size_t n   = its.size();
+      if (n < 2 || last_moved_prescribed || its[n - 1].step_length != 1.)
+        return last_update;
+      const double last_merit = std::hypot(its[n - 1].residual_norm, its[n - 1].contact_residual);
+      const double before     = its[n - 2].update_norm;
+      if (!(last_merit > 0) || !(before > 0))
+        return last_update;
+      const double contraction = std::max(merit / last_merit, last_update / before);
+      return contraction < 0.5 ? contraction * last_update : last_update;
+    }
   } // namespace
 
 
@@ -327,6 +360,9 @@ namespace dealvem
 
     double      f_ext_norm  = 0;
     double      last_update = std::numeric_limits<double>::infinity();
+    // whether the last update carried prescribed motion (its residual
+    // ratio then says nothing about Newton's rate)
+    bool last_moved_prescribed = true;
     std::string inversion; // the last inverted cell met in the step
 
     // the state of every constraint at the iterate (NewtonConstraintState)
@@ -589,7 +625,8 @@ namespace dealvem
     const bool at_roundoff = it > 1 && ns.last_update <= 1e-13 * ns.u.l2_norm() && r_norm <= 100 * tolerance;
     if (!moves_prescribed && (r_norm <= tolerance || at_roundoff) && phi_norm <= tolerance &&
         (contact == nullptr || (it > 0 && ns.active == ns.previous_active)) &&
-        ns.last_update <= parameters.update_tolerance * ns.u.l2_norm())
+        remaining_update(ns.record, ns.last_update, ns.last_moved_prescribed, merit) <=
+          parameters.update_tolerance * ns.u.l2_norm())
       {
         ns.record.iterations.push_back(iteration);
         ns.record.converged = true;
@@ -606,7 +643,8 @@ namespace dealvem
 
     newton_direction(ns, iteration, it);
     const double alpha = line_search(ns, iteration, merit, moves_prescribed);
-    ns.last_update        = alpha * ns.du.l2_norm();
+    ns.last_update           = alpha * ns.du.l2_norm();
+    ns.last_moved_prescribed = moves_prescribed;
     iteration.update_norm = ns.last_update;
     iteration.step_length = alpha;
     ns.record.iterations.push_back(iteration);

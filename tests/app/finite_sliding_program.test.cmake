@@ -9,7 +9,8 @@
 #   appears in the .pvd, the history CSV has a line per step, and in every
 #   step where all active pairs slip (measured: steps 3, 4 and 5) the
 #   friction force is mu times the normal force to 1e-10 relative (the
-#   Coulomb law at every pair); at least three such steps;
+#   Coulomb law at every pair); at least three such steps; the JSON
+#   timings cover the run (check_timings());
 # - the outputs of a turning or sliding part at every step (the balance of
 #   the support reactions, the interface resultant and its moment against
 #   the reaction on the block, the node pairs' CSV: see below);
@@ -34,6 +35,8 @@ string(JSON converged GET "${json}" converged_steps)
 if(NOT status STREQUAL "complete" OR NOT converged EQUAL 12)
   message(FATAL_ERROR "FAIL finite sliding: status ${status}, ${converged} of 12 steps converged")
 endif()
+check_timings("finite sliding timings" "${json}" mesh "contact detection" setup report "finite sliding solve"
+              postprocessing "output vtu" "output csv" "output json")
 file(READ ${WORK_DIR}/output/${base}.pvd pvd)
 file(STRINGS ${WORK_DIR}/output/${base}-history.csv csv)
 list(LENGTH csv lines)

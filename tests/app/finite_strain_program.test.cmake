@@ -12,7 +12,8 @@
 #   every step converged, wrote its VTU file and appears in the .pvd;
 # - examples/parameters/finite-strain-cook.prm (Cook's membrane, k = 2,
 #   2178 DoFs): the tip u_y within 0.5 % of the reference 8.69919 (the
-#   bound of tests/elasticity/cook_membrane);
+#   bound of tests/elasticity/cook_membrane), and its JSON timings cover
+#   the run (check_timings());
 # - examples/parameters/finite-strain-rotation.prm (90 degree rotation on
 #   the boundary, 6 steps): the largest cell Cauchy stress is below 1e-10
 #   (E = 1000: the small-strain answer would be 2.72 E) and the errors
@@ -149,6 +150,8 @@ if(micro LESS 8655694 OR micro GREATER 8742686)
   message(FATAL_ERROR "FAIL Cook's membrane: tip u_y = ${uy} is not within 0.5 % of 8.69919")
 endif()
 message(STATUS "PASS Cook's membrane (${dofs} DoFs): tip u_y = ${uy}, within 0.5 % of 8.69919")
+check_timings("Cook's membrane timings" "${json}" mesh setup "finite strain solve" postprocessing verification
+              "output vtu" "output json")
 
 # --- a rotation by 90 degrees: stress-free
 run_dealvem("finite-strain-rotation.prm" TRUE "Newton history" ${EXAMPLES}/finite-strain-rotation.prm)

@@ -9,7 +9,9 @@
 #   a moment point that is not two finite numbers is refused;
 # - a rigid top plate loaded by its resultant (tests/app/rigid-top.prm,
 #   k = 2 and k = 1): uniform compression, errors at round-off;
-# - bad input exits non-zero with a message naming the problem.
+# - bad input exits non-zero with a message naming the problem;
+# - the JSON timings of the cantilever and the patch test cover the run:
+#   their stages add up to its wall time (check_timings()).
 include(${TEST_DIR}/program_checks.cmake)
 
 file(REMOVE_RECURSE ${WORK_DIR}/output)
@@ -35,6 +37,8 @@ if(dofs LESS 100 OR l2 GREATER 1e-12)
   message(FATAL_ERROR "FAIL cantilever: dofs ${dofs}, L2 error ${l2} (uniform tension must be exact)")
 endif()
 message(STATUS "PASS cantilever JSON: ${dofs} DoFs, L2 error ${l2}")
+check_timings("cantilever timings" "${json}" mesh setup assembly solve errors postprocessing verification
+              "output vtu" "output json")
 
 # a rigid top plate under its resultant: uniform compression, exact for k = 2 and 1
 file(READ ${TEST_DIR}/rigid-top.prm rigid_prm)
@@ -71,6 +75,8 @@ foreach(v ${pmin} ${pmax})
   endif()
 endforeach()
 message(STATUS "PASS contact JSON: contact pressure in [${pmin}, ${pmax}] = 10 to 1e-10")
+check_timings("contact patch test timings" "${json}" mesh "node insertion" setup assembly solve postprocessing
+              verification report "output csv" "output vtu" "output svg" "output json")
 
 # what a user of a pressed part reads (the patch test: p = 10 on the top
 # [0, 1] of the upper block, the slave side): the interface passes the load

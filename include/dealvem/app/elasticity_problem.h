@@ -20,6 +20,7 @@
 
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/app/problem_setup.h>
+#include <dealvem/base/stage_timer.h>
 #include <dealvem/elasticity/elasticity_operator.h>
 #include <dealvem/elasticity/force_balance.h>
 #include <dealvem/elasticity/material.h>
@@ -288,7 +289,11 @@ namespace dealvem
     unsigned int                                          newton_updates   = 0;
     double                                                max_cauchy_norm  = 0;
     std::unique_ptr<dealii::Function<2>>                  exact;
-    std::unique_ptr<dealii::TimerOutput>                  timer;
+    /// The stages of the whole run (the JSON's `timings`), and their times
+    /// when the current cycle began (the cycle's own `timings` are the
+    /// difference).
+    std::unique_ptr<StageTimer>                           timer;
+    std::map<std::string, double>                         cycle_start_stages;
     PolygonalMesh<2>                                      mesh;
     VEMDoFHandler<2>                                      dof_handler;
     dealii::AffineConstraints<double>                     constraints;
