@@ -806,8 +806,7 @@ namespace dealvem
       RotationOutput::json(json, "rotations.", results.steps.back().rotations);
     // the stages of the cycle so far (writing this file itself is not in
     // them)
-    for (const auto &s : d.timer.breakdown())
-      json.set("timings." + s.first, s.second);
+    json.set("timings.", d.timer.breakdown());
     json.write(prefix + ".json");
     pcout << "  summary: " << prefix << ".json" << std::endl;
   }

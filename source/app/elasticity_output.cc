@@ -341,8 +341,7 @@ namespace dealvem
       }
     if (write_vtu)
       json.set(key + "vtu", vtu);
-    for (const auto &s : timer->stages_since(cycle_start_stages))
-      json.set(key + "timings." + s.first, s.second);
+    json.set(key + "timings.", timer->stages_since(cycle_start_stages));
     if (exact)
       {
         table.add_value("L2", errors.l2);
@@ -393,8 +392,7 @@ namespace dealvem
       {
         StageTimer::Scope t(*timer, "output json");
         json.set("status", cycle + 1 < n_cycles ? "running" : "complete");
-        for (const auto &s : timer->breakdown())
-          json.set("timings." + s.first, s.second);
+        json.set("timings.", timer->breakdown());
         json.write(output_folder + "/" + base_name + ".json");
         json_written = true;
       }

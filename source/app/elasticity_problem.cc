@@ -502,8 +502,7 @@ namespace dealvem
         // the stages of the whole run (writing this file itself is not
         // in them)
         json.set("status", "complete");
-        for (const auto &s : timer->breakdown())
-          json.set("timings." + s.first, s.second);
+        json.set("timings.", timer->breakdown());
         json.write(output_folder + "/" + base_name + ".json");
       }
 
@@ -598,8 +597,7 @@ namespace dealvem
         {
           StageTimer::Scope o(*timer, "output json");
           json.set("status", status);
-          for (const auto &s : timer->breakdown())
-            json.set("timings." + s.first, s.second);
+          json.set("timings.", timer->breakdown());
           json.write(output_folder + "/" + base_name + ".json");
           json_written = true;
         }

@@ -528,8 +528,7 @@ namespace dealvem
         // (writing this file itself is not in its timings)
         StageTimer::Scope t(timer, "output json");
         json.set("status", status);
-        for (const auto &s : timer.breakdown())
-          json.set("timings." + s.first, s.second);
+        json.set("timings.", timer.breakdown());
         json.write(prefix + ".json");
       }
   }

@@ -61,6 +61,15 @@ namespace dealvem
 
 
   void
+  JsonSummary::set(const std::string &prefix, const std::map<std::string, double> &values)
+  {
+    for (const auto &v : values)
+      set(prefix + v.first, v.second);
+  }
+
+
+
+  void
   JsonSummary::set(const std::string &path, const std::string &value)
   {
     Node &n   = find(path);

@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "../elasticity_common.h"
@@ -134,5 +135,12 @@ main()
                         "an infinite number is refused by the JSON summary, naming its key");
   testing::check_throws([&] { json.set("steps.1.force_x", std::nan("")); },
                         "JSON summary: the value of 'steps.1.force_x' is NaN", "... and so is NaN");
+  // a map of numbers under a prefix (a StageTimer's stages), replacing an
+  // earlier value and keeping the map's order after the existing keys
+  JsonSummary timings;
+  timings.set("timings.solve", 9.0);
+  timings.set("timings.", std::map<std::string, double>{{"solve", 0.25}, {"assembly", 0.5}});
+  testing::check(timings.to_string() == "{\n  \"timings\": {\n    \"solve\": 0.25,\n    \"assembly\": 0.5\n  }\n}\n",
+                 "JSON summary: a map under a prefix:\n" + timings.to_string());
   return testing::finish();
 }

@@ -36,6 +36,11 @@ namespace dealvem
       set(path, std::string(value));
     }
 
+    /// Set every number of @p values at @p prefix followed by its key
+    /// ("timings." and a StageTimer's stages: "timings.solve", ...).
+    void
+    set(const std::string &prefix, const std::map<std::string, double> &values);
+
     /// The JSON text.
     std::string
     to_string() const;
