@@ -135,8 +135,8 @@ main()
                         "an infinite number is refused by the JSON summary, naming its key");
   testing::check_throws([&] { json.set("steps.1.force_x", std::nan("")); },
                         "JSON summary: the value of 'steps.1.force_x' is NaN", "... and so is NaN");
-  // a map of numbers under a prefix (a StageTimer's stages), replacing an
-  // earlier value and keeping the map's order after the existing keys
+  // a map of numbers under a prefix (a StageTimer's stages): an earlier key
+  // keeps its place with the new value, new keys follow in the map's order
   JsonSummary timings;
   timings.set("timings.solve", 9.0);
   timings.set("timings.", std::map<std::string, double>{{"solve", 0.25}, {"assembly", 0.5}});
