@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Configure (Release) and build dealvem, its examples, benchmarks and tests in
-# ./build (override with BUILD_DIR). Uses both cores; ccache when present.
+# ./build (override with BUILD_DIR). Uses both cores (ccache only with -DDEALVEM_USE_CCACHE=ON).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$ROOT/build}"

@@ -9,7 +9,7 @@
 # A project using find_package(dealvem) then gets the one matching its
 # CMAKE_BUILD_TYPE (README, "Using dealvem from your own CMake project").
 #   usage: scripts/install.sh PREFIX
-#   JOBS=n  parallel compile jobs (default: all cores); ccache when present
+#   JOBS=n  parallel compile jobs (default: all cores)
 set -euo pipefail
 if [ $# -ne 1 ]; then
   echo "usage: $0 PREFIX" >&2

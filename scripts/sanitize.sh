@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sanitizer run: configure a Debug build against deal.II's debug library with
 # AddressSanitizer + LeakSanitizer + UBSan (-DDEALVEM_SANITIZE=ON) in
-# ./build-sanitize (override with BUILD_DIR), build it (ccache when present)
+# ./build-sanitize (override with BUILD_DIR), build it
 # and run the ctest suite without the labels "long" and "sanitize_slow"
 # (tests too slow at -O0 with the sanitizers; they run in the normal suite;
 # their programs are not even built here unless -DDEALVEM_SANITIZE_SLOW=ON is

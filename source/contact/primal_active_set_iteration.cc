@@ -154,6 +154,9 @@ namespace dealvem
     const bool                          springs;
     const double                        penalty;
     const unsigned int                  max_solves;
+    /// The solves and rigid steps a polish (solve_stick_on_closed()) may
+    /// take before it gives up.
+    static constexpr unsigned int polish_solve_limit = 30;
     Result                              result;
     double                              work_scale = 0;
     double                              max_weight = 0;
@@ -863,8 +866,22 @@ namespace dealvem
 
     // 2. and 3.: the primal active-set iteration from the minimiser over W
     single = start != nullptr;
+    // the model with stick at closed pairs only (solve_stick_on_closed()) is
+    // not convex: its energy may rise, and its working sets may come back.
+    // A polish that meets a working set again at a minimiser, or that has
+    // not settled after polish_solve_limit solves, gives up (converged =
+    // false; the caller keeps the convex solution), so that it costs a
+    // bounded number of solves instead of the limit of the convex method
+    std::set<std::vector<bool>> minimiser_sets;
     for (;;)
       {
+        if (owner.on_closed_only &&
+            (result.n_solves + result.n_rigid_steps >= polish_solve_limit ||
+             (at_minimiser && !minimiser_sets.insert(W).second)))
+          {
+            result.converged = false;
+            return result;
+          }
         check_limit();
         if (at_minimiser && test_minimiser())
           return result;
