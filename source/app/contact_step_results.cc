@@ -136,9 +136,9 @@ namespace dealvem
         r.shear           = recovered_shear[i];
         r.normal          = p.normal;
         // (the convex stick model of the globalized solve ties open pairs
-        // tangentially too: their tangential force counts)
-        r.tangential_traction =
-          (as.active[i] || as.convex_stick_model ? tangential_force[i] / p.weight : 0.);
+        // tangentially too, and the fast path the pairs it tied after a
+        // cycle: their tangential force counts)
+        r.tangential_traction = (as.tied_tangentially(i) ? tangential_force[i] / p.weight : 0.);
         if (friction)
           {
             r.slip_increment      = fr.slip_increment[i];
@@ -147,7 +147,7 @@ namespace dealvem
                                                                     "slip");
           }
         else
-          r.status = (as.active[i] ? "closed" : as.convex_stick_model ? "open-tied" : "open");
+          r.status = (as.active[i] ? "closed" : as.tied_tangentially(i) ? "open-tied" : "open");
         step_result.n_open += (!r.active);
         step_result.n_stick += (r.active && r.status != "slip");
         step_result.n_slip += (r.status == "slip");
@@ -364,7 +364,7 @@ namespace dealvem
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const auto                 dofs = d.contact->pair_dofs(i);
-        const bool                 transmits = d.solve_result.active[i] || d.solve_result.convex_stick_model;
+        const bool                 transmits = d.solve_result.tied_tangentially(i);
         if (transmits)
           for (unsigned int c = 0; c < 2; ++c)
             couplings.emplace_back(dofs[c], dofs[2 + c]);

@@ -83,10 +83,12 @@ namespace dealvem
           {
             matrix.copy_from(system_matrix);
             rhs = system_rhs;
-            contact.assemble(constraints, st.active, matrix, rhs);
+            // (tangentially: the closed pairs and those tied after a cycle)
+            const std::vector<bool> tangential = ActiveSetUpdate<dim>::tangential_set(st);
+            contact.assemble(constraints, st.active, tangential, matrix, rhs);
             // the condensed solver preconditions stick springs by tying them
             if (solver.get_type() == SaddlePointSolver::Type::cg_amg_constraints)
-              solver.set_stick_directions(contact.stick_penalty_rows(constraints, st.active));
+              solver.set_stick_directions(contact.stick_penalty_rows(constraints, tangential));
             solver.set_context(name + " " + std::to_string(st.n_iterations + 1));
             solver.solve(matrix, n, x, rhs);
             constraints.distribute(x);
@@ -106,7 +108,9 @@ namespace dealvem
                   {
                     stops = true;
                   }
-                if (!stops)
+                // (tying pairs after a cycle changes the model: decided on
+                // the completed solve too)
+                if (!stops && trial.n_tie_rounds == st.n_tie_rounds)
                   {
                     st = std::move(trial);
                     continue;
@@ -234,8 +238,10 @@ namespace dealvem
     result.n_active_history     = state.n_active_history;
     result.n_closed_for_support = state.n_closed_for_support;
     result.n_accelerated        = state.n_accelerated;
+    result.tied_open            = state.tied_open;
     if (state.converged)
       return result;
+    result.tied_open.clear(); // (the globalized solve has its own model)
 
     // the fast path gave up: the globalized solve (only with the assembled
     // matrix at hand; a distributed solver assembles its own)

@@ -260,6 +260,8 @@ namespace dealvem
 
     ++state.n_iterations;
     const unsigned int it       = state.n_iterations;
+    const bool ties_on_cycle = (settings.tangential == ContactSettings::Tangential::penalty ||
+                                settings.tangential == ContactSettings::Tangential::multipliers);
     unsigned int       n_active = 0;
     for (const bool a : state.active)
       n_active += a;
@@ -343,6 +345,25 @@ namespace dealvem
                       "apart for the load to close the gap; hold the body by Dirichlet, roller or point "
                       "constraints, or check the sign of the loads.");
       }
+    if (plain && state.visited.count(next) > 0 && ties_on_cycle && state.n_tie_rounds < max_tie_rounds)
+      {
+        // the stick model cycles: tie the pairs this step switches (see
+        // State::tied_open) and go on with the same set, so that the
+        // next solve is one of the changed model
+        if (state.tied_open.size() != n_pairs)
+          state.tied_open.assign(n_pairs, false);
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          if (next[i] != state.active[i])
+            state.tied_open[i] = true;
+        ++state.n_tie_rounds;
+        state.visited.clear();
+        if (it >= settings.max_active_set_iterations)
+          return fail("The contact active set did not settle within " +
+                      std::to_string(settings.max_active_set_iterations) +
+                      " iterations (active pairs per iteration:" + history_string(state) +
+                      "). Increase 'Maximum active set iterations' or check the loads and supports.");
+        return false;
+      }
     if (plain && state.visited.count(next) > 0)
       {
         return fail("The contact active set cycles: the set of iteration " + std::to_string(it + 1) +
@@ -383,6 +404,16 @@ namespace dealvem
     for (unsigned int i = 0; i < pairs.size(); ++i)
       multipliers[i] = rows.normal_multiplier(x, i);
     return update(state, contact.gaps(x), multipliers);
+  }
+
+  template <int dim>
+  std::vector<bool>
+  ActiveSetUpdate<dim>::tangential_set(const State &state)
+  {
+    std::vector<bool> t = state.active;
+    for (unsigned int i = 0; i < t.size() && i < state.tied_open.size(); ++i)
+      t[i] = t[i] || state.tied_open[i];
+    return t;
   }
 
   template class ActiveSetUpdate<2>;

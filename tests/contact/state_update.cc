@@ -100,12 +100,65 @@ namespace
                    "a penetration of 1e-14 of the scale does not close a pair");
   }
 
+  // With stick (Tangential penalty or multipliers) a plain step that
+  // would return to a visited set ties the pairs it switches tangentially
+  // (State::tied_open) and keeps the set; after max_tie_rounds such
+  // rounds the next cycle is the failure.
+  void
+  test_stick_cycle_ties()
+  {
+    for (const auto t : {ContactSettings::Tangential::penalty, ContactSettings::Tangential::multipliers})
+      {
+        ContactSettings settings;
+        settings.accelerate_active_set = false;
+        settings.tangential            = t;
+        const auto               pairs = make_pairs({0, 0.1, 0.1}, {1, 1, 1});
+        const ActiveSetUpdate<2> update(pairs, settings, 1.);
+        auto                     state = update.initial_state();
+        // A = 100 -> B = 010, then B would go back to A
+        update.update(state, {0, -0.1, 0.1}, {1, 0, 0});
+        const bool stops = update.update(state, {-0.1, 0, 0.1}, {0, 1, 0});
+        testing::check(!stops && !state.converged && to_string(state.active) == "010" &&
+                         to_string(state.tied_open) == "110" && state.n_tie_rounds == 1 &&
+                         state.visited.empty() && state.failure.empty(),
+                       "stick: A -> B -> A ties the two switching pairs (110), keeps B (010) and goes on");
+        testing::check(ActiveSetUpdate<2>::tangential_set(state) == std::vector<bool>{true, true, false},
+                       "the tangential set: active or tied (110)");
+        // the same two solutions again, each sending A to B and B to A:
+        // every cycle is one more round, until the rounds are spent and the
+        // next cycle is the failure
+        const auto step = [&](ActiveSetUpdate<2>::State &st) {
+          return to_string(st.active) == "100" ? update.update(st, {0, -0.1, 0.1}, {1, 0, 0}) :
+                                                 update.update(st, {-0.1, 0, 0.1}, {0, 1, 0});
+        };
+        for (unsigned int round = 1; round < ActiveSetUpdate<2>::max_tie_rounds; ++round)
+          {
+            step(state);
+            step(state);
+          }
+        testing::check(state.n_tie_rounds == ActiveSetUpdate<2>::max_tie_rounds && !state.converged &&
+                         to_string(state.tied_open) == "110",
+                       "three rounds of ties (got " + std::to_string(state.n_tie_rounds) + "), the same pairs tied");
+        testing::check_throws(
+          [&]() {
+            auto st = state;
+            step(st);
+            step(st);
+          },
+          "The contact active set cycles",
+          "after three rounds of ties a cycle is the failure");
+      }
+  }
+
   void
   test_active_set_failures()
   {
     ContactSettings settings;
     settings.accelerate_active_set = false;
-    const auto pairs               = make_pairs({0, 0.1, 0.1}, {1, 1, 1});
+    // (frictionless: with stick a cycle first ties the switching pairs,
+    // test_stick_cycle_ties)
+    settings.tangential = ContactSettings::Tangential::frictionless;
+    const auto pairs    = make_pairs({0, 0.1, 0.1}, {1, 1, 1});
     const ActiveSetUpdate<2> update(pairs, settings, 1.);
     // A = 100 -> B = 010 -> A
     testing::check_throws(
@@ -226,6 +279,7 @@ int
 main()
 {
   test_active_set_rule();
+  test_stick_cycle_ties();
   test_active_set_failures();
   test_acceleration();
   test_friction_rule();

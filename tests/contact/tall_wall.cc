@@ -10,20 +10,22 @@
 // tangential stick by multipliers (the model of benchmark_assembly, whose
 // 100-block wall converges on the fast path).
 //
-// On this wall the fast path's active set cycles (head-joint pairs near the
-// wall's ends close, come out in tension because the stick holds them, open,
-// and penetrate again: the model with stick at closed pairs only is not
-// convex), the globalized solve converges on the convex model (stick at
-// every pair), and the polish back to stick at closed pairs only meets a
-// working set it has seen. Before the polish was bounded it went on to
-// its limit of 6 solves per pair (12 000 solves, tens of minutes); now
-// it gives up after a repeated set or 30 solves, and the convex solution is
-// the answer, reported as such ("open-tied" pairs, the report's
-// "convex stick model kept"). Asserted:
-//   1. the solve ends, within the test's timeout of 120 s (Release: 4 s);
-//   2. some pair ends "open-tied" (the convex model was kept: its open pairs
-//      are tied tangentially), every pair's status is one of the three of
-//      the stick models;
+// On this wall the fast path's plain active set cycles: head-joint pairs
+// near the wall's ends close, come out in tension because the stick holds
+// them, open, are free tangentially and penetrate again (the model with
+// stick at closed pairs only is not convex). Before, the fast path gave up
+// there, the globalized solve converged on the convex model (stick at
+// every pair), and its polish back to stick at closed pairs only ran to
+// its limit of 6 solves per pair (12 000 solves, tens of minutes). Now the
+// pairs whose switching closes the cycle are held tangentially from then
+// on, open or closed (ActiveSetUpdate::State::tied_open), and the fast
+// path converges (measured: 12 iterations, 11 pairs tied, 8 of them end
+// open). Asserted:
+//   1. the solve ends, within the test's timeout of 120 s (Release: 3 s);
+//   2. the fast path's answer, not the convex model's: some pairs end open
+//      and free ("open"), and at most 20 (measured 8) end "open-tied"
+//      (the convex model would tie all 442 open ones); every status is one
+//      of the three of the stick models;
 //   3. the contact conditions of the solution, relative to the largest
 //      nodal force F and the largest displacement U: no penetration (gap
 //      >= -1e-9 U), no tension at closed pairs (nodal force -lambda >=
@@ -157,10 +159,9 @@ main(int argc, char **argv)
   std::cout << "statuses: " << n_closed << " closed, " << n_open << " open, " << n_open_tied << " open-tied"
             << std::endl;
   check(n_other == 0, "every pair is closed, open or open-tied");
-  check(n_open_tied > 0 && n_open == 0,
-        "the convex model was kept (open pairs tied tangentially): the polish to stick at closed pairs "
-        "only gave up");
-  check(n_closed > 0 && n_open_tied > 0, "some pairs closed, some open");
+  check(n_open > 0 && n_open_tied > 0 && n_open_tied <= 20,
+        "the fast path's answer: pairs open and free, at most 20 open-tied (the pairs of the cycle)");
+  check(n_closed > 0, "some pairs closed");
 
   // 3. the contact conditions
   double F = 0, U = 0;

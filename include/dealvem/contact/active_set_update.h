@@ -109,7 +109,30 @@ namespace dealvem
       /// ContactSettings::accelerate_active_set, and is off for the rest of
       /// the solve once a pair it released penetrates again.
       bool              extrapolate = false;
+      /// Per pair (empty: none), whether it is held tangentially although
+      /// open. With stick (Tangential penalty or multipliers, not Coulomb)
+      /// the model of the fast path, stick at closed pairs only, is not
+      /// convex, and its plain update can cycle: a pair that closes is held,
+      /// comes out in tension, opens, is free and penetrates again. When a
+      /// plain step would return to a visited set, the pairs that step
+      /// switches are tied tangentially from then on, open or closed (the
+      /// convex model on those pairs only; a pair tied once stays tied),
+      /// the visited sets are forgotten (the model has changed) and the
+      /// iteration goes on, at most max_tie_rounds times; the next cycle
+      /// is a failure as before. The driver must enforce the tangential
+      /// constraint where active or tied_open holds.
+      std::vector<bool> tied_open;
+      /// How many times pairs were tied after a cycle.
+      unsigned int n_tie_rounds = 0;
     };
+
+    /// The cycles of the plain update that tie pairs (State::tied_open)
+    /// before a cycle is a failure.
+    static constexpr unsigned int max_tie_rounds = 3;
+
+    /// The pairs held tangentially in @p state: active or tied_open.
+    static std::vector<bool>
+    tangential_set(const State &state);
 
     /**
      * @p pairs (copied; e.g. ContactAssembler::get_pairs()), @p settings

@@ -77,6 +77,18 @@ namespace dealvem
     /// solve (open pairs tied tangentially) because the polish to the
     /// model of the fast path did not converge.
     bool convex_stick_model = false;
+    /// Per pair (empty: none), whether the fast path held the pair
+    /// tangentially although it is open: with stick, the pairs whose
+    /// switching made the active set cycle (ActiveSetUpdate::State::tied_open).
+    std::vector<bool> tied_open;
+
+    /// Whether pair @p i transmits a tangential force: closed, or held
+    /// tangentially while open (the convex stick model, or tied_open).
+    bool
+    tied_tangentially(const unsigned int i) const
+    {
+      return active[i] || convex_stick_model || (i < tied_open.size() && tied_open[i]);
+    }
     /// @}
 
     /// @name Coulomb friction (FrictionSolver)
