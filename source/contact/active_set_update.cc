@@ -333,6 +333,15 @@ namespace dealvem
       state.failure = message;
       return true;
     };
+    // after a step that goes on: the iteration limit
+    const auto go_on = [&]() {
+      if (it >= settings.max_active_set_iterations)
+        return fail("The contact active set did not settle within " +
+                    std::to_string(settings.max_active_set_iterations) +
+                    " iterations (active pairs per iteration:" + history_string(state) +
+                    "). Increase 'Maximum active set iterations' or check the loads and supports.");
+      return false;
+    };
     if (support != nullptr)
       {
         const std::string free = support->free_motions(next);
@@ -357,12 +366,7 @@ namespace dealvem
             state.tied_open[i] = true;
         ++state.n_tie_rounds;
         state.visited.clear();
-        if (it >= settings.max_active_set_iterations)
-          return fail("The contact active set did not settle within " +
-                      std::to_string(settings.max_active_set_iterations) +
-                      " iterations (active pairs per iteration:" + history_string(state) +
-                      "). Increase 'Maximum active set iterations' or check the loads and supports.");
-        return false;
+        return go_on();
       }
     if (plain && state.visited.count(next) > 0)
       {
@@ -379,12 +383,7 @@ namespace dealvem
         state.n_opened += (!next[i] && state.active[i]);
       }
     state.active = next;
-    if (it >= settings.max_active_set_iterations)
-      return fail("The contact active set did not settle within " +
-                  std::to_string(settings.max_active_set_iterations) +
-                  " iterations (active pairs per iteration:" + history_string(state) +
-                  "). Increase 'Maximum active set iterations' or check the loads and supports.");
-    return false;
+    return go_on();
   }
 
 
