@@ -496,8 +496,9 @@ namespace Step8
     double             H_min = 0, H_max = 0; // admissible thrusts of the limit analysis
     double             u_max = 0;            // largest displacement
     unsigned int       iterations = 0, dofs = 0, pairs = 0;
-    // the solve fell back to the convex stick model (open pairs tied
-    // tangentially), see the results
+    // some pairs end open but tied tangentially (status open-tied): the
+    // solve fell back to the convex stick model, or the fast path held the
+    // pairs of a cycle; see the results
     bool               convex = false;
     // a collapse: the hinges of the mechanism (joint, +1 extrados or -1
     // intrados), its work and its largest violation of the conditions
@@ -604,7 +605,7 @@ namespace Step8
     // analysis for this thickness.
     for (const auto &p : r.pairs)
       rep.convex = rep.convex || p.status == "open-tied";
-    // (the convex stick model lets open pairs carry shear, which moves the
+    // (an open-tied pair carries shear although open, which moves the
     // line of action of a joint's force: the centre-of-pressure test is
     // Heyman's and applies to the model with free open pairs only). The
     // tolerance 1e-10: where a hinge sits at a corner of the joint, the
@@ -949,7 +950,7 @@ namespace Step8
       }
     std::cout << std::setw(3) << N << " | " << degree << (joint_friction > 0 ? "*" : " ") << "| " << std::fixed << std::setprecision(5) << t_la << " | "
               << line << " | " << (t_all_stand > 0.1205 ? std::string("none") : std::to_string(t_all_stand).substr(0, 5))
-              << (n_convex > 0 ? " (" + std::to_string(n_convex) + " with the convex stick model)" : std::string())
+              << (n_convex > 0 ? " (" + std::to_string(n_convex) + " with open-tied pairs)" : std::string())
               << std::endl;
     return t_all_stand;
   }
