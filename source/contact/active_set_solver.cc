@@ -177,7 +177,10 @@ namespace dealvem
       loop.run(polish, pstate, "polish of the globalized solve, iteration");
       result.n_polish_iterations += pstate.n_iterations;
       if (pstate.converged)
-        result.active = pstate.active;
+        {
+          result.active    = pstate.active;
+          result.tied_open = pstate.tied_open; // (pairs it held after a cycle)
+        }
       else
         {
           x                         = convex;
