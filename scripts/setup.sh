@@ -24,5 +24,14 @@ fi
 SUDO=""
 if [ "$(id -u)" != "0" ]; then SUDO="sudo"; fi
 echo "setup: installing$missing"
+dpkg_options=()
+if [ "${CI:-}" = "true" ]; then
+  # a throw-away CI machine: no fsync after every file dpkg unpacks, no
+  # documentation, manual pages or translations (about 600 packages; 287 s
+  # against 327 s for download and install in a fresh Debian 12 chroot)
+  dpkg_options=(-o Dpkg::Options::=--force-unsafe-io)
+  printf 'path-exclude /usr/share/doc/*\npath-exclude /usr/share/man/*\npath-exclude /usr/share/locale/*\n' \
+    | $SUDO tee /etc/dpkg/dpkg.cfg.d/01-dealvem-ci-nodoc > /dev/null
+fi
 $SUDO apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${dpkg_options[@]}" $missing

@@ -14,7 +14,7 @@ namespace dealvem
 {
   namespace
   {
-    const std::string section = "Boundary conditions and loads";
+    const std::string loads_section = "Boundary conditions and loads";
   } // namespace
 
 
@@ -52,7 +52,7 @@ namespace dealvem
   {
     for (const auto &entry : InputParsing::split(value, ';'))
       {
-        const std::string name   = section + "/Rotation about centre entry '" + entry + "'";
+        const std::string name   = loads_section + "/Rotation about centre entry '" + entry + "'";
         const std::string syntax = "expected 'id : cx, cy : angle a' or 'id : cx, cy : torque M'";
         const auto        fields = InputParsing::split(entry, ':', true);
         AssertThrow(fields.size() == 3, dealii::ExcMessage("Parameter '" + name + "': " + syntax + "."));

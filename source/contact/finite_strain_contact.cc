@@ -19,7 +19,7 @@ namespace dealvem
   {
     // J v: v turned by +90 degrees
     dealii::Tensor<1, 2>
-    turn_left(const dealii::Tensor<1, 2> &v)
+    quarter_turn(const dealii::Tensor<1, 2> &v)
     {
       dealii::Tensor<1, 2> r;
       r[0] = -v[1];
@@ -164,7 +164,7 @@ namespace dealvem
           if (dist < nearest && tangent.norm() > 0)
             {
               nearest                     = dist;
-              dealii::Tensor<1, 2> normal = turn_left(tangent / tangent.norm());
+              dealii::Tensor<1, 2> normal = quarter_turn(tangent / tangent.norm());
               if (normal * n_origin < 0)
                 normal = -normal;
               gap            = (x_slave - q) * normal;
@@ -303,7 +303,7 @@ namespace dealvem
         d.master_node = node_of(i, true);
         d.slave_node  = node_of(i, false);
         d.n0          = pairs[i].normal;
-        d.t0          = turn_left(d.n0);
+        d.t0          = quarter_turn(d.n0);
         const dealii::Tensor<1, 2> a0 = base_location(d.slave_node) - base_location(d.master_node);
         d.tied_normal     = a0 * d.n0;
         d.tied_tangential = a0 * d.t0;
@@ -519,7 +519,7 @@ namespace dealvem
     std::vector<dealii::Tensor<1, 2>> chords;
     const double                      theta = turn(d, u, &chords);
     const dealii::Tensor<1, 2>        e     = rotate(tang ? d.t0 : d.n0, theta);
-    const dealii::Tensor<1, 2>        Je    = turn_left(e);
+    const dealii::Tensor<1, 2>        Je    = quarter_turn(e);
     const dealii::Tensor<1, 2>        a     = position(d.slave_node, u) - position(d.master_node, u);
     result.value                      = a * e - offset(d, tang);
 
@@ -542,7 +542,7 @@ namespace dealvem
     // gradient and Hessian in the variables
     std::vector<dealii::Tensor<1, 2>> w(d.chords.size());
     for (unsigned int s = 0; s < d.chords.size(); ++s)
-      w[s] = turn_left(chords[s]) / chords[s].norm_square();
+      w[s] = quarter_turn(chords[s]) / chords[s].norm_square();
     const double aJe = a * Je, ae = a * e;
     std::vector<dealii::Tensor<1, 2>> gv(n_var);
     gv[0] = e;

@@ -8,6 +8,7 @@
 // before the tooth up to the middle of its tip land) is written out; the
 // second half is its mirror image about the tooth's axis.
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <dealvem/base/number_string.h>
@@ -22,7 +23,6 @@ namespace dealvem
 
   namespace
   {
-    const double pi = 3.14159265358979323846;
 
     bool
     finite_non_negative(const double x)
@@ -39,9 +39,9 @@ namespace dealvem
     AssertThrow(std::isfinite(prm.module) && prm.module > 0,
                 fail("the module must be positive and finite, not " + number_string(prm.module) + "."));
     AssertThrow(prm.n_teeth >= 1, fail("the number of teeth must be at least 1."));
-    AssertThrow(std::isfinite(prm.pressure_angle) && prm.pressure_angle > 0 && prm.pressure_angle < pi / 4,
+    AssertThrow(std::isfinite(prm.pressure_angle) && prm.pressure_angle > 0 && prm.pressure_angle < dealii::numbers::PI / 4,
                 fail("the pressure angle must lie between 0 and 45 degrees, not " +
-                     number_string(prm.pressure_angle * 180 / pi) + " degrees."));
+                     number_string(prm.pressure_angle * 180 / dealii::numbers::PI) + " degrees."));
     AssertThrow(finite_non_negative(prm.addendum),
                 fail("the addendum coefficient must not be negative, not " + number_string(prm.addendum) + "."));
     AssertThrow(std::isfinite(prm.dedendum) && prm.dedendum > 0,
@@ -59,7 +59,7 @@ namespace dealvem
 
     const double m = prm.module, a = prm.pressure_angle, tan_a = std::tan(a), p = pitch();
     // the thickness at the pitch line and the straight flank's half width at height y
-    const double s_p        = m * (pi / 2 + 2 * prm.profile_shift * tan_a) - prm.backlash;
+    const double s_p        = m * (dealii::numbers::PI / 2 + 2 * prm.profile_shift * tan_a) - prm.backlash;
     const auto   half_width = [&](const double y) { return s_p / 2 - y * tan_a; };
     AssertThrow(s_p > 0, fail("the backlash " + number_string(prm.backlash) +
                               " thins the teeth to nothing (their thickness at the pitch line would be " +
@@ -91,7 +91,7 @@ namespace dealvem
                                      " does not fit on the flank: the fillet would reach the tip line."));
 
     root_length   = std::max(0., p / 2 - fillet_x);
-    fillet_length = rho * (pi / 2 - a);
+    fillet_length = rho * (dealii::numbers::PI / 2 - a);
     flank_length  = (y_tip - y_form) / std::cos(a);
     starts[0]     = 0;
     starts[1]     = root_length;
@@ -121,7 +121,7 @@ namespace dealvem
   double
   GearRack::pitch() const
   {
-    return pi * prm.module;
+    return dealii::numbers::PI * prm.module;
   }
 
 
@@ -211,7 +211,7 @@ namespace dealvem
     if (u <= starts[2])
       {
         // from straight below the centre (-pi/2) counter-clockwise to -alpha
-        const double rho = prm.root_fillet_radius * prm.module, phi = -pi / 2 + (u - starts[1]) / rho;
+        const double rho = prm.root_fillet_radius * prm.module, phi = -dealii::numbers::PI / 2 + (u - starts[1]) / rho;
         return {dealii::Point<2>(-fillet_x + rho * std::cos(phi), fillet_y + rho * std::sin(phi)),
                 dealii::Tensor<1, 2>({-std::sin(phi), std::cos(phi)})};
       }
@@ -261,7 +261,7 @@ namespace dealvem
     u[0] = std::min(q[0] + pitch() / 2, starts[1]);
     // fillet: the angle of q about the centre, clamped to the arc
     const double phi = std::atan2(q[1] - fillet_y, q[0] + fillet_x);
-    u[1]             = starts[1] + rho * (std::clamp(phi, -pi / 2, -a) + pi / 2);
+    u[1]             = starts[1] + rho * (std::clamp(phi, -dealii::numbers::PI / 2, -a) + dealii::numbers::PI / 2);
     // flank: the projection on the line, clamped to its ends
     const double v = (q[0] + form_x) * std::sin(a) + (q[1] - y_form) * std::cos(a);
     u[2]           = starts[2] + std::clamp(v, 0., flank_length);

@@ -188,8 +188,8 @@ namespace dealvem
           const std::size_t l = line();
           const double      v = real(what);
           AssertThrow(std::abs(v) <= max_coordinate,
-                      ExcInvalidMesh(at(l) + what + " is " + internal::number_string(v) + "; coordinates larger than " +
-                                     internal::number_string(max_coordinate) + " in magnitude are not supported."));
+                      ExcInvalidMesh(at(l) + what + " is " + dealvem::internal::number_string(v) + "; coordinates larger than " +
+                                     dealvem::internal::number_string(max_coordinate) + " in magnitude are not supported."));
           return v;
         }
 

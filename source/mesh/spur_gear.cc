@@ -8,6 +8,7 @@
 // mirror image. The rack's generation of the fillet is written in a fixed
 // frame where the rack rolls on the line y = r (the pitch point at (0, r)).
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
 
 #include <dealvem/base/number_string.h>
 #include <dealvem/mesh/spur_gear.h>
@@ -22,7 +23,6 @@ namespace dealvem
 
   namespace
   {
-    const double pi = 3.14159265358979323846;
 
     double
     involute_function(const double angle)
@@ -105,7 +105,7 @@ namespace dealvem
       const dealii::Point<2> e(d * std::tan(beta) + rho_f * std::sin(beta), r - d - rho_f * std::cos(beta));
       // tooth frame: the fixed frame's +y is the tooth frame's +x at zero
       // roll, and the gear has turned clockwise by the roll
-      return rotated(e, roll(beta) - pi / 2);
+      return rotated(e, roll(beta) - dealii::numbers::PI / 2);
     }
 
     /// The unrelieved involute of the upper flank at roll parameter t.
@@ -306,7 +306,7 @@ namespace dealvem
       g.ra           = g.r - m * (p.addendum + x); // the tip circle, inside
       g.rf           = g.r + m * (p.dedendum - x); // the root circle, outside
       g.rho_f        = p.rack_tip_radius * m;
-      const double s = m * (pi / 2 + 2 * x * std::tan(g.alpha)) - p.backlash; // the tooth on the reference circle
+      const double s = m * (dealii::numbers::PI / 2 + 2 * x * std::tan(g.alpha)) - p.backlash; // the tooth on the reference circle
       ok(s > 0, "the backlash allowance " + number_string(p.backlash) + " leaves no tooth.");
       // the flank's polar angle psi_b + inv(alpha_rho): s / (2 r) on the reference circle
       g.psi_b = s / (2 * g.r) - involute_function(g.alpha);
@@ -329,7 +329,7 @@ namespace dealvem
       g.fillet_a0                     = std::atan2(g.fillet_c[1], g.fillet_c[0]);
       const dealii::Tensor<1, 2> back = P - g.fillet_c;
       g.fillet_a1                     = std::atan2(back[1], back[0]);
-      g.fillet_a1 -= 2 * pi * std::round((g.fillet_a1 - g.fillet_a0) / (2 * pi));
+      g.fillet_a1 -= 2 * dealii::numbers::PI * std::round((g.fillet_a1 - g.fillet_a0) / (2 * dealii::numbers::PI));
       g.phi_root = g.fillet_a0;
       ok(g.phi_root < g.tau, "the root fillets of neighbouring teeth would cross (lower 'rack tip radius' " +
                                number_string(p.rack_tip_radius) + " or the backlash).");
@@ -388,8 +388,8 @@ namespace dealvem
     };
     ok(std::isfinite(p.module) && p.module > 0, "the module must be positive, not " + number_string(p.module) + ".");
     ok(p.n_teeth >= 5, "a gear needs at least 5 teeth, not " + std::to_string(p.n_teeth) + ".");
-    ok(std::isfinite(p.pressure_angle) && p.pressure_angle > 0 && p.pressure_angle < 35 * pi / 180,
-       "the pressure angle must lie in (0, 35) degrees, not " + number_string(p.pressure_angle * 180 / pi) +
+    ok(std::isfinite(p.pressure_angle) && p.pressure_angle > 0 && p.pressure_angle < 35 * dealii::numbers::PI / 180,
+       "the pressure angle must lie in (0, 35) degrees, not " + number_string(p.pressure_angle * 180 / dealii::numbers::PI) +
          " degrees.");
     ok(std::isfinite(p.profile_shift) && std::abs(p.profile_shift) < 2,
        "the profile shift coefficient must lie in (-2, 2), not " + number_string(p.profile_shift) + ".");
@@ -404,7 +404,7 @@ namespace dealvem
 
     const double m = p.module;
     g.alpha        = p.pressure_angle;
-    g.tau          = pi / p.n_teeth;
+    g.tau          = dealii::numbers::PI / p.n_teeth;
     g.r            = m * p.n_teeth / 2;
     g.rb           = g.r * std::cos(g.alpha);
     ok(p.internal || p.rim_radius == 0, "the rim radius is for internal gears (set 'internal'); an external gear "
@@ -421,7 +421,7 @@ namespace dealvem
     g.rf           = g.r - m * (p.dedendum - p.profile_shift);
     g.rho_f        = p.rack_tip_radius * m;
     g.d            = m * (p.dedendum - p.profile_shift) - g.rho_f;
-    const double s = m * (pi / 2 + 2 * p.profile_shift * std::tan(g.alpha)) - p.backlash;
+    const double s = m * (dealii::numbers::PI / 2 + 2 * p.profile_shift * std::tan(g.alpha)) - p.backlash;
     ok(s > 0, "the backlash allowance " + number_string(p.backlash) + " leaves no tooth.");
     g.psi_b = s / (2 * g.r) + involute_function(g.alpha);
     ok(g.rf > 0, "the root radius " + number_string(g.rf) + " is not positive (dedendum too large).");
@@ -430,7 +430,7 @@ namespace dealvem
 
     // the form radius: where the rack corner's circle leaves its straight
     // flank, whose normal makes the angle alpha with the rolling line
-    g.beta_max = pi / 2 - g.alpha;
+    g.beta_max = dealii::numbers::PI / 2 - g.alpha;
     const dealii::Point<2> e_alpha(g.d * std::tan(g.beta_max) + g.rho_f * std::sin(g.beta_max),
                                    g.r - g.d - g.rho_f * std::cos(g.beta_max));
     g.rho_form = e_alpha.norm();
@@ -451,7 +451,7 @@ namespace dealvem
     // place the rack so that its straight flank cuts this flank: the corner
     // leaves the straight flank (beta = beta_max) at the flank's point at the form radius
     const double psi_form = g.psi_b - involute_function(std::atan(g.t_form));
-    g.c_x      = g.d * std::tan(g.beta_max) - g.r * (psi_form - (std::atan2(e_alpha[1], e_alpha[0]) - pi / 2));
+    g.c_x      = g.d * std::tan(g.beta_max) - g.r * (psi_form - (std::atan2(e_alpha[1], e_alpha[0]) - dealii::numbers::PI / 2));
     g.phi_root = g.roll(0.);
     ok(g.phi_root < g.tau,
        "the rack tip is too round for the tooth space: the fillets of neighbouring teeth would cross (lower "
@@ -558,7 +558,7 @@ namespace dealvem
   double
   SpurGear::base_pitch() const
   {
-    return pi * impl->prm.module * std::cos(impl->alpha);
+    return dealii::numbers::PI * impl->prm.module * std::cos(impl->alpha);
   }
 
   double

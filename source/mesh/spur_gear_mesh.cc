@@ -9,6 +9,7 @@
 // gear's outline coordinate, the circular faces a polar manifold, the cells
 // transfinite interpolation.
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold.h>
 #include <deal.II/grid/manifold_lib.h>
@@ -28,7 +29,6 @@ namespace dealvem
 
   namespace
   {
-    const double pi = 3.14159265358979323846;
 
     dealii::Point<2>
     polar(const double radius, const double angle)
@@ -309,7 +309,7 @@ namespace dealvem
                       const dealii::Tensor<1, 2> m       = face->center() - prm.center;
                       const double               a0      = prm.rotation + 2 * tau * first + (n - 1.) * tau;
                       const double               angle   = std::atan2(m[1], m[0]) - a0;
-                      const double               wrapped = angle - 2 * pi * std::round(angle / (2 * pi));
+                      const double               wrapped = angle - 2 * dealii::numbers::PI * std::round(angle / (2 * dealii::numbers::PI));
                       face->set_boundary_id(wrapped < 0 ? 2 : 3);
                     }
                 }

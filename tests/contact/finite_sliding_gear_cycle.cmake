@@ -6,5 +6,5 @@ set_tests_properties(${_test} PROPERTIES LABELS "contact;sanitize_slow")
 # One base pitch in 16 roll angles (both double-contact zones, a pair
 # leaving and one entering), 54k DoFs: 13.6 min of CPU in Release (measured:
 # torque within 0.047 %, shares within 3.2e-4, peak pressure within 1.3 %).
-add_test(NAME contact/finite_sliding_gear_cycle-pitch COMMAND ${_target} --pitch WORKING_DIRECTORY ${_workdir})
+add_test(NAME contact/finite_sliding_gear_cycle-pitch COMMAND ${_test_command} --pitch WORKING_DIRECTORY ${_workdir})
 set_tests_properties(contact/finite_sliding_gear_cycle-pitch PROPERTIES LABELS "contact;long" TIMEOUT 7200)

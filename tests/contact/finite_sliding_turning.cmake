@@ -4,5 +4,5 @@
 set_tests_properties(${_test} PROPERTIES LABELS "contact;sanitize_slow")
 # The ring-on-shaft study (steps of 5, 15 and 30 degrees; doc/architecture.md,
 # "Curved finite sliding"), about a minute: label "long".
-add_test(NAME contact/finite_sliding_turning-study COMMAND ${_target} --study WORKING_DIRECTORY ${_workdir})
+add_test(NAME contact/finite_sliding_turning-study COMMAND ${_test_command} --study WORKING_DIRECTORY ${_workdir})
 set_tests_properties(contact/finite_sliding_turning-study PROPERTIES LABELS "contact;long")

@@ -52,7 +52,7 @@
 #include <string>
 #include <vector>
 
-#include "tests.h"
+#include "../tests.h"
 
 using namespace dealvem;
 using P = dealii::Point<2>;
