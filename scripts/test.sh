@@ -6,4 +6,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$ROOT/scripts/setup.sh" --tests
 bash "$ROOT/scripts/build.sh"
 cd "${BUILD_DIR:-$ROOT/build}"
+# programs started without mpirun: MPI as a singleton without Open MPI's
+# helper daemon (scripts/sanitizer-env.sh)
+export OMPI_MCA_ess_singleton_isolated=1
 ctest -LE long --output-on-failure -j "${JOBS:-$(nproc)}" --timeout 900

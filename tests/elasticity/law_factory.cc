@@ -82,10 +82,10 @@ main()
     [] {
       LawFactory::add({"elastic", {"LINEAR"}, false, [](double E, double nu, ElasticMaterial::Model m) {
                          return std::shared_ptr<const ConstitutiveLaw<2>>(std::make_shared<const ElasticMaterial>(E, nu, m));
-                       }});
+                       }, ""});
     },
     "the name 'linear' is taken by the law 'linear'", "a taken alias is refused");
-  testing::check_throws([] { LawFactory::add({"no create", {}, false, nullptr}); }, "has no create function",
+  testing::check_throws([] { LawFactory::add({"no create", {}, false, nullptr, ""}); }, "has no create function",
                         "a law without create function is refused");
   return testing::finish();
 }
