@@ -18,7 +18,7 @@
 // point; p_b = 2.952 the base pitch; the path of contact runs from s_A =
 // -2.451 to s_E = 2.298, single contact in [-0.654, 0.501]). The driving
 // flanks of every tooth pair whose point comes within 0.3 of the path
-// during the run are graded to 0.01 over the band of radii that point
+// during the run are graded to 0.005 over the band of radii that point
 // crosses (and 0.03 beyond).
 //
 // Finite sliding (FiniteSliding, Neo-Hooke with the same E and nu): the
@@ -47,7 +47,8 @@
 // that torque and the peak of the recovered contact pressure. Asserted:
 // every step converges; the torque within 1 % (issue 41's figure); each
 // pair's share within 0.01 (of the whole torque); the peak pressure within
-// 2 % on each zone that is resolved (a / h >= 8, a Hertz's half-width with
+// 1 % (issue 41's figure) on each zone that is resolved (a / h >= 8, a
+// Hertz's half-width with
 // the involutes' local radii for the pair's force, h the edge length of
 // its closed zone, in both models) and clear of the ends of the path
 // (where a tooth pair takes up or gives off its load, its zone is small
@@ -57,25 +58,25 @@
 //
 // Default: s from -1.16 to -0.96, 3 roll angles: tooth pair 1 gives off
 // its last tenth of the load on the pinion's relief and leaves contact
-// (15k DoFs, 3 pairing passes and 16-26 Newton updates a step, 40 s of CPU
-// in Release). Measured: the torque within 0.008 %, pair 1's share 0.0861
-// against 0.0864 at s = -1.16 and nothing at -1.06 in either model; the
-// peak pressure on pair 0 -0.87 %, +1.5 %, +0.91 % (a/h 9.5-10.9). The
-// peak pressures miss issue 41's 1 % by half a percent: at a/h of 10 the
-// two insertions (current against reference configuration) place the
-// nodes at the peak differently, as the single-contact study of the
-// earlier version of this test found (-0.94 to +0.71 %); graded to 0.007
-// the meshes are the same (refine_toward() halves the coarse cells), and
-// 0.005 (twice the DoFs) was not tried.
+// (23k DoFs, 3 pairing passes and 19-27 Newton updates a step, 37 s of CPU
+// in Release). Measured: the torque within 0.024 %, pair 1's share 0.0860
+// against 0.0863 at s = -1.16 and nothing at -1.06 in either model; the
+// peak pressure on pair 0 -0.63 %, +0.055 %, -0.48 % (a/h 18.7-21.4).
+// With the flanks graded to 0.01 (15k DoFs, --h 0.01) the peaks differed
+// by -0.87 %, +1.5 %, +0.91 % (a/h 9.5-10.9): the two insertions (current
+// against reference configuration) place the nodes at the peak
+// differently, by an amount that halves with the flank cells.
 // With --pitch (ctest label "long"): one base pitch, s from -1.553 to
 // 1.399 (the zone of single contact in the middle, tooth pair 1 leaving at
 // the start and pair -1 entering at the end), 16 roll angles (0.197 mm, 4.7
 // contact half-widths, a step; 54k DoFs, 3 pairing passes and 16-24
 // Newton updates a step, one cut-back; 13.6 min of CPU in Release).
-// Measured: pair 1 leaves between s = -1.16 and -0.96, pair -1 enters
+// Measured with the flanks graded to 0.01 (--pitch --h 0.01, 54k DoFs):
+// pair 1 leaves between s = -1.16 and -0.96, pair -1 enters
 // between 0.81 and 1.01 (both models); the torque within 0.047 %, the
 // shares within 3.2e-4, the peak pressures of the 16 resolved zones within
-// -1.0 to +1.3 %.
+// -1.0 to +1.3 % (the 1 % asserted now is for the default 0.005, which has
+// not been run over the whole pitch: about twice the CPU).
 // --angles N, --from S, --to S, --s-max S (from -S to S), --h H,
 // --margin M, --relief C, --tolerance T and --theta T change the settings
 // for other studies.
@@ -135,7 +136,7 @@ namespace
     double       s_first  = -1.16; // the contact point of pinion tooth 0 runs from s_first ...
     double       s_last   = -0.96; // ... to s_last
     unsigned int n_angles = 3;     // roll angles (the steps after the first)
-    double       flank_h  = 0.01; // cell size on the graded flanks
+    double       flank_h  = 0.005; // cell size on the graded flanks
     double       margin   = 0.03; // the graded band reaches this far (radius) beyond the contact path
     // FiniteSliding's pairing tolerance: partners of the active pairs within
     // 1e-4 of the sub-edges at the pair, 4e-7 mm where the contact
@@ -494,10 +495,11 @@ namespace
     testing::check(every_angle_compared, "at every roll angle a zone is resolved (a / h >= 8) clear of the tips");
     testing::check_small(torque_diff, 0.01, "torque on the pinion, finite sliding against quasi-static (relative)");
     testing::check_small(share_diff, 0.01, "share of the torque per tooth pair, finite sliding against quasi-static");
-    // 2 %, not issue 41's 1 %: at a / h of 10 the peaks of the two
-    // insertions (in the current and in the reference configuration)
-    // differ by their discretisation, up to 1.5 % (see the header)
-    testing::check_small(pressure_diff, 0.02,
+    // issue 41's 1 %: with the flanks graded to 0.005 (a / h about 20)
+    // the peaks of the two insertions (in the current and in the reference
+    // configuration) differ by 0.63 % at most; graded to 0.01 (a / h about
+    // 10) by up to 1.5 % (see the header)
+    testing::check_small(pressure_diff, 0.01,
                          "peak pressure per resolved zone, finite sliding against quasi-static (relative)");
   }
 } // namespace
