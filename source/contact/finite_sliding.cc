@@ -145,7 +145,6 @@ namespace dealvem
     assembler.reset();
     current.reset();
     start.reset();
-    first_pass_disc.reset();
   }
 
 
@@ -511,6 +510,45 @@ namespace dealvem
               record.max_slip = std::max(record.max_slip, std::abs(contact->value(np + i, solution)) / h[i]);
           }
       }
+  }
+
+
+
+  std::vector<std::pair<unsigned int, unsigned int>>
+  FiniteSliding::Impl::loose_merges() const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> loose;
+    const auto                                         np = contact->n_pairs();
+    const auto                                         n0 = original.n_vertices();
+    // the two sub-edges at each vertex pair, as evaluate() measures them
+    std::vector<double> chord(np, 0.);
+    unsigned int        offset = 0;
+    for (const auto &interface : interfaces)
+      {
+        for (const auto &s : interface.segments)
+          {
+            const double L = contact->current_positions(offset + s.first, solution)[1].distance(
+              contact->current_positions(offset + s.second, solution)[1]);
+            for (const unsigned int p : {s.first, s.second})
+              chord[offset + p] += L;
+          }
+        offset += interface.pairs.size();
+      }
+    for (unsigned int i = 0; i < np; ++i)
+      {
+        const auto &pair = contact->get_pairs()[i];
+        if (pair.on_edge() || pair.master_entity >= n0 || pair.slave_entity >= n0 || chord[i] <= 0 ||
+            contact->is_left_out(i))
+          continue;
+        const std::pair<unsigned int, unsigned int> merge(pair.master_entity, pair.slave_entity);
+        if (step_merges.count(merge) == 0 || step_reheld.count(merge) > 0)
+          continue;
+        const auto x = contact->current_positions(i, solution);
+        const auto t = turn_left(contact->current_normal(i, solution));
+        if (std::abs((x[1] - x[0]) * t) > 1e-3 * chord[i])
+          loose.push_back(merge);
+      }
+    return loose;
   }
 
 

@@ -378,6 +378,15 @@ namespace dealvem
     };
     /// The interfaces of the current pass (those of `interfaces`).
     std::vector<PassInterface> pass_interfaces;
+    /// The master body of each pair of bodies (lower, higher material id)
+    /// the detection has found in a converged step: the pair keeps it in
+    /// every later pass and step. (ContactDetection takes the coarser of
+    /// the two facing parts, which on sides of about the same edge length
+    /// changes with the configuration: a wheel in a race of the same edge
+    /// length swapped its sides from step to step, and the first pass of a
+    /// step, paired where the step was predicted to end, decided the
+    /// discretization the step converged on: two answers 1.7 % apart.)
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> detected_master;
     /// With Parameters::detection: the body each edge of $M_0$ faced on an
     /// interface of the current pass (numbers::invalid_unsigned_int: none).
     std::vector<unsigned int> pass_partner;
@@ -467,6 +476,19 @@ namespace dealvem
     /// The pairs of two original vertices (master, slave) merged in a pass
     /// of the current step (they stay merged, see prepare_pass()).
     std::set<std::pair<unsigned int, unsigned int>> step_merges;
+    /// Merges of the step that a converged pass found held beyond the
+    /// distance at which node insertion merges (loose_merges()): the later
+    /// passes no longer hold them. One that node insertion merges again
+    /// goes to step_reheld and is held to the end of the step.
+    std::set<std::pair<unsigned int, unsigned int>> step_released, step_reheld;
+
+    /// The held merges (step_merges, not in step_reheld) whose vertices are
+    /// apart along the interface at the solution by more than 1e-3 of the
+    /// two sub-edges at the pair (about twice the distance at which node
+    /// insertion merges two vertices): held only by the step's hysteresis,
+    /// not by the rule that made them.
+    std::vector<std::pair<unsigned int, unsigned int>>
+    loose_merges() const;
 
     /// The original vertices that had a partner in a pass of the current
     /// step (NodeInsertion::Settings::keep_facing of the later passes).
@@ -494,13 +516,6 @@ namespace dealvem
     dealii::Vector<double> start_solution, start_previous_solution, start_multipliers;
     /// Whether the last solve_step() failed (the start of the step stays).
     bool last_failed = false;
-    /// The discretization of the first pass of the step that made its pairs
-    /// where the step is expected to end (an extrapolation, or the end of
-    /// a pass), and that configuration: where the contacts that begin
-    /// within the step are taken to begin (FiniteStrainContact::Options::
-    /// contact_origin).
-    std::unique_ptr<Discretization> first_pass_disc;
-    dealii::Vector<double>          first_pass_pairing;
     /// The configuration where the pairs of the current pass were made (on
     /// the current discretization).
     dealii::Vector<double> pairing_base;
@@ -586,7 +601,7 @@ namespace dealvem
       std::unique_ptr<internal::finite_sliding::TraceOnSides>          pair_trace;
       std::vector<std::tuple<unsigned int, unsigned int, internal::finite_sliding::Chain>> chains;
       // step 3: the states on the new mesh
-      dealii::Vector<double> u_base, u_newton, u_origin, u_contact, u_previous;
+      dealii::Vector<double> u_base, u_newton, u_origin, u_previous;
       bool                   with_previous = false;
       // step 4: the new contact and its multipliers
       std::unique_ptr<FiniteStrainContact> new_contact;
@@ -608,7 +623,7 @@ namespace dealvem
     void
     insert_nodes(Pass &pass);
     void
-    keep_step_decisions(Pass &pass);
+    keep_step_decisions(Pass &pass, bool settled);
     void
     place_inserted_vertices(Pass &pass);
     void

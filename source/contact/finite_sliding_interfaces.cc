@@ -52,7 +52,21 @@ namespace dealvem
     PolygonalMesh<2> there(original);
     for (unsigned int v = 0; v < original.n_vertices(); ++v)
       there.move_vertex(v, x[v]);
-    const auto found = detect_candidates(there, 1.);
+    auto found = detect_candidates(there, 1.);
+    // a pair of bodies keeps the master body of its first converged step
+    // (the two sides swap their ids, which the edges carry by body)
+    for (auto &itf : found.interfaces)
+      {
+        const auto key = std::minmax(itf.master_body, itf.slave_body);
+        const auto it  = detected_master.find({key.first, key.second});
+        if (it != detected_master.end() && it->second != itf.master_body)
+          {
+            std::swap(itf.master_body, itf.slave_body);
+            std::swap(itf.master_id, itf.slave_id);
+            std::swap(itf.n_master_edges, itf.n_slave_edges);
+            std::swap(itf.master_h, itf.slave_h);
+          }
+      }
     for (unsigned int e = 0; e < there.n_edges(); ++e)
       if (there.edge(e).at_boundary() && there.edge(e).boundary_id != original.edge(e).boundary_id)
         {

@@ -56,7 +56,11 @@ namespace dealvem
         pass.predicted = false;
         pair_in_configuration(pass, pass.u_pair);
       }
-    keep_step_decisions(pass);
+    // (the decisions the later passes keep are taken from passes that pair
+    // near the step's end: the previous pass's partners within 1e-2 of
+    // their sub-edges)
+    keep_step_decisions(pass, !pass.first_pass && !record.pairing_offsets.empty() &&
+                                record.pairing_offsets.back() <= 1e-2);
 
     // 2. the inserted vertices back to the reference configuration, by
     // their parameter on the original edge; the original vertices paired
@@ -98,7 +102,7 @@ namespace dealvem
       }
     else if (pairing_base.size() == solution.size())
       pass.u_pair = relaxed_pairing_state();
-    const bool with_extrapolation = pass.first_pass && n_converged >= 2 &&
+    const bool with_extrapolation = pass.first_pass && parameters.extrapolate && n_converged >= 2 &&
                                     start_previous_solution.size() == pass.u_pair.size() &&
                                     last_time != previous_time;
     // whether the pairs are made where the step is expected to end (an
@@ -222,7 +226,8 @@ namespace dealvem
     // that push it to the far side of the kink: the passes cycle.
     for (const auto &[m, sv] : step_merges)
       {
-        if (movable.count(m) > 0 || movable.count(sv) > 0)
+        if (movable.count(m) > 0 || movable.count(sv) > 0 ||
+            (step_released.count({m, sv}) > 0 && step_reheld.count({m, sv}) == 0))
           continue;
         const auto nm = side_neighbours.find(m), ns = side_neighbours.find(sv);
         if (nm == side_neighbours.end() || ns == side_neighbours.end() || nm->second.empty() ||
@@ -321,20 +326,37 @@ namespace dealvem
   // After step 1: the merges and the paired vertices the later passes of
   // the step keep.
   void
-  FiniteSliding::Impl::keep_step_decisions(Pass &pass)
+  FiniteSliding::Impl::keep_step_decisions(Pass &pass, const bool settled)
   {
     const auto n0 = original.n_vertices();
     if (pass.first_pass)
-      step_merges.clear();
+      {
+        step_merges.clear();
+        step_released.clear();
+        step_reheld.clear();
+      }
     for (const auto &interface : pass.new_interfaces)
       for (const auto &pair : interface.pairs)
         if (!pair.on_edge())
           {
             if (pair.master_entity < n0 && pair.slave_entity < n0)
-              step_merges.insert({pair.master_entity, pair.slave_entity});
-            for (const unsigned int v : {pair.master_entity, pair.slave_entity})
-              if (v < n0)
-                step_paired.insert(v);
+              {
+                step_merges.insert({pair.master_entity, pair.slave_entity});
+                // (released, and merged again by the insertion's own rule:
+                // held from now on; the passes would otherwise alternate)
+                if (step_released.count({pair.master_entity, pair.slave_entity}) > 0)
+                  step_reheld.insert({pair.master_entity, pair.slave_entity});
+              }
+            // (only where the passes have settled near the step's end: a
+            // pass that pairs where the step started, or where a pass with
+            // pairs far from their place left it, pairs vertices the end
+            // does not; kept, their partners on open sides changed the
+            // discrete space, and a step came out 4e-5 apart from the same
+            // step started from a prediction)
+            if (settled)
+              for (const unsigned int v : {pair.master_entity, pair.slave_entity})
+                if (v < n0)
+                  step_paired.insert(v);
           }
   }
 
@@ -570,14 +592,9 @@ namespace dealvem
     // a later pass starts Newton from the last pass's solution (the
     // pairing state above is relaxed at the interface only)
     pass.u_newton = pass.first_pass ? dealii::Vector<double>() : states(pass.pair_disc, solution);
+    // (every pair's slip counts from the start of the step:
+    // FiniteStrainContact::set_up_slip_origins)
     pass.u_origin = states(start.get(), start_solution);
-    // where the contacts that begin within the step begin: the first
-    // pairing configuration of the step that predicts its end (until there
-    // is one, this pass's)
-    if (pass.first_pass)
-      first_pass_disc.reset();
-    pass.u_contact =
-      first_pass_disc == nullptr ? pass.u_base : states(first_pass_disc.get(), first_pass_pairing);
     pass.with_previous = pass.first_pass && n_converged >= 2 && start_previous_solution.size() > 0;
     if (pass.with_previous)
       pass.u_previous = states(start.get(), start_previous_solution);
@@ -594,7 +611,6 @@ namespace dealvem
     FiniteStrainContact::Options options;
     options.base           = &pass.u_base;
     options.slip_origin    = &pass.u_origin;
-    options.contact_origin = &pass.u_contact;
     for (const auto &i : pass.new_pass)
       options.friction_coefficients.push_back(i.friction_coefficient);
     pass.new_contact = std::make_unique<FiniteStrainContact>(*pass.next->dof_handler, pass.new_interfaces,
@@ -646,21 +662,11 @@ namespace dealvem
   void
   FiniteSliding::Impl::install_pass(Pass &pass, StepRecord &record)
   {
-    const auto degree = parameters.degree;
     // the new objects replace the old ones (in the order of their
     // references; the start of the step stays)
     solver.reset();
     contact.reset();
     assembler.reset();
-    if (pass.predicted && first_pass_disc == nullptr && parameters.reinsert)
-      {
-        // a copy of this pass's mesh and DoFs with its pairing state
-        first_pass_disc              = std::make_unique<Discretization>();
-        first_pass_disc->mesh        = std::make_unique<PolygonalMesh<2>>(*pass.next->mesh);
-        first_pass_disc->dof_handler = std::make_unique<VEMDoFHandler<2>>(*first_pass_disc->mesh);
-        first_pass_disc->dof_handler->distribute_dofs(VEMElementData(degree));
-        first_pass_pairing = pass.u_base;
-      }
     current         = std::move(pass.next);
     contact         = std::move(pass.new_contact);
     interfaces      = std::move(pass.new_interfaces);

@@ -266,7 +266,7 @@ namespace
   };
 
   Race
-  race(const unsigned int degree, const double mu)
+  race(const unsigned int degree, const double mu, const bool extrapolate = true)
   {
     PolygonalMesh<2> mesh = testing::annulus(1.0, 1.4, 24, 2, 0, 0, 1);
     mesh.append(testing::annulus(0.2, 0.5, 12, 2, 1, 10, 11, dealii::Point<2>(0, -0.5)));
@@ -274,7 +274,9 @@ namespace
     MaterialLibrary<2>     laws;
     laws.add(0, law);
     laws.add(1, law);
-    FiniteSliding sliding(mesh, laws, {}, parameters(degree, true, {0, 11}, mu));
+    auto params        = parameters(degree, true, {0, 11}, mu);
+    params.extrapolate = extrapolate;
+    FiniteSliding sliding(mesh, laws, {}, params);
     sliding.set_constraints_function(
       testing::prescribe({1, 10}, [](const dealii::types::boundary_id id, const dealii::Point<2> &X, const double t) {
         dealii::Tensor<1, 2> u;
@@ -310,7 +312,8 @@ namespace
         result.moment.push_back(M);
         result.n_active.push_back(r.n_active);
         result.n_slipping.push_back(r.n_slipping);
-        std::cout << "  race, k = " << degree << ", mu = " << mu << ", theta = " << t << ": " << r.n_active
+        std::cout << "  race, k = " << degree << ", mu = " << mu << (extrapolate ? "" : ", not extrapolated")
+                  << ", theta = " << t << ": " << r.n_active
                   << " active, " << r.n_slipping << " slipping, " << r.n_passes << " passes, force on the wheel (" << F
                   << "), moment about the origin " << M << std::endl;
       }
@@ -455,12 +458,37 @@ main()
               }
           }
         testing::check(several && slipping, what + "at least three active pairs, all slipping with friction");
-        // (at theta = 0 a vertex of the wheel faces one of the race and 3
-        // pairs carry the load, later 5 or 6: measured 1.5 % between the
-        // two, 0.4 % among the turned positions)
-        testing::check_small(spread, 2e-2, what + "the normal force at every theta against theta = 0");
-        testing::check_small(spread_turning, 1e-2, what + "the normal force at theta = 15 ... 60");
+        // (at theta = 0 a vertex of the wheel faces one of the race, and
+        // at every later theta too, its other vertices where the race's
+        // are not: measured 2.1e-5 and 3.7e-6 without friction, 8.7e-5 and
+        // 4.4e-5 with it. While a merge of the two facing vertices made in
+        // an early pass was held to the end of the step, 1.5 % and 0.4 %.)
+        testing::check_small(spread, 1e-3, what + "the normal force at every theta against theta = 0");
+        testing::check_small(spread_turning, 1e-3, what + "the normal force at theta = 15 ... 60");
         testing::check_small(moment, 1e-2, what + "moment about the race's centre against -mu N R");
+        if (mu > 0)
+          {
+            // The same run with every step's first pass paired where the
+            // step starts, not where the last two steps predict its end: a
+            // converged step does not depend on where its passes began,
+            // with friction and with contacts that begin within the step.
+            const Race plain = race(degree, mu, false);
+            double     diff  = plain.force.size() == r.force.size() ? 0. : 1.;
+            for (unsigned int n = 0; n < r.force.size() && diff < 1; ++n)
+              diff = std::max({diff,
+                               (plain.force[n] - r.force[n]).norm() / r.force[n].norm(),
+                               std::abs(plain.moment[n] - r.moment[n]) / r.force[n].norm(),
+                               plain.n_slipping[n] == r.n_slipping[n] ? 0. : 1.});
+            // (measured 4.4e-5, 0 before the third step: an open pair needs
+            // its partners opposite each other only within its gap, so the
+            // nodes of open pairs away from the contact lie where the passes
+            // left them, to about 4e-5 of their sub-edges. Before every
+            // pair's slip counted from the step's start, a contact that
+            // began in the step counted it from the step's first pass: 3 of
+            // 6 pairs stuck with a better predictor, the moment 11 % off;
+            // and before held merges were released, 1.7 % apart.)
+            testing::check_small(diff, 2e-4, what + "the first passes unpredicted against predicted: force and moment");
+          }
       }
   return testing::finish();
 }

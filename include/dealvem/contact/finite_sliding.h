@@ -263,6 +263,15 @@ namespace dealvem
       /// of that length on the meshes of the benchmark, so much less is
       /// not reachable.)
       double pairing_tolerance = 1e-8;
+      /// The first pass of a step pairs the nodes where the last two
+      /// converged steps predict its end (each connected piece of the
+      /// bodies continues its rigid motion, a turn about its fixed point,
+      /// and the rest linearly in time); false: where the step starts. The
+      /// converged answer does not depend on it, to the pairing tolerance
+      /// (tests/contact/finite_sliding_detection and
+      /// finite_sliding_indentation assert it with friction and new
+      /// contacts); the number of passes does.
+      bool extrapolate = true;
       /// At most this many passes (pairing and Newton solve) per step; a
       /// step that does not meet the tolerance then throws, naming the
       /// offset.
