@@ -44,9 +44,10 @@ namespace dealvem
    *    moved to their current positions $x = X + u(X)$ (a copy $C$; in the
    *    first pass of a step, $u$ is the extrapolation in time of the last
    *    two steps, where the step is expected to end: per piece of the
-   *    bodies its rigid motion continued as a rigid motion, the rest
-   *    linearly (extrapolate()); or the last step's state $u_{n-1}$ when
-   *    there is no such extrapolation),
+   *    bodies its rigid motion continued as a turn about its fixed point,
+   *    the rest linearly (extrapolate()); or the last step's state
+   *    $u_{n-1}$ when there is no such extrapolation or
+   *    Parameters::extrapolate is false),
    *    and NodeInsertion::insert() pairs the interface nodes of $C$ by
    *    projection, splitting the edges of $C$ where a partner lands. No
    *    gap is closed and no vertex moved (Parameters::insertion has
@@ -163,11 +164,28 @@ namespace dealvem
    *    first Newton solve inverts cells, the halves of 0.25, 0.25 and 0.5
    *    converge, and the die ends with the force of 40 steps to 1e-4.)
    *
-   * A pair counts its slip from the start of the step if its slave point
-   * touched the master side there (FiniteStrainContact: the distance to the
-   * master side's curve at the start, within $10^{-2}$ of a sub-edge), and
-   * from where the step's first pass made its pairs otherwise (a contact
-   * that begins within the step; StepRecord::n_new_contacts).
+   * Every pair counts its slip from the start of the step, a contact that
+   * begins within the step too (its slave point off the master side at the
+   * start, FiniteStrainContact::is_new_contact(),
+   * StepRecord::n_new_contacts): backward Euler, first order in the step.
+   *
+   * <h3>A converged step does not depend on its predictor</h3>
+   * Where the passes of a step start (the extrapolation, or the start of
+   * the step) changes how many passes it takes, not where it ends: every
+   * decision the passes hold within a step is checked against the converged
+   * state. A merge of two vertices held by the step's hysteresis is
+   * released when the converged state has them farther apart than node
+   * insertion merges, and the step goes on (a merge the insertion makes
+   * again is then held to the end of the step); vertices keep their
+   * partners from pass to pass only once the passes pair near the step's
+   * end (the previous pass's offsets within $10^{-2}$ of the sub-edges); a
+   * detected pair of bodies keeps the master side of its first converged
+   * step. tests/contact/finite_sliding_detection turns a wheel along a race
+   * with $\mu = 0.3$ with and without the predictor: forces and moments
+   * agree to 4.4e-5 (the nodes of open pairs are placed only to within
+   * their gaps); they were 1.7 % apart, and 11 % with a better predictor,
+   * when a new contact counted its slip from the step's first pass and
+   * held merges stayed to the end of the step.
    *
    * <h3>Interfaces found in the current configuration</h3>
    * With Parameters::detection ('Contact/Pairs = auto') the free boundary
@@ -406,9 +424,8 @@ namespace dealvem
       /// ones too).
       unsigned int n_substeps = 1;
       /// Active pairs whose contact began within the step
-      /// (FiniteStrainContact::is_new_contact(): their slip counts from
-      /// where the step's first pass made its pairs, so they stick in that
-      /// step unless the friction bound is small).
+      /// (FiniteStrainContact::is_new_contact(); their slip counts from the
+      /// start of the step, as every pair's).
       unsigned int n_new_contacts = 0;
       /// Active pairs that were in contact at the start of the step and
       /// stick (Coulomb friction; 0 in steady sliding).
