@@ -78,12 +78,9 @@ namespace dealvem
               out.pairs.push_back(row);
               continue;
             }
-          dealii::Tensor<1, 2> t;
-          t[0]            = -row.normal[1];
-          t[1]            = row.normal[0];
+          // (the slave node receives -lambda_n n - lambda_t t, t = (-n_y,
+          // n_x): the traction of the row)
           const double ln = lambda[i], lt = (two ? lambda[np + i] : 0.);
-          // the slave node receives -lambda_n n - lambda_t t
-          const dealii::Tensor<1, 2> f = -ln * row.normal - lt * t;
           if (w[i] > 0)
             {
               row.pressure            = -ln / w[i];
