@@ -98,15 +98,38 @@ namespace dealvem
                 // the rule on a copy of the state: its next set is taken
                 // unless it would stop (converge, or fail), which only a
                 // solution at the full tolerance may decide
+                const auto propose = [&](typename ActiveSetUpdate<dim>::State &trial) {
+                  try
+                    {
+                      return rule.update(trial, contact, x);
+                    }
+                  catch (const std::exception &)
+                    {
+                      return true;
+                    }
+                };
                 auto trial = st;
-                bool stops = true;
-                try
+                bool stops = propose(trial);
+                // The first solve stops at SaddlePointSolver::Settings::
+                // inexact_start_tolerance. Its proposal is taken once the
+                // solve continued by a decade proposes the same next set
+                // (the pairs' decisions did not move with the solve's
+                // error); else, and when the rule would stop or tie pairs,
+                // the solve goes on by decades down to the inexact
+                // tolerance, where the rule decides as before.
+                while (solver.refine_last_solve(matrix, x, rhs))
                   {
-                    stops = rule.update(trial, contact, x);
-                  }
-                catch (const std::exception &)
-                  {
-                    stops = true;
+                    constraints.distribute(x);
+                    result.linear_iterations += solver.last_iterations();
+                    auto       again       = st;
+                    const bool stops_again = propose(again);
+                    const bool same        = !stops && !stops_again && trial.n_tie_rounds == st.n_tie_rounds &&
+                                      again.n_tie_rounds == st.n_tie_rounds && again.active == trial.active &&
+                                      again.tied_open == trial.tied_open;
+                    trial = std::move(again);
+                    stops = stops_again;
+                    if (same)
+                      break;
                   }
                 // (tying pairs after a cycle changes the model: decided on
                 // the completed solve too)

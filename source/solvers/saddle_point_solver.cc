@@ -89,6 +89,9 @@ namespace dealvem
     AssertThrow(settings.inexact_tolerance >= 0 && settings.inexact_tolerance < 1,
                 dealii::ExcMessage("SaddlePointSolver: the inexact tolerance must lie in [0, 1), not " +
                                    std::to_string(settings.inexact_tolerance) + "."));
+    AssertThrow(settings.inexact_start_tolerance >= 0 && settings.inexact_start_tolerance < 1,
+                dealii::ExcMessage("SaddlePointSolver: the inexact start tolerance must lie in [0, 1), not " +
+                                   std::to_string(settings.inexact_start_tolerance) + "."));
   }
 
 
@@ -809,7 +812,10 @@ namespace dealvem
     // there)
     last_inexact = inexact_solves && stick_rows.empty() && !used_gmres &&
                    settings.inexact_tolerance > settings.relative_tolerance;
-    const double tolerance = (last_inexact ? settings.inexact_tolerance : settings.relative_tolerance);
+    const double tolerance =
+      (last_inexact ? std::max(settings.inexact_tolerance, settings.inexact_start_tolerance) :
+                      settings.relative_tolerance);
+    last_inexact_tolerance = tolerance;
     if (!stick_rows.empty())
       {
         // CG (GMRES when slipping pairs make the condensed matrix
@@ -940,17 +946,49 @@ namespace dealvem
                                          dealii::Vector<double>             &x,
                                          const dealii::Vector<double>       &b)
   {
+    continue_last_solve(A, x, b, settings.relative_tolerance, "complete_last_solve");
+    last_inexact = false;
+    inexact_system.reset();
+  }
+
+
+
+  bool
+  SaddlePointSolver::refine_last_solve(const dealii::SparseMatrix<double> &A,
+                                       dealii::Vector<double>             &x,
+                                       const dealii::Vector<double>       &b)
+  {
     AssertThrow(last_inexact && inexact_system != nullptr,
-                dealii::ExcMessage("SaddlePointSolver::complete_last_solve(): the last solve was not an inexact "
+                dealii::ExcMessage("SaddlePointSolver::refine_last_solve(): the last solve was not an inexact "
                                    "one (see set_inexact())."));
+    if (last_inexact_tolerance <= settings.inexact_tolerance)
+      return false;
+    last_inexact_tolerance = std::max(settings.inexact_tolerance, 0.1 * last_inexact_tolerance);
+    continue_last_solve(A, x, b, last_inexact_tolerance, "refine_last_solve");
+    return true;
+  }
+
+
+
+  void
+  SaddlePointSolver::continue_last_solve(const dealii::SparseMatrix<double> &A,
+                                         dealii::Vector<double>             &x,
+                                         const dealii::Vector<double>       &b,
+                                         const double                        tolerance,
+                                         const std::string                  &what)
+  {
+    AssertThrow(last_inexact && inexact_system != nullptr,
+                dealii::ExcMessage("SaddlePointSolver::" + what +
+                                   "(): the last solve was not an inexact one (see set_inexact())."));
     auto              &system = *inexact_system;
     const unsigned int n      = system.u.size();
     AssertThrow(A.m() == system.size && b.size() == system.size && x.size() == system.size,
-                dealii::ExcMessage("SaddlePointSolver::complete_last_solve(): the system is not the one of the "
-                                   "last solve."));
-    iterations = solve_with_amg(system.K, system.K, system.u, system.f, settings.relative_tolerance, true);
-    internal::check_residual(system.K, system.u, system.f, settings.relative_tolerance,
-                             description() + (context.empty() ? "" : ", " + context) + ", completed");
+                dealii::ExcMessage("SaddlePointSolver::" + what +
+                                   "(): the system is not the one of the last solve."));
+    iterations = solve_with_amg(system.K, system.K, system.u, system.f, tolerance, true);
+    internal::check_residual(system.K, system.u, system.f, tolerance,
+                             description() + (context.empty() ? "" : ", " + context) +
+                               (tolerance <= settings.relative_tolerance ? ", completed" : ", refined"));
     for (unsigned int i = 0; i < n; ++i)
       x[i] = system.u[i];
     system.contact.distribute_and_recover_multipliers(A, b, x);
@@ -960,7 +998,5 @@ namespace dealvem
       AssertThrow(std::isfinite(x[i]),
                   dealii::ExcMessage("The saddle-point solver produced a non-finite value: the "
                                      "system is singular (is every body supported?)."));
-    last_inexact = false;
-    inexact_system.reset();
   }
 } // namespace dealvem

@@ -96,6 +96,10 @@ namespace dealvem
       /// set_inexact() is on (when it is larger than relative_tolerance;
       /// 0 switches inexact solves off).
       double inexact_tolerance = 1e-6;
+      /// CG-AMG: where an inexact solve stops first (when it is larger than
+      /// inexact_tolerance); refine_last_solve() goes on by decades down to
+      /// inexact_tolerance.
+      double inexact_start_tolerance = 1e-3;
     };
 
     /// "UMFPACK", "KLU", "GMRES-AMG", "CG-AMG" (or its former name "CG-AMG
@@ -203,6 +207,18 @@ namespace dealvem
                         dealii::Vector<double>             &x,
                         const dealii::Vector<double>       &b);
 
+    /**
+     * Continue the last solve(), which stopped at an inexact tolerance
+     * (last_solve_inexact()), by one decade, to at most
+     * Settings::inexact_tolerance; it stays inexact. Returns false, and
+     * does nothing, when it had reached Settings::inexact_tolerance
+     * already. Arguments and last_iterations() as complete_last_solve().
+     */
+    bool
+    refine_last_solve(const dealii::SparseMatrix<double> &A,
+                      dealii::Vector<double>             &x,
+                      const dealii::Vector<double>       &b);
+
     /// The method of the settings.
     Type
     get_type() const
@@ -293,6 +309,15 @@ namespace dealvem
     bool                             inexact_solves = false;
     /// See last_solve_inexact().
     bool                             last_inexact = false;
+    /// The tolerance the last inexact solve reached.
+    double                           last_inexact_tolerance = 0;
+    /// complete_last_solve() and refine_last_solve(): go on to @p tolerance.
+    void
+    continue_last_solve(const dealii::SparseMatrix<double> &A,
+                        dealii::Vector<double>             &x,
+                        const dealii::Vector<double>       &b,
+                        double                              tolerance,
+                        const std::string                  &what);
     /// The condensed system of the last solve if it was inexact.
     std::shared_ptr<internal::CondensedSystem> inexact_system;
     /// See set_context().
