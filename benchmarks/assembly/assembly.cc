@@ -27,6 +27,7 @@
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/masonry_wall.h>
 
 #include <chrono>
 #include <iomanip>
@@ -111,46 +112,16 @@ main(int argc, char **argv)
   const unsigned int per_course = 10;
   double             height     = 0;
 
-  // the assembly: a mesh of parts (material id = part), then add_parts()
-  PolygonalMesh<2> wall = brick(P(-1, -1), P(per_course + 1, 0), 4 * (per_course + 2), 4);
-  std::vector<PolygonalMesh<2>>         made;
-  std::vector<const PolygonalMesh<2> *> parts;
-  made.reserve(blocks);
-  // even courses: 10 blocks; odd courses: a half block at each end and 9
-  // blocks between (running bond); courses are added until there are
-  // `blocks` pieces, the last course possibly incomplete from the left
-  unsigned int id = 1;
-  for (unsigned int c = 0; id <= blocks; ++c)
-    {
-      std::vector<std::pair<double, double>> spans;
-      if (c % 2 == 0)
-        for (unsigned int k = 0; k < per_course; ++k)
-          spans.emplace_back(k, k + 1);
-      else
-        {
-          spans.emplace_back(0, 0.5);
-          for (unsigned int k = 0; k + 1 < per_course; ++k)
-            spans.emplace_back(k + 0.5, k + 1.5);
-          spans.emplace_back(per_course - 0.5, per_course);
-        }
-      for (const auto &span : spans)
-        {
-          if (id > blocks)
-            break;
-          const unsigned int nx = (id % 2 == 0 ? n : n + 1);
-          made.push_back(brick(P(span.first, 0.5 * c), P(span.second, 0.5 * (c + 1)),
-                               std::max(1u, static_cast<unsigned int>(nx * (span.second - span.first) + 0.5)),
-                               std::max(1u, nx / 2)));
-          for (unsigned int cell = 0; cell < made.back().n_cells(); ++cell)
-            made.back().set_material_id(cell, id);
-          MeshParameters::shift_boundary_ids(made.back(), 10);
-          ++id;
-        }
-      height = 0.5 * (c + 1);
-    }
-  for (const auto &m : made)
-    parts.push_back(&m);
-  wall.append(parts);
+  // the assembly: the base and the blocks as a mesh of parts (material id
+  // = part), then add_parts(); courses of 10 blocks in running bond
+  PolygonalMeshGenerators::MasonryWall layout;
+  layout.blocks_per_course = per_course;
+  layout.n_blocks          = blocks;
+  layout.quads_along       = n;
+  PolygonalMesh<2> wall;
+  PolygonalMeshGenerators::masonry_wall(wall, layout);
+  for (unsigned int v = 0; v < wall.n_vertices(); ++v)
+    height = std::max(height, wall.vertex(v)[1]);
 
   std::cout << "Assembly of " << blocks << " blocks (" << n << " or " << n + 1
             << " quads along a block) on a base against one body of the same DoFs; k = 2, solver " << solver

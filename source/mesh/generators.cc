@@ -6,6 +6,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/masonry_wall.h>
 #include <dealvem/mesh/mesh_io.h>
 
 #include "generators_internal.h"
@@ -457,6 +458,76 @@ namespace dealvem
             break;
           tria.execute_coarsening_and_refinement();
         }
+    }
+
+
+    void
+    masonry_wall(PolygonalMesh<2> &mesh, const MasonryWall &wall)
+    {
+      const auto positive = [](const double x, const char *name) {
+        AssertThrow(std::isfinite(x) && x > 0,
+                    dealii::ExcMessage(std::string("masonry_wall: the ") + name + " must be positive and finite, not " +
+                                       std::to_string(x) + "."));
+      };
+      const auto nonzero = [](const unsigned int n, const char *name) {
+        AssertThrow(n > 0, dealii::ExcMessage(std::string("masonry_wall: the ") + name + " must be at least 1."));
+      };
+      positive(wall.block_width, "block width");
+      positive(wall.block_height, "block height");
+      nonzero(wall.blocks_per_course, "number of blocks per course");
+      nonzero(wall.n_blocks, "number of blocks");
+      nonzero(wall.quads_along, "number of quads along a block");
+      nonzero(wall.base_quads_across, "number of quads across the base");
+      AssertThrow(wall.block_boundary_offset >= 4 && wall.block_boundary_offset <= 65531,
+                  dealii::ExcMessage("masonry_wall: the block boundary offset must lie in [4, 65531] (the base "
+                                     "uses the ids 0 to 3), not " +
+                                     std::to_string(wall.block_boundary_offset) + "."));
+      const double       w = wall.block_width, h = wall.block_height;
+      const unsigned int m = wall.blocks_per_course;
+      structured_quads(mesh, P(-w, -1), P((m + 1) * w, 0), wall.base_quads_along > 0 ? wall.base_quads_along : 4 * (m + 2),
+                       wall.base_quads_across);
+      std::vector<PolygonalMesh<2>> made;
+      made.reserve(wall.n_blocks);
+      unsigned int id = 1;
+      for (unsigned int c = 0; id <= wall.n_blocks; ++c)
+        {
+          // the spans of the course, in block widths
+          std::vector<std::pair<double, double>> spans;
+          if (c % 2 == 0)
+            for (unsigned int k = 0; k < m; ++k)
+              spans.emplace_back(k, k + 1);
+          else
+            {
+              spans.emplace_back(0, 0.5);
+              for (unsigned int k = 0; k + 1 < m; ++k)
+                spans.emplace_back(k + 0.5, k + 1.5);
+              spans.emplace_back(m - 0.5, m);
+            }
+          for (const auto &span : spans)
+            {
+              if (id > wall.n_blocks)
+                break;
+              const unsigned int along = (id % 2 == 0 ? wall.quads_along : wall.quads_along + 1);
+              const double       length = span.second - span.first;
+              const unsigned int nx =
+                wall.scale_half_blocks ? std::max(1u, static_cast<unsigned int>(along * length + 0.5)) : along;
+              const unsigned int ny = wall.quads_across > 0 ? wall.quads_across : std::max(1u, along / 2);
+              made.emplace_back();
+              structured_quads(made.back(), P(span.first * w, c * h), P(span.second * w, (c + 1) * h), nx, ny);
+              for (unsigned int cell = 0; cell < made.back().n_cells(); ++cell)
+                made.back().set_material_id(cell, id);
+              for (unsigned int e = 0; e < made.back().n_edges(); ++e)
+                if (made.back().edge(e).at_boundary())
+                  made.back().set_edge_boundary_id(e, made.back().edge(e).boundary_id + wall.block_boundary_offset);
+              ++id;
+            }
+        }
+      std::vector<const PolygonalMesh<2> *> parts;
+      parts.reserve(made.size());
+      for (const auto &block : made)
+        parts.push_back(&block);
+      mesh.append(parts);
+      mesh.name = "masonry wall, " + std::to_string(wall.n_blocks) + " blocks";
     }
 
 

@@ -42,8 +42,8 @@
 
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/app/elasticity_problem.h>
-#include <dealvem/app/mesh_parameters.h>
 #include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/masonry_wall.h>
 
 #include "../tests.h"
 
@@ -254,49 +254,24 @@ namespace
   thousand_blocks()
   {
     // courses of 25 blocks 1 x 0.5; odd courses shifted by half a block,
-    // with half blocks at both ends (26 pieces): 40 courses, 1020 blocks
+    // with half blocks at both ends (26 pieces): 40 courses, 1020 blocks,
+    // 2 or 3 quads along each (half blocks too), one across; the base 27 x 2
     const unsigned int courses = 40, per_course = 25;
-    PolygonalMesh<2>   wall;
-    std::vector<const PolygonalMesh<2> *> parts;
-    std::vector<PolygonalMesh<2>>         made;
-    made.reserve(2000);
-    unsigned int id     = 1;
-    double       weight = 0;
-    std::vector<double> course_weight(courses, 0.);
-    for (unsigned int c = 0; c < courses; ++c)
-      {
-        std::vector<std::pair<double, double>> spans;
-        if (c % 2 == 0)
-          for (unsigned int k = 0; k < per_course; ++k)
-            spans.emplace_back(k, k + 1);
-        else
-          {
-            spans.emplace_back(0, 0.5);
-            for (unsigned int k = 0; k + 1 < per_course; ++k)
-              spans.emplace_back(k + 0.5, k + 1.5);
-            spans.emplace_back(per_course - 0.5, per_course);
-          }
-        for (const auto &s : spans)
-          {
-            const unsigned int nx = (id % 2 == 0 ? 2 : 3);
-            made.push_back(brick(P(s.first, 0.5 * c), P(s.second, 0.5 * (c + 1)), nx, 1));
-            for (unsigned int k = 0; k < made.back().n_cells(); ++k)
-              made.back().set_material_id(k, id);
-            // the blocks' boundary ids (the generator's 0..3) out of the way
-            // of the base's bottom (2), which carries the support
-            MeshParameters::shift_boundary_ids(made.back(), 10);
-            ++id;
-            course_weight[c] += 0.5 * (s.second - s.first);
-          }
-      }
+    PolygonalMeshGenerators::MasonryWall layout;
+    layout.blocks_per_course = per_course;
+    layout.n_blocks          = courses / 2 * (2 * per_course + 1);
+    layout.quads_along       = 2;
+    layout.quads_across      = 1;
+    layout.scale_half_blocks = false;
+    layout.base_quads_along  = 27;
+    layout.base_quads_across = 2;
+    PolygonalMesh<2> wall;
+    PolygonalMeshGenerators::masonry_wall(wall, layout);
+    // every course is complete: a weight of 0.5 per block length
+    const std::vector<double> course_weight(courses, 0.5 * per_course);
+    double                    weight = 0;
     for (const double w : course_weight)
       weight += w;
-    made.push_back(brick(P(-1, -1), P(per_course + 1, 0), 27, 2));   // the base, material id 0
-    wall = made.back();
-    made.pop_back();
-    for (const auto &m : made)
-      parts.push_back(&m);
-    wall.append(parts);
     const unsigned int n_blocks = wall.get_material_ids().size() - 1;
 
     const auto    start = std::chrono::steady_clock::now();

@@ -42,8 +42,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealvem/app/contact_problem.h>
-#include <dealvem/app/mesh_parameters.h>
-#include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/masonry_wall.h>
 
 #include <algorithm>
 #include <cmath>
@@ -59,54 +58,16 @@ using P = dealii::Point<2>;
 
 namespace
 {
-  PolygonalMesh<2>
-  brick(const P &lo, const P &hi, const unsigned int nx, const unsigned int ny)
-  {
-    PolygonalMesh<2> m;
-    PolygonalMeshGenerators::structured_quads(m, lo, hi, nx, ny);
-    return m;
-  }
-
   // the base and the blocks as one mesh of parts (material id = part)
   PolygonalMesh<2>
   wall(const unsigned int blocks, const unsigned int n)
   {
-    const unsigned int            per_course = 10;
-    PolygonalMesh<2>              mesh = brick(P(-1, -1), P(per_course + 1, 0), 4 * (per_course + 2), 4);
-    std::vector<PolygonalMesh<2>> made;
-    made.reserve(blocks);
-    unsigned int id = 1;
-    for (unsigned int c = 0; id <= blocks; ++c)
-      {
-        std::vector<std::pair<double, double>> spans;
-        if (c % 2 == 0)
-          for (unsigned int k = 0; k < per_course; ++k)
-            spans.emplace_back(k, k + 1);
-        else
-          {
-            spans.emplace_back(0, 0.5);
-            for (unsigned int k = 0; k + 1 < per_course; ++k)
-              spans.emplace_back(k + 0.5, k + 1.5);
-            spans.emplace_back(per_course - 0.5, per_course);
-          }
-        for (const auto &span : spans)
-          {
-            if (id > blocks)
-              break;
-            const unsigned int nx = (id % 2 == 0 ? n : n + 1);
-            made.push_back(brick(P(span.first, 0.5 * c), P(span.second, 0.5 * (c + 1)),
-                                 std::max(1u, static_cast<unsigned int>(nx * (span.second - span.first) + 0.5)),
-                                 std::max(1u, nx / 2)));
-            for (unsigned int cell = 0; cell < made.back().n_cells(); ++cell)
-              made.back().set_material_id(cell, id);
-            MeshParameters::shift_boundary_ids(made.back(), 10);
-            ++id;
-          }
-      }
-    std::vector<const PolygonalMesh<2> *> parts;
-    for (const auto &m : made)
-      parts.push_back(&m);
-    mesh.append(parts);
+    PolygonalMeshGenerators::MasonryWall layout;
+    layout.blocks_per_course = 10;
+    layout.n_blocks          = blocks;
+    layout.quads_along       = n;
+    PolygonalMesh<2> mesh;
+    PolygonalMeshGenerators::masonry_wall(mesh, layout);
     return mesh;
   }
 

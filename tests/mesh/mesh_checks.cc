@@ -16,17 +16,23 @@
 //   one body with the boundary ids 0..4 of the colorization;
 // - the VTK polygon format: a hand-written file and a write/read round
 //   trip with identical vertices, cells and ids;
+// - masonry_wall(): 25 blocks in courses of 10 (10, 11, 4 pieces): 26
+//   bodies, the area of the base and of the blocks (1e-12), the
+//   quads per block (n or n + 1 along, halved on half blocks), the blocks'
+//   boundary ids shifted by the offset; bad parameters throw, naming them;
 // - bad meshes and bad files give messages naming the cell or file:line.
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
 #include <dealvem/mesh/generators.h>
+#include <dealvem/mesh/masonry_wall.h>
 #include <dealvem/mesh/mesh_io.h>
 
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "../tests.h"
 
@@ -204,6 +210,46 @@ main()
                              e.boundary_id;
         testing::check(same, family + ": VTK write/read round trip is exact");
       }
+  }
+
+  // a dry-stone wall: courses of 10 in running bond, 25 pieces (10 full
+  // blocks; 2 half and 9 full; 4 full), 3 or 4 quads along a full block
+  {
+    G::MasonryWall layout;
+    layout.n_blocks    = 25;
+    layout.quads_along = 3;
+    PolygonalMesh<2> wall;
+    G::masonry_wall(wall, layout);
+    testing::check(wall.get_material_ids().size() == 26, "masonry wall: the base and 25 blocks are bodies");
+    // the base [-1, 11] x [-1, 0] and block lengths 10 + 10 + 4 of height 0.5
+    testing::check_near(wall.total_area(), 12. + 0.5 * 24, 1e-12 * 24, "masonry wall: area");
+    std::map<unsigned int, unsigned int> cells_of;
+    for (unsigned int c = 0; c < wall.n_cells(); ++c)
+      ++cells_of[wall.cell(c).material_id];
+    // base 48 x 4; block j: (3 or 4) x 1 quads, a half block (ids 11 and
+    // 21; 4 quads along) 2 x 2
+    bool counts = cells_of[0] == 48 * 4;
+    for (unsigned int j = 1; j <= 25; ++j)
+      {
+        const unsigned int along = (j % 2 == 0 ? 3 : 4), across = along / 2;
+        const bool         half  = (j == 11 || j == 21);
+        counts = counts && cells_of[j] == (half ? (along + 1) / 2 : along) * across;
+      }
+    testing::check(counts, "masonry wall: quads per block (n or n + 1 along, half on half blocks)");
+    std::set<unsigned int> ids;
+    for (unsigned int e = 0; e < wall.n_edges(); ++e)
+      if (wall.edge(e).at_boundary())
+        ids.insert(wall.edge(e).boundary_id);
+    testing::check(ids == std::set<unsigned int>{0, 1, 2, 3, 10, 11, 12, 13}, "masonry wall: boundary ids 0..3 and 10..13");
+    G::MasonryWall bad = layout;
+    bad.blocks_per_course = 0;
+    testing::check_throws([&] { G::masonry_wall(wall, bad); }, "number of blocks per course", "masonry wall: no block per course");
+    bad = layout;
+    bad.block_height = -0.5;
+    testing::check_throws([&] { G::masonry_wall(wall, bad); }, "block height", "masonry wall: negative height");
+    bad = layout;
+    bad.block_boundary_offset = 2;
+    testing::check_throws([&] { G::masonry_wall(wall, bad); }, "block boundary offset", "masonry wall: ids overlapping the base's");
   }
 
   // bad meshes
