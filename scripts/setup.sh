@@ -3,9 +3,9 @@
 # they are all present). Run as root, or with sudo available.
 set -euo pipefail
 # The library and the program: deal.II (with Trilinos, UMFPACK, MPI), CHOLMOD,
-# Eigen, CGAL, the compiler, and LLVM's linker lld (a third of gold's
-# time on deal.II's long list of libraries).
-PACKAGES="libdeal.ii-dev libsuitesparse-dev libeigen3-dev libcgal-dev cmake g++ make lld"
+# Eigen, CGAL, NLopt (MMA of the topology optimizer), the compiler, and LLVM's
+# linker lld (a third of gold's time on deal.II's long list of libraries).
+PACKAGES="libdeal.ii-dev libsuitesparse-dev libeigen3-dev libcgal-dev libnlopt-dev cmake g++ make lld"
 # With --tests, also what the test suite uses: numdiff, python3 with VTK (the
 # VTU files read back), gmsh (meshes written by gmsh itself), doxygen and
 # texlive-binaries (bibtex, for @cite: the reference, 'doc' target, and its

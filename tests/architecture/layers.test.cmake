@@ -2,7 +2,7 @@
 # headers and those of the modules below it, never one above. The rank of
 # each module:
 #   base 0 < mesh 1 < vem 2 < elasticity 3, solvers 3 < contact 4
-#          < postprocessing 5 < app 6
+#          < postprocessing 5 < design 6 < app 7
 # solvers holds linear algebra only (it knows matrices, not meshes), so it
 # sits beside elasticity; the contact algorithms drive it.
 # Also checked: public headers include no Eigen, CGAL or boost (heavy
@@ -15,12 +15,13 @@ set(rank_elasticity 3)
 set(rank_solvers 3)
 set(rank_contact 4)
 set(rank_postprocessing 5)
-set(rank_app 6)
+set(rank_design 6)
+set(rank_app 7)
 
 set(violations "")
 set(n_files 0)
 set(n_includes 0)
-foreach(module base mesh vem elasticity solvers contact postprocessing app)
+foreach(module base mesh vem elasticity solvers contact postprocessing design app)
   file(GLOB files ${SOURCE_DIR}/include/dealvem/${module}/*.h ${SOURCE_DIR}/source/${module}/*.cc)
   if(NOT files)
     message(FATAL_ERROR "FAIL: module '${module}' has no files; update this test with the layout")
