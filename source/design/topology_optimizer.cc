@@ -189,8 +189,12 @@ namespace dealvem
         const auto          start = std::chrono::steady_clock::now();
         const double        J     = ctx.problem->evaluate(s, ds);
         ctx.analysis_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        // NLopt's CCSA starts with conservative quadratic terms of unit
+        // weight: scaled by n / J0 the gradient entries are of order one
+        // (about -p / rho for SIMP compliance), so the first steps are not
+        // vanishingly small
         if (ctx.history->empty())
-          ctx.scale = 1 / std::max(std::abs(J), 1e-300);
+          ctx.scale = n / std::max(std::abs(J), 1e-300);
         if (grad)
           {
             const auto g = ctx.chain->variable_gradient(ds, ctx.settings->interpolation, ctx.projection);
@@ -221,9 +225,11 @@ namespace dealvem
         ctx.chain->factors(z, ctx.settings->interpolation, ctx.projection);
         std::vector<double> g;
         const double        v = ctx.chain->volume(&g, ctx.projection);
+        // scaled by n like the objective (entries of order one)
         if (grad)
-          std::copy(g.begin(), g.end(), grad);
-        return v - ctx.settings->volume_fraction;
+          for (unsigned i = 0; i < n; ++i)
+            grad[i] = n * g[i];
+        return n * (v - ctx.settings->volume_fraction);
       }
 
       std::string
@@ -294,17 +300,24 @@ namespace dealvem
               nlopt_set_lower_bounds(opt, lower.data());
               nlopt_set_upper_bounds(opt, upper.data());
               nlopt_set_min_objective(opt, design_objective, &ctx);
-              nlopt_add_inequality_constraint(opt, design_volume_constraint, &ctx, 1e-8);
+              nlopt_add_inequality_constraint(opt, design_volume_constraint, &ctx, 1e-8 * n);
               const unsigned int left = settings.max_iterations - result.history.size();
               nlopt_set_maxeval(opt, last_round ? left : std::min(left, settings.projection_interval));
-              nlopt_set_xtol_abs1(opt, settings.tolerance);
+              // the first moves (the asymptotes' first distance) as OC's
+              // move limit; NLopt stops when no variable moves by more than
+              // the tolerance between two outer iterations (the inner ones,
+              // which re-evaluate near the same point when a step was not
+              // conservative, do not count)
+              nlopt_set_initial_step1(opt, settings.move);
+              if (last_round)
+                nlopt_set_xtol_abs1(opt, settings.tolerance);
               double             f = 0;
               const nlopt_result r = nlopt_optimize(opt, z.data(), &f);
               nlopt_destroy(opt);
               result.stop_reason = design_nlopt_result(r);
+              result.converged   = (r == NLOPT_XTOL_REACHED);
               AssertThrow(r > 0 || r == NLOPT_ROUNDOFF_LIMITED,
                           dealii::ExcMessage("Design: NLopt's MMA stopped with '" + result.stop_reason + "'."));
-              result.converged = (r == NLOPT_XTOL_REACHED || r == NLOPT_FTOL_REACHED);
               if (last_round)
                 break;
               projection.beta = std::min(2 * projection.beta, settings.max_beta);
