@@ -147,6 +147,15 @@ namespace dealvem
 
 
 
+    const std::vector<ContactNodePair> &
+    ElasticDesignProblem::get_pairs() const
+    {
+      AssertThrow(data != nullptr, dealii::ExcMessage("ElasticDesignProblem: call setup() first."));
+      return data->pairs;
+    }
+
+
+
     std::string
     ElasticDesignProblem::objective_name() const
     {

@@ -223,6 +223,11 @@ namespace dealvem
       unsigned int
       n_pairs() const;
 
+      /// The contact pairs of every interface, in order (after setup(); the
+      /// index of a pair is its index in State::normal_multipliers).
+      const std::vector<ContactNodePair> &
+      get_pairs() const;
+
       std::string
       objective_name() const override;
 
