@@ -443,6 +443,15 @@ namespace dealvem
     reader.read_contact();
     reader.check_finite_sliding_entries();
     reader.read_steps_solver_output();
+    design.parse_parameters(prm);
+    AssertThrow(!design.enabled() || !opt.finite_strain,
+                dealii::ExcMessage("Design/Objective = " + design.objective +
+                                   ": topology optimization is implemented for small strain; set "
+                                   "'Finite strain/Enabled = false'."));
+    AssertThrow(!design.enabled() || !opt.contact.is_coulomb(),
+                dealii::ExcMessage("Design/Objective = " + design.objective +
+                                   ": Coulomb friction is path-dependent and its system is not symmetric; design "
+                                   "with 'Contact/Tangential' = multipliers, penalty or frictionless."));
     check_setup();
     reader.check_run_size();
     create_output_folder(opt.output_folder);

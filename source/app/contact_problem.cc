@@ -68,7 +68,9 @@ namespace dealvem
     output.writes_files = opt.write_vtu || opt.write_csv || opt.write_json || opt.write_pictures;
     run_with_files(output, [this](const std::string &note) { pcout << note; },
                    [this]() {
-                     if (opt.finite_strain)
+                     if (design.enabled())
+                       run_design_cycle();
+                     else if (opt.finite_strain)
                        run_finite_sliding();
                      else
                        run_cycles();
@@ -186,6 +188,40 @@ namespace dealvem
 
 
 
+  // Topology optimization of the bodies of cycle 0 with their contact
+  // pairs (explicit and detected), supports and loads at the final time.
+  void
+  ContactProblem::run_design_cycle()
+  {
+    AssertThrow(dealii::Utilities::MPI::n_mpi_processes(mpi_communicator) == 1,
+                dealii::ExcMessage("Design/Objective: topology optimization runs on one MPI process."));
+    data.reset();
+    results      = Results();
+    data         = std::make_unique<CycleData>();
+    data->prefix = output_prefix(opt.output_folder, opt.base_name, 0, 1);
+    make_meshes(0);
+    find_contact_pairs();
+    bc.set_time(opt.final_time);
+    DesignInputs inputs;
+    inputs.mesh             = &results.mesh;
+    inputs.laws             = &data->materials;
+    inputs.degree           = opt.degree;
+    inputs.interfaces       = cycle_pairs;
+    inputs.contact          = contact_settings;
+    inputs.insertion        = opt.insertion;
+    inputs.bc               = &bc;
+    inputs.solver           = opt.solver;
+    inputs.solver_tolerance = opt.solver_tolerance;
+    inputs.prefix           = data->prefix;
+    inputs.write_vtu        = opt.write_vtu;
+    inputs.write_pictures   = opt.write_pictures;
+    inputs.write_csv        = opt.write_csv;
+    std::ostream null_stream(nullptr); // not process 0: print nothing
+    run_design(design, inputs, pcout.is_active() ? pcout.get_stream() : null_stream);
+  }
+
+
+
   // The bodies' meshes, one material id per body, appended into one mesh.
   void
   ContactProblem::make_meshes(const unsigned int cycle)
@@ -229,8 +265,60 @@ namespace dealvem
   ContactProblem::insert_nodes()
   {
     StageTimer::Scope t(data->timer, "node insertion");
-    PolygonalMesh<2>          &mesh       = results.mesh;
-    auto                      &interfaces = results.interfaces;
+    find_contact_pairs();
+    PolygonalMesh<2> &mesh       = results.mesh;
+    auto             &interfaces = results.interfaces;
+    // the interfaces one after the other on one search structure of the
+    // boundary edges, the mesh validated once after the last (the cost
+    // grows with the interfaces' sizes, not their number times the mesh)
+    {
+      NodeInsertion::Settings settings = opt.insertion;
+      settings.validate_mesh           = false;
+      auto edges                       = NodeInsertion::boundary_edges(mesh);
+      for (unsigned int i = 0; i < cycle_pairs.size(); ++i)
+        interfaces.push_back(NodeInsertion::insert(mesh, cycle_pairs[i].first, cycle_pairs[i].second, opt.degree,
+                                                   settings, i, &edges));
+      try
+        {
+          mesh.validate();
+        }
+      catch (const std::exception &e)
+        {
+          AssertThrow(false, dealii::ExcMessage("Node insertion: moving the interface vertices onto their "
+                                                "partners made a cell invalid (the meshes of the two sides are "
+                                                "too far apart for their cells, or too coarse for the "
+                                                "curvature): " +
+                                                std::string(e.what())));
+        }
+    }
+    // a later interface may have moved a vertex shared with an earlier one
+    for (auto &itf : interfaces)
+      NodeInsertion::update_geometry(mesh, itf);
+    for (const auto &itf : interfaces)
+      {
+        results.insertion_reports.push_back(itf.report);
+        data->pairs.insert(data->pairs.end(), itf.pairs.begin(), itf.pairs.end());
+      }
+    // where three bodies meet, the pair that repeats the two others stays
+    // open (unilateral and Coulomb contact)
+    results.n_junction_pairs = NodeInsertion::mark_junctions(data->pairs, mesh);
+    bool any_segment = false;
+    for (const auto &itf : interfaces)
+      any_segment = any_segment || !itf.segments.empty();
+    AssertThrow(!data->pairs.empty() && any_segment,
+                dealii::ExcMessage("Contact: node insertion found no paired interface edge on any contact "
+                                   "pair; check the 'Contact/Pairs' ids and the 'Search distance'."));
+  }
+
+
+
+  // The contact pairs of boundary ids of this cycle: the explicit ones, then
+  // those ContactDetection finds on the mesh before node insertion; the
+  // friction coefficient of each.
+  void
+  ContactProblem::find_contact_pairs()
+  {
+    PolygonalMesh<2> &mesh = results.mesh;
     // the explicit pairs, then the detected ones
     cycle_pairs    = contact_pairs;
     cycle_friction = pair_friction;
@@ -276,46 +364,6 @@ namespace dealvem
         }
     }
     contact_settings.friction_coefficients = cycle_friction;
-    // the interfaces one after the other on one search structure of the
-    // boundary edges, the mesh validated once after the last (the cost
-    // grows with the interfaces' sizes, not their number times the mesh)
-    {
-      NodeInsertion::Settings settings = opt.insertion;
-      settings.validate_mesh           = false;
-      auto edges                       = NodeInsertion::boundary_edges(mesh);
-      for (unsigned int i = 0; i < cycle_pairs.size(); ++i)
-        interfaces.push_back(NodeInsertion::insert(mesh, cycle_pairs[i].first, cycle_pairs[i].second, opt.degree,
-                                                   settings, i, &edges));
-      try
-        {
-          mesh.validate();
-        }
-      catch (const std::exception &e)
-        {
-          AssertThrow(false, dealii::ExcMessage("Node insertion: moving the interface vertices onto their "
-                                                "partners made a cell invalid (the meshes of the two sides are "
-                                                "too far apart for their cells, or too coarse for the "
-                                                "curvature): " +
-                                                std::string(e.what())));
-        }
-    }
-    // a later interface may have moved a vertex shared with an earlier one
-    for (auto &itf : interfaces)
-      NodeInsertion::update_geometry(mesh, itf);
-    for (const auto &itf : interfaces)
-      {
-        results.insertion_reports.push_back(itf.report);
-        data->pairs.insert(data->pairs.end(), itf.pairs.begin(), itf.pairs.end());
-      }
-    // where three bodies meet, the pair that repeats the two others stays
-    // open (unilateral and Coulomb contact)
-    results.n_junction_pairs = NodeInsertion::mark_junctions(data->pairs, mesh);
-    bool any_segment = false;
-    for (const auto &itf : interfaces)
-      any_segment = any_segment || !itf.segments.empty();
-    AssertThrow(!data->pairs.empty() && any_segment,
-                dealii::ExcMessage("Contact: node insertion found no paired interface edge on any contact "
-                                   "pair; check the 'Contact/Pairs' ids and the 'Search distance'."));
   }
 
 

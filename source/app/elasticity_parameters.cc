@@ -159,6 +159,7 @@ namespace dealvem
     prm.leave_subsection();
 
     FiniteStrainParameters::declare_parameters(prm);
+    DesignParameters::declare_parameters(prm);
   }
 
 
@@ -180,6 +181,11 @@ namespace dealvem
     InputParsing::check_range(gamma, 1e-6, 1e6, "Discretization/Stabilization factor");
 
     bc.parse_parameters(prm);
+    design.parse_parameters(prm);
+    AssertThrow(!design.enabled() || !finite_strain.enabled,
+                dealii::ExcMessage("Design/Objective = " + design.objective +
+                                   ": topology optimization is implemented for small strain; set "
+                                   "'Finite strain/Enabled = false'."));
 
     prm.enter_subsection("Exact solution");
     exact_displacement = prm.get("Displacement");

@@ -354,7 +354,13 @@ namespace dealvem
     output.writer       = (this_process == 0);
     output.writes_files = write_vtu || write_json;
     run_with_files(
-      output, [this](const std::string &note) { pcout << note; }, [this]() { run_cycles(); },
+      output, [this](const std::string &note) { pcout << note; },
+      [this]() {
+        if (design.enabled())
+          run_design_cycle();
+        else
+          run_cycles();
+      },
       // the JSON summary (if any was written) says "failed"; the manifest
       // too, and the user learns which files the run wrote
       [this]() {
@@ -371,6 +377,33 @@ namespace dealvem
             AssertThrowMPI(ierr);
           }
       });
+  }
+
+
+
+  void
+  ElasticityProblem::run_design_cycle()
+  {
+    AssertThrow(!distributed || n_processes == 1,
+                dealii::ExcMessage("Design/Objective: topology optimization runs on one MPI process."));
+    timer     = std::make_unique<StageTimer>();
+    materials = {{dealii::types::material_id(mesh_parameters.material_id),
+                  ElasticMaterial(youngs_modulus, poissons_ratio, model)}};
+    make_mesh(0);
+    MaterialLibrary<2> design_laws(materials);
+    DesignInputs inputs;
+    inputs.mesh             = &mesh;
+    inputs.laws             = &design_laws;
+    inputs.degree           = degree;
+    inputs.bc               = &bc;
+    inputs.solver           = solver_type;
+    inputs.solver_tolerance = solver_tolerance;
+    inputs.prefix           = output_folder + "/" + base_name;
+    inputs.write_vtu        = write_vtu;
+    inputs.write_pictures   = write_vtu;
+    inputs.write_csv        = write_json;
+    std::ostream null_stream(nullptr); // process > 0: print nothing
+    run_design(design, inputs, pcout.is_active() ? pcout.get_stream() : null_stream);
   }
 
 

@@ -45,6 +45,7 @@ namespace dealvem
       dealii::Vector<double>                x;
       unsigned int                          n = 0, m = 0;
       double                                h_min = 0; // shortest paired sub-edge
+      double                                complementarity = 1;
       // the unit-factor cell matrices, kept when they fit in the budget
       std::vector<double>      cell_matrices;
       std::vector<std::size_t> cell_offset;
@@ -115,6 +116,17 @@ namespace dealvem
                   dealii::ExcMessage("add_point_load(): the force at " + internal::point_string(p) +
                                      " is not finite."));
       point_loads.emplace_back(p, f);
+    }
+
+
+
+    void
+    ElasticDesignProblem::add_boundary_conditions(const ConstraintFunction &constraints, const LoadFunction &loads)
+    {
+      if (constraints)
+        constraint_functions.push_back(constraints);
+      if (loads)
+        load_functions.push_back(loads);
     }
 
 
@@ -254,7 +266,17 @@ namespace dealvem
             if (!d.constraints.is_constrained(dof))
               d.constraints.add_line(dof);
           }
+        for (const auto &f : constraint_functions)
+          f(dof_handler, d.constraints);
         d.constraints.close();
+        for (const auto &line : d.constraints.get_lines())
+          AssertThrow(line.inhomogeneity == 0,
+                      dealii::ExcMessage("ElasticDesignProblem: the boundary conditions prescribe the displacement " +
+                                         internal::number_string(line.inhomogeneity) + " at DoF " +
+                                         std::to_string(line.index) + " (node at " +
+                                         internal::point_string(dof_handler.node_location(line.index / 2)) +
+                                         "); a design needs zero Dirichlet data (the compliance of a prescribed "
+                                         "displacement is not the work of the loads)."));
       }
       std::vector<dealii::Functions::ConstantFunction<2>> traction_functions;
       traction_functions.reserve(tractions.size());
@@ -271,6 +293,8 @@ namespace dealvem
             if (f.second[k] != 0)
               loads.add_nodal_load(VEMDoFHandler<2>::node_dof(dof_handler.vertex_node(v), k), f.second[k]);
         }
+      for (const auto &f : load_functions)
+        f(loads);
       loads.assemble_load_vector(d.load);
 
       // 3. the contact rows, the support check and the solvers
@@ -283,7 +307,7 @@ namespace dealvem
           d.h_min = scales->h_min;
         }
       d.contact = std::make_unique<ContactAssembler<2>>(dof_handler, d.pairs, settings,
-                                                        scales ? scales->penalty(settings) : 0.);
+                                                        scales ? scales->penalty(settings) : 1.);
       d.m = d.contact->n_multipliers();
       d.support = std::make_unique<RigidBodySupport>(dof_handler, d.constraints, *d.contact,
                                                      settings.tangential != ContactSettings::Tangential::frictionless);
@@ -305,16 +329,7 @@ namespace dealvem
         d.system_rhs[i] = d.load[i];
       d.constraints.condense(d.system_rhs);
 
-      d.solver = std::make_unique<SaddlePointSolver>(solver_settings_);
-      if (SaddlePointSolver::is_iterative(solver_settings_.type))
-        d.solver->set_near_null_space(dof_handler.rigid_body_modes());
-      if (!d.pairs.empty())
-        {
-          d.contact_solver = ContactSolver<2>::create(*d.contact, d.constraints, *d.solver, settings,
-                                                      scales->complementarity_constant());
-          d.contact_solver->set_support(d.support.get());
-          d.contact_solver->set_pair_neighbours(ActiveSetSolver<2>::pair_neighbours(d.interfaces));
-        }
+      d.complementarity = scales ? scales->complementarity_constant() : 1.;
 
       // 4. the unit-factor cell matrices, kept if they take at most 2^28
       // bytes (256 MiB): they do not depend on the design
@@ -439,6 +454,21 @@ namespace dealvem
                                        std::to_string(c) + " is " + internal::number_string(factors[c]) +
                                        "; it must be positive (MaterialInterpolation::minimum)."));
       Data &d = *data;
+      // the solvers, at the first evaluation (the solver settings may be
+      // chosen after setup(), by the size it gave)
+      if (!d.solver)
+        {
+          d.solver = std::make_unique<SaddlePointSolver>(solver_settings_);
+          if (SaddlePointSolver::is_iterative(solver_settings_.type))
+            d.solver->set_near_null_space(dof_handler.rigid_body_modes());
+          if (!d.pairs.empty())
+            {
+              d.contact_solver =
+                ContactSolver<2>::create(*d.contact, d.constraints, *d.solver, settings, d.complementarity);
+              d.contact_solver->set_support(d.support.get());
+              d.contact_solver->set_pair_neighbours(ActiveSetSolver<2>::pair_neighbours(d.interfaces));
+            }
+        }
       assemble(factors);
       state            = State();
       const unsigned p = d.pairs.size();

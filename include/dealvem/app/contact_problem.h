@@ -14,6 +14,7 @@
 
 #include <dealvem/app/contact_parameters.h>
 #include <dealvem/app/contact_results.h>
+#include <dealvem/app/design_parameters.h>
 #include <dealvem/app/elasticity_problem.h>
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/app/problem_setup.h>
@@ -386,7 +387,13 @@ namespace dealvem
     void
     make_meshes(const unsigned int cycle);
     void
+    find_contact_pairs();
+    void
     insert_nodes();
+    /// 'Design/Objective' set: topology optimization of the bodies (cycle
+    /// 0, run_design()) instead of the analysis.
+    void
+    run_design_cycle();
     void
     setup_system();
     void
@@ -465,6 +472,7 @@ namespace dealvem
     std::vector<ScaleCheck::Body>
     scale_check_bodies() const;
     Options                    opt;
+    DesignParameters           design;
     /// The contact settings of the run: opt.contact with the pairs'
     /// friction coefficients (made by run()).
     ContactSettings            contact_settings;

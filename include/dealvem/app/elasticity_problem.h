@@ -18,6 +18,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <dealvem/app/design_parameters.h>
 #include <dealvem/app/mesh_parameters.h>
 #include <dealvem/app/problem_setup.h>
 #include <dealvem/base/stage_timer.h>
@@ -155,6 +156,11 @@ namespace dealvem
     /// files of an earlier run were removed.
     void
     run_cycles();
+
+    /// 'Design/Objective' set: topology optimization of the body on the
+    /// mesh of cycle 0 (run_design()) instead of the cycles.
+    void
+    run_design_cycle();
     /// The steps of parse_parameters(), in its order.
     void
     check_contact_sections(dealii::ParameterHandler &prm) const;
@@ -260,6 +266,7 @@ namespace dealvem
     double                 gamma  = 1.0;
     Stabilization          stabilization = Stabilization::automatic;
     BoundaryConditionParameters bc;
+    DesignParameters            design;
     std::string                 exact_displacement;
     std::string  solver_type = "automatic";
     /// The solver type of the last solve (automatic resolved).

@@ -18,12 +18,16 @@
 #include <dealvem/vem/vem_dof_handler.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace dealvem
 {
+  template <int dim>
+  class ElasticityAssembler;
+
   namespace Design
   {
     /**
@@ -159,6 +163,25 @@ namespace dealvem
       void
       add_point_load(const dealii::Point<2> &p, const dealii::Tensor<1, 2> &f);
 
+      /// Writes constraints of the displacements (after those of
+      /// add_support() and add_point_support()).
+      using ConstraintFunction =
+        std::function<void(const VEMDoFHandler<2> &, dealii::AffineConstraints<double> &)>;
+      /// Hands loads to an assembler (its add_traction(), add_pressure(),
+      /// set_body_force(), add_nodal_load()).
+      using LoadFunction = std::function<void(ElasticityAssembler<2> &)>;
+
+      /**
+       * Supports and loads of a caller that has its own description of them
+       * (the parameter programs: BoundaryConditionParameters::
+       * apply_constraints() and add_loads()). setup() calls both; the
+       * constraints must prescribe zero displacements (setup() throws
+       * naming the DoF and its value otherwise), and the functions and
+       * whatever they refer to must outlive setup().
+       */
+      void
+      add_boundary_conditions(const ConstraintFunction &constraints, const LoadFunction &loads);
+
       /// A contact interface: the boundary parts with ids @p master and
       /// @p slave (node insertion makes them matching in setup()).
       void
@@ -181,7 +204,8 @@ namespace dealvem
       }
 
       /// The linear solver (default: the Cholesky factorization of the
-      /// condensed stiffness, SaddlePointSolver::Type::direct_constraints).
+      /// condensed stiffness, SaddlePointSolver::Type::direct_constraints),
+      /// read at the first evaluate().
       SaddlePointSolver::Settings &
       solver_settings()
       {
@@ -269,6 +293,8 @@ namespace dealvem
       std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, 2>>> tractions;
       std::vector<std::pair<dealii::Point<2>, dealii::Tensor<1, 2>>>          point_loads;
       std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> interface_ids;
+      std::vector<ConstraintFunction>                                         constraint_functions;
+      std::vector<LoadFunction>                                               load_functions;
       std::unique_ptr<Data>                                                   data;
       State                                                                   state;
     };

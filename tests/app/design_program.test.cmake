@@ -1,0 +1,101 @@
+# needs: CGAL (the design domains are Voronoi meshes)
+# The 'Design' section of the program (issue 42, item 4): topology
+# optimization from a parameter file, one body and two bodies in contact.
+# - examples/parameters/design-mbb.prm (step-79's MBB beam, one body,
+#   ElasticityProblem): converges within its 300 iterations; the final
+#   volume fraction is 0.5 to 1e-3 and the compliance below 40 % of the
+#   uniform design's (read from output/mbb-design.csv); the VTU series, the
+#   final VTU and the SVG picture are written;
+# - examples/parameters/design-bracket.prm (a bracket clamped to a wall and
+#   resting on a block, two bodies, unilateral contact, the block solid):
+#   volume 0.3 to 1e-3; then the same file with 'Contact/Normal = tied'
+#   gives a compliance at least 5 times lower (the bonded bracket hangs the
+#   load on the block, about 20 times stiffer);
+# - bad entries stop the run with a message naming them: Coulomb friction,
+#   a solid body that does not exist, a volume fraction of 0, the force of
+#   an interface that does not exist, non-zero Dirichlet data, and a
+#   design at finite strain.
+include(${TEST_DIR}/program_checks.cmake)
+find_program(PYTHON3 python3)
+if(NOT PYTHON3)
+  message(FATAL_ERROR "FAIL: this test needs python3 (scripts/setup.sh --tests installs it)")
+endif()
+set(EXAMPLES ${SOURCE_DIR}/examples/parameters)
+file(REMOVE_RECURSE ${WORK_DIR}/output)
+
+# the last row of a design CSV against the first: "ratio volume"
+function(design_csv file result)
+  execute_process(COMMAND ${PYTHON3} -c
+    "import csv,sys; r=list(csv.DictReader(open(sys.argv[1]))); print(float(r[-1]['objective'])/float(r[0]['objective']), r[-1]['volume'], r[-1]['objective'], len(r))"
+    ${file} OUTPUT_VARIABLE out RESULT_VARIABLE rc OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "FAIL: cannot read ${file}")
+  endif()
+  set(${result} "${out}" PARENT_SCOPE)
+endfunction()
+
+# python3 -c "assert <condition>" with the values of a design CSV
+function(check_design what condition)
+  execute_process(COMMAND ${PYTHON3} -c "import sys; assert ${condition}, sys.argv" RESULT_VARIABLE rc
+    ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "FAIL ${what}: ${condition}\n${err}")
+  endif()
+  message(STATUS "PASS ${what}: ${condition}")
+endfunction()
+
+# --- one body
+run_dealvem("design-mbb.prm" TRUE "(design change below the tolerance)" ${EXAMPLES}/design-mbb.prm)
+foreach(f mbb-design-0001.vtu mbb-design-final.vtu mbb-design.svg mbb-design.csv)
+  if(NOT EXISTS ${WORK_DIR}/output/${f})
+    message(FATAL_ERROR "FAIL design-mbb.prm: output/${f} was not written")
+  endif()
+endforeach()
+design_csv(${WORK_DIR}/output/mbb-design.csv mbb)
+string(REPLACE " " ";" mbb "${mbb}")
+list(GET mbb 0 ratio)
+list(GET mbb 1 volume)
+check_design("design-mbb.prm: compliance against the uniform design" "${ratio} < 0.4")
+check_design("design-mbb.prm: volume fraction" "abs(${volume} - 0.5) <= 1e-3")
+
+# --- two bodies in contact, unilateral then tied
+run_dealvem("design-bracket.prm" TRUE "(design change below the tolerance)" ${EXAMPLES}/design-bracket.prm)
+design_csv(${WORK_DIR}/output/bracket-design.csv resting)
+string(REPLACE " " ";" resting "${resting}")
+list(GET resting 1 volume)
+list(GET resting 2 c_resting)
+check_design("design-bracket.prm: volume fraction" "abs(${volume} - 0.3) <= 1e-3")
+file(READ ${EXAMPLES}/design-bracket.prm text)
+string(REPLACE "set Normal     = unilateral" "set Normal     = tied" tied_text "${text}")
+string(REPLACE "set Base name = bracket" "set Base name = bracket-tied" tied_text "${tied_text}")
+file(WRITE ${WORK_DIR}/bracket-tied.prm "${tied_text}")
+run_dealvem("design-bracket.prm, tied" TRUE "(design change below the tolerance)" ${WORK_DIR}/bracket-tied.prm)
+design_csv(${WORK_DIR}/output/bracket-tied-design.csv tied)
+string(REPLACE " " ";" tied "${tied}")
+list(GET tied 2 c_tied)
+check_design("design-bracket.prm: the bonded design is stiffer when bonded" "5 * ${c_tied} < ${c_resting}")
+
+# --- bad entries
+function(bad_design name replace_from replace_to fragment)
+  string(REPLACE "${replace_from}" "${replace_to}" bad "${text}")
+  if(bad STREQUAL text)
+    message(FATAL_ERROR "FAIL ${name}: '${replace_from}' not found in design-bracket.prm")
+  endif()
+  file(WRITE ${WORK_DIR}/bad.prm "${bad}")
+  run_dealvem("${name}" FALSE "${fragment}" ${WORK_DIR}/bad.prm)
+endfunction()
+bad_design("Coulomb friction" "set Tangential = multipliers" "set Tangential = coulomb"
+  "Coulomb friction is path-dependent")
+bad_design("a solid body that does not exist" "set Solid bodies      = 0" "set Solid bodies      = 0, 7"
+  "Design/Solid bodies: there is no body 7")
+bad_design("volume fraction 0" "set Volume fraction   = 0.3" "set Volume fraction   = 0"
+  "Design/Volume fraction must lie in (0, 1]")
+bad_design("force of a missing interface" "set Objective         = compliance"
+  "set Objective = interface force\n  set Interface = 3" "Design/Interface = 3, but the problem has 1 contact")
+bad_design("non-zero Dirichlet data" "set Dirichlet = 2 : xy : 0, 0;" "set Dirichlet = 2 : xy : 0, 0.001;"
+  "a design needs zero Dirichlet data")
+# (one body: the MBB file with a hyperelastic law at finite strain)
+file(READ ${EXAMPLES}/design-mbb.prm text)
+bad_design("finite strain" "subsection Discretization"
+  "subsection Finite strain\n  set Enabled = true\nend\nsubsection Material\n  set Law = neo-hooke\nend\nsubsection Discretization"
+  "topology optimization is implemented for small strain")
