@@ -42,8 +42,8 @@
 // side), unless an end of that edge is closer than 10 % of its length, in
 // which case that vertex is moved to the point instead (no tiny edges).
 // So the loaded segment is exactly [2.75, 3.25] on every mesh and the total
-// force 0.5; the program prints the loaded length and the force it
-// assembled.
+// force 0.5; the program prints the loaded length of every run (the force
+// is the traction 1 times it; design_step79.csv has both).
 //
 // Runs (one row each): quads 48 x 8 with k = 1 (882 DoFs, as step-79's Q1)
 // and k = 2, Voronoi 384 and 1536 cells with k = 1 and k = 2, each with MMA
@@ -56,7 +56,8 @@
 // Output (working directory): the Markdown table on stdout,
 // design_step79.csv (the same rows), and SVG pictures of the final
 // densities (black = 1, white = 0): design-mbb-quads-48x8-k1-mma.svg and
-// design-mbb-voronoi-<n>-k1-mma.svg for every Voronoi mesh.
+// design-mbb-voronoi-<n>-k1-mma.svg for every Voronoi mesh
+// (Design::write_density_svg).
 //
 // Options:
 //   --quick                  only the quads and Voronoi 384
@@ -82,6 +83,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <dealvem/design/density_filter.h>
+#include <dealvem/design/design_output.h>
 #include <dealvem/design/design_problem.h>
 #include <dealvem/design/topology_optimizer.h>
 #include <dealvem/elasticity/material.h>
@@ -189,58 +191,6 @@ namespace
     return loaded;
   }
 
-  // The densities as filled polygons in grey levels (black = 1, white = 0;
-  // 64 levels), without the mesh's edges. Compact, so that the pictures of
-  // fine meshes stay small: one path per grey level (each cell a closed
-  // subpath, stroked in its own colour to hide the seams), coordinates as
-  // integers in tenths of a pixel; cells lighter than 2 % are left to the
-  // white background.
-  void
-  write_density_svg(const std::string &filename, const PolygonalMesh<2> &mesh, const std::vector<double> &rho,
-                    const std::string &title)
-  {
-    const double            scale = 150; // pixels per unit length
-    const double            margin = 10, top_margin = 28;
-    const int               W = int(length * scale + 2 * margin), H = int(height * scale + margin + top_margin);
-    constexpr unsigned int  n_levels = 64;
-    std::vector<std::string> paths(n_levels + 1);
-    char                     buf[64];
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      {
-        const double r = std::clamp(rho[c], 0., 1.);
-        if (r < 0.02)
-          continue;
-        std::string &path  = paths[std::lround(r * n_levels)];
-        bool         first = true;
-        for (const unsigned int v : mesh.cell(c).vertices)
-          {
-            const auto &p = mesh.vertex(v);
-            std::snprintf(buf, sizeof(buf), "%s%ld %ld", first ? "M" : " ", std::lround(10 * p[0] * scale),
-                          std::lround(10 * (height - p[1]) * scale));
-            path += buf;
-            first = false;
-          }
-        path += 'Z';
-      }
-    std::ofstream out(filename);
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" viewBox=\"0 0 "
-        << W << ' ' << H << "\">\n";
-    out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    out << "<text x=\"" << margin << "\" y=\"18\" font-family=\"sans-serif\" font-size=\"14\">" << title << "</text>\n";
-    out << "<rect x=\"" << margin << "\" y=\"" << top_margin << "\" width=\"" << length * scale << "\" height=\""
-        << height * scale << "\" fill=\"none\" stroke=\"#888\" stroke-width=\"0.5\"/>\n";
-    out << "<g transform=\"translate(" << margin << ',' << top_margin
-        << ") scale(0.1)\" stroke-width=\"4\" stroke-linejoin=\"round\">\n";
-    for (unsigned int l = 0; l <= n_levels; ++l)
-      if (!paths[l].empty())
-        {
-          const int g = int(std::lround(255 * (1 - double(l) / n_levels)));
-          std::snprintf(buf, sizeof(buf), "#%02x%02x%02x", g, g, g);
-          out << "<path fill=\"" << buf << "\" stroke=\"" << buf << "\" d=\"" << paths[l] << "\"/>\n";
-        }
-    out << "</g>\n</svg>\n";
-  }
-
   struct Run
   {
     std::string  mesh_name;
@@ -320,7 +270,7 @@ namespace
       std::ostringstream title;
       title << "deal.II step-79 (SAND, Q1), quads 48x8: filtered densities, volume " << std::fixed
             << std::setprecision(3) << volume / area;
-      write_density_svg("design-mbb-step79-quads-48x8.svg", mesh, density, title.str());
+      Design::write_density_svg("design-mbb-step79-quads-48x8.svg", mesh, density, title.str());
     }
     std::ofstream csv("design_step79_eval.csv");
     csv << "k,dofs,compliance,volume\n";
@@ -490,7 +440,7 @@ main(int argc, char **argv)
                   std::ostringstream title;
                   title << "dealvem, " << mc.name << ", k = 1, MMA: compliance " << std::fixed << std::setprecision(3)
                         << run.compliance << ", volume " << run.volume << ", " << run.iterations << " iterations";
-                  write_density_svg("design-mbb-" + tag + "-k1-mma.svg", problem.get_mesh(), r.densities, title.str());
+                  Design::write_density_svg("design-mbb-" + tag + "-k1-mma.svg", problem.get_mesh(), r.densities, title.str());
                 }
               runs.push_back(run);
             }

@@ -68,12 +68,14 @@ trap 'rm -f "$MACHINE"' EXIT
 # --- step-79: copy, patch (only when the result changes, so that a second
 # run does not rebuild), build
 log "patching and building step-79 in $PEER ..."
+# move $1.new to $1 unless they are the same
+update() {
+  if cmp -s "$1.new" "$1" 2>/dev/null; then rm "$1.new"; else mv "$1.new" "$1"; fi
+}
 cp "$STEP79_SRC/CMakeLists.txt" "$PEER/CMakeLists.txt.new"
-cmp -s "$PEER/CMakeLists.txt.new" "$PEER/CMakeLists.txt" 2>/dev/null && rm "$PEER/CMakeLists.txt.new" ||
-  mv "$PEER/CMakeLists.txt.new" "$PEER/CMakeLists.txt"
+update "$PEER/CMakeLists.txt"
 "$PY" "$HERE/patch_step79.py" "$STEP79_SRC/step-79.cc" "$PEER/step-79.cc.new"
-cmp -s "$PEER/step-79.cc.new" "$PEER/step-79.cc" 2>/dev/null && rm "$PEER/step-79.cc.new" ||
-  mv "$PEER/step-79.cc.new" "$PEER/step-79.cc"
+update "$PEER/step-79.cc"
 {
   cmake -S "$PEER" -B "$PEER/build" -DCMAKE_BUILD_TYPE=Release &&
     cmake --build "$PEER/build" -j "$JOBS"
@@ -96,6 +98,7 @@ log "running step-79 (SAND; about 40 s on a 2-core VM) ..."
   { log "step-79 failed (see $PEER/run/step-79.log)"; exit 1; }
 log "step-79: $(grep -m1 '^DEALVEM_STEP79' "$PEER/run/step-79.log" | cut -c16-)"
 
+rm -f "$WORK"/design-mbb-*.svg "$WORK"/design_step79*.csv # no pictures of an earlier run in the report
 ours_args=()
 [ "${QUICK:-0}" = 1 ] && ours_args+=(--quick)
 # shellcheck disable=SC2206
@@ -120,7 +123,9 @@ echo "- load average at end: $(cut -d' ' -f1-3 /proc/loadavg)" >> "$MACHINE"
     --eval "$WORK/design_step79_eval.csv" \
     --step79-wall "$(sed -n 's/.*Elapsed (wall clock) time (h:mm:ss or m:ss): //p' "$PEER/run/step-79.time")"
   echo
-  echo "Pictures (final densities, black = 1): $(cd "$WORK" && ls design-mbb-*.svg | tr '\n' ' ')in $WORK"
+  pictures=""
+  for f in "$WORK"/design-mbb-*.svg; do pictures+="$(basename "$f") "; done
+  echo "Pictures (final densities, black = 1): ${pictures}in $WORK"
 } > "$OUT"
 cat "$OUT"
 log "report: $OUT (step-79's run in $PEER/run, dealvem's in $WORK)"

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 
@@ -46,32 +47,51 @@ namespace dealvem
           y0 = std::min(y0, mesh.vertex(v)[1]);
           y1 = std::max(y1, mesh.vertex(v)[1]);
         }
-      // 800 pixels wide (or 500 high), 10 px margins, 30 px for the title
-      const double scale  = std::min(800 / std::max(x1 - x0, 1e-300), 500 / std::max(y1 - y0, 1e-300));
-      const double width  = (x1 - x0) * scale + 20;
-      const double height = (y1 - y0) * scale + 50;
-      std::ofstream out(filename);
-      AssertThrow(out, dealii::ExcMessage("Cannot open '" + filename + "' for writing."));
-      out << std::fixed << std::setprecision(2);
-      out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-          << "\" viewBox=\"0 0 " << width << " " << height << "\">\n"
-          << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-          << "<text x=\"10\" y=\"20\" font-family=\"sans-serif\" font-size=\"14\">" << title << "</text>\n";
+      // at most 900 x 500 pixels of picture, 10 px margins, 28 px for the
+      // title; coordinates as integers in tenths of a pixel
+      const double scale  = std::min(900 / std::max(x1 - x0, 1e-300), 500 / std::max(y1 - y0, 1e-300));
+      const double width  = (x1 - x0) * scale, height = (y1 - y0) * scale;
+      // one path per grey level (64 levels), each cell a closed subpath:
+      // a picture of thousands of cells stays small. Cells below 2 % are
+      // left to the white background.
+      constexpr unsigned int   n_levels = 64;
+      std::vector<std::string> paths(n_levels + 1);
       std::vector<dealii::Point<2>> p;
+      char                          number[48];
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         {
-          const int grey = static_cast<int>(std::lround(255 * (1 - std::clamp(density[c], 0., 1.))));
-          if (grey >= 255)
-            continue; // void: the white background
+          const double rho = std::clamp(density[c], 0., 1.);
+          if (rho < 0.02)
+            continue;
+          std::string &path = paths[std::lround(rho * n_levels)];
           mesh.cell_vertices(c, p);
-          out << "<polygon points=\"";
-          for (const auto &q : p)
-            out << 10 + (q[0] - x0) * scale << "," << 40 + (y1 - q[1]) * scale << " ";
-          // a stroke of the same grey closes the hairline gaps between cells
-          out << "\" fill=\"rgb(" << grey << "," << grey << "," << grey << ")\" stroke=\"rgb(" << grey << ","
-              << grey << "," << grey << ")\" stroke-width=\"0.5\"/>\n";
+          for (unsigned int i = 0; i < p.size(); ++i)
+            {
+              std::snprintf(number, sizeof(number), "%s%ld %ld", i == 0 ? "M" : " ",
+                            std::lround(10 * (p[i][0] - x0) * scale), std::lround(10 * (y1 - p[i][1]) * scale));
+              path += number;
+            }
+          path += 'Z';
         }
-      out << "</svg>\n";
+      std::ofstream out(filename);
+      AssertThrow(out, dealii::ExcMessage("Cannot open '" + filename + "' for writing."));
+      out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << std::lround(width + 20) << "\" height=\""
+          << std::lround(height + 38) << "\" viewBox=\"0 0 " << std::lround(width + 20) << " "
+          << std::lround(height + 38) << "\">\n"
+          << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+          << "<text x=\"10\" y=\"18\" font-family=\"sans-serif\" font-size=\"14\">" << title << "</text>\n"
+          << "<rect x=\"10\" y=\"28\" width=\"" << std::lround(width) << "\" height=\"" << std::lround(height)
+          << "\" fill=\"none\" stroke=\"#888\" stroke-width=\"0.5\"/>\n"
+          // each cell stroked in its own grey hides the seams between cells
+          << "<g transform=\"translate(10,28) scale(0.1)\" stroke-width=\"4\" stroke-linejoin=\"round\">\n";
+      for (unsigned int l = 0; l <= n_levels; ++l)
+        if (!paths[l].empty())
+          {
+            const int grey = static_cast<int>(std::lround(255 * (1 - double(l) / n_levels)));
+            std::snprintf(number, sizeof(number), "#%02x%02x%02x", grey, grey, grey);
+            out << "<path fill=\"" << number << "\" stroke=\"" << number << "\" d=\"" << paths[l] << "\"/>\n";
+          }
+      out << "</g>\n</svg>\n";
       AssertThrow(out, dealii::ExcMessage("Writing '" + filename + "' failed."));
     }
 

@@ -13,8 +13,9 @@
 //   compliance, which is not self-adjoint there (the adjoint solve runs);
 // - a block on a curved base (the contact opens towards the ends, some
 //   pairs open), unilateral: the compliance (the closed pairs have positive
-//   initial gaps: not self-adjoint) and, with the block also held at its
-//   side, the normal force of the interface;
+//   initial gaps: not self-adjoint), the same with stick by a penalty
+//   (springs in the stiffness, independent of the design) and, with the
+//   block also held at its side, the normal force of the interface;
 // - the whole chain of TopologyOptimizer: variables z -> filter -> Heaviside
 //   projection -> SIMP / RAMP -> factors -> compliance, against finite
 //   differences in z.
@@ -197,7 +198,8 @@ namespace
   // a block on a base whose top bulges, y = 0.02 (1 - 4 (x - 0.5)^2): the
   // contact closes in the middle and opens towards the block's ends
   void
-  curved_base(const unsigned int k, const Design::ElasticDesignProblem::Objective objective)
+  curved_base(const unsigned int k, const Design::ElasticDesignProblem::Objective objective,
+              const ContactSettings::Tangential tangential = ContactSettings::Tangential::multipliers)
   {
     PolygonalMesh<2> mesh, upper;
     PolygonalMeshGenerators::structured_quads(mesh, P(0, -0.5), P(1, 0), 12, 5);
@@ -210,7 +212,7 @@ namespace
     add_body(mesh, upper);
     Design::ElasticDesignProblem problem(mesh, two_laws(), k);
     problem.contact_settings().normal     = ContactSettings::Normal::unilateral;
-    problem.contact_settings().tangential = ContactSettings::Tangential::multipliers;
+    problem.contact_settings().tangential = tangential;
     // the gaps (the overlap, the bulge) are real, not two discretizations
     // of one curve
     problem.insertion_settings().close_discretisation_gaps = false;
@@ -240,9 +242,10 @@ namespace
       testing::check(problem.last_state().interface_forces[0] < 0.95 * 1.6,
                      "curved base, held at the side: the interface carries part of the load");
     // the closed pairs have positive initial gaps: not self-adjoint
+    const bool penalty = tangential == ContactSettings::Tangential::penalty;
     check_gradient(problem, s,
-                   std::string("curved base, ") + (force ? "interface force" : "compliance") + ", k = " +
-                     std::to_string(k),
+                   std::string("curved base, ") + (force ? "interface force" : "compliance") +
+                     (penalty ? ", stick by penalty" : "") + ", k = " + std::to_string(k),
                    true);
   }
 
@@ -412,6 +415,7 @@ main(int argc, char **argv)
       two_blocks_interference(k);
       curved_base(k, Design::ElasticDesignProblem::Objective::compliance);
       curved_base(k, Design::ElasticDesignProblem::Objective::interface_force);
+      curved_base(k, Design::ElasticDesignProblem::Objective::compliance, ContactSettings::Tangential::penalty);
       chain(k, k == 1 ? Design::MaterialInterpolation::Type::simp : Design::MaterialInterpolation::Type::ramp);
     }
   return testing::finish();

@@ -94,9 +94,14 @@ namespace dealvem
     std::string solver = "automatic";
     /// 'Solver/Tolerance'.
     double solver_tolerance = 1e-12;
-    /// The output prefix "<folder>/<base>" and whether files are written.
+    /// The output prefix "<folder>/<base>".
     std::string prefix;
-    bool        write_vtu = true, write_pictures = true, write_csv = true;
+    /// Write the VTU files of the densities.
+    bool write_vtu = true;
+    /// Write the SVG picture of the final design.
+    bool write_pictures = true;
+    /// Write the CSV history.
+    bool write_csv = true;
   };
 
   /// Run the optimization of @p parameters on @p inputs, printing a line

@@ -121,14 +121,18 @@ namespace dealvem
         /// The physical densities $\bar\rho$ of every cell of the mesh
         /// (passive cells 0 or 1).
         std::vector<double>    densities;
-        /// The final objective and volume fraction.
-        double                 objective = 0, volume = 0;
+        /// The final objective.
+        double                 objective = 0;
+        /// The final volume fraction.
+        double                 volume = 0;
         /// Whether the change tolerance was reached.
         bool                   converged = false;
         /// NLopt's return code (MMA), as text.
         std::string            stop_reason;
-        /// Wall time of run() (s) and the part spent in evaluate().
-        double                 time = 0, analysis_time = 0;
+        /// Wall time of run() (s).
+        double                 time = 0;
+        /// The part of it spent in DesignProblem::evaluate() (s).
+        double                 analysis_time = 0;
       };
 
       /// An optimizer with @p settings (checked).
@@ -159,7 +163,8 @@ namespace dealvem
         std::vector<double>       areas;        ///< their areas
         DensityFilter             filter;       ///< over their centroids
         std::vector<double>       base;         ///< densities of every cell (passive values)
-        std::vector<double>       filtered, physical;
+        std::vector<double>       filtered;     ///< P z (design cells)
+        std::vector<double>       physical;     ///< the densities of every cell
 
         /// Fill physical (every cell) from the variables @p z and return
         /// the stiffness factors.
