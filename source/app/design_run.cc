@@ -22,13 +22,16 @@ namespace dealvem
   {
     using namespace dealii::Patterns;
     prm.enter_subsection("Design");
-    prm.declare_entry("Objective", "none", Selection("none|compliance|interface force"),
+    prm.declare_entry("Objective", "none", Selection("none|compliance|interface force|largest pressure"),
                       "Topology optimization of the bodies instead of one analysis: minimize the compliance "
-                      "(the work of the loads) or the normal force of one contact interface, under a volume "
-                      "constraint. 'none': analyse only.");
+                      "(the work of the loads), the normal force of one contact interface, or its largest "
+                      "contact pressure (a P-norm of the pair pressures), under a volume constraint. 'none': "
+                      "analyse only.");
     prm.declare_entry("Interface", "0", Integer(0),
-                      "The interface of 'Objective = interface force' (in the order of 'Contact/Pairs', then "
-                      "the detected ones).");
+                      "The interface of 'Objective = interface force' or 'largest pressure' (in the order of "
+                      "'Contact/Pairs', then the detected ones).");
+    prm.declare_entry("Pressure norm exponent", "8", Double(1),
+                      "The exponent P of 'Objective = largest pressure': (sum p_i^P)^(1/P) over the pairs.");
     prm.declare_entry("Volume fraction", "0.5", Double(0, 1), "The volume fraction of the designed cells.");
     prm.declare_entry("Filter radius", "0.1", Double(0),
                       "The radius of the density filter (length; PolyTop's linear filter over cell centroids). "
@@ -81,6 +84,7 @@ namespace dealvem
     prm.enter_subsection("Design");
     objective       = prm.get("Objective");
     interface       = prm.get_integer("Interface");
+    pressure_exponent = prm.get_double("Pressure norm exponent");
     auto &s         = settings;
     s.volume_fraction = prm.get_double("Volume fraction");
     s.filter_radius   = prm.get_double("Filter radius");
@@ -118,7 +122,7 @@ namespace dealvem
     for (const auto id : parameters.settings.void_ids)
       AssertThrow(inputs.laws->has_law(id),
                   dealii::ExcMessage("Design/Void bodies: there is no body " + std::to_string(id) + "."));
-    AssertThrow(parameters.objective != "interface force" || parameters.interface < inputs.interfaces.size(),
+    AssertThrow(parameters.objective == "compliance" || parameters.interface < inputs.interfaces.size(),
                 dealii::ExcMessage("Design/Interface = " + std::to_string(parameters.interface) + ", but the problem has " +
                                    std::to_string(inputs.interfaces.size()) + " contact interfaces."));
 
@@ -133,6 +137,11 @@ namespace dealvem
       [&bc](ElasticityAssembler<2> &assembler) { bc.add_loads(assembler); });
     if (parameters.objective == "interface force")
       problem.set_objective(Design::ElasticDesignProblem::Objective::interface_force, parameters.interface);
+    else if (parameters.objective == "largest pressure")
+      {
+        problem.set_objective(Design::ElasticDesignProblem::Objective::max_pressure, parameters.interface);
+        problem.set_pressure_norm_exponent(parameters.pressure_exponent);
+      }
     problem.setup();
     // the solver: 'automatic' follows the rule of the analyses, the
     // factorization of the condensed stiffness up to the size where CG-AMG

@@ -22,6 +22,7 @@
 #include <dealvem/vem/vem_values.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace dealvem
@@ -151,6 +152,17 @@ namespace dealvem
 
 
 
+    void
+    ElasticDesignProblem::set_pressure_norm_exponent(const double P)
+    {
+      AssertThrow(std::isfinite(P) && P >= 1,
+                  dealii::ExcMessage("ElasticDesignProblem: the exponent of the pressure norm must be at least 1, "
+                                     "got " + internal::number_string(P) + "."));
+      pressure_exponent = P;
+    }
+
+
+
     unsigned int
     ElasticDesignProblem::n_pairs() const
     {
@@ -171,9 +183,12 @@ namespace dealvem
     std::string
     ElasticDesignProblem::objective_name() const
     {
-      return objective == Objective::compliance ?
-               "compliance" :
-               "normal force of interface " + std::to_string(objective_interface);
+      if (objective == Objective::compliance)
+        return "compliance";
+      if (objective == Objective::interface_force)
+        return "normal force of interface " + std::to_string(objective_interface);
+      return "largest pressure of interface " + std::to_string(objective_interface) + " (" +
+             internal::number_string(pressure_exponent) + "-norm)";
     }
 
 
@@ -222,7 +237,7 @@ namespace dealvem
                   dealii::ExcMessage("ElasticDesignProblem: Coulomb friction is path-dependent and its system is "
                                      "not symmetric; design with tied, stick or frictionless contact."));
       AssertThrow(objective == Objective::compliance || objective_interface < interface_ids.size(),
-                  dealii::ExcMessage("ElasticDesignProblem: the objective is the force of interface " +
+                  dealii::ExcMessage("ElasticDesignProblem: the objective belongs to interface " +
                                      std::to_string(objective_interface) + ", but there are " +
                                      std::to_string(interface_ids.size()) + " contact interfaces."));
       data = std::make_unique<Data>();
@@ -469,8 +484,15 @@ namespace dealvem
               d.contact_solver->set_pair_neighbours(ActiveSetSolver<2>::pair_neighbours(d.interfaces));
             }
         }
+      using Clock        = std::chrono::steady_clock;
+      const auto seconds = [](const Clock::time_point t) {
+        return std::chrono::duration<double>(Clock::now() - t).count();
+      };
+      auto start = Clock::now();
       assemble(factors);
-      state            = State();
+      state               = State();
+      state.time_assembly = seconds(start);
+      start               = Clock::now();
       const unsigned p = d.pairs.size();
 
       // the state
@@ -488,6 +510,7 @@ namespace dealvem
           state.n_contact_iterations = r.n_iterations;
           state.n_solves             = r.n_iterations;
         }
+      state.time_state = seconds(start);
       state.displacement.reinit(d.n);
       for (unsigned int i = 0; i < d.n; ++i)
         state.displacement[i] = d.x[i];
@@ -522,10 +545,36 @@ namespace dealvem
       if (objective == Objective::compliance)
         for (unsigned int i = 0; i < d.n; ++i)
           a[i] = d.load[i];
-      const double J = a * d.x;
+      double J = a * d.x;
+      if (objective == Objective::max_pressure)
+        {
+          // J = (sum max(0, p_i)^P)^(1/P), scaled by the largest pressure
+          // against overflow; a = dJ/dx (the adjoint of a non-linear J)
+          const ContactRows   rows = d.contact->rows();
+          const double        P    = pressure_exponent;
+          std::vector<double> pressure(p, 0.);
+          double              p_max = 0;
+          for (unsigned int i = 0; i < p; ++i)
+            if (d.pairs[i].interface == objective_interface && !d.pairs[i].junction)
+              {
+                pressure[i] = std::max(0., -state.normal_multipliers[i] / d.pairs[i].weight);
+                p_max       = std::max(p_max, pressure[i]);
+              }
+          AssertThrow(p_max > 0, dealii::ExcMessage("ElasticDesignProblem: the objective is the largest pressure of "
+                                                    "interface " + std::to_string(objective_interface) +
+                                                    ", which carries no pressure."));
+          double sum = 0;
+          for (unsigned int i = 0; i < p; ++i)
+            sum += std::pow(pressure[i] / p_max, P);
+          J = p_max * std::pow(sum, 1 / P);
+          for (unsigned int i = 0; i < p; ++i)
+            if (pressure[i] > 0)
+              a[rows.normal_row(i)] = -std::pow(pressure[i] / J, P - 1) / d.pairs[i].weight;
+        }
 
       // the adjoint A y = a with the matrix of the converged set; for the
       // compliance without a right-hand side on the multiplier rows, y = x
+      start = Clock::now();
       dealii::Vector<double> y;
       bool                   self_adjoint = (objective == Objective::compliance);
       if (self_adjoint && p > 0)
@@ -561,12 +610,15 @@ namespace dealvem
           ++state.n_solves;
           state.adjoint_solved = true;
         }
+      state.time_adjoint = seconds(start);
+      start              = Clock::now();
       dealii::Vector<double> yu(d.n);
       for (unsigned int i = 0; i < d.n; ++i)
         yu[i] = y[i];
       gradient = cell_bilinear_forms(state.displacement, yu);
       for (double &g : gradient)
         g = -g;
+      state.time_sensitivities = seconds(start);
       return J;
     }
   } // namespace Design

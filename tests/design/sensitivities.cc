@@ -15,7 +15,9 @@
 //   pairs open), unilateral: the compliance (the closed pairs have positive
 //   initial gaps: not self-adjoint), the same with stick by a penalty
 //   (springs in the stiffness, independent of the design) and, with the
-//   block also held at its side, the normal force of the interface;
+//   block also held at its side, the normal force of the interface; the
+//   largest pressure of the interface (its 8-norm, a J non-linear in the
+//   state);
 // - the whole chain of TopologyOptimizer: variables z -> filter -> Heaviside
 //   projection -> SIMP / RAMP -> factors -> compliance, against finite
 //   differences in z.
@@ -222,7 +224,8 @@ namespace
     problem.set_objective(objective);
     // for the force: the block also held at its left side, so that the
     // interface's share of the load depends on the design
-    const bool force = objective == Design::ElasticDesignProblem::Objective::interface_force;
+    const bool force    = objective == Design::ElasticDesignProblem::Objective::interface_force;
+    const bool pressure = objective == Design::ElasticDesignProblem::Objective::max_pressure;
     if (force)
       problem.add_support(10, {{false, true}});
     problem.setup();
@@ -235,6 +238,17 @@ namespace
     std::cout << "curved base, k = " << k << ": " << n_active << " of " << problem.n_pairs() << " pairs closed"
               << std::endl;
     testing::check(n_active > 2 && n_active < problem.n_pairs(), "curved base: some pairs open, some closed");
+    if (pressure)
+      {
+        // the 8-norm lies between the largest pair pressure and n^(1/8) times it
+        double p_max = 0;
+        for (unsigned int i = 0; i < problem.n_pairs(); ++i)
+          p_max = std::max(p_max, -problem.last_state().normal_multipliers[i] / problem.get_pairs()[i].weight);
+        std::vector<double> gp;
+        const double        Jp = problem.evaluate(s, gp);
+        testing::check(Jp >= p_max && Jp <= std::pow(double(n_active), 1. / 8) * p_max,
+                       "curved base: max <= the pressure norm <= n^(1/8) max");
+      }
     if (!force)
       testing::check_near(problem.last_state().interface_forces[0], 2. * 0.8, 1e-10 * 1.6,
                           "curved base: the interface carries the load");
@@ -244,7 +258,8 @@ namespace
     // the closed pairs have positive initial gaps: not self-adjoint
     const bool penalty = tangential == ContactSettings::Tangential::penalty;
     check_gradient(problem, s,
-                   std::string("curved base, ") + (force ? "interface force" : "compliance") +
+                   std::string("curved base, ") +
+                     (force ? "interface force" : pressure ? "largest pressure (8-norm)" : "compliance") +
                      (penalty ? ", stick by penalty" : "") + ", k = " + std::to_string(k),
                    true);
   }
@@ -415,6 +430,7 @@ main(int argc, char **argv)
       two_blocks_interference(k);
       curved_base(k, Design::ElasticDesignProblem::Objective::compliance);
       curved_base(k, Design::ElasticDesignProblem::Objective::interface_force);
+      curved_base(k, Design::ElasticDesignProblem::Objective::max_pressure);
       curved_base(k, Design::ElasticDesignProblem::Objective::compliance, ContactSettings::Tangential::penalty);
       chain(k, k == 1 ? Design::MaterialInterpolation::Type::simp : Design::MaterialInterpolation::Type::ramp);
     }

@@ -45,11 +45,14 @@ namespace dealvem
    */
   struct DesignParameters
   {
-    /// 'Objective': "none", "compliance" or "interface force".
+    /// 'Objective': "none", "compliance", "interface force" or "largest
+    /// pressure".
     std::string objective = "none";
-    /// 'Interface': the contact interface of the force objective (in the
-    /// order of 'Contact/Pairs', then the detected ones).
+    /// 'Interface': the contact interface of the force and pressure
+    /// objectives (in the order of 'Contact/Pairs', then the detected ones).
     unsigned int interface = 0;
+    /// 'Pressure norm exponent': P of the largest-pressure objective.
+    double pressure_exponent = 8;
     /// The optimizer's settings (volume, filter, interpolation, ...).
     Design::TopologyOptimizer::Settings settings;
     /// 'Output interval': a VTU file every this many iterations (0: the

@@ -96,6 +96,14 @@ namespace dealvem
      * - Objective::interface_force: the compressive normal force of one
      *   interface, $J = -\sum_{i \in I} \lambda_i$ (the multipliers are
      *   non-positive in compression), $a$ the indicator of its normal rows.
+     * - Objective::max_pressure: the largest contact pressure of one
+     *   interface, smoothly: the $P$-norm
+     *   $J = \bigl(\sum_{i \in I} \max(0, p_i)^P\bigr)^{1/P}$ of the pair
+     *   pressures $p_i = -\lambda_i / w_i$ ($w_i$ the tributary length;
+     *   $P$ = set_pressure_norm_exponent(), default 8), which lies between
+     *   $\max_i p_i$ and $n^{1/P}\max_i p_i$. It is not linear in $x$: the
+     *   adjoint takes $a = \partial J/\partial x$ at the state,
+     *   $a_{\lambda_i} = -\max(0,p_i)^{P-1} J^{1-P} / w_i$.
      *
      * The derivative is that of the converged set: it assumes strict
      * complementarity. last_state() reports the degenerate pairs (closed
@@ -109,7 +117,8 @@ namespace dealvem
       enum class Objective
       {
         compliance,     ///< $f^T u$
-        interface_force ///< the compressive normal force of one interface
+        interface_force, ///< the compressive normal force of one interface
+        max_pressure     ///< the P-norm of the pair pressures of one interface
       };
 
       /// The state of the last evaluate().
@@ -134,6 +143,11 @@ namespace dealvem
         unsigned int n_solves = 0;
         /// Whether an adjoint solve was needed.
         bool adjoint_solved = false;
+        /// Wall times (s) of the parts of evaluate(): the assembly of
+        /// $\sum_c s_c K_c$, the state (the contact solve with all its
+        /// active-set iterations), the adjoint solve (0 when not needed) and
+        /// the cell-wise sensitivities.
+        double time_assembly = 0, time_state = 0, time_adjoint = 0, time_sensitivities = 0;
       };
 
       /**
@@ -212,10 +226,14 @@ namespace dealvem
         return solver_settings_;
       }
 
-      /// The objective; for Objective::interface_force, the interface
-      /// (in the order of add_contact_interface()).
+      /// The objective; for Objective::interface_force and max_pressure,
+      /// the interface (in the order of add_contact_interface()).
       void
       set_objective(const Objective objective, const unsigned int interface = 0);
+
+      /// The exponent P of Objective::max_pressure (>= 1; default 8).
+      void
+      set_pressure_norm_exponent(const double P);
 
       /// Build everything that does not depend on the design (see the class
       /// documentation). Throws if a body is not held.
@@ -288,6 +306,7 @@ namespace dealvem
       SaddlePointSolver::Settings                        solver_settings_;
       Objective                                          objective = Objective::compliance;
       unsigned int                                       objective_interface = 0;
+      double                                             pressure_exponent   = 8;
       std::vector<std::pair<dealii::types::boundary_id, std::array<bool, 2>>> supports;
       std::vector<std::pair<dealii::Point<2>, unsigned int>>                  point_supports;
       std::vector<std::pair<dealii::types::boundary_id, dealii::Tensor<1, 2>>> tractions;

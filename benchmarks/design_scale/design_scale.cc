@@ -1,0 +1,226 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+//
+// The cost of a design iteration (issue 42, item 5).
+//
+//   benchmark_design_scale contact [n_cells]        (default 3200)
+//   benchmark_design_scale mbb n_cells [iterations] [solver]
+//
+// contact: the bracket of examples/step-13 (a 2 x 1 design domain of
+// n_cells Voronoi cells, clamped at its left, standing on a solid block,
+// pulled up near x = 1.5), k = 1, resting (unilateral, stick where closed)
+// and bonded (tied). Prints the time of one contact solve of the uniform
+// design from the initial gaps (the analysis a user runs once), then the
+// optimization's mean time per design iteration split into assembly, state
+// (the active-set iterations, warm-started from the last design's set),
+// adjoint and sensitivities, and the ratio iteration / one contact solve.
+//
+// mbb: the MBB beam of step-79 on n_cells Voronoi cells (k = 1, the filter
+// radius scaled with the cell size: 2 cells), MMA for at most `iterations`
+// iterations (default 100), solver "CG-AMG" (default) or "direct
+// constraints". Prints the mesh and setup times, the time per iteration
+// and its parts, and the peak memory (VmHWM).
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <dealvem/design/design_problem.h>
+#include <dealvem/design/topology_optimizer.h>
+#include <dealvem/elasticity/material.h>
+#include <dealvem/mesh/generators.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <string>
+
+using namespace dealvem;
+using Point  = dealii::Point<2>;
+using Vector = dealii::Tensor<1, 2>;
+
+namespace
+{
+  double
+  peak_memory_mb()
+  {
+    std::ifstream f("/proc/self/status");
+    std::string   line;
+    while (std::getline(f, line))
+      if (line.rfind("VmHWM:", 0) == 0)
+        return std::stod(line.substr(6)) / 1024.;
+    return 0;
+  }
+
+  double
+  since(const std::chrono::steady_clock::time_point t)
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  }
+
+  // the top edges whose midpoints lie in [x0, x1] get the id; their length
+  double
+  mark_top(PolygonalMesh<2> &mesh, const double y, const double x0, const double x1, const unsigned int id)
+  {
+    double length = 0;
+    for (unsigned int e = 0; e < mesh.n_edges(); ++e)
+      {
+        const auto &edge = mesh.edge(e);
+        if (!edge.at_boundary())
+          continue;
+        const Point a = mesh.vertex(edge.vertices[0]), b = mesh.vertex(edge.vertices[1]);
+        const Point m = 0.5 * (a + b);
+        if (std::abs(a[1] - y) < 1e-12 && std::abs(b[1] - y) < 1e-12 && m[0] >= x0 && m[0] <= x1)
+          {
+            mesh.set_edge_boundary_id(e, id);
+            length += a.distance(b);
+          }
+      }
+    return length;
+  }
+
+  // mean times of the iterations' parts
+  struct Means
+  {
+    unsigned int n = 0;
+    double       assembly = 0, state = 0, adjoint = 0, sensitivities = 0, iteration = 0;
+    unsigned int active_set = 0;
+    void
+    add(const Design::ElasticDesignProblem::State &s)
+    {
+      ++n;
+      assembly += s.time_assembly;
+      state += s.time_state;
+      adjoint += s.time_adjoint;
+      sensitivities += s.time_sensitivities;
+      active_set += s.n_contact_iterations;
+    }
+  };
+
+  void
+  contact(const unsigned int n_cells)
+  {
+    for (const auto normal : {ContactSettings::Normal::unilateral, ContactSettings::Normal::tied})
+      {
+        PolygonalMesh<2> mesh, part;
+        PolygonalMeshGenerators::structured_quads(mesh, Point(0, -0.25), Point(2, 0), 16, 2);
+        for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+          mesh.set_material_id(c, 1);
+        PolygonalMeshGenerators::voronoi(part, Point(0, 0), Point(2, 1), n_cells, 30, 3);
+        for (unsigned int e = 0; e < part.n_edges(); ++e)
+          if (part.edge(e).at_boundary())
+            part.set_edge_boundary_id(e, part.edge(e).boundary_id + 10);
+        const double length = mark_top(part, 1., 1.45, 1.55, 20);
+        mesh.append(part);
+        MaterialLibrary<2> laws;
+        laws.add(0, ElasticMaterial(1., 0.3));
+        laws.add(1, ElasticMaterial(1., 0.3));
+        auto make = [&]() {
+          auto p = std::make_unique<Design::ElasticDesignProblem>(mesh, laws, 1);
+          p->contact_settings().normal     = normal;
+          p->contact_settings().tangential = ContactSettings::Tangential::multipliers;
+          p->add_contact_interface(3, 12);
+          p->add_support(2);
+          p->add_support(10);
+          p->add_traction(20, Vector({0., 1. / length}));
+          p->setup();
+          return p;
+        };
+        // one contact solve of the uniform (solid) design, cold
+        auto                problem = make();
+        std::vector<double> s(problem->get_mesh().n_cells(), 1.), g;
+        auto                start = std::chrono::steady_clock::now();
+        problem->evaluate(s, g);
+        const double one_solve = problem->last_state().time_state;
+        const double one_total = since(start);
+        const unsigned int one_iterations = problem->last_state().n_contact_iterations;
+
+        auto                                optimized = make();
+        Design::TopologyOptimizer::Settings settings;
+        settings.volume_fraction       = 0.3;
+        settings.filter_radius         = 0.12 * std::sqrt(800. / n_cells);
+        settings.interpolation.minimum = 1e-4;
+        settings.solid_ids             = {1};
+        settings.max_iterations        = 200;
+        Design::TopologyOptimizer optimizer(settings);
+        Means                     means;
+        optimizer.set_callback([&](unsigned int, const Design::TopologyOptimizer::Iteration &,
+                                   const std::vector<double> &) { means.add(optimized->last_state()); });
+        const auto r = optimizer.run(*optimized);
+        const double per_iteration = r.time / r.history.size();
+        std::cout << std::setprecision(4) << "bracket, "
+                  << (normal == ContactSettings::Normal::tied ? "bonded" : "resting") << ", " << n_cells
+                  << " cells, " << optimized->get_dof_handler().n_dofs() << " DoFs, " << optimized->n_pairs()
+                  << " pairs\n  one contact solve of the solid design: " << one_solve << " s (" << one_iterations
+                  << " active-set iterations; with assembly and sensitivities " << one_total << " s)\n  design: "
+                  << r.history.size() << " iterations, " << r.time << " s, per iteration " << per_iteration
+                  << " s = " << per_iteration / one_solve << " x one contact solve\n  per iteration: assembly "
+                  << means.assembly / means.n << ", state " << means.state / means.n << " ("
+                  << double(means.active_set) / means.n << " active-set iterations), adjoint "
+                  << means.adjoint / means.n << ", sensitivities " << means.sensitivities / means.n
+                  << ", optimizer and filter " << (r.time - r.analysis_time) / r.history.size() << " s\n";
+      }
+    std::cout << "peak memory " << peak_memory_mb() << " MB" << std::endl;
+  }
+
+  void
+  mbb(const unsigned int n_cells, const unsigned int iterations, const std::string &solver)
+  {
+    auto             start = std::chrono::steady_clock::now();
+    PolygonalMesh<2> mesh;
+    PolygonalMeshGenerators::voronoi(mesh, Point(0, 0), Point(6, 1), n_cells, 10, 1);
+    const double length = mark_top(mesh, 1., 2.75, 3.25, 4);
+    const double t_mesh = since(start);
+    start               = std::chrono::steady_clock::now();
+    MaterialLibrary<2> laws;
+    laws.add(0, ElasticMaterial(2.5, 0.25));
+    Design::ElasticDesignProblem problem(mesh, laws, 1);
+    problem.solver_settings().type               = SaddlePointSolver::parse_type(solver);
+    problem.solver_settings().relative_tolerance = 1e-8;
+    problem.add_point_support(Point(0, 0), 0);
+    problem.add_point_support(Point(0, 0), 1);
+    problem.add_point_support(Point(6, 0), 1);
+    problem.add_traction(4, Vector({0., -0.5 / length}));
+    problem.setup();
+    const double t_setup = since(start);
+    Design::TopologyOptimizer::Settings settings;
+    settings.volume_fraction       = 0.5;
+    settings.filter_radius         = 2 * std::sqrt(6. / n_cells);
+    settings.interpolation.minimum = 1e-4;
+    settings.max_iterations        = iterations;
+    Design::TopologyOptimizer optimizer(settings);
+    Means                     means;
+    optimizer.set_callback([&](unsigned int, const Design::TopologyOptimizer::Iteration &, const std::vector<double> &) {
+      means.add(problem.last_state());
+    });
+    const auto r = optimizer.run(problem);
+    std::cout << std::setprecision(4) << "MBB, " << n_cells << " Voronoi cells, " << problem.get_dof_handler().n_dofs()
+              << " DoFs, " << solver << "\n  mesh " << t_mesh << " s, setup " << t_setup << " s\n  "
+              << r.history.size() << " iterations (" << r.stop_reason << "), compliance " << r.objective << ", "
+              << r.time << " s, per iteration " << r.time / r.history.size() << " s: assembly "
+              << means.assembly / means.n << ", solve " << means.state / means.n << ", sensitivities "
+              << means.sensitivities / means.n << ", optimizer and filter "
+              << (r.time - r.analysis_time) / r.history.size() << "\n  peak memory " << peak_memory_mb() << " MB"
+              << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::string                        mode = argc > 1 ? argv[1] : "";
+  if (mode == "contact")
+    contact(argc > 2 ? std::stoi(argv[2]) : 3200);
+  else if (mode == "mbb" && argc > 2)
+    mbb(std::stoi(argv[2]), argc > 3 ? std::stoi(argv[3]) : 100, argc > 4 ? argv[4] : "CG-AMG");
+  else
+    {
+      std::cerr << "usage: benchmark_design_scale contact [n_cells] | mbb n_cells [iterations] [solver]" << std::endl;
+      return 2;
+    }
+  return 0;
+}
