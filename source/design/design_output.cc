@@ -5,7 +5,9 @@
 #include <deal.II/base/exceptions.h>
 
 #include <dealvem/design/design_output.h>
+#include <dealvem/base/output_file.h>
 #include <dealvem/mesh/polygonal_mesh.h>
+#include <dealvem/postprocessing/vtu_output.h>
 
 #include <algorithm>
 #include <cmath>
@@ -107,32 +109,11 @@ namespace dealvem
                       f.first.find_first_of("\"<>&") == std::string::npos,
                     dealii::ExcMessage(filename + ": the cell field '" + f.first +
                                        "' needs a plain name and one value per cell."));
-      std::ofstream out(filename);
-      AssertThrow(out, dealii::ExcMessage("Cannot open '" + filename + "' for writing."));
+      OutputFile    file(filename);
+      std::ostream &out = file.stream();
       out << std::setprecision(12);
-      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.n_vertices() << "\" NumberOfCells=\""
-          << mesh.n_cells() << "\">\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-        out << mesh.vertex(v)[0] << " " << mesh.vertex(v)[1] << " 0\n";
-      out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        {
-          for (const unsigned int v : mesh.cell(c).vertices)
-            out << v << " ";
-          out << "\n";
-        }
-      out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-      std::size_t offset = 0;
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        {
-          offset += mesh.cell(c).vertices.size();
-          out << offset << "\n";
-        }
-      out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        out << "7\n"; // VTK_POLYGON
-      out << "</DataArray>\n</Cells>\n<CellData Scalars=\"density\">\n"
+      write_vtu_polygons(out, mesh);
+      out << "<CellData Scalars=\"density\">\n"
           << "<DataArray type=\"Float64\" Name=\"density\" format=\"ascii\">\n";
       for (const double d : density)
         out << d << "\n";
@@ -148,7 +129,7 @@ namespace dealvem
       for (unsigned int c = 0; c < mesh.n_cells(); ++c)
         out << int(mesh.cell(c).material_id) << "\n";
       out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-      AssertThrow(out, dealii::ExcMessage("Writing '" + filename + "' failed."));
+      file.commit();
     }
   } // namespace Design
 } // namespace dealvem

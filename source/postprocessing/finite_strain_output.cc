@@ -8,6 +8,7 @@
 #include <dealvem/base/output_file.h>
 #include <dealvem/elasticity/hyperelastic_material.h>
 #include <dealvem/postprocessing/finite_strain_output.h>
+#include <dealvem/postprocessing/vtu_output.h>
 #include <dealvem/vem/vem_values.h>
 
 #include <array>
@@ -210,31 +211,7 @@ namespace dealvem
     OutputFile    file(filename);
     std::ostream &out = file.stream();
     out << std::setprecision(14);
-    out << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-        << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.n_vertices() << "\" NumberOfCells=\""
-        << mesh.n_cells() << "\">\n"
-        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (unsigned int v = 0; v < mesh.n_vertices(); ++v)
-      out << mesh.vertex(v)[0] << " " << mesh.vertex(v)[1] << " 0\n";
-    out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      {
-        for (const unsigned int v : mesh.cell(c).vertices)
-          out << v << " ";
-        out << "\n";
-      }
-    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    std::size_t offset = 0;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      {
-        offset += mesh.cell(c).vertices.size();
-        out << offset << "\n";
-      }
-    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      out << "7\n"; // VTK_POLYGON
-    out << "</DataArray>\n</Cells>\n";
+    write_vtu_polygons(out, mesh);
 
     // the fields of one state per entity, under the same names as point
     // and cell data

@@ -143,11 +143,15 @@ namespace dealvem
         unsigned int n_solves = 0;
         /// Whether an adjoint solve was needed.
         bool adjoint_solved = false;
-        /// Wall times (s) of the parts of evaluate(): the assembly of
-        /// $\sum_c s_c K_c$, the state (the contact solve with all its
-        /// active-set iterations), the adjoint solve (0 when not needed) and
-        /// the cell-wise sensitivities.
-        double time_assembly = 0, time_state = 0, time_adjoint = 0, time_sensitivities = 0;
+        /// Wall time (s) of the assembly of $\sum_c s_c K_c$.
+        double time_assembly = 0;
+        /// Wall time (s) of the state: the solve, or the contact solve with
+        /// all its active-set iterations.
+        double time_state = 0;
+        /// Wall time (s) of the adjoint solve (about 0 when not needed).
+        double time_adjoint = 0;
+        /// Wall time (s) of the cell-wise sensitivities.
+        double time_sensitivities = 0;
       };
 
       /**

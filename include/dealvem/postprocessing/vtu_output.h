@@ -10,6 +10,7 @@
 #include <dealvem/postprocessing/stress_recovery.h>
 #include <dealvem/vem/vem_dof_handler.h>
 
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -73,6 +74,17 @@ namespace dealvem
    */
   void
   write_pvtu_record(const std::string &filename, const std::vector<std::string> &pieces);
+
+  /**
+   * The beginning of a VTU file of every polygon of @p mesh (VTK_POLYGON
+   * cells on the mesh's vertices): the XML header, the piece, the points
+   * and the cells, up to and including "</Cells>". The caller writes its
+   * PointData and CellData (one value per vertex, per cell) and ends the
+   * file with "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n". Used by the
+   * writers of finite-strain states and of design densities.
+   */
+  void
+  write_vtu_polygons(std::ostream &out, const PolygonalMesh<2> &mesh);
 } // namespace dealvem
 
 #endif
