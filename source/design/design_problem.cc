@@ -576,32 +576,28 @@ namespace dealvem
       // compliance without a right-hand side on the multiplier rows, y = x
       start = Clock::now();
       dealii::Vector<double> y;
-      bool                   self_adjoint = (objective == Objective::compliance);
+      // (an enforced normal row's right-hand side is -g0 of its pair; the
+      // tangential rows have none)
+      bool self_adjoint = (objective == Objective::compliance);
       if (self_adjoint && p > 0)
         {
-          const auto &r = d.contact_solver->last_result();
-          std::vector<bool> tangential(p);
-          for (unsigned int i = 0; i < p; ++i)
-            tangential[i] = r.tied_tangentially(i);
-          dealii::Vector<double> rhs = d.system_rhs;
-          d.work_matrix.copy_from(d.system_matrix);
-          d.contact->assemble(d.constraints, state.active, tangential, d.work_matrix, rhs);
-          double g_max = 0;
-          for (unsigned int i = d.n; i < d.n + d.m; ++i)
-            g_max = std::max(g_max, std::abs(rhs[i]));
-          self_adjoint = g_max <= 1e-12 * d.h_min;
+          const ContactRows rows = d.contact->rows();
+          for (unsigned int i = 0; i < p && self_adjoint; ++i)
+            self_adjoint = !state.active[i] || std::abs(rows.gap0(i)) <= 1e-12 * d.h_min;
         }
       if (self_adjoint)
         y = d.x;
       else
         {
-          const auto &r = d.contact_solver->last_result();
+          // the matrix of the converged set, as the solver's last result has
+          // it (open pairs tied tangentially where it kept them so)
+          const auto       &r = d.contact_solver->last_result();
           std::vector<bool> tangential(p);
           for (unsigned int i = 0; i < p; ++i)
             tangential[i] = r.tied_tangentially(i);
-          dealii::Vector<double> dummy(d.n + d.m);
+          dealii::Vector<double> unused_rhs(d.n + d.m);
           d.work_matrix.copy_from(d.system_matrix);
-          d.contact->assemble(d.constraints, state.active, tangential, d.work_matrix, dummy);
+          d.contact->assemble(d.constraints, state.active, tangential, d.work_matrix, unused_rhs);
           dealii::Vector<double> b = a;
           d.constraints.condense(b);
           y.reinit(d.n + d.m);
