@@ -32,6 +32,14 @@ namespace dealvem
                       "'Contact/Pairs', then the detected ones).");
     prm.declare_entry("Pressure norm exponent", "8", Double(1),
                       "The exponent P of 'Objective = largest pressure': (sum p_i^P)^(1/P) over the pairs.");
+    prm.declare_entry("Constraint", "none", Selection("none|compliance|interface force|largest pressure"),
+                      "A constraint besides the volume (MMA only): the compliance, the normal force of "
+                      "'Constraint interface' or its largest pressure (the P-norm of 'Pressure norm exponent') "
+                      "at most or at least 'Constraint bound'.");
+    prm.declare_entry("Constraint interface", "0", Integer(0), "The interface of the force and pressure constraints.");
+    prm.declare_entry("Constraint bound", "1", Double(0), "The bound of 'Constraint' (positive).");
+    prm.declare_entry("Constraint sense", "at most", Selection("at most|at least"),
+                      "Whether 'Constraint' is an upper or a lower bound.");
     prm.declare_entry("Volume fraction", "0.5", Double(0, 1), "The volume fraction of the designed cells.");
     prm.declare_entry("Filter radius", "0.1", Double(0),
                       "The radius of the density filter (length; PolyTop's linear filter over cell centroids). "
@@ -85,6 +93,10 @@ namespace dealvem
     objective       = prm.get("Objective");
     interface       = prm.get_integer("Interface");
     pressure_exponent = prm.get_double("Pressure norm exponent");
+    constraint           = prm.get("Constraint");
+    constraint_interface = prm.get_integer("Constraint interface");
+    constraint_bound     = prm.get_double("Constraint bound");
+    constraint_at_least  = (prm.get("Constraint sense") == "at least");
     auto &s         = settings;
     s.volume_fraction = prm.get_double("Volume fraction");
     s.filter_radius   = prm.get_double("Filter radius");
@@ -106,7 +118,15 @@ namespace dealvem
     output_interval         = prm.get_integer("Output interval");
     prm.leave_subsection();
     if (enabled())
-      settings.check();
+      {
+        settings.check();
+        AssertThrow(constraint == "none" || constraint_bound > 0,
+                    dealii::ExcMessage("Design/Constraint bound must be positive, got " +
+                                       std::to_string(constraint_bound) + "."));
+        AssertThrow(constraint == "none" || settings.optimizer == Design::TopologyOptimizer::Optimizer::mma,
+                    dealii::ExcMessage("Design/Constraint = " + constraint +
+                                       " needs Design/Optimizer = MMA (OC handles the volume constraint only)."));
+      }
   }
 
 
@@ -125,6 +145,11 @@ namespace dealvem
     AssertThrow(parameters.objective == "compliance" || parameters.interface < inputs.interfaces.size(),
                 dealii::ExcMessage("Design/Interface = " + std::to_string(parameters.interface) + ", but the problem has " +
                                    std::to_string(inputs.interfaces.size()) + " contact interfaces."));
+    AssertThrow(parameters.constraint == "none" || parameters.constraint == "compliance" ||
+                  parameters.constraint_interface < inputs.interfaces.size(),
+                dealii::ExcMessage("Design/Constraint interface = " + std::to_string(parameters.constraint_interface) +
+                                   ", but the problem has " + std::to_string(inputs.interfaces.size()) +
+                                   " contact interfaces."));
 
     Design::ElasticDesignProblem problem(*inputs.mesh, *inputs.laws, inputs.degree);
     problem.contact_settings()   = inputs.contact;
@@ -140,7 +165,18 @@ namespace dealvem
     else if (parameters.objective == "largest pressure")
       {
         problem.set_objective(Design::ElasticDesignProblem::Objective::max_pressure, parameters.interface);
-        problem.set_pressure_norm_exponent(parameters.pressure_exponent);
+      }
+    problem.set_pressure_norm_exponent(parameters.pressure_exponent);
+    if (parameters.constraint != "none")
+      {
+        using R = Design::ElasticDesignProblem::Response;
+        const R response = parameters.constraint == "compliance"      ? R::compliance :
+                           parameters.constraint == "interface force" ? R::interface_force :
+                                                                        R::max_pressure;
+        problem.add_constraint(response, parameters.constraint_bound,
+                               parameters.constraint_at_least ? Design::ElasticDesignProblem::Bound::at_least :
+                                                                Design::ElasticDesignProblem::Bound::at_most,
+                               parameters.constraint_interface);
       }
     problem.setup();
     // the solver: 'automatic' follows the rule of the analyses, the
@@ -166,7 +202,8 @@ namespace dealvem
         << inputs.interfaces.size() << " contact interfaces, "
         << (parameters.settings.optimizer == Design::TopologyOptimizer::Optimizer::mma ? "MMA" : "OC")
         << ", volume fraction " << parameters.settings.volume_fraction << ", filter radius "
-        << parameters.settings.filter_radius << std::endl;
+        << parameters.settings.filter_radius
+        << (problem.n_constraints() > 0 ? ", constraint " + problem.constraint_name(0) : std::string()) << std::endl;
 
     Design::TopologyOptimizer optimizer(parameters.settings);
     const PolygonalMesh<2>   &mesh = problem.get_mesh();
@@ -175,7 +212,10 @@ namespace dealvem
       if (parameters.output_interval > 0 && (it - 1) % parameters.output_interval == 0)
         {
           out << "  iteration " << std::setw(4) << it << ": objective " << std::setprecision(8) << record.objective
-              << ", volume " << std::setprecision(6) << record.volume << ", change " << record.change << std::endl;
+              << ", volume " << std::setprecision(6) << record.volume << ", change " << record.change;
+          if (!record.constraints.empty())
+            out << ", constraint " << record.constraints[0];
+          out << std::endl;
           if (inputs.write_vtu)
             {
               char name[32];
@@ -189,6 +229,11 @@ namespace dealvem
         << std::setprecision(8) << result.objective << ", volume " << std::setprecision(6) << result.volume << ", "
         << std::setprecision(3) << result.time << " s (" << result.analysis_time << " s in the analyses)"
         << std::setprecision(6) << std::endl;
+    if (problem.n_constraints() > 0)
+      out << "  constraint " << problem.constraint_name(0) << ": response "
+          << std::setprecision(8) << problem.last_state().constraint_responses[0] << " ("
+          << (result.constraints[0] <= 1e-6 ? "satisfied" : "violated by " + std::to_string(result.constraints[0]))
+          << ")" << std::setprecision(6) << std::endl;
     if (inputs.write_vtu)
       Design::write_density_vtu(inputs.prefix + "-design-final.vtu", mesh, result.densities);
     if (inputs.write_pictures)
@@ -199,12 +244,17 @@ namespace dealvem
       {
         std::ofstream csv(inputs.prefix + "-design.csv");
         AssertThrow(csv, dealii::ExcMessage("Cannot write '" + inputs.prefix + "-design.csv'."));
-        csv << "iteration,objective,volume,change,beta,grey\n" << std::setprecision(12);
+        csv << "iteration,objective,volume,change,beta,grey" << (problem.n_constraints() > 0 ? ",constraint" : "")
+            << "\n"
+            << std::setprecision(12);
         for (unsigned int i = 0; i < result.history.size(); ++i)
           {
             const auto &r = result.history[i];
             csv << i + 1 << "," << r.objective << "," << r.volume << "," << r.change << "," << r.beta << ","
-                << r.grey << "\n";
+                << r.grey;
+            if (!r.constraints.empty())
+              csv << "," << r.constraints[0];
+            csv << "\n";
           }
       }
     return result;

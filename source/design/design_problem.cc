@@ -181,14 +181,82 @@ namespace dealvem
 
 
     std::string
+    DesignProblem::constraint_name(const unsigned int j) const
+    {
+      return "constraint " + std::to_string(j);
+    }
+
+
+
+    void
+    DesignProblem::constraints(std::vector<double> &values, std::vector<std::vector<double>> &gradients) const
+    {
+      AssertThrow(n_constraints() == 0,
+                  dealii::ExcMessage("DesignProblem: a problem with constraints must implement constraints()."));
+      values.clear();
+      gradients.clear();
+    }
+
+
+
+    std::string
+    ElasticDesignProblem::response_name(const Response response, const unsigned int interface) const
+    {
+      if (response == Response::compliance)
+        return "compliance";
+      if (response == Response::interface_force)
+        return "normal force of interface " + std::to_string(interface);
+      return "largest pressure of interface " + std::to_string(interface) + " (" +
+             internal::number_string(pressure_exponent) + "-norm)";
+    }
+
+
+
+    std::string
     ElasticDesignProblem::objective_name() const
     {
-      if (objective == Objective::compliance)
-        return "compliance";
-      if (objective == Objective::interface_force)
-        return "normal force of interface " + std::to_string(objective_interface);
-      return "largest pressure of interface " + std::to_string(objective_interface) + " (" +
-             internal::number_string(pressure_exponent) + "-norm)";
+      return response_name(objective, objective_interface);
+    }
+
+
+
+    void
+    ElasticDesignProblem::add_constraint(const Response     response,
+                                         const double       bound,
+                                         const Bound        sense,
+                                         const unsigned int interface)
+    {
+      AssertThrow(std::isfinite(bound) && bound > 0,
+                  dealii::ExcMessage("ElasticDesignProblem::add_constraint(): the bound of the " +
+                                     response_name(response, interface) + " must be positive, got " +
+                                     internal::number_string(bound) + "."));
+      AssertThrow(data == nullptr,
+                  dealii::ExcMessage("ElasticDesignProblem::add_constraint(): call it before setup()."));
+      constraint_list.push_back(Constraint{response, interface, bound, sense});
+    }
+
+
+
+    std::string
+    ElasticDesignProblem::constraint_name(const unsigned int j) const
+    {
+      AssertThrow(j < constraint_list.size(),
+                  dealii::ExcMessage("ElasticDesignProblem: constraint " + std::to_string(j) + " of " +
+                                     std::to_string(constraint_list.size()) + "."));
+      const Constraint &c = constraint_list[j];
+      return response_name(c.response, c.interface) + (c.sense == Bound::at_most ? " <= " : " >= ") +
+             internal::number_string(c.bound);
+    }
+
+
+
+    void
+    ElasticDesignProblem::constraints(std::vector<double> &values, std::vector<std::vector<double>> &gradients) const
+    {
+      AssertThrow(constraint_values.size() == constraint_list.size(),
+                  dealii::ExcMessage("ElasticDesignProblem::constraints(): call evaluate() first."));
+      values    = constraint_values;
+      gradients = constraint_gradients;
     }
 
 
@@ -240,6 +308,13 @@ namespace dealvem
                   dealii::ExcMessage("ElasticDesignProblem: the objective belongs to interface " +
                                      std::to_string(objective_interface) + ", but there are " +
                                      std::to_string(interface_ids.size()) + " contact interfaces."));
+      for (unsigned int j = 0; j < constraint_list.size(); ++j)
+        AssertThrow(constraint_list[j].response == Response::compliance ||
+                      constraint_list[j].interface < interface_ids.size(),
+                    dealii::ExcMessage("ElasticDesignProblem: constraint " + std::to_string(j) + " (" +
+                                       constraint_name(j) + ") belongs to interface " +
+                                       std::to_string(constraint_list[j].interface) + ", but there are " +
+                                       std::to_string(interface_ids.size()) + " contact interfaces."));
       data = std::make_unique<Data>();
       Data &d = *data;
 
@@ -457,6 +532,68 @@ namespace dealvem
 
 
     double
+    ElasticDesignProblem::response_and_state_derivative(const Response         response,
+                                                        const unsigned int     interface,
+                                                        const bool             for_objective,
+                                                        dealii::Vector<double> &a) const
+    {
+      const Data        &d = *data;
+      const unsigned int p = d.pairs.size();
+      a                    = 0;
+      if (response == Response::compliance)
+        {
+          for (unsigned int i = 0; i < d.n; ++i)
+            a[i] = d.load[i];
+          return d.load * state.displacement;
+        }
+      if (p == 0)
+        {
+          AssertThrow(!for_objective || response != Response::max_pressure,
+                      dealii::ExcMessage("ElasticDesignProblem: the objective is the largest pressure of interface " +
+                                         std::to_string(interface) + ", which has no contact pairs."));
+          return 0;
+        }
+      const ContactRows rows = d.contact->rows();
+      if (response == Response::interface_force)
+        {
+          // J = -sum of the interface's normal multipliers
+          for (unsigned int i = 0; i < p; ++i)
+            if (d.pairs[i].interface == interface)
+              a[rows.normal_row(i)] = -1;
+          return a * d.x;
+        }
+      // J = (sum max(0, p_i)^P)^(1/P), scaled by the largest pressure
+      // against overflow; a = dJ/dx (the adjoint of a non-linear J)
+      const double        P = pressure_exponent;
+      std::vector<double> pressure(p, 0.);
+      double              p_max = 0;
+      for (unsigned int i = 0; i < p; ++i)
+        if (d.pairs[i].interface == interface && !d.pairs[i].junction)
+          {
+            pressure[i] = std::max(0., -state.normal_multipliers[i] / d.pairs[i].weight);
+            p_max       = std::max(p_max, pressure[i]);
+          }
+      // an interface that opens entirely has no pressure: as a constraint
+      // that is a value 0 with a zero gradient; as the objective there is
+      // nothing to minimize
+      AssertThrow(p_max > 0 || !for_objective,
+                  dealii::ExcMessage("ElasticDesignProblem: the objective is the largest pressure of interface " +
+                                     std::to_string(interface) + ", which carries no pressure."));
+      if (p_max == 0)
+        return 0;
+      double sum = 0;
+      for (unsigned int i = 0; i < p; ++i)
+        sum += std::pow(pressure[i] / p_max, P);
+      const double J = p_max * std::pow(sum, 1 / P);
+      for (unsigned int i = 0; i < p; ++i)
+        if (pressure[i] > 0)
+          a[rows.normal_row(i)] = -std::pow(pressure[i] / J, P - 1) / d.pairs[i].weight;
+      return J;
+    }
+
+
+
+    double
     ElasticDesignProblem::evaluate(const std::vector<double> &factors, std::vector<double> &gradient)
     {
       AssertThrow(data != nullptr, dealii::ExcMessage("ElasticDesignProblem: call setup() before evaluate()."));
@@ -488,7 +625,8 @@ namespace dealvem
       const auto seconds = [](const Clock::time_point t) {
         return std::chrono::duration<double>(Clock::now() - t).count();
       };
-      auto start = Clock::now();
+      const unsigned int factorizations_before = d.solver->factorization_counts().first;
+      auto               start                 = Clock::now();
       assemble(factors);
       state               = State();
       state.time_assembly = seconds(start);
@@ -517,7 +655,6 @@ namespace dealvem
       state.compliance = d.load * state.displacement;
 
       // the multipliers, the forces of the interfaces, degenerate pairs
-      dealii::Vector<double> a(d.n + d.m); // the objective J = a^T x
       if (p > 0)
         {
           const ContactRows         rows = d.contact->rows();
@@ -537,84 +674,99 @@ namespace dealvem
                   ((state.active[i] && std::abs(state.normal_multipliers[i]) <= 1e-8 * l_max) ||
                    (!state.active[i] && gaps[i] <= 1e-8 * d.h_min)))
                 ++state.n_degenerate_pairs;
-          if (objective == Objective::interface_force)
-            for (unsigned int i = 0; i < p; ++i)
-              if (d.pairs[i].interface == objective_interface)
-                a[rows.normal_row(i)] = -1;
-        }
-      if (objective == Objective::compliance)
-        for (unsigned int i = 0; i < d.n; ++i)
-          a[i] = d.load[i];
-      double J = a * d.x;
-      if (objective == Objective::max_pressure)
-        {
-          // J = (sum max(0, p_i)^P)^(1/P), scaled by the largest pressure
-          // against overflow; a = dJ/dx (the adjoint of a non-linear J)
-          const ContactRows   rows = d.contact->rows();
-          const double        P    = pressure_exponent;
-          std::vector<double> pressure(p, 0.);
-          double              p_max = 0;
-          for (unsigned int i = 0; i < p; ++i)
-            if (d.pairs[i].interface == objective_interface && !d.pairs[i].junction)
-              {
-                pressure[i] = std::max(0., -state.normal_multipliers[i] / d.pairs[i].weight);
-                p_max       = std::max(p_max, pressure[i]);
-              }
-          AssertThrow(p_max > 0, dealii::ExcMessage("ElasticDesignProblem: the objective is the largest pressure of "
-                                                    "interface " + std::to_string(objective_interface) +
-                                                    ", which carries no pressure."));
-          double sum = 0;
-          for (unsigned int i = 0; i < p; ++i)
-            sum += std::pow(pressure[i] / p_max, P);
-          J = p_max * std::pow(sum, 1 / P);
-          for (unsigned int i = 0; i < p; ++i)
-            if (pressure[i] > 0)
-              a[rows.normal_row(i)] = -std::pow(pressure[i] / J, P - 1) / d.pairs[i].weight;
         }
 
-      // the adjoint A y = a with the matrix of the converged set; for the
-      // compliance without a right-hand side on the multiplier rows, y = x
-      start = Clock::now();
-      dealii::Vector<double> y;
-      // (an enforced normal row's right-hand side is -g0 of its pair; the
+      // every response R = a^T x (or R(x) with a = dR/dx) and its gradient
+      // -y_c^T K_c u_c by the adjoint A y = a of the converged set; the
+      // compliance is self-adjoint (y = x) when the enforced rows have no
+      // right-hand side (an enforced normal row's is -g0 of its pair; the
       // tangential rows have none)
-      bool self_adjoint = (objective == Objective::compliance);
-      if (self_adjoint && p > 0)
+      start = Clock::now();
+      bool compliance_self_adjoint = true;
+      if (p > 0)
         {
           const ContactRows rows = d.contact->rows();
-          for (unsigned int i = 0; i < p && self_adjoint; ++i)
-            self_adjoint = !state.active[i] || std::abs(rows.gap0(i)) <= 1e-12 * d.h_min;
+          for (unsigned int i = 0; i < p && compliance_self_adjoint; ++i)
+            compliance_self_adjoint = !state.active[i] || std::abs(rows.gap0(i)) <= 1e-12 * d.h_min;
         }
-      if (self_adjoint)
-        y = d.x;
-      else
+      bool adjoint_matrix_ready = false;
+      // the adjoints solved so far, by response and interface (a
+      // constraint on the objective's response needs none of its own)
+      std::vector<std::pair<std::pair<Response, unsigned int>, dealii::Vector<double>>> solved;
+      const auto adjoint = [&](const Response response, const unsigned int interface, const dealii::Vector<double> &a) {
+        if (response == Response::compliance && compliance_self_adjoint)
+          return dealii::Vector<double>(d.x);
+        const auto key = std::make_pair(response, response == Response::compliance ? 0u : interface);
+        for (const auto &done : solved)
+          if (done.first == key)
+            return done.second;
+        if (p > 0 && !adjoint_matrix_ready)
+          {
+            // the matrix of the converged set, as the solver's last result
+            // has it (open pairs tied tangentially where it kept them so);
+            // the direct solver finds the factorization of the state's
+            // last solve unchanged and reuses it
+            const auto       &r = d.contact_solver->last_result();
+            std::vector<bool> tangential(p);
+            for (unsigned int i = 0; i < p; ++i)
+              tangential[i] = r.tied_tangentially(i);
+            dealii::Vector<double> unused_rhs(d.n + d.m);
+            d.work_matrix.copy_from(d.system_matrix);
+            d.contact->assemble(d.constraints, state.active, tangential, d.work_matrix, unused_rhs);
+            adjoint_matrix_ready = true;
+          }
+        dealii::Vector<double> b = a;
+        d.constraints.condense(b);
+        dealii::Vector<double> y(d.n + d.m);
+        d.solver->solve(p > 0 ? d.work_matrix : d.system_matrix, d.n, y, b);
+        d.constraints.distribute(y);
+        ++state.n_solves;
+        state.adjoint_solved = true;
+        solved.emplace_back(key, y);
+        return y;
+      };
+      const auto gradient_of = [&](const dealii::Vector<double> &y) {
+        dealii::Vector<double> yu(d.n);
+        for (unsigned int i = 0; i < d.n; ++i)
+          yu[i] = y[i];
+        std::vector<double> g = cell_bilinear_forms(state.displacement, yu);
+        for (double &v : g)
+          v = -v;
+        return g;
+      };
+
+      dealii::Vector<double> a(d.n + d.m);
+      const double           J = response_and_state_derivative(objective, objective_interface, true, a);
+      const auto             y = adjoint(objective, objective_interface, a);
+      double adjoint_time      = seconds(start);
+      start                    = Clock::now();
+      gradient                 = gradient_of(y);
+      double sensitivity_time  = seconds(start);
+
+      const unsigned int n_c = constraint_list.size();
+      constraint_values.assign(n_c, 0.);
+      constraint_gradients.assign(n_c, std::vector<double>());
+      state.constraint_responses.assign(n_c, 0.);
+      for (unsigned int j = 0; j < n_c; ++j)
         {
-          // the matrix of the converged set, as the solver's last result has
-          // it (open pairs tied tangentially where it kept them so)
-          const auto       &r = d.contact_solver->last_result();
-          std::vector<bool> tangential(p);
-          for (unsigned int i = 0; i < p; ++i)
-            tangential[i] = r.tied_tangentially(i);
-          dealii::Vector<double> unused_rhs(d.n + d.m);
-          d.work_matrix.copy_from(d.system_matrix);
-          d.contact->assemble(d.constraints, state.active, tangential, d.work_matrix, unused_rhs);
-          dealii::Vector<double> b = a;
-          d.constraints.condense(b);
-          y.reinit(d.n + d.m);
-          d.solver->solve(d.work_matrix, d.n, y, b);
-          d.constraints.distribute(y);
-          ++state.n_solves;
-          state.adjoint_solved = true;
+          const Constraint &c = constraint_list[j];
+          start               = Clock::now();
+          a                   = 0;
+          const double R      = response_and_state_derivative(c.response, c.interface, false, a);
+          const auto   yj     = adjoint(c.response, c.interface, a);
+          adjoint_time += seconds(start);
+          start                      = Clock::now();
+          const double sign          = (c.sense == Bound::at_most ? 1. : -1.) / c.bound;
+          state.constraint_responses[j] = R;
+          constraint_values[j]       = sign * (R - c.bound);
+          constraint_gradients[j]    = gradient_of(yj);
+          for (double &v : constraint_gradients[j])
+            v *= sign;
+          sensitivity_time += seconds(start);
         }
-      state.time_adjoint = seconds(start);
-      start              = Clock::now();
-      dealii::Vector<double> yu(d.n);
-      for (unsigned int i = 0; i < d.n; ++i)
-        yu[i] = y[i];
-      gradient = cell_bilinear_forms(state.displacement, yu);
-      for (double &g : gradient)
-        g = -g;
-      state.time_sensitivities = seconds(start);
+      state.n_factorizations   = d.solver->factorization_counts().first - factorizations_before;
+      state.time_adjoint       = adjoint_time;
+      state.time_sensitivities = sensitivity_time;
       return J;
     }
   } // namespace Design

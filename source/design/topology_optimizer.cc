@@ -207,6 +207,11 @@ namespace dealvem
         it.beta      = ctx.projection ? ctx.projection->beta : 0;
         it.grey      = design_grey(*ctx.chain);
         it.change    = 0;
+        if (ctx.problem->n_constraints() > 0)
+          {
+            std::vector<std::vector<double>> unused;
+            ctx.problem->constraints(it.constraints, unused);
+          }
         if (!ctx.last_z.empty())
           for (unsigned i = 0; i < n; ++i)
             it.change = std::max(it.change, std::abs(z[i] - ctx.last_z[i]));
@@ -230,6 +235,40 @@ namespace dealvem
           for (unsigned i = 0; i < n; ++i)
             grad[i] = n * g[i];
         return n * (v - ctx.settings->volume_fraction);
+      }
+
+      // the problem's own constraints g_j(z) <= 0, at the design of the
+      // objective's last evaluation (NLopt evaluates the objective first at
+      // every point), scaled by n like the volume
+      void
+      design_problem_constraints(unsigned m, double *result, unsigned n, const double *x, double *grad, void *data)
+      {
+        auto &ctx = *static_cast<DesignMMAContext *>(data);
+        if (ctx.last_z.size() != n || !std::equal(ctx.last_z.begin(), ctx.last_z.end(), x))
+          {
+            // not the last point evaluated: evaluate it (recorded as an
+            // iteration like any other evaluation)
+            std::vector<double> unused(n);
+            design_objective(n, x, unused.data(), &ctx);
+          }
+        std::vector<double>              g;
+        std::vector<std::vector<double>> dg;
+        ctx.problem->constraints(g, dg);
+        AssertThrow(g.size() == m && dg.size() == m,
+                    dealii::ExcMessage("Design: the problem returned " + std::to_string(g.size()) +
+                                       " constraints, but declares " + std::to_string(m) + "."));
+        if (grad)
+          ctx.chain->factors(std::vector<double>(x, x + n), ctx.settings->interpolation, ctx.projection);
+        for (unsigned j = 0; j < m; ++j)
+          {
+            result[j] = n * g[j];
+            if (grad)
+              {
+                const auto gz = ctx.chain->variable_gradient(dg[j], ctx.settings->interpolation, ctx.projection);
+                for (unsigned i = 0; i < n; ++i)
+                  grad[j * n + i] = n * gz[i];
+              }
+          }
       }
 
       std::string
@@ -278,6 +317,12 @@ namespace dealvem
       HeavisideProjection projection = settings.heaviside;
       HeavisideProjection *h = settings.projection ? &projection : nullptr;
 
+      const unsigned int n_constraints = problem.n_constraints();
+      AssertThrow(n_constraints == 0 || settings.optimizer == Optimizer::mma,
+                  dealii::ExcMessage("Design/Optimizer: OC handles the volume constraint only, and the problem has " +
+                                     std::to_string(n_constraints) + " constraint(s) of its own (" +
+                                     problem.constraint_name(0) + "); choose MMA."));
+
       Result           result;
       DesignMMAContext ctx;
       ctx.chain      = &chain;
@@ -301,6 +346,12 @@ namespace dealvem
               nlopt_set_upper_bounds(opt, upper.data());
               nlopt_set_min_objective(opt, design_objective, &ctx);
               nlopt_add_inequality_constraint(opt, design_volume_constraint, &ctx, 1e-8 * n);
+              if (n_constraints > 0)
+                {
+                  const std::vector<double> tolerances(n_constraints, 1e-8 * n);
+                  nlopt_add_inequality_mconstraint(opt, n_constraints, design_problem_constraints, &ctx,
+                                                   tolerances.data());
+                }
               const unsigned int left = settings.max_iterations - result.history.size();
               nlopt_set_maxeval(opt, last_round ? left : std::min(left, settings.projection_interval));
               // the first moves (the asymptotes' first distance) as OC's
@@ -384,6 +435,11 @@ namespace dealvem
           const auto          t0 = std::chrono::steady_clock::now();
           result.objective = problem.evaluate(chain.factors(z, settings.interpolation, h), ds);
           ctx.analysis_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        }
+      if (n_constraints > 0 && !result.history.empty())
+        {
+          std::vector<std::vector<double>> unused;
+          problem.constraints(result.constraints, unused);
         }
       result.analysis_time = ctx.analysis_time;
       result.time          = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -194,15 +194,25 @@ namespace dealvem
 #else
       const double W = p1[0] - p0[0], H = p1[1] - p0[1], size = std::max(W, H);
 
-      std::vector<P>              sites = random_sites(p0, p1, n_cells, seed);
+      // the sites, the cells and Lloyd's centroids are computed on the
+      // rectangle moved to the origin and moved back at the end, so that a
+      // rectangle far from the origin gets the same mesh, translated (in
+      // absolute coordinates the circumcentres and centroids lose the digits
+      // of |p0| and the iteration drifts apart)
+      const P                     origin;
+      const P                     extent(W, H);
+      std::vector<P>              sites = random_sites(origin, extent, n_cells, seed);
       std::vector<std::vector<P>> polygons;
       for (unsigned int iteration = 0; iteration <= n_lloyd_iterations; ++iteration)
         {
-          polygons = voronoi_polygons(sites, p0, p1, seed);
+          polygons = voronoi_polygons(sites, origin, extent, seed);
           if (iteration == n_lloyd_iterations)
             break;
           move_sites_to_centroids(polygons, sites);
         }
+      for (auto &polygon : polygons)
+        for (auto &v : polygon)
+          v += p0;
 
       mesh.clear();
       mesh.name = "voronoi " + std::to_string(n_cells) + " cells, seed " + std::to_string(seed);

@@ -144,7 +144,12 @@ namespace dealvem
                          used_lu_fallback ? "UMFPACK LU (the condensed matrix is not positive definite)" :
                                             "CHOLMOD Cholesky") +
              " of the stiffness condensed by the active contact constraints (one slave DoF per constraint, "
-             "multipliers from the residual)";
+             "multipliers from the residual" +
+             (n_factorization_reuses > 0 ? "; " + std::to_string(n_factorizations) + " factorization(s), " +
+                                             std::to_string(n_factorization_reuses) +
+                                             " solve(s) with the factorization of an unchanged matrix" :
+                                           "") +
+             ")";
     return type_name(settings.type) + " (direct, whole saddle-point matrix)";
   }
 
@@ -742,6 +747,31 @@ namespace dealvem
 
 
 
+  namespace
+  {
+    // Whether two condensed matrices have the same pattern and values.
+    bool
+    same_condensed_matrix(const dealii::SparseMatrix<double> &A, const dealii::SparseMatrix<double> &B)
+    {
+      if (A.m() != B.m() || A.n_nonzero_elements() != B.n_nonzero_elements())
+        return false;
+      const auto &pa = A.get_sparsity_pattern();
+      const auto &pb = B.get_sparsity_pattern();
+      for (unsigned int i = 0; i < A.m(); ++i)
+        {
+          if (pa.row_length(i) != pb.row_length(i))
+            return false;
+          auto a = A.begin(i), b = B.begin(i);
+          for (; a != A.end(i); ++a, ++b)
+            if (a->column() != b->column() || a->value() != b->value())
+              return false;
+        }
+      return true;
+    }
+  } // namespace
+
+
+
   void
   SaddlePointSolver::solve_condensed(const dealii::SparseMatrix<double> &A,
                                      const unsigned int                  n_displacements,
@@ -769,9 +799,26 @@ namespace dealvem
       {
         // Cholesky of the symmetric condensed stiffness; LU where it is
         // not positive definite, or not symmetric (slipping pairs)
-        if (!cholesky)
-          cholesky = std::make_shared<internal::SparseCholesky>();
-        used_lu_fallback = used_gmres || !cholesky->factorize(K);
+        // the factorization of the last solve is kept while its condensed
+        // matrix comes back unchanged (an adjoint solve, a load step)
+        const bool same = factored_system && !used_gmres && same_condensed_matrix(factored_system->K, K);
+        if (same)
+          {
+            used_lu_fallback = false;
+            ++n_factorization_reuses;
+          }
+        else
+          {
+            factored_system.reset();
+            if (!cholesky)
+              cholesky = std::make_shared<internal::SparseCholesky>();
+            used_lu_fallback = used_gmres || !cholesky->factorize(K);
+            if (!used_lu_fallback)
+              {
+                ++n_factorizations;
+                factored_system = system;
+              }
+          }
         if (used_lu_fallback)
           internal::solve_direct(K, u, f, false);
         else

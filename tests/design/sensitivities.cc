@@ -18,6 +18,10 @@
 //   block also held at its side, the normal force of the interface; the
 //   largest pressure of the interface (its 8-norm, a J non-linear in the
 //   state);
+// - constraints besides the objective on the curved base: the interface's
+//   force at least, its largest pressure at most, the compliance at most a
+//   bound; their gradients, and the adjoint solves reusing the state's
+//   factorization;
 // - the whole chain of TopologyOptimizer: variables z -> filter -> Heaviside
 //   projection -> SIMP / RAMP -> factors -> compliance, against finite
 //   differences in z.
@@ -37,6 +41,7 @@
 #include <dealvem/mesh/generators.h>
 
 #include <cmath>
+#include <memory>
 #include <random>
 #include <utility>
 
@@ -199,9 +204,8 @@ namespace
 
   // a block on a base whose top bulges, y = 0.02 (1 - 4 (x - 0.5)^2): the
   // contact closes in the middle and opens towards the block's ends
-  void
-  curved_base(const unsigned int k, const Design::ElasticDesignProblem::Objective objective,
-              const ContactSettings::Tangential tangential = ContactSettings::Tangential::multipliers)
+  PolygonalMesh<2>
+  curved_base_mesh()
   {
     PolygonalMesh<2> mesh, upper;
     PolygonalMeshGenerators::structured_quads(mesh, P(0, -0.5), P(1, 0), 12, 5);
@@ -212,7 +216,14 @@ namespace
       }
     PolygonalMeshGenerators::perturbed_quads(upper, P(0.1, 0.02), P(0.9, 0.4), 9, 4, 0.15, 5);
     add_body(mesh, upper);
-    Design::ElasticDesignProblem problem(mesh, two_laws(), k);
+    return mesh;
+  }
+
+  void
+  curved_base(const unsigned int k, const Design::ElasticDesignProblem::Objective objective,
+              const ContactSettings::Tangential tangential = ContactSettings::Tangential::multipliers)
+  {
+    Design::ElasticDesignProblem problem(curved_base_mesh(), two_laws(), k);
     problem.contact_settings().normal     = ContactSettings::Normal::unilateral;
     problem.contact_settings().tangential = tangential;
     // the gaps (the overlap, the bulge) are real, not two discretizations
@@ -262,6 +273,107 @@ namespace
                      (force ? "interface force" : pressure ? "largest pressure (8-norm)" : "compliance") +
                      (penalty ? ", stick by penalty" : "") + ", k = " + std::to_string(k),
                    true);
+  }
+
+  // constraints besides the objective (the compliance) on the curved base
+  // held at its side: the interface's force at least a bound, its largest
+  // pressure at most one, the compliance at most one. Each constraint's
+  // value against its response, its gradient against differences of the
+  // value; the adjoint solves reuse the factorization of the state, and
+  // the compliance constraint reuses the objective's adjoint.
+  void
+  constrained(const unsigned int k)
+  {
+    using R = Design::ElasticDesignProblem::Response;
+    using B = Design::ElasticDesignProblem::Bound;
+    const auto make = [&](const bool with_constraints) {
+      auto problem = std::make_unique<Design::ElasticDesignProblem>(curved_base_mesh(), two_laws(), k);
+      problem->contact_settings().normal                   = ContactSettings::Normal::unilateral;
+      problem->insertion_settings().close_discretisation_gaps = false;
+      problem->add_contact_interface(3, 12);
+      problem->add_support(2);
+      problem->add_support(10, {{false, true}});
+      problem->add_traction(13, T({0., -2.}));
+      if (with_constraints)
+        {
+          problem->add_constraint(R::interface_force, 1.0, B::at_least, 0);
+          problem->add_constraint(R::max_pressure, 4.0, B::at_most, 0);
+          problem->add_constraint(R::compliance, 0.05);
+        }
+      else
+        problem->set_objective(R::max_pressure, 0);
+      problem->setup();
+      return problem;
+    };
+    auto       problem   = make(true);
+    auto       reference = make(false);
+    const auto s         = random_factors(problem->get_mesh().n_cells(), 51 + k);
+    const std::string tag = "constraints, k = " + std::to_string(k);
+
+    std::vector<double>              g, values;
+    std::vector<std::vector<double>> grads;
+    const double                     J = problem->evaluate(s, g);
+    problem->constraints(values, grads);
+    const auto state  = problem->last_state();
+    const auto active = state.active;
+    testing::check(values.size() == 3 && grads.size() == 3, tag + ": three constraints");
+    testing::check(state.n_degenerate_pairs == 0, tag + ": no degenerate pair");
+    const double F = state.interface_forces[0];
+    testing::check_near(values[0], 1.0 - F, 1e-14, tag + ": force >= 1 as g = 1 - F");
+    testing::check_near(state.constraint_responses[2], J, 1e-14 * J, tag + ": the compliance constraint's response");
+    testing::check_near(values[2], (J - 0.05) / 0.05, 1e-12, tag + ": compliance <= 0.05 as g = C / 0.05 - 1");
+    std::vector<double> gp;
+    const double        Pn = reference->evaluate(s, gp);
+    testing::check_near(state.constraint_responses[1], Pn, 1e-12 * Pn, tag + ": the pressure constraint's response");
+    testing::check_near(values[1], (Pn - 4.) / 4., 1e-12, tag + ": pressure <= 4 as g = P / 4 - 1");
+    double g_max = 0, g_diff = 0;
+    for (unsigned int c = 0; c < g.size(); ++c)
+      {
+        g_max  = std::max(g_max, std::abs(g[c] / 0.05));
+        g_diff = std::max(g_diff, std::abs(grads[2][c] - g[c] / 0.05));
+      }
+    testing::check_small(g_diff / g_max, 1e-15, tag + ": the compliance constraint's gradient is the objective's / 0.05");
+    // the objective (compliance, not self-adjoint here), the force and the
+    // pressure: three adjoint solves, none factored again
+    std::cout << tag << ": " << state.n_contact_iterations << " active-set iterations, " << state.n_solves
+              << " solves, " << state.n_factorizations << " factorizations; F = " << F << ", P-norm = " << Pn
+              << ", C = " << J << std::endl;
+    testing::check(state.n_solves == state.n_contact_iterations + 3, tag + ": three adjoint solves");
+    testing::check(state.n_factorizations <= state.n_contact_iterations,
+                   tag + ": the adjoint solves reuse the state's factorization");
+
+    double worst = 0;
+    for (unsigned int j = 0; j < 2; ++j)
+      {
+        unsigned int imax = 0;
+        for (unsigned int c = 0; c < grads[j].size(); ++c)
+          if (std::abs(grads[j][c]) > std::abs(grads[j][imax]))
+            imax = c;
+        for (const unsigned int c : {imax, 5u, static_cast<unsigned int>(g.size() / 2),
+                                     static_cast<unsigned int>(g.size() - 3)})
+          {
+            if (std::abs(grads[j][c]) < 1e-3 * std::abs(grads[j][imax]))
+              continue;
+            auto difference = [&](const double h) {
+              std::vector<double>              sp = s, sm = s, vp, vm, dummy;
+              std::vector<std::vector<double>> unused;
+              sp[c] += h;
+              sm[c] -= h;
+              problem->evaluate(sp, dummy);
+              testing::check(problem->last_state().active == active, tag + ": same active set at s + h");
+              problem->constraints(vp, unused);
+              problem->evaluate(sm, dummy);
+              testing::check(problem->last_state().active == active, tag + ": same active set at s - h");
+              problem->constraints(vm, unused);
+              return (vp[j] - vm[j]) / (2 * h);
+            };
+            const double h  = 2e-3 * s[c];
+            const double fd = (4 * difference(h / 2) - difference(h)) / 3;
+            worst           = std::max(worst, std::abs(fd - grads[j][c]) / std::abs(grads[j][c]));
+          }
+      }
+    std::cout << tag << ": worst relative error of dg/ds against differences " << worst << std::endl;
+    testing::check_small(worst, 1e-6, tag + ": constraint gradients against central differences");
   }
 
   // the optimizer's chain z -> factors -> J against differences in z
@@ -432,6 +544,7 @@ main(int argc, char **argv)
       curved_base(k, Design::ElasticDesignProblem::Objective::interface_force);
       curved_base(k, Design::ElasticDesignProblem::Objective::max_pressure);
       curved_base(k, Design::ElasticDesignProblem::Objective::compliance, ContactSettings::Tangential::penalty);
+      constrained(k);
       chain(k, k == 1 ? Design::MaterialInterpolation::Type::simp : Design::MaterialInterpolation::Type::ramp);
     }
   return testing::finish();

@@ -41,7 +41,8 @@ namespace dealvem
    * 'Output interval' iterations and for the final design (cell fields
    * "density" and "material_id"), "<prefix>-design.svg" (the final
    * densities), "<prefix>-design.csv" (objective, volume, change, sharpness
-   * and grey fraction per iteration).
+   * and grey fraction per iteration, and the constraint g <= 0 when there
+   * is one).
    */
   struct DesignParameters
   {
@@ -51,8 +52,18 @@ namespace dealvem
     /// 'Interface': the contact interface of the force and pressure
     /// objectives (in the order of 'Contact/Pairs', then the detected ones).
     unsigned int interface = 0;
-    /// 'Pressure norm exponent': P of the largest-pressure objective.
+    /// 'Pressure norm exponent': P of the largest-pressure objective and
+    /// constraint.
     double pressure_exponent = 8;
+    /// 'Constraint': "none", "compliance", "interface force" or "largest
+    /// pressure" (ElasticDesignProblem::add_constraint()).
+    std::string constraint = "none";
+    /// 'Constraint interface'.
+    unsigned int constraint_interface = 0;
+    /// 'Constraint bound' (> 0).
+    double constraint_bound = 1;
+    /// 'Constraint sense' = "at least" (otherwise "at most").
+    bool constraint_at_least = false;
     /// The optimizer's settings (volume, filter, interpolation, ...).
     Design::TopologyOptimizer::Settings settings;
     /// 'Output interval': a VTU file every this many iterations (0: the

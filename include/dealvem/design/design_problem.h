@@ -58,6 +58,28 @@ namespace dealvem
        */
       virtual double
       evaluate(const std::vector<double> &factors, std::vector<double> &gradient) = 0;
+
+      /// The number of constraints $g_j(s) \le 0$ of the design besides
+      /// the volume (default: none).
+      virtual unsigned int
+      n_constraints() const
+      {
+        return 0;
+      }
+
+      /// A name of constraint @p j for reports.
+      virtual std::string
+      constraint_name(const unsigned int j) const;
+
+      /**
+       * The constraints at the design of the last evaluate(): @p values
+       * receives $g_j$ (feasible where $\le 0$, of order one: normalized by
+       * their bound) and @p gradients the $\partial g_j/\partial s_c$ of
+       * every cell, one vector per constraint. Throws unless evaluate() was
+       * called.
+       */
+      virtual void
+      constraints(std::vector<double> &values, std::vector<std::vector<double>> &gradients) const;
     };
 
 
@@ -113,12 +135,21 @@ namespace dealvem
     class ElasticDesignProblem : public DesignProblem
     {
     public:
-      /// What evaluate() returns.
-      enum class Objective
+      /// A response of the state: the objective, or a constrained quantity.
+      enum class Response
       {
-        compliance,     ///< $f^T u$
+        compliance,      ///< $f^T u$
         interface_force, ///< the compressive normal force of one interface
         max_pressure     ///< the P-norm of the pair pressures of one interface
+      };
+      /// What evaluate() returns.
+      using Objective = Response;
+
+      /// The side of a constraint's bound.
+      enum class Bound
+      {
+        at_most, ///< response $\le$ bound
+        at_least ///< response $\ge$ bound
       };
 
       /// The state of the last evaluate().
@@ -134,6 +165,8 @@ namespace dealvem
         double compliance = 0;
         /// The compressive normal force of each interface, $-\sum \lambda_i$.
         std::vector<double> interface_forces;
+        /// The response of each constraint (add_constraint()), unscaled.
+        std::vector<double> constraint_responses;
         /// Pairs at which the derivative is one-sided (see the class
         /// documentation).
         unsigned int n_degenerate_pairs = 0;
@@ -143,6 +176,9 @@ namespace dealvem
         unsigned int n_solves = 0;
         /// Whether an adjoint solve was needed.
         bool adjoint_solved = false;
+        /// The direct constraint solver: Cholesky factorizations computed
+        /// in this evaluation (the adjoint solves reuse the state's).
+        unsigned int n_factorizations = 0;
         /// Wall time (s) of the assembly of $\sum_c s_c K_c$.
         double time_assembly = 0;
         /// Wall time (s) of the state: the solve, or the contact solve with
@@ -235,9 +271,38 @@ namespace dealvem
       void
       set_objective(const Objective objective, const unsigned int interface = 0);
 
-      /// The exponent P of Objective::max_pressure (>= 1; default 8).
+      /// The exponent P of Objective::max_pressure (>= 1; default 8; the
+      /// constraints on the largest pressure too).
       void
       set_pressure_norm_exponent(const double P);
+
+      /**
+       * Constrain the response @p response (of interface @p interface for
+       * the force and the pressure) to @p bound from the side @p sense:
+       * $g = (R - R^*)/|R^*| \le 0$ (Bound::at_most) or
+       * $g = (R^* - R)/|R^*| \le 0$ (Bound::at_least). Its gradient is that
+       * of the response, by the adjoint of the converged set (one more
+       * solve with the factorization or preconditioner of the state; none
+       * for a self-adjoint compliance). The bound must be positive: the
+       * three responses are non-negative.
+       */
+      void
+      add_constraint(const Response     response,
+                     const double       bound,
+                     const Bound        sense     = Bound::at_most,
+                     const unsigned int interface = 0);
+
+      unsigned int
+      n_constraints() const override
+      {
+        return constraint_list.size();
+      }
+
+      std::string
+      constraint_name(const unsigned int j) const override;
+
+      void
+      constraints(std::vector<double> &values, std::vector<std::vector<double>> &gradients) const override;
 
       /// Build everything that does not depend on the design (see the class
       /// documentation). Throws if a body is not held.
@@ -298,8 +363,27 @@ namespace dealvem
     private:
       struct Data;
 
+      /// One constraint of add_constraint().
+      struct Constraint
+      {
+        Response     response;
+        unsigned int interface;
+        double       bound;
+        Bound        sense;
+      };
+
       void
       assemble(const std::vector<double> &factors);
+
+      /// The value of @p response of interface @p interface at the state
+      /// and its derivative @p a with respect to the state (size n + m).
+      double
+      response_and_state_derivative(const Response response, const unsigned int interface, const bool for_objective,
+                                    dealii::Vector<double> &a) const;
+
+      /// The name of @p response of interface @p interface.
+      std::string
+      response_name(const Response response, const unsigned int interface) const;
 
       PolygonalMesh<2>                                   mesh;
       MaterialLibrary<2>                                 laws;
@@ -318,8 +402,12 @@ namespace dealvem
       std::vector<std::pair<dealii::types::boundary_id, dealii::types::boundary_id>> interface_ids;
       std::vector<ConstraintFunction>                                         constraint_functions;
       std::vector<LoadFunction>                                               load_functions;
+      std::vector<Constraint>                                                 constraint_list;
       std::unique_ptr<Data>                                                   data;
       State                                                                   state;
+      /// The constraint values and gradients of the last evaluate().
+      std::vector<double>                                                     constraint_values;
+      std::vector<std::vector<double>>                                        constraint_gradients;
     };
   } // namespace Design
 } // namespace dealvem

@@ -41,10 +41,15 @@ namespace dealvem
      *   the objective scaled by its value on the initial design. NLopt's MMA
      *   may evaluate several trial designs per outer iteration; every
      *   evaluation is counted and reported.
+     *   The DesignProblem's own constraints $g_j \le 0$
+     *   (DesignProblem::n_constraints(): a bound on an interface's force or
+     *   pressure, ElasticDesignProblem::add_constraint()) are MMA
+     *   constraints beside the volume, scaled like it.
      * - Optimizer::oc: the optimality-criteria update of Sigmund's 99-line
      *   code and PolyTop (move limit Settings::move, damping 1/2, the
      *   multiplier of the volume constraint by bisection), for compliance
-     *   (a gradient of one sign).
+     *   (a gradient of one sign) under the volume constraint only; run()
+     *   refuses a problem with constraints of its own.
      *
      * Convergence: the largest change of a design variable between two
      * iterations below Settings::tolerance, or Settings::max_iterations.
@@ -111,6 +116,9 @@ namespace dealvem
         /// The share of design cells with $\bar\rho$ in (0.1, 0.9): a
         /// measure of grey.
         double       grey = 0;
+        /// The problem's constraints $g_j$ (DesignProblem::constraints();
+        /// feasible where $\le 0$), empty without.
+        std::vector<double> constraints;
       };
 
       /// What run() returns.
@@ -125,6 +133,9 @@ namespace dealvem
         double                 objective = 0;
         /// The final volume fraction.
         double                 volume = 0;
+        /// The problem's constraints $g_j$ at the final design (feasible
+        /// where $\le 0$).
+        std::vector<double>    constraints;
         /// Whether the change tolerance was reached.
         bool                   converged = false;
         /// NLopt's return code (MMA), as text.

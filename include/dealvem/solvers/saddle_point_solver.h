@@ -241,6 +241,17 @@ namespace dealvem
       return iterations;
     }
 
+    /// Direct constraints: the Cholesky factorizations computed, and the
+    /// solves that reused the factorization of an earlier solve because
+    /// their condensed matrix was the same (pattern and values; an adjoint
+    /// solve with the matrix of the converged state, a load step with an
+    /// unchanged active set).
+    std::pair<unsigned int, unsigned int>
+    factorization_counts() const
+    {
+      return {n_factorizations, n_factorization_reuses};
+    }
+
     /// One line for the output: the method, its preconditioner and what the
     /// last solve used (iterations, fallbacks).
     virtual std::string
@@ -278,6 +289,12 @@ namespace dealvem
     /// direct constraints: the factorization (its workspace kept between
     /// active sets)
     std::shared_ptr<internal::SparseCholesky> cholesky;
+    /// direct constraints: the condensed system that cholesky factors (its
+    /// matrix is compared with the next one's)
+    std::shared_ptr<internal::CondensedSystem> factored_system;
+    /// See factorization_counts().
+    unsigned int                        n_factorizations       = 0;
+    unsigned int                        n_factorization_reuses = 0;
     /// CG-AMG: the AMG hierarchy of an earlier solve with a copy of the
     /// matrix it was built on: reused as it is for the same matrix (load
     /// steps, Newton iterations that keep the closed pairs), corrected on
