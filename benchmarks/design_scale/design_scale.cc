@@ -87,11 +87,12 @@ namespace
   {
     unsigned int n = 0;
     double       assembly = 0, state = 0, adjoint = 0, sensitivities = 0, iteration = 0;
-    unsigned int active_set = 0;
+    unsigned int active_set = 0, linear = 0;
     void
     add(const Design::ElasticDesignProblem::State &s)
     {
       ++n;
+      linear += s.linear_iterations;
       assembly += s.time_assembly;
       state += s.time_state;
       adjoint += s.time_adjoint;
@@ -193,15 +194,21 @@ namespace
     settings.max_iterations        = iterations;
     Design::TopologyOptimizer optimizer(settings);
     Means                     means;
-    optimizer.set_callback([&](unsigned int, const Design::TopologyOptimizer::Iteration &, const std::vector<double> &) {
+    optimizer.set_callback([&](unsigned int it, const Design::TopologyOptimizer::Iteration &record,
+                               const std::vector<double> &) {
       means.add(problem.last_state());
+      if (it % 10 == 1)
+        std::cout << "  iteration " << it << ": compliance " << record.objective << ", change " << record.change
+                  << ", solve " << problem.last_state().time_state << " s, "
+                  << problem.last_state().linear_iterations << " CG iterations" << std::endl;
     });
     const auto r = optimizer.run(problem);
     std::cout << std::setprecision(4) << "MBB, " << n_cells << " Voronoi cells, " << problem.get_dof_handler().n_dofs()
               << " DoFs, " << solver << "\n  mesh " << t_mesh << " s, setup " << t_setup << " s\n  "
               << r.history.size() << " iterations (" << r.stop_reason << "), compliance " << r.objective << ", "
               << r.time << " s, per iteration " << r.time / r.history.size() << " s: assembly "
-              << means.assembly / means.n << ", solve " << means.state / means.n << ", sensitivities "
+              << means.assembly / means.n << ", solve " << means.state / means.n << " ("
+              << double(means.linear) / means.n << " CG iterations), sensitivities "
               << means.sensitivities / means.n << ", optimizer and filter "
               << (r.time - r.analysis_time) / r.history.size() << "\n  peak memory " << peak_memory_mb() << " MB"
               << std::endl;

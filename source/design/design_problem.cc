@@ -639,7 +639,8 @@ namespace dealvem
           d.x.reinit(d.n);
           d.solver->solve(d.system_matrix, d.n, d.x, d.system_rhs);
           d.constraints.distribute(d.x);
-          state.n_solves = 1;
+          state.n_solves          = 1;
+          state.linear_iterations = d.solver->last_iterations();
         }
       else
         {
@@ -647,6 +648,7 @@ namespace dealvem
           state.active               = r.active;
           state.n_contact_iterations = r.n_iterations;
           state.n_solves             = r.n_iterations;
+          state.linear_iterations    = r.linear_iterations;
         }
       state.time_state = seconds(start);
       state.displacement.reinit(d.n);

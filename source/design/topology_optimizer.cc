@@ -423,19 +423,16 @@ namespace dealvem
           result.stop_reason = result.converged ? "design change below the tolerance" : "iteration limit";
         }
 
-      // the final design: evaluate it once more if the optimizer's last
-      // evaluation was at another point
+      // the final design (NLopt's best point, OC's last update) is the
+      // history's last entry: evaluated once more, and recorded, when the
+      // optimizer's last evaluation was at another point (a trial point
+      // MMA rejected, or the design before OC's last update)
+      if (ctx.last_z != z)
+        design_objective(n, z.data(), nullptr, &ctx);
       chain.factors(z, settings.interpolation, h);
       result.densities = chain.physical;
       result.volume    = chain.volume(nullptr, h);
-      result.objective = result.history.empty() ? 0. : result.history.back().objective;
-      if (!result.history.empty() && ctx.last_z != z)
-        {
-          std::vector<double> ds;
-          const auto          t0 = std::chrono::steady_clock::now();
-          result.objective = problem.evaluate(chain.factors(z, settings.interpolation, h), ds);
-          ctx.analysis_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        }
+      result.objective = result.history.back().objective;
       if (n_constraints > 0 && !result.history.empty())
         {
           std::vector<std::vector<double>> unused;

@@ -174,6 +174,9 @@ namespace dealvem
         unsigned int n_contact_iterations = 0;
         /// Linear solves, the adjoint included.
         unsigned int n_solves = 0;
+        /// Krylov iterations of the state's solves (iterative solvers; 1
+        /// per solve for the direct ones).
+        unsigned int linear_iterations = 0;
         /// Whether an adjoint solve was needed.
         bool adjoint_solved = false;
         /// The direct constraint solver: Cholesky factorizations computed

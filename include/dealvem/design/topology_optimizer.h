@@ -124,7 +124,9 @@ namespace dealvem
       /// What run() returns.
       struct Result
       {
-        /// The iterations (evaluations of the problem, in order).
+        /// The iterations (evaluations of the problem, in order); the last
+        /// one is the returned design (evaluated once more when the
+        /// optimizer's last evaluation was at another point).
         std::vector<Iteration> history;
         /// The physical densities $\bar\rho$ of every cell of the mesh
         /// (passive cells 0 or 1).

@@ -292,8 +292,9 @@ namespace dealvem
     /// direct constraints: the condensed system that cholesky factors (its
     /// matrix is compared with the next one's)
     std::shared_ptr<internal::CondensedSystem> factored_system;
-    /// See factorization_counts().
+    /// Direct constraints: the Cholesky factorizations computed.
     unsigned int                        n_factorizations       = 0;
+    /// Direct constraints: the solves that reused a factorization.
     unsigned int                        n_factorization_reuses = 0;
     /// CG-AMG: the AMG hierarchy of an earlier solve with a copy of the
     /// matrix it was built on: reused as it is for the same matrix (load
