@@ -113,6 +113,20 @@ main()
       testing::check(m2.get_vertices() == m.get_vertices(), "voronoi" + s + ": same seed, same mesh");
       G::voronoi(m2, p0, p1, 10 * n * n, 10, 8);
       testing::check(m2.get_vertices() != m.get_vertices(), "voronoi" + s + ": other seed, other mesh");
+      {
+        // far from the origin: the same mesh, translated (the same cells
+        // and vertex order; the coordinates to the rounding of the shift)
+        const dealii::Tensor<1, 2> shift({1000., -500.});
+        G::voronoi(m2, p0 + shift, p1 + shift, 10 * n * n, 10, 7);
+        bool   same_cells = m2.n_cells() == m.n_cells() && m2.n_vertices() == m.n_vertices();
+        double err        = 0;
+        for (unsigned int c = 0; same_cells && c < m.n_cells(); ++c)
+          same_cells = m2.cell(c).vertices == m.cell(c).vertices;
+        for (unsigned int v = 0; same_cells && v < m.n_vertices(); ++v)
+          err = std::max(err, (m2.vertex(v) - shift).distance(m.vertex(v)));
+        testing::check(same_cells, "voronoi" + s + ", shifted by (1000, -500): the same cells");
+        testing::check_small(err, 1e-12, "voronoi" + s + ", shifted by (1000, -500): the vertices, translated");
+      }
       dealii::Triangulation<2> tria;
       dealii::GridGenerator::subdivided_hyper_rectangle(tria, {2 * n, n}, p0, p1, true);
       G::from_triangulation(m, tria);
