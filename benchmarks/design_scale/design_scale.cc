@@ -7,6 +7,7 @@
 //
 //   benchmark_design_scale contact [n_cells]        (default 3200)
 //   benchmark_design_scale mbb n_cells [iterations] [solver]
+//   benchmark_design_scale mbb-multilevel n_cells [fine iterations] [solver]
 //
 // contact: the bracket of examples/step-13 (a 2 x 1 design domain of
 // n_cells Voronoi cells, clamped at its left, standing on a solid block,
@@ -22,6 +23,12 @@
 // iterations (default 100), solver "CG-AMG" (default) or "direct
 // constraints". Prints the mesh and setup times, the time per iteration
 // and its parts, and the peak memory (VmHWM).
+//
+// mbb-multilevel: the same beam in two levels: designed on n_cells / 16
+// cells first (to the change tolerance), the densities carried to the
+// n_cells mesh (Design::transfer_densities), then at most `iterations`
+// (default 60) MMA iterations there from that start. Prints both levels
+// and the whole time.
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -36,6 +43,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <string>
 
 using namespace dealvem;
@@ -167,31 +175,42 @@ namespace
     std::cout << "peak memory " << peak_memory_mb() << " MB" << std::endl;
   }
 
-  void
-  mbb(const unsigned int n_cells, const unsigned int iterations, const std::string &solver)
+  // The MBB beam of step-79 on n_cells Voronoi cells: its problem (set up)
+  std::unique_ptr<Design::ElasticDesignProblem>
+  mbb_problem(const unsigned int n_cells, const std::string &solver, double &t_mesh, double &t_setup)
   {
     auto             start = std::chrono::steady_clock::now();
     PolygonalMesh<2> mesh;
     PolygonalMeshGenerators::voronoi(mesh, Point(0, 0), Point(6, 1), n_cells, 10, 1);
     const double length = mark_top(mesh, 1., 2.75, 3.25, 4);
-    const double t_mesh = since(start);
+    t_mesh              = since(start);
     start               = std::chrono::steady_clock::now();
     MaterialLibrary<2> laws;
     laws.add(0, ElasticMaterial(2.5, 0.25));
-    Design::ElasticDesignProblem problem(mesh, laws, 1);
-    problem.solver_settings().type               = SaddlePointSolver::parse_type(solver);
-    problem.solver_settings().relative_tolerance = 1e-8;
-    problem.add_point_support(Point(0, 0), 0);
-    problem.add_point_support(Point(0, 0), 1);
-    problem.add_point_support(Point(6, 0), 1);
-    problem.add_traction(4, Vector({0., -0.5 / length}));
-    problem.setup();
-    const double t_setup = since(start);
+    auto problem = std::make_unique<Design::ElasticDesignProblem>(mesh, laws, 1);
+    problem->solver_settings().type               = SaddlePointSolver::parse_type(solver);
+    problem->solver_settings().relative_tolerance = 1e-8;
+    problem->add_point_support(Point(0, 0), 0);
+    problem->add_point_support(Point(0, 0), 1);
+    problem->add_point_support(Point(6, 0), 1);
+    problem->add_traction(4, Vector({0., -0.5 / length}));
+    problem->setup();
+    t_setup = since(start);
+    return problem;
+  }
+
+  // MMA on the MBB problem from @p initial (empty: uniform); prints the
+  // summary line
+  Design::TopologyOptimizer::Result
+  mbb_run(Design::ElasticDesignProblem &problem, const unsigned int n_cells, const unsigned int iterations,
+          const std::vector<double> &initial, const double move, const std::string &label)
+  {
     Design::TopologyOptimizer::Settings settings;
     settings.volume_fraction       = 0.5;
     settings.filter_radius         = 2 * std::sqrt(6. / n_cells);
     settings.interpolation.minimum = 1e-4;
     settings.max_iterations        = iterations;
+    settings.move                  = move;
     Design::TopologyOptimizer optimizer(settings);
     Means                     means;
     optimizer.set_callback([&](unsigned int it, const Design::TopologyOptimizer::Iteration &record,
@@ -202,16 +221,50 @@ namespace
                   << ", solve " << problem.last_state().time_state << " s, "
                   << problem.last_state().linear_iterations << " CG iterations" << std::endl;
     });
-    const auto r = optimizer.run(problem);
-    std::cout << std::setprecision(4) << "MBB, " << n_cells << " Voronoi cells, " << problem.get_dof_handler().n_dofs()
-              << " DoFs, " << solver << "\n  mesh " << t_mesh << " s, setup " << t_setup << " s\n  "
-              << r.history.size() << " iterations (" << r.stop_reason << "), compliance " << r.objective << ", "
-              << r.time << " s, per iteration " << r.time / r.history.size() << " s: assembly "
-              << means.assembly / means.n << ", solve " << means.state / means.n << " ("
-              << double(means.linear) / means.n << " CG iterations), sensitivities "
-              << means.sensitivities / means.n << ", optimizer and filter "
-              << (r.time - r.analysis_time) / r.history.size() << "\n  peak memory " << peak_memory_mb() << " MB"
+    const auto r = initial.empty() ? optimizer.run(problem) : optimizer.run(problem, initial);
+    std::cout << std::setprecision(5) << label << ", " << n_cells << " Voronoi cells, "
+              << problem.get_dof_handler().n_dofs() << " DoFs: " << r.history.size() << " iterations ("
+              << r.stop_reason << "), compliance " << r.objective << ", volume " << r.volume << ", " << r.time
+              << " s, per iteration " << r.time / r.history.size() << " s: assembly " << means.assembly / means.n
+              << ", solve " << means.state / means.n << " (" << double(means.linear) / means.n
+              << " CG iterations), sensitivities " << means.sensitivities / means.n << ", optimizer and filter "
+              << (r.time - r.analysis_time) / r.history.size() << std::endl;
+    return r;
+  }
+
+  void
+  mbb(const unsigned int n_cells, const unsigned int iterations, const std::string &solver)
+  {
+    double     t_mesh = 0, t_setup = 0;
+    auto       problem = mbb_problem(n_cells, solver, t_mesh, t_setup);
+    std::cout << "MBB, " << solver << "\n  mesh " << t_mesh << " s, setup " << t_setup << " s" << std::endl;
+    mbb_run(*problem, n_cells, iterations, {}, 0.2, "MBB");
+    std::cout << "  peak memory " << peak_memory_mb() << " MB" << std::endl;
+  }
+
+  // Two levels: the design of n_cells / 16 cells (to the change tolerance,
+  // at most 300 iterations), its densities carried to the n_cells mesh
+  // (transfer_densities over one coarse cell size), then at most
+  // `iterations` there, starting with a smaller step (0.05).
+  void
+  mbb_multilevel(const unsigned int n_cells, const unsigned int iterations, const std::string &solver)
+  {
+    const auto         start  = std::chrono::steady_clock::now();
+    const unsigned int coarse = n_cells / 16;
+    double             t_mesh = 0, t_setup = 0;
+    auto               coarse_problem = mbb_problem(coarse, solver, t_mesh, t_setup);
+    std::cout << "MBB multilevel, " << solver << "\n  coarse mesh " << t_mesh << " s, setup " << t_setup << " s"
               << std::endl;
+    const auto r_coarse = mbb_run(*coarse_problem, coarse, 300, {}, 0.2, "  coarse level");
+    auto       problem  = mbb_problem(n_cells, solver, t_mesh, t_setup);
+    std::cout << "  fine mesh " << t_mesh << " s, setup " << t_setup << " s" << std::endl;
+    const auto t0      = std::chrono::steady_clock::now();
+    const auto initial = Design::transfer_densities(coarse_problem->get_mesh(), r_coarse.densities,
+                                                    problem->get_mesh(), std::sqrt(6. / coarse));
+    std::cout << "  transfer " << since(t0) << " s" << std::endl;
+    coarse_problem.reset();
+    mbb_run(*problem, n_cells, iterations, initial, 0.05, "  fine level");
+    std::cout << "  whole run " << since(start) << " s, peak memory " << peak_memory_mb() << " MB" << std::endl;
   }
 } // namespace
 
@@ -224,9 +277,13 @@ main(int argc, char **argv)
     contact(argc > 2 ? std::stoi(argv[2]) : 3200);
   else if (mode == "mbb" && argc > 2)
     mbb(std::stoi(argv[2]), argc > 3 ? std::stoi(argv[3]) : 100, argc > 4 ? argv[4] : "CG-AMG");
+  else if (mode == "mbb-multilevel" && argc > 2)
+    mbb_multilevel(std::stoi(argv[2]), argc > 3 ? std::stoi(argv[3]) : 60, argc > 4 ? argv[4] : "CG-AMG");
   else
     {
-      std::cerr << "usage: benchmark_design_scale contact [n_cells] | mbb n_cells [iterations] [solver]" << std::endl;
+      std::cerr << "usage: benchmark_design_scale contact [n_cells] | mbb n_cells [iterations] [solver] | "
+                   "mbb-multilevel n_cells [fine iterations] [solver]"
+                << std::endl;
       return 2;
     }
   return 0;

@@ -162,5 +162,64 @@ namespace dealvem
         }
       return result;
     }
+
+
+    std::vector<double>
+    transfer_densities(const PolygonalMesh<2>    &from,
+                       const std::vector<double> &from_density,
+                       const PolygonalMesh<2>    &to,
+                       const double               radius)
+    {
+      AssertThrow(from.n_cells() > 0, dealii::ExcMessage("transfer_densities(): the source mesh has no cells."));
+      AssertThrow(from_density.size() == from.n_cells(),
+                  dealii::ExcMessage("transfer_densities(): " + std::to_string(from_density.size()) +
+                                     " densities for " + std::to_string(from.n_cells()) + " cells."));
+      AssertThrow(std::isfinite(radius) && radius > 0,
+                  dealii::ExcMessage("transfer_densities(): the radius must be positive, got " +
+                                     internal::number_string(radius) + "."));
+      std::vector<unsigned int> all_from(from.n_cells()), all_to(to.n_cells());
+      for (unsigned int c = 0; c < all_from.size(); ++c)
+        all_from[c] = c;
+      for (unsigned int c = 0; c < all_to.size(); ++c)
+        all_to[c] = c;
+      const auto               source = cell_centroids(from, all_from);
+      const auto               target = cell_centroids(to, all_to);
+      std::vector<FilterEntry> entries;
+      entries.reserve(source.size());
+      for (unsigned int i = 0; i < source.size(); ++i)
+        entries.emplace_back(FilterPoint(source[i][0], source[i][1]), i);
+      const bgi::rtree<FilterEntry, bgi::quadratic<16>> tree(entries.begin(), entries.end());
+
+      std::vector<double>      result(target.size(), 0.);
+      std::vector<FilterEntry> found;
+      for (unsigned int i = 0; i < target.size(); ++i)
+        {
+          const dealii::Point<2> &x = target[i];
+          found.clear();
+          tree.query(bgi::intersects(FilterBox(FilterPoint(x[0] - radius, x[1] - radius),
+                                               FilterPoint(x[0] + radius, x[1] + radius))),
+                     std::back_inserter(found));
+          double sum = 0, value = 0;
+          for (const auto &f : found)
+            {
+              const double w = 1 - x.distance(source[f.second]) / radius;
+              if (w > 0)
+                {
+                  sum += w;
+                  value += w * from_density[f.second];
+                }
+            }
+          if (sum > 0)
+            result[i] = value / sum;
+          else
+            {
+              found.clear();
+              tree.query(bgi::nearest(FilterPoint(x[0], x[1]), 1), std::back_inserter(found));
+              result[i] = from_density[found.front().second];
+            }
+        }
+      return result;
+    }
+
   } // namespace Design
 } // namespace dealvem

@@ -309,11 +309,32 @@ namespace dealvem
     TopologyOptimizer::Result
     TopologyOptimizer::run(DesignProblem &problem)
     {
+      const double z0 = settings.initial_density >= 0 ? settings.initial_density : settings.volume_fraction;
+      return run(problem, std::vector<double>(problem.get_mesh().n_cells(), z0));
+    }
+
+
+
+    TopologyOptimizer::Result
+    TopologyOptimizer::run(DesignProblem &problem, const std::vector<double> &initial)
+    {
       const auto start = std::chrono::steady_clock::now();
-      Chain      chain = make_chain(problem.get_mesh(), settings);
-      const unsigned int  n  = chain.design_cells.size();
-      const double        z0 = settings.initial_density >= 0 ? settings.initial_density : settings.volume_fraction;
-      std::vector<double> z(n, z0);
+      AssertThrow(initial.size() == problem.get_mesh().n_cells(),
+                  dealii::ExcMessage("TopologyOptimizer::run(): " + std::to_string(initial.size()) +
+                                     " initial densities for " + std::to_string(problem.get_mesh().n_cells()) +
+                                     " cells."));
+      Chain              chain = make_chain(problem.get_mesh(), settings);
+      const unsigned int n     = chain.design_cells.size();
+      std::vector<double> z(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double v = initial[chain.design_cells[i]];
+          AssertThrow(std::isfinite(v) && v >= 0 && v <= 1,
+                      dealii::ExcMessage("TopologyOptimizer::run(): the initial density of cell " +
+                                         std::to_string(chain.design_cells[i]) + " is " +
+                                         internal::number_string(v) + "; it must lie in [0, 1]."));
+          z[i] = v;
+        }
       HeavisideProjection projection = settings.heaviside;
       HeavisideProjection *h = settings.projection ? &projection : nullptr;
 

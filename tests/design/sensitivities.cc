@@ -527,6 +527,67 @@ namespace
     off.add_point_load(P(0.5, 0.55), T({1., 0.}));
     testing::check_throws([&] { off.setup(); }, "no vertex of the mesh at (0.5, 0.55)",
                           "design problem: point load off the vertices");
+
+    // densities carried between meshes: a constant stays constant; onto
+    // the same mesh with a radius below the centroid spacing, the identity;
+    // a coarse two-valued design onto a fine mesh keeps its values away
+    // from the jump and averages across it
+    {
+      PolygonalMesh<2> coarse, fine;
+      PolygonalMeshGenerators::structured_quads(coarse, P(0, 0), P(2, 1), 4, 2);
+      PolygonalMeshGenerators::perturbed_quads(fine, P(0, 0), P(2, 1), 16, 8, 0.2, 3);
+      const std::vector<double> c(coarse.n_cells(), 0.37);
+      double                    err = 0;
+      for (const double v : Design::transfer_densities(coarse, c, fine, 0.6))
+        err = std::max(err, std::abs(v - 0.37));
+      testing::check_small(err, 1e-15, "transfer: a constant stays constant");
+      std::vector<double> r(fine.n_cells());
+      for (unsigned int i = 0; i < r.size(); ++i)
+        r[i] = (i % 7) / 7.;
+      const auto same = Design::transfer_densities(fine, r, fine, 1e-3);
+      testing::check(same == r, "transfer: onto the same mesh with a small radius, the identity");
+      const auto centroids = [](const PolygonalMesh<2> &m) {
+        std::vector<unsigned int> all(m.n_cells());
+        for (unsigned int i = 0; i < all.size(); ++i)
+          all[i] = i;
+        return Design::cell_centroids(m, all);
+      };
+      const auto          coarse_x = centroids(coarse), fine_x = centroids(fine);
+      std::vector<double> step(coarse.n_cells());
+      for (unsigned int i = 0; i < step.size(); ++i)
+        step[i] = coarse_x[i][0] < 1 ? 1. : 0.;
+      const auto   carried = Design::transfer_densities(coarse, step, fine, 0.5);
+      double       far_err = 0;
+      unsigned int between = 0;
+      for (unsigned int i = 0; i < carried.size(); ++i)
+        {
+          const double x = fine_x[i][0];
+          if (std::abs(x - 1) > 0.8)
+            far_err = std::max(far_err, std::abs(carried[i] - (x < 1 ? 1. : 0.)));
+          else if (carried[i] > 0.01 && carried[i] < 0.99)
+            ++between;
+        }
+      testing::check_small(far_err, 1e-15, "transfer: a two-valued design away from its jump");
+      testing::check(between > 0, "transfer: averaged across the jump");
+      testing::check_throws([&] { Design::transfer_densities(coarse, r, fine, 0.5); }, "densities for",
+                            "transfer: wrong number of densities");
+      testing::check_throws([&] { Design::transfer_densities(coarse, c, fine, 0.); }, "radius must be positive",
+                            "transfer: zero radius");
+      // the optimizer refuses initial densities of the wrong size or range
+      Design::ElasticDesignProblem beam(fine, two_laws(), 1);
+      beam.add_support(0);
+      beam.add_traction(1, T({0., -1.}));
+      beam.setup();
+      Design::TopologyOptimizer::Settings settings;
+      settings.filter_radius = 0.3;
+      Design::TopologyOptimizer optimizer(settings);
+      testing::check_throws([&] { optimizer.run(beam, std::vector<double>(3, 0.5)); }, "initial densities for",
+                            "optimizer: initial densities of the wrong size");
+      std::vector<double> bad(fine.n_cells(), 0.5);
+      bad[5] = 1.5;
+      testing::check_throws([&] { optimizer.run(beam, bad); }, "initial density of cell 5",
+                            "optimizer: an initial density above 1");
+    }
   }
 } // namespace
 

@@ -95,6 +95,22 @@ namespace dealvem
     /// The areas of the cells @p cells of @p mesh.
     std::vector<double>
     cell_areas(const PolygonalMesh<2> &mesh, const std::vector<unsigned int> &cells);
+
+    /**
+     * Densities on another mesh: for every cell of @p to, the linear
+     * filter's average (weights $1 - |x - x_j|/R$, as DensityFilter) of the
+     * densities @p from_density of the cells of @p from (one per cell) whose
+     * centroids lie within @p radius of the cell's centroid; where none
+     * does, the density of the cell of @p from with the nearest centroid.
+     * To start a design on a fine mesh from the design of a coarse one
+     * (TopologyOptimizer::run() with initial densities). Throws if the
+     * sizes disagree, @p from has no cells or the radius is not positive.
+     */
+    std::vector<double>
+    transfer_densities(const PolygonalMesh<2>    &from,
+                       const std::vector<double> &from_density,
+                       const PolygonalMesh<2>    &to,
+                       const double               radius);
   } // namespace Design
 } // namespace dealvem
 

@@ -160,9 +160,20 @@ namespace dealvem
         this->callback = callback;
       }
 
-      /// Optimize @p problem (whose mesh defines the cells).
+      /// Optimize @p problem (whose mesh defines the cells), from the
+      /// uniform design Settings::initial_density.
       Result
       run(DesignProblem &problem);
+
+      /**
+       * Optimize @p problem from the densities @p initial (one per cell of
+       * its mesh, in [0, 1]; the passive cells' entries are ignored): the
+       * design variables start there. With transfer_densities(), the design
+       * of a coarser mesh becomes the start of a finer one (a multilevel
+       * design: most iterations on the coarse mesh, a few on the fine).
+       */
+      Result
+      run(DesignProblem &problem, const std::vector<double> &initial);
 
       /**
        * The densities and the chain rule of one design: the physical
