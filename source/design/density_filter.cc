@@ -11,6 +11,7 @@
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -190,6 +191,8 @@ namespace dealvem
         entries.emplace_back(FilterPoint(source[i][0], source[i][1]), i);
       const bgi::rtree<FilterEntry, bgi::quadratic<16>> tree(entries.begin(), entries.end());
 
+      const double             lo = *std::min_element(from_density.begin(), from_density.end());
+      const double             hi = *std::max_element(from_density.begin(), from_density.end());
       std::vector<double>      result(target.size(), 0.);
       std::vector<FilterEntry> found;
       for (unsigned int i = 0; i < target.size(); ++i)
@@ -209,8 +212,10 @@ namespace dealvem
                   value += w * from_density[f.second];
                 }
             }
+          // (an average of values in [lo, hi] lies there: kept there
+          // against rounding, so that densities of 1 stay at most 1)
           if (sum > 0)
-            result[i] = value / sum;
+            result[i] = std::clamp(value / sum, lo, hi);
           else
             {
               found.clear();

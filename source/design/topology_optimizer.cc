@@ -329,11 +329,12 @@ namespace dealvem
       for (unsigned int i = 0; i < n; ++i)
         {
           const double v = initial[chain.design_cells[i]];
-          AssertThrow(std::isfinite(v) && v >= 0 && v <= 1,
+          // (filtered densities may exceed 1 or fall below 0 by rounding)
+          AssertThrow(std::isfinite(v) && v >= -1e-12 && v <= 1 + 1e-12,
                       dealii::ExcMessage("TopologyOptimizer::run(): the initial density of cell " +
                                          std::to_string(chain.design_cells[i]) + " is " +
                                          internal::number_string(v) + "; it must lie in [0, 1]."));
-          z[i] = v;
+          z[i] = std::clamp(v, 0., 1.);
         }
       HeavisideProjection projection = settings.heaviside;
       HeavisideProjection *h = settings.projection ? &projection : nullptr;
