@@ -257,6 +257,16 @@ namespace dealvem
             csv << "\n";
           }
       }
+    // an infeasible design is not an answer: the outputs are written for
+    // inspection, and the run fails naming the constraint
+    AssertThrow(result.feasible,
+                dealii::ExcMessage("Design: the optimization ended with an infeasible design (" + result.stop_reason +
+                                   "). The bound may be out of reach from this start (a force or pressure "
+                                   "constraint has no gradient while its interface is open); relax it, or "
+                                   "change the start ('Initial density') or 'Iterations'." +
+                                   (inputs.write_vtu ? " The last design is in " + inputs.prefix +
+                                                         "-design-final.vtu." :
+                                                       std::string())));
     return result;
   }
 } // namespace dealvem

@@ -460,6 +460,24 @@ namespace dealvem
           std::vector<std::vector<double>> unused;
           problem.constraints(result.constraints, unused);
         }
+      // a design that stopped outside the feasible set is not converged,
+      // whatever the change (a constraint whose gradient vanishes, e.g. the
+      // force of an interface that is open everywhere, stops MMA at once)
+      double       worst = (result.volume - settings.volume_fraction) / settings.volume_fraction;
+      std::string  worst_name = "volume fraction <= " + internal::number_string(settings.volume_fraction);
+      for (unsigned int j = 0; j < result.constraints.size(); ++j)
+        if (result.constraints[j] > worst)
+          {
+            worst      = result.constraints[j];
+            worst_name = problem.constraint_name(j);
+          }
+      if (worst > 1e-3)
+        {
+          result.feasible  = false;
+          result.converged = false;
+          result.stop_reason += "; the design violates '" + worst_name + "' (scaled by " +
+                                internal::number_string(worst) + ")";
+        }
       result.analysis_time = ctx.analysis_time;
       result.time          = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       return result;

@@ -18,7 +18,8 @@
 # - bad entries stop the run with a message naming them: Coulomb friction,
 #   a solid body that does not exist, a volume fraction of 0, the force of
 #   an interface that does not exist, a constraint with OC, a constraint
-#   bound of 0, the constraint of an interface that does not exist, non-zero Dirichlet data, and a
+#   bound of 0, the constraint of an interface that does not exist, a
+#   constraint out of reach (the run fails instead of reporting a design), non-zero Dirichlet data, and a
 #   design at finite strain.
 include(${TEST_DIR}/program_checks.cmake)
 find_program(PYTHON3 python3)
@@ -150,6 +151,12 @@ bad_design("a constraint bound of 0" "set Objective         = compliance"
 bad_design("the constraint of a missing interface" "set Objective         = compliance"
   "set Objective = compliance\n  set Constraint = largest pressure\n  set Constraint interface = 2"
   "Design/Constraint interface = 2, but the problem has 1 contact")
+# pulled up, the uniform bracket does not touch the block: a force of at
+# least 0.1 has no gradient there, MMA stops at once, and the run must
+# fail naming the constraint instead of reporting a converged design
+bad_design("an unreachable constraint" "set Objective         = compliance"
+  "set Objective = compliance\n  set Constraint = interface force\n  set Constraint sense = at least\n  set Constraint bound = 0.1"
+  "ended with an infeasible design (design change below the tolerance; the design violates 'normal force of interface 0 >= 0.1'")
 bad_design("non-zero Dirichlet data" "set Dirichlet = 2 : xy : 0, 0;" "set Dirichlet = 2 : xy : 0, 0.001;"
   "a design needs zero Dirichlet data")
 # (one body: the MBB file with a hyperelastic law at finite strain)

@@ -140,6 +140,10 @@ namespace dealvem
         std::vector<double>    constraints;
         /// Whether the change tolerance was reached.
         bool                   converged = false;
+        /// Whether the final design meets the volume and the problem's
+        /// constraints to $10^{-3}$ (scaled values; when not, stop_reason
+        /// names the worst constraint and converged is false).
+        bool                   feasible = true;
         /// NLopt's return code (MMA), as text.
         std::string            stop_reason;
         /// Wall time of run() (s).
