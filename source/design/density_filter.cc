@@ -26,6 +26,42 @@ namespace dealvem
       using FilterPoint = bg::model::point<double, 2, bg::cs::cartesian>;
       using FilterBox   = bg::model::box<FilterPoint>;
       using FilterEntry = std::pair<FilterPoint, unsigned int>;
+      using FilterTree  = bgi::rtree<FilterEntry, bgi::quadratic<16>>;
+
+      // an R-tree over @p points (the packing constructor, bulk loading,
+      // builds a balanced tree)
+      FilterTree
+      filter_tree(const std::vector<dealii::Point<2>> &points)
+      {
+        std::vector<FilterEntry> entries;
+        entries.reserve(points.size());
+        for (unsigned int i = 0; i < points.size(); ++i)
+          entries.emplace_back(FilterPoint(points[i][0], points[i][1]), i);
+        return FilterTree(entries.begin(), entries.end());
+      }
+
+      // the linear filter's weights 1 - |x - p_j| / R > 0 at @p x over the
+      // points of @p tree (indices into @p points), unnormalized
+      void
+      filter_weights(const FilterTree                    &tree,
+                     const std::vector<dealii::Point<2>> &points,
+                     const dealii::Point<2>              &x,
+                     const double                         radius,
+                     std::vector<FilterEntry>            &found,
+                     std::vector<std::pair<unsigned int, double>> &weights)
+      {
+        found.clear();
+        weights.clear();
+        tree.query(bgi::intersects(FilterBox(FilterPoint(x[0] - radius, x[1] - radius),
+                                             FilterPoint(x[0] + radius, x[1] + radius))),
+                   std::back_inserter(found));
+        for (const auto &f : found)
+          {
+            const double w = 1 - x.distance(points[f.second]) / radius;
+            if (w > 0)
+              weights.emplace_back(f.second, w);
+          }
+      }
     } // namespace
 
 
@@ -44,39 +80,25 @@ namespace dealvem
                   dealii::ExcMessage("Design/Filter radius: the radius must be positive, got " +
                                      internal::number_string(radius) + "."));
       this->radius = radius;
-      std::vector<FilterEntry> entries;
-      entries.reserve(centroids.size());
-      for (unsigned int i = 0; i < centroids.size(); ++i)
-        entries.emplace_back(FilterPoint(centroids[i][0], centroids[i][1]), i);
-      // the packing constructor (bulk loading) builds a balanced tree
-      const bgi::rtree<FilterEntry, bgi::quadratic<16>> tree(entries.begin(), entries.end());
+      const FilterTree tree = filter_tree(centroids);
 
       row_start.assign(1, 0);
       columns.clear();
       values.clear();
-      std::vector<FilterEntry> found;
+      std::vector<FilterEntry>                     found;
+      std::vector<std::pair<unsigned int, double>> weights;
       for (unsigned int i = 0; i < centroids.size(); ++i)
         {
-          const dealii::Point<2> &x = centroids[i];
-          found.clear();
-          tree.query(bgi::intersects(FilterBox(FilterPoint(x[0] - radius, x[1] - radius),
-                                               FilterPoint(x[0] + radius, x[1] + radius))),
-                     std::back_inserter(found));
+          filter_weights(tree, centroids, centroids[i], radius, found, weights);
+          // the cell itself is always found (w = 1), so the sum is >= 1
           double sum = 0;
-          const std::size_t first = columns.size();
-          for (const auto &f : found)
+          for (const auto &w : weights)
+            sum += w.second;
+          for (const auto &w : weights)
             {
-              const double w = 1 - x.distance(centroids[f.second]) / radius;
-              if (w > 0)
-                {
-                  columns.push_back(f.second);
-                  values.push_back(w);
-                  sum += w;
-                }
+              columns.push_back(w.first);
+              values.push_back(w.second / sum);
             }
-          // the cell itself is always found (w = 1), so sum >= 1
-          for (std::size_t k = first; k < values.size(); ++k)
-            values[k] /= sum;
           row_start.push_back(columns.size());
         }
     }
@@ -185,32 +207,21 @@ namespace dealvem
         all_to[c] = c;
       const auto               source = cell_centroids(from, all_from);
       const auto               target = cell_centroids(to, all_to);
-      std::vector<FilterEntry> entries;
-      entries.reserve(source.size());
-      for (unsigned int i = 0; i < source.size(); ++i)
-        entries.emplace_back(FilterPoint(source[i][0], source[i][1]), i);
-      const bgi::rtree<FilterEntry, bgi::quadratic<16>> tree(entries.begin(), entries.end());
-
-      const double             lo = *std::min_element(from_density.begin(), from_density.end());
-      const double             hi = *std::max_element(from_density.begin(), from_density.end());
-      std::vector<double>      result(target.size(), 0.);
-      std::vector<FilterEntry> found;
+      const FilterTree tree = filter_tree(source);
+      const double     lo   = *std::min_element(from_density.begin(), from_density.end());
+      const double     hi   = *std::max_element(from_density.begin(), from_density.end());
+      std::vector<double>                          result(target.size(), 0.);
+      std::vector<FilterEntry>                     found;
+      std::vector<std::pair<unsigned int, double>> weights;
       for (unsigned int i = 0; i < target.size(); ++i)
         {
           const dealii::Point<2> &x = target[i];
-          found.clear();
-          tree.query(bgi::intersects(FilterBox(FilterPoint(x[0] - radius, x[1] - radius),
-                                               FilterPoint(x[0] + radius, x[1] + radius))),
-                     std::back_inserter(found));
+          filter_weights(tree, source, x, radius, found, weights);
           double sum = 0, value = 0;
-          for (const auto &f : found)
+          for (const auto &w : weights)
             {
-              const double w = 1 - x.distance(source[f.second]) / radius;
-              if (w > 0)
-                {
-                  sum += w;
-                  value += w * from_density[f.second];
-                }
+              sum += w.second;
+              value += w.second * from_density[w.first];
             }
           // (an average of values in [lo, hi] lies there: kept there
           // against rounding, so that densities of 1 stay at most 1)
