@@ -6,7 +6,8 @@
 // The cost of a design iteration (issue 42, item 5).
 //
 //   benchmark_design_scale contact [n_cells]        (default 3200)
-//   benchmark_design_scale mbb n_cells [iterations] [solver]
+//   benchmark_design_scale mbb n_cells [iterations] [solver] [tolerance]
+//   benchmark_design_scale contrast n_cells [solver]
 //   benchmark_design_scale mbb-multilevel n_cells [fine iterations] [solver]
 //
 // contact: the bracket of examples/step-13 (a 2 x 1 design domain of
@@ -21,8 +22,13 @@
 // mbb: the MBB beam of step-79 on n_cells Voronoi cells (k = 1, the filter
 // radius scaled with the cell size: 2 cells), MMA for at most `iterations`
 // iterations (default 100), solver "CG-AMG" (default) or "direct
-// constraints". Prints the mesh and setup times, the time per iteration
-// and its parts, and the peak memory (VmHWM).
+// constraints", iterative solves to the relative `tolerance` (default
+// 1e-8). Prints the mesh and setup times, the time per iteration and its
+// parts, and the peak memory (VmHWM).
+//
+// contrast: one solve (from zero) of a black-and-white design of n_cells
+// cells (the MBB design of n_cells / 16 cells carried over): the CG
+// iterations that the late design iterations meet.
 //
 // mbb-multilevel: the same beam in two levels: designed on n_cells / 16
 // cells first (to the change tolerance), the densities carried to the
@@ -52,6 +58,9 @@ using Vector = dealii::Tensor<1, 2>;
 
 namespace
 {
+  // the relative tolerance of the iterative solves (mbb's fifth argument)
+  double solve_tolerance = 1e-8;
+
   double
   peak_memory_mb()
   {
@@ -189,7 +198,7 @@ namespace
     laws.add(0, ElasticMaterial(2.5, 0.25));
     auto problem = std::make_unique<Design::ElasticDesignProblem>(mesh, laws, 1);
     problem->solver_settings().type               = SaddlePointSolver::parse_type(solver);
-    problem->solver_settings().relative_tolerance = 1e-8;
+    problem->solver_settings().relative_tolerance = solve_tolerance;
     problem->add_point_support(Point(0, 0), 0);
     problem->add_point_support(Point(0, 0), 1);
     problem->add_point_support(Point(6, 0), 1);
@@ -266,6 +275,30 @@ namespace
     mbb_run(*problem, n_cells, iterations, initial, 0.05, "  fine level");
     std::cout << "  whole run " << since(start) << " s, peak memory " << peak_memory_mb() << " MB" << std::endl;
   }
+
+  // One solve of a black-and-white design on n_cells cells: the MBB design
+  // of n_cells / 16 cells (to the change tolerance) carried to the fine
+  // mesh, its SIMP factors (p = 3, minimum 1e-4). Prints the CG iterations
+  // and the solve time: the contrast that the design iterations meet
+  // late in a run, without the run.
+  void
+  contrast(const unsigned int n_cells, const std::string &solver)
+  {
+    const unsigned int coarse = n_cells / 16;
+    double             t_mesh = 0, t_setup = 0;
+    auto               coarse_problem = mbb_problem(coarse, solver, t_mesh, t_setup);
+    const auto         r_coarse = mbb_run(*coarse_problem, coarse, 300, {}, 0.2, "  coarse level");
+    auto               problem  = mbb_problem(n_cells, solver, t_mesh, t_setup);
+    const auto         rho      = Design::transfer_densities(coarse_problem->get_mesh(), r_coarse.densities,
+                                                             problem->get_mesh(), std::sqrt(6. / coarse));
+    std::vector<double> factors(rho.size());
+    for (unsigned int c = 0; c < rho.size(); ++c)
+      factors[c] = 1e-4 + (1 - 1e-4) * rho[c] * rho[c] * rho[c];
+    std::vector<double> g;
+    const double        J = problem->evaluate(factors, g);
+    std::cout << "  black and white design: compliance " << J << ", solve " << problem->last_state().time_state
+              << " s, " << problem->last_state().linear_iterations << " CG iterations" << std::endl;
+  }
 } // namespace
 
 int
@@ -276,13 +309,19 @@ main(int argc, char **argv)
   if (mode == "contact")
     contact(argc > 2 ? std::stoi(argv[2]) : 3200);
   else if (mode == "mbb" && argc > 2)
-    mbb(std::stoi(argv[2]), argc > 3 ? std::stoi(argv[3]) : 100, argc > 4 ? argv[4] : "CG-AMG");
+    {
+      if (argc > 5)
+        solve_tolerance = std::stod(argv[5]);
+      mbb(std::stoi(argv[2]), argc > 3 ? std::stoi(argv[3]) : 100, argc > 4 ? argv[4] : "CG-AMG");
+    }
+  else if (mode == "contrast" && argc > 2)
+    contrast(std::stoi(argv[2]), argc > 3 ? argv[3] : "CG-AMG");
   else if (mode == "mbb-multilevel" && argc > 2)
     mbb_multilevel(std::stoi(argv[2]), argc > 3 ? std::stoi(argv[3]) : 60, argc > 4 ? argv[4] : "CG-AMG");
   else
     {
-      std::cerr << "usage: benchmark_design_scale contact [n_cells] | mbb n_cells [iterations] [solver] | "
-                   "mbb-multilevel n_cells [fine iterations] [solver]"
+      std::cerr << "usage: benchmark_design_scale contact [n_cells] | mbb n_cells [iterations] [solver] "
+                   "[tolerance] | contrast n_cells [solver] | mbb-multilevel n_cells [fine iterations] [solver]"
                 << std::endl;
       return 2;
     }

@@ -626,6 +626,7 @@ namespace dealvem
         return std::chrono::duration<double>(Clock::now() - t).count();
       };
       const unsigned int factorizations_before = d.solver->factorization_counts().first;
+      const unsigned int analyses_before       = d.solver->analysis_counts().first;
       auto               start                 = Clock::now();
       assemble(factors);
       state               = State();
@@ -767,6 +768,7 @@ namespace dealvem
           sensitivity_time += seconds(start);
         }
       state.n_factorizations   = d.solver->factorization_counts().first - factorizations_before;
+      state.n_analyses         = d.solver->analysis_counts().first - analyses_before;
       state.time_adjoint       = adjoint_time;
       state.time_sensitivities = sensitivity_time;
       return J;

@@ -149,6 +149,10 @@ namespace dealvem
                                              std::to_string(n_factorization_reuses) +
                                              " solve(s) with the factorization of an unchanged matrix" :
                                            "") +
+             (cholesky && cholesky->n_reused_analyses > 0 ?
+                "; " + std::to_string(cholesky->n_reused_analyses) +
+                  " factorization(s) with the ordering of the last pattern" :
+                "") +
              ")";
     return type_name(settings.type) + " (direct, whole saddle-point matrix)";
   }
@@ -644,6 +648,16 @@ namespace dealvem
       unsigned int                 size = 0;
     };
   } // namespace internal
+
+
+
+  std::pair<unsigned int, unsigned int>
+  SaddlePointSolver::analysis_counts() const
+  {
+    if (!cholesky)
+      return {0, 0};
+    return {cholesky->n_analyses, cholesky->n_reused_analyses};
+  }
 
 
 

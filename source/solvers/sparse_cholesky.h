@@ -17,9 +17,10 @@ namespace dealvem
   {
     /**
      * Sparse Cholesky factorization of a symmetric positive definite
-     * dealii::SparseMatrix by SuiteSparse's CHOLMOD (simplicial, AMD
-     * ordering computed per factorization; see the .cc file for the
-     * measurements behind both choices). factorize() returns false when the
+     * dealii::SparseMatrix by SuiteSparse's CHOLMOD (simplicial; the
+     * fill-reducing ordering and the symbolic analysis are computed for
+     * each new pattern and kept while the pattern repeats; see the .cc file
+     * for the measurements behind both choices). factorize() returns false when the
      * matrix is not positive definite (the caller then falls back to an LU
      * factorization).
      */
@@ -37,6 +38,10 @@ namespace dealvem
 
       void
       solve(dealii::Vector<double> &x, const dealii::Vector<double> &b) const;
+
+      /// Factorizations with a new ordering and symbolic analysis, and
+      /// those that kept the analysis of the last pattern.
+      unsigned int n_analyses = 0, n_reused_analyses = 0;
 
     private:
       struct Data;

@@ -182,6 +182,11 @@ namespace dealvem
         /// The direct constraint solver: Cholesky factorizations computed
         /// in this evaluation (the adjoint solves reuse the state's).
         unsigned int n_factorizations = 0;
+        /// Of these, the factorizations that computed a fill-reducing
+        /// ordering for a new pattern (the others kept the ordering of the
+        /// last one: a design on a fixed mesh and active set analyses its
+        /// pattern once).
+        unsigned int n_analyses = 0;
         /// Wall time (s) of the assembly of $\sum_c s_c K_c$.
         double time_assembly = 0;
         /// Wall time (s) of the state: the solve, or the contact solve with

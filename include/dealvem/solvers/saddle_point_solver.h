@@ -252,6 +252,14 @@ namespace dealvem
       return {n_factorizations, n_factorization_reuses};
     }
 
+    /// Direct constraints: of the Cholesky factorizations, those that
+    /// computed a fill-reducing ordering and symbolic analysis for a new
+    /// pattern, and those that kept the analysis of the last one because
+    /// the condensed matrix had its pattern (a design iteration, a Newton
+    /// or load step with the same active set).
+    std::pair<unsigned int, unsigned int>
+    analysis_counts() const;
+
     /// One line for the output: the method, its preconditioner and what the
     /// last solve used (iterations, fallbacks).
     virtual std::string
