@@ -294,6 +294,30 @@ namespace dealvem
       return x;
     };
 
+    // The typical sub-edge of each interface (the median length of its
+    // segments on the master side in the base configuration): a chord
+    // shorter than 1e-2 of it is lengthened along the chain (below).
+    std::vector<std::vector<double>> lengths(topology.n_interfaces);
+    for (const auto &s : segments)
+      lengths[topology.interface_of_pair[s.first]].push_back(
+        base_location(node_of(s.first, true)).distance(base_location(node_of(s.second, true))));
+    std::vector<double> short_chord(topology.n_interfaces, 0.);
+    for (unsigned int k = 0; k < topology.n_interfaces; ++k)
+      if (!lengths[k].empty())
+        {
+          auto middle = lengths[k].begin() + lengths[k].size() / 2;
+          std::nth_element(lengths[k].begin(), middle, lengths[k].end());
+          short_chord[k] = 1e-2 * *middle;
+        }
+    // one pair further along the chain from @p node, away from @p from
+    // (invalid at the end of the chain)
+    const auto outward = [&](const unsigned int from, const unsigned int node) {
+      for (const unsigned int q : topology.neighbours[node])
+        if (q != from)
+          return q;
+      return dealii::numbers::invalid_unsigned_int;
+    };
+
     data.resize(pairs.size());
     fixed.assign(pairs.size(), false);
     new_contact.assign(pairs.size(), false);
@@ -315,6 +339,12 @@ namespace dealvem
           continue;
         const unsigned int minus = nb.size() >= 2 ? nb[0] : i;
         const unsigned int plus  = nb.size() >= 2 ? nb[1] : nb[0];
+        // (whence each end was reached: a midpoint pair's ends go outward
+        // from each other; the pair's own node at the end of a chain
+        // cannot go further)
+        const bool         midpoint   = pairs[i].on_edge();
+        const unsigned int minus_from = (nb.size() >= 2 ? (midpoint ? plus : i) : plus);
+        const unsigned int plus_from  = (nb.size() >= 2 ? (midpoint ? minus : i) : i);
         std::vector<std::pair<bool, double>> sides; // (master side?, weight)
         switch (topology.side_of_pair[i])
           {
@@ -330,9 +360,39 @@ namespace dealvem
           }
         for (const auto &[master, weight] : sides)
           {
+            // A chord much shorter than the interface's sub-edges (node
+            // insertion in FiniteSliding makes sub-edges down to 1e-9 of an
+            // edge) turns the normal by the round-off of its two ends: the
+            // derivative of theta is 1/|d|. Measured: a midpoint pair of a
+            // sub-edge 7e-12 long had gap derivatives of 5e5 with respect to
+            // its ends, and Newton cycled. Such a chord is lengthened by a
+            // pair along the chain at each end, up to 8 times, until it
+            // reaches 1e-2 of the interface's median sub-edge.
+            unsigned int lo = minus, hi = plus, lo_from = minus_from, hi_from = plus_from;
+            const auto   length = [&]() {
+              return base_location(node_of(hi, master)).distance(base_location(node_of(lo, master)));
+            };
+            for (unsigned int extension = 0;
+                 extension < 8 && length() < short_chord[topology.interface_of_pair[i]]; ++extension)
+              {
+                const unsigned int next_lo = outward(lo_from, lo), next_hi = outward(hi_from, hi);
+                if (next_lo == dealii::numbers::invalid_unsigned_int &&
+                    next_hi == dealii::numbers::invalid_unsigned_int)
+                  break;
+                if (next_lo != dealii::numbers::invalid_unsigned_int)
+                  {
+                    lo_from = lo;
+                    lo      = next_lo;
+                  }
+                if (next_hi != dealii::numbers::invalid_unsigned_int)
+                  {
+                    hi_from = hi;
+                    hi      = next_hi;
+                  }
+              }
             Chord chord;
-            chord.minus     = node_of(minus, master);
-            chord.plus      = node_of(plus, master);
+            chord.minus     = node_of(lo, master);
+            chord.plus      = node_of(hi, master);
             chord.reference = base_location(chord.plus) - base_location(chord.minus);
             chord.weight    = weight;
             if (chord.reference.norm() > 0)

@@ -40,7 +40,11 @@ namespace dealvem
    * (NodeInsertion::Interface::normal_side): with $d_0 = X_+ - X_-$ and
    * $d = x_+ - x_-$ the chord between the pair's neighbours $\pm$ along
    * the interface (the pair's own node at the end of a chain; for a
-   * midpoint pair, the two ends of its sub-edge),
+   * midpoint pair, the two ends of its sub-edge; a chord shorter than
+   * 1e-2 of the interface's median sub-edge is lengthened by a pair along
+   * the chain at each end until it is not, since the derivative of the
+   * angle is $1/|d|$ and FiniteSliding's node insertion makes sub-edges
+   * down to 1e-9 of an edge),
    * $\theta_s = \mathrm{atan2}(d_0\times d,\ d_0\cdot d)$; the bisector
    * normal turns by the mean of the two sides' angles. At $u = 0$ every
    * normal is the reference normal, so the small-strain limit is the
