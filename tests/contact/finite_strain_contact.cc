@@ -127,6 +127,25 @@ namespace
     return R;
   }
 
+  // u moved by +-h in the DoF @p dof, and the central difference of
+  // constraint @p j there
+  struct Perturbed
+  {
+    dealii::Vector<double> up, um;
+    double                 difference;
+  };
+
+  Perturbed
+  perturb(const FiniteStrainContact &contact, const unsigned int j, const dealii::Vector<double> &u,
+          const unsigned int dof, const double h)
+  {
+    Perturbed p{u, u, 0.};
+    p.up[dof] += h;
+    p.um[dof] -= h;
+    p.difference = (contact.value(j, p.up) - contact.value(j, p.um)) / (2 * h);
+    return p;
+  }
+
   // (a)
   void
   check_linearization(const unsigned int k, const ContactSettings::Normal model,
@@ -153,14 +172,11 @@ namespace
         testing::check_near(lin.value, contact.value(j, u), 1e-15, "value() and linearize() agree");
         for (unsigned int a = 0; a < lin.dofs.size(); ++a)
           {
-            dealii::Vector<double> up = u, um = u;
-            up[lin.dofs[a]] += h;
-            um[lin.dofs[a]] -= h;
-            const double fd = (contact.value(j, up) - contact.value(j, um)) / (2 * h);
-            grad_err        = std::max(grad_err, std::abs(fd - lin.gradient[a]));
-            grad_scale      = std::max(grad_scale, std::abs(lin.gradient[a]));
-            contact.linearize(j, up, lp, false);
-            contact.linearize(j, um, lm, false);
+            const Perturbed p = perturb(contact, j, u, lin.dofs[a], h);
+            grad_err          = std::max(grad_err, std::abs(p.difference - lin.gradient[a]));
+            grad_scale        = std::max(grad_scale, std::abs(lin.gradient[a]));
+            contact.linearize(j, p.up, lp, false);
+            contact.linearize(j, p.um, lm, false);
             for (unsigned int b = 0; b < lin.dofs.size(); ++b)
               {
                 const double fd2 = (lp.gradient[b] - lm.gradient[b]) / (2 * h);
@@ -245,12 +261,8 @@ namespace
         contact.linearize(j, u, lin, false);
         for (unsigned int a = 0; a < lin.dofs.size(); ++a)
           {
-            dealii::Vector<double> up = u, um = u;
-            up[lin.dofs[a]] += h;
-            um[lin.dofs[a]] -= h;
-            const double fd = (contact.value(j, up) - contact.value(j, um)) / (2 * h);
-            grad_err        = std::max(grad_err, std::abs(fd - lin.gradient[a]));
-            largest         = std::max(largest, std::abs(lin.gradient[a]));
+            grad_err = std::max(grad_err, std::abs(perturb(contact, j, u, lin.dofs[a], h).difference - lin.gradient[a]));
+            largest  = std::max(largest, std::abs(lin.gradient[a]));
           }
       }
     testing::check(largest < 10, what + "largest gradient entry " + std::to_string(largest) + " (below 10)");
