@@ -201,10 +201,14 @@ namespace
                      to1   = radius(rb1, r1 * std::sin(alpha) + last) + st.margin * m;
         const double from2 = radius(rb2, r2 * std::sin(alpha) - last) - st.margin * m,
                      to2   = radius(rb2, r2 * std::sin(alpha) - first) + st.margin * m;
-        m1.zones.push_back(Zone{k, std::max(from1, g1.form_radius()), std::min(to1, g1.tip_radius()),
-                                Flank::counter_clockwise});
-        m2.zones.push_back(Zone{-k, std::max(from2, g2.form_radius()), std::min(to2, g2.tip_radius()),
-                                Flank::counter_clockwise});
+        // (a band that lies beyond a tip, where the contact point runs past
+        // the end of the path, is not graded on that gear)
+        if (std::max(from1, g1.form_radius()) < std::min(to1, g1.tip_radius()))
+          m1.zones.push_back(Zone{k, std::max(from1, g1.form_radius()), std::min(to1, g1.tip_radius()),
+                                  Flank::counter_clockwise});
+        if (std::max(from2, g2.form_radius()) < std::min(to2, g2.tip_radius()))
+          m2.zones.push_back(Zone{-k, std::max(from2, g2.form_radius()), std::min(to2, g2.tip_radius()),
+                                  Flank::counter_clockwise});
       }
     PolygonalMeshGenerators::spur_gear(pinion, g1, m1);
     PolygonalMeshGenerators::spur_gear(gear, g2, m2);
