@@ -1037,7 +1037,10 @@ namespace dealvem
     AssertThrow(last_inexact && inexact_system != nullptr,
                 dealii::ExcMessage("SaddlePointSolver::refine_last_solve(): the last solve was not an inexact "
                                    "one (see set_inexact())."));
-    if (last_inexact_tolerance <= settings.inexact_tolerance)
+    // (0.1 times 1e-5 is 1.0000000000000002e-6 in floating point: without
+    // the slack a tolerance of 1e-6 got one more continuation, of no CG
+    // iteration, with its residual check, multiplier recovery and rule)
+    if (last_inexact_tolerance <= settings.inexact_tolerance * (1 + 1e-12))
       return false;
     last_inexact_tolerance = std::max(settings.inexact_tolerance, 0.1 * last_inexact_tolerance);
     continue_last_solve(A, x, b, last_inexact_tolerance, "refine_last_solve");

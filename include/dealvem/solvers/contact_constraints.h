@@ -9,6 +9,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -249,6 +250,12 @@ namespace dealvem
     }
 
   private:
+    /// The factorized B_{I,S}^T of distribute_and_recover_multipliers(),
+    /// kept while its entries come back (the continuations of an inexact
+    /// solve recover the multipliers of the same constraints again).
+    struct Recovery;
+    mutable std::shared_ptr<Recovery> recovery;
+
     unsigned int                                     n = 0;
     unsigned int                                     m = 0;
     dealii::AffineConstraints<double>                constraints;
