@@ -428,7 +428,14 @@ namespace dealvem
         // the condensed solves need symmetric contact rows; Coulomb's slip
         // rows are not: the whole saddle point by UMFPACK
         std::ostringstream why;
-        if (d.n <= InputParsing::contact_direct_solver_max_dofs)
+        if (!dealii::Utilities::MPI::job_supports_mpi())
+          {
+            // (a program without MPI_InitFinalize: Trilinos' AMG would abort)
+            settings.type = SaddlePointSolver::Type::direct_constraints;
+            why << "MPI is not initialized (no dealii::Utilities::MPI::MPI_InitFinalize in main()), so "
+                   "Trilinos' AMG cannot run";
+          }
+        else if (d.n <= InputParsing::contact_direct_solver_max_dofs)
           {
             settings.type = SaddlePointSolver::Type::direct_constraints;
             why << d.n << " DoFs <= " << InputParsing::contact_direct_solver_max_dofs

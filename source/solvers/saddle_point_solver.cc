@@ -2,6 +2,7 @@
 // This file is part of dealvem.
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/block_linear_operator.h>
 #include <deal.II/lac/block_sparse_matrix.h>
@@ -92,6 +93,15 @@ namespace dealvem
     AssertThrow(settings.inexact_start_tolerance >= 0 && settings.inexact_start_tolerance < 1,
                 dealii::ExcMessage("SaddlePointSolver: the inexact start tolerance must lie in [0, 1), not " +
                                    std::to_string(settings.inexact_start_tolerance) + "."));
+    // (Trilinos calls MPI: without MPI_Init the process aborts inside
+    // Epetra with MPI's own message, far from the cause)
+    const bool trilinos = settings.type == Type::gmres_amg || settings.type == Type::cg_amg_constraints ||
+                          settings.type == Type::klu;
+    AssertThrow(!trilinos || dealii::Utilities::MPI::job_supports_mpi(),
+                dealii::ExcMessage("SaddlePointSolver: Solver/Type = " + type_name(settings.type) +
+                                   " uses Trilinos (Epetra, ML, Amesos), which needs MPI to be initialized: create a "
+                                   "dealii::Utilities::MPI::MPI_InitFinalize object at the start of main() "
+                                   "(as every dealvem program and tutorial does), or choose a direct solver."));
   }
 
 

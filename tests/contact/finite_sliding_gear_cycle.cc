@@ -81,6 +81,7 @@
 // --margin M, --relief C, --tolerance T and --theta T change the settings
 // for other studies.
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 
 #include <dealvem/app/contact_problem.h>
 #include <dealvem/contact/contact_pressure.h>
@@ -511,6 +512,9 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // (the quasi-static series above 1.2e5 DoFs, --pitch --h 0.0025, solves
+  // by CG-AMG: Trilinos needs MPI)
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   Settings st;
   for (int i = 1; i < argc; ++i)
     {

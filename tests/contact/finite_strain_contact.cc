@@ -61,7 +61,9 @@
 // (e) Bad input: set_constraints() with constraints on other DoFs, and a
 //     prescribed motion that pushes the fully constrained interface nodes
 //     of the two blocks into each other (both blocks held on their whole
-//     boundary), are errors that say what is wrong.
+//     boundary), are errors that say what is wrong; so are the Trilinos
+//     solvers of SaddlePointSolver in a program without MPI_Init (this
+//     test has none), which used to abort inside Epetra.
 #include <deal.II/base/function.h>
 
 #include <dealvem/contact/finite_strain_contact.h>
@@ -71,6 +73,7 @@
 #include <dealvem/elasticity/finite_strain_solver.h>
 #include <dealvem/elasticity/hyperelastic_material.h>
 #include <dealvem/mesh/generators.h>
+#include <dealvem/solvers/saddle_point_solver.h>
 
 #include <cmath>
 #include <iostream>
@@ -611,5 +614,15 @@ main()
     for (const auto side : {Side::master, Side::slave, Side::bisector})
       short_sub_edge(k, side);
   bad_input();
+  // (this test runs without MPI: the Trilinos solvers say so instead of
+  // letting Epetra abort the process)
+  for (const auto type : {SaddlePointSolver::Type::cg_amg_constraints, SaddlePointSolver::Type::gmres_amg,
+                          SaddlePointSolver::Type::klu})
+    {
+      SaddlePointSolver::Settings settings;
+      settings.type = type;
+      testing::check_throws([&]() { SaddlePointSolver solver(settings); }, "needs MPI to be initialized",
+                            "without MPI_Init, " + SaddlePointSolver::type_name(type) + " is refused");
+    }
   return testing::finish();
 }
