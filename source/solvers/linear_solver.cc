@@ -78,6 +78,24 @@ namespace dealvem
           list.set("null space: dimension", 3);
           list.set("null space: vectors", storage.data());
         }
+      else if (modes.size() == 6 && !amg.use_rotation)
+        {
+          // 3D: the three translations as ML's constant modes
+          list.set("PDE equations", 3);
+          storage.clear();
+        }
+      else if (modes.size() == 6)
+        {
+          // 3D: three translations and three rotations
+          storage.resize(6 * n);
+          for (unsigned int k = 0; k < 6; ++k)
+            for (unsigned int i = 0; i < n; ++i)
+              storage[k * n + i] = modes[k][i];
+          list.set("PDE equations", 3);
+          list.set("null space: type", "pre-computed");
+          list.set("null space: dimension", 6);
+          list.set("null space: vectors", storage.data());
+        }
       else
         list.set("PDE equations", 2);
     }
@@ -418,7 +436,9 @@ namespace dealvem
           if (effective_preconditioner() == Preconditioner::p_multigrid)
             return "CG + two-level p-multigrid (Chebyshev(" + std::to_string(settings.smoother_degree) +
                    ") on k = 2, ML AMG on the Galerkin k = 1 level)";
-          return "CG + ML AMG (" + std::to_string(modes.size() == 3 && settings.amg.use_rotation ? 3 : 2) +
+          return "CG + ML AMG (" +
+                 std::to_string(modes.size() == 6 ? (settings.amg.use_rotation ? 6 : 3) :
+                                                    (modes.size() == 3 && settings.amg.use_rotation ? 3 : 2)) +
                  " near-null-space vectors)";
       }
   }

@@ -138,7 +138,8 @@ namespace dealvem
     /// A solver with @p settings; nothing is factored before solve().
     explicit LinearSolver(const Settings &settings);
 
-    /// Rigid-body modes (3 vectors of the system size) for the AMG.
+    /// Rigid-body modes for the AMG: 3 vectors of the system size in 2D,
+    /// 6 in 3D (three translations, three rotations; PolyhedralElasticity).
     void
     set_near_null_space(const std::vector<std::vector<double>> &modes);
 

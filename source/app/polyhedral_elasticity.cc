@@ -1,0 +1,334 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <dealvem/app/polyhedral_elasticity.h>
+#include <dealvem/mesh/polyhedral_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace dealvem
+{
+  PolyhedralElasticity::PolyhedralElasticity(const PolyhedralMesh &mesh, const Settings &settings)
+    : mesh(&mesh)
+    , settings(settings)
+    , n_vertices(mesh.n_vertices())
+  {
+    settings.material.check();
+    AssertThrow(mesh.n_cells() > 0, dealii::ExcMessage("PolyhedralElasticity: the mesh has no cells."));
+  }
+
+
+
+  void
+  PolyhedralElasticity::set_body_force(const VectorFunction &f)
+  {
+    body_force = f;
+  }
+
+
+
+  void
+  PolyhedralElasticity::add_dirichlet(const dealii::types::boundary_id id, const VectorFunction &g,
+                                      const std::array<bool, 3> &components)
+  {
+    dirichlet.push_back({id, g, components});
+  }
+
+
+
+  void
+  PolyhedralElasticity::add_traction(const dealii::types::boundary_id id, const TractionFunction &t)
+  {
+    tractions.emplace_back(id, t);
+  }
+
+
+
+  std::vector<std::vector<double>>
+  PolyhedralElasticity::rigid_body_modes() const
+  {
+    // rotations about the centre of the bounding box, scaled by its size so
+    // that all six modes have entries of order one
+    dealii::Point<3> lo = mesh->vertex(0), hi = mesh->vertex(0);
+    for (const auto &p : mesh->get_vertices())
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          lo[d] = std::min(lo[d], p[d]);
+          hi[d] = std::max(hi[d], p[d]);
+        }
+    const dealii::Point<3> centre = 0.5 * (lo + hi);
+    const double           size   = std::max(lo.distance(hi), 1e-300);
+    std::vector<std::vector<double>> modes(6, std::vector<double>(n_dofs()));
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      {
+        const dealii::Tensor<1, 3> x = (mesh->vertex(v) - centre) / size;
+        for (unsigned int d = 0; d < 3; ++d)
+          modes[d][3 * v + d] = 1;
+        // rotation about axis a: e_a x x
+        for (unsigned int a = 0; a < 3; ++a)
+          {
+            dealii::Tensor<1, 3> axis;
+            axis[a]                    = 1;
+            const dealii::Tensor<1, 3> r = dealii::cross_product_3d(axis, x);
+            for (unsigned int d = 0; d < 3; ++d)
+              modes[3 + a][3 * v + d] = r[d];
+          }
+      }
+    return modes;
+  }
+
+
+
+  void
+  PolyhedralElasticity::solve()
+  {
+    dealii::Timer timer;
+    const PolyhedralMesh &m = *mesh;
+    AssertThrow(m.n_vertices() == n_vertices,
+                dealii::ExcMessage("PolyhedralElasticity: the mesh changed since the problem was set up."));
+
+    // supports
+    dealii::AffineConstraints<double> constraints;
+    const auto                        ids = m.get_boundary_ids();
+    for (const auto &bc : dirichlet)
+      {
+        AssertThrow(std::find(ids.begin(), ids.end(), bc.id) != ids.end(),
+                    dealii::ExcMessage("PolyhedralElasticity: no boundary face of " + m.name + " has the boundary id " +
+                                       std::to_string(bc.id) + " of a prescribed displacement."));
+        std::set<unsigned int> nodes;
+        for (unsigned int f = 0; f < m.n_faces(); ++f)
+          if (m.face(f).at_boundary() && m.face(f).boundary_id == bc.id)
+            nodes.insert(m.face(f).vertices.begin(), m.face(f).vertices.end());
+        for (const unsigned int v : nodes)
+          {
+            const dealii::Tensor<1, 3> g = bc.g(m.vertex(v));
+            for (unsigned int d = 0; d < 3; ++d)
+              if (bc.components[d] && !constraints.is_constrained(3 * v + d))
+                {
+                  constraints.add_line(3 * v + d);
+                  constraints.set_inhomogeneity(3 * v + d, g[d]);
+                }
+          }
+      }
+    for (const auto &t : tractions)
+      AssertThrow(std::find(ids.begin(), ids.end(), t.first) != ids.end(),
+                  dealii::ExcMessage("PolyhedralElasticity: no boundary face of " + m.name + " has the boundary id " +
+                                     std::to_string(t.first) + " of a traction."));
+    constraints.close();
+    {
+      // the supports must hold the six rigid motions: the modes restricted
+      // to the constrained DoFs must be linearly independent
+      const auto                       modes = rigid_body_modes();
+      dealii::LAPACKFullMatrix<double> gram(6, 6);
+      for (unsigned int a = 0; a < 6; ++a)
+        for (unsigned int b = 0; b < 6; ++b)
+          {
+            double s = 0;
+            for (unsigned int i = 0; i < n_dofs(); ++i)
+              if (constraints.is_constrained(i))
+                s += modes[a][i] * modes[b][i];
+            gram(a, b) = s;
+          }
+      gram.compute_eigenvalues();
+      double smallest = 1e300, largest = 0;
+      for (unsigned int a = 0; a < 6; ++a)
+        {
+          smallest = std::min(smallest, gram.eigenvalue(a).real());
+          largest  = std::max(largest, gram.eigenvalue(a).real());
+        }
+      AssertThrow(largest > 0 && smallest > 1e-10 * largest,
+                  dealii::ExcMessage("PolyhedralElasticity: the prescribed displacements on " + m.name +
+                                     " do not hold the body against all six rigid motions (translations and "
+                                     "rotations); prescribe displacements on more faces or components."));
+    }
+
+    // the pattern: all DoFs of a cell couple
+    dealii::DynamicSparsityPattern dsp(n_dofs(), n_dofs());
+    std::vector<std::vector<unsigned int>> cell_vertices(m.n_cells());
+    for (unsigned int c = 0; c < m.n_cells(); ++c)
+      {
+        cell_vertices[c] = m.cell_vertex_indices(c);
+        std::vector<dealii::types::global_dof_index> dofs;
+        for (const unsigned int v : cell_vertices[c])
+          for (unsigned int d = 0; d < 3; ++d)
+            dofs.push_back(3 * v + d);
+        constraints.add_entries_local_to_global(dofs, dsp, false);
+      }
+    dealii::SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    dealii::SparseMatrix<double> K(pattern);
+    dealii::Vector<double>       F(n_dofs());
+
+    const PolyhedralElement              element(settings.stabilization);
+    PolyhedralElement::CellData          data;
+    std::vector<dealii::types::global_dof_index> dofs;
+    dealii::Vector<double>               f_local;
+    for (unsigned int c = 0; c < m.n_cells(); ++c)
+      {
+        element.compute(m, c, &settings.material, data);
+        const unsigned int n = 3 * data.vertices.size();
+        dofs.resize(n);
+        for (unsigned int i = 0; i < data.vertices.size(); ++i)
+          for (unsigned int d = 0; d < 3; ++d)
+            dofs[3 * i + d] = 3 * data.vertices[i] + d;
+        f_local.reinit(n);
+        if (body_force)
+          {
+            // int_E f . phi_j with f at the centroid and the integral of the
+            // projection: |E| times the value of Pi phi_j at the centroid
+            const dealii::Tensor<1, 3> f = body_force(data.centroid);
+            for (unsigned int j = 0; j < n; ++j)
+              for (unsigned int d = 0; d < 3; ++d)
+                f_local[j] += data.volume * f[d] * data.projector(d, j);
+          }
+        constraints.distribute_local_to_global(data.stiffness, f_local, dofs, K, F);
+      }
+    // tractions: constant on each face (its value at the centroid) times
+    // the face integrals of the basis functions
+    for (const auto &[id, t] : tractions)
+      for (unsigned int f = 0; f < m.n_faces(); ++f)
+        if (m.face(f).at_boundary() && m.face(f).boundary_id == id)
+          {
+            const auto g = m.face_geometry(f);
+            // the stored loop points out of the face's only cell
+            const dealii::Tensor<1, 3> value = t(g.centroid, g.normal);
+            const auto                 w     = PolyhedralElement::face_weights(m, f);
+            const auto                &loop  = m.face(f).vertices;
+            dealii::Vector<double>     fl(3 * loop.size());
+            dofs.resize(3 * loop.size());
+            for (unsigned int i = 0; i < loop.size(); ++i)
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  fl[3 * i + d]   = w[i] * value[d];
+                  dofs[3 * i + d] = 3 * loop[i] + d;
+                }
+            constraints.distribute_local_to_global(fl, dofs, F);
+          }
+    assembly_time = timer.wall_time();
+
+    timer.restart();
+    LinearSolver solver(settings.solver);
+    if (settings.solver.type == LinearSolver::Type::cg_amg)
+      solver.set_near_null_space(rigid_body_modes());
+    solver.solve(K, u, F);
+    constraints.distribute(u);
+    iterations = solver.last_iterations();
+    solve_time = timer.wall_time();
+  }
+
+
+
+  PolyhedralElasticity::Errors
+  PolyhedralElasticity::errors(const VectorFunction                                                  &exact,
+                               const std::function<dealii::Tensor<2, 3>(const dealii::Point<3> &)> &grad_exact) const
+  {
+    AssertThrow(u.size() == n_dofs(), dealii::ExcMessage("PolyhedralElasticity::errors() before solve()."));
+    const PolyhedralElement       element(settings.stabilization);
+    PolyhedralElement::CellData   data;
+    std::vector<dealii::Point<3>> points;
+    std::vector<double>           weights;
+    Errors                        e;
+    for (unsigned int c = 0; c < mesh->n_cells(); ++c)
+      {
+        element.compute(*mesh, c, nullptr, data);
+        // the coefficients of Pi u_h
+        double coefficients[12] = {};
+        for (unsigned int r = 0; r < 12; ++r)
+          for (unsigned int i = 0; i < data.vertices.size(); ++i)
+            for (unsigned int d = 0; d < 3; ++d)
+              coefficients[r] += data.projector(r, 3 * i + d) * u[3 * data.vertices[i] + d];
+        dealii::Tensor<2, 3> G;
+        for (unsigned int d = 0; d < 3; ++d)
+          for (unsigned int k = 0; k < 3; ++k)
+            G[d][k] = coefficients[3 + 3 * d + k];
+        PolyhedralElement::cell_quadrature(*mesh, c, points, weights);
+        for (unsigned int q = 0; q < points.size(); ++q)
+          {
+            dealii::Tensor<1, 3> value;
+            for (unsigned int d = 0; d < 3; ++d)
+              value[d] = coefficients[d];
+            value += G * (points[q] - data.centroid);
+            const dealii::Tensor<1, 3> ue = exact(points[q]);
+            const dealii::Tensor<2, 3> ge = grad_exact(points[q]);
+            e.l2 += weights[q] * (ue - value).norm_square();
+            e.h1_semi += weights[q] * (ge - G).norm_square();
+            e.l2_exact += weights[q] * ue.norm_square();
+            e.h1_semi_exact += weights[q] * ge.norm_square();
+          }
+      }
+    // a signed quadrature can leave a tiny negative sum for an error at
+    // round-off level
+    e.l2            = std::sqrt(std::max(e.l2, 0.));
+    e.h1_semi       = std::sqrt(std::max(e.h1_semi, 0.));
+    e.l2_exact      = std::sqrt(std::max(e.l2_exact, 0.));
+    e.h1_semi_exact = std::sqrt(std::max(e.h1_semi_exact, 0.));
+    return e;
+  }
+
+
+
+  std::vector<double>
+  PolyhedralElasticity::cell_stresses() const
+  {
+    AssertThrow(u.size() == n_dofs(), dealii::ExcMessage("PolyhedralElasticity::cell_stresses() before solve()."));
+    const PolyhedralElement     element(settings.stabilization);
+    PolyhedralElement::CellData data;
+    const double                lambda = settings.material.lambda(), mu = settings.material.mu();
+    std::vector<double>         stress(6 * mesh->n_cells());
+    for (unsigned int c = 0; c < mesh->n_cells(); ++c)
+      {
+        element.compute(*mesh, c, nullptr, data);
+        dealii::Tensor<2, 3> G;
+        for (unsigned int d = 0; d < 3; ++d)
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int i = 0; i < data.vertices.size(); ++i)
+              for (unsigned int e = 0; e < 3; ++e)
+                G[d][k] += data.projector(3 + 3 * d + k, 3 * i + e) * u[3 * data.vertices[i] + e];
+        const double trace = G[0][0] + G[1][1] + G[2][2];
+        for (unsigned int d = 0; d < 3; ++d)
+          stress[6 * c + d] = lambda * trace + 2 * mu * G[d][d];
+        stress[6 * c + 3] = mu * (G[1][2] + G[2][1]);
+        stress[6 * c + 4] = mu * (G[0][2] + G[2][0]);
+        stress[6 * c + 5] = mu * (G[0][1] + G[1][0]);
+      }
+    return stress;
+  }
+
+
+
+  void
+  PolyhedralElasticity::write_vtu(const std::string &file_name) const
+  {
+    const auto          s = cell_stresses();
+    const unsigned int  n = mesh->n_cells();
+    static const char  *names[6] = {"stress_xx", "stress_yy", "stress_zz", "stress_yz", "stress_xz", "stress_xy"};
+    std::vector<std::pair<std::string, std::vector<double>>> cell_fields;
+    for (unsigned int k = 0; k < 6; ++k)
+      {
+        std::vector<double> values(n);
+        for (unsigned int c = 0; c < n; ++c)
+          values[c] = s[6 * c + k];
+        cell_fields.emplace_back(names[k], std::move(values));
+      }
+    std::vector<double> von_mises(n);
+    for (unsigned int c = 0; c < n; ++c)
+      {
+        const double *t = &s[6 * c];
+        von_mises[c]    = std::sqrt(0.5 * ((t[0] - t[1]) * (t[0] - t[1]) + (t[1] - t[2]) * (t[1] - t[2]) +
+                                        (t[2] - t[0]) * (t[2] - t[0])) +
+                                     3 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
+      }
+    cell_fields.emplace_back("von_mises", std::move(von_mises));
+    mesh->write_vtu(file_name, {{"displacement", std::vector<double>(u.begin(), u.end())}}, cell_fields);
+  }
+} // namespace dealvem

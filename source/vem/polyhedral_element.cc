@@ -1,0 +1,245 @@
+// ---------------------------------------------------------------------
+// This file is part of dealvem.
+// SPDX-License-Identifier: LGPL-2.1-or-later
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <dealvem/mesh/polyhedral_mesh.h>
+#include <dealvem/vem/polyhedral_element.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace dealvem
+{
+  double
+  IsotropicMaterial3D::lambda() const
+  {
+    return youngs_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+  }
+
+
+
+  double
+  IsotropicMaterial3D::mu() const
+  {
+    return youngs_modulus / (2 * (1 + poisson_ratio));
+  }
+
+
+
+  void
+  IsotropicMaterial3D::check() const
+  {
+    AssertThrow(std::isfinite(youngs_modulus) && youngs_modulus > 0,
+                dealii::ExcMessage("Young's modulus must be positive, not " + std::to_string(youngs_modulus) + "."));
+    AssertThrow(std::isfinite(poisson_ratio) && poisson_ratio > -1 && poisson_ratio < 0.5,
+                dealii::ExcMessage("Poisson's ratio must lie in (-1, 0.5), not " + std::to_string(poisson_ratio) +
+                                   "."));
+  }
+
+
+
+  PolyhedralElement::PolyhedralElement(const double stabilization)
+    : tau(stabilization)
+  {
+    AssertThrow(std::isfinite(stabilization) && stabilization > 0,
+                dealii::ExcMessage("The stabilization factor of the polyhedral element must be positive, not " +
+                                   std::to_string(stabilization) + "."));
+  }
+
+
+
+  std::vector<double>
+  PolyhedralElement::face_weights(const PolyhedralMesh &mesh, const unsigned int f)
+  {
+    const auto &loop = mesh.face(f).vertices;
+    const auto  g    = mesh.face_geometry(f);
+    const auto  n    = loop.size();
+    dealii::Point<3> average;
+    for (const unsigned int v : loop)
+      average += mesh.vertex(v) / double(n);
+    const dealii::Tensor<1, 3> shift = g.centroid - average;
+    std::vector<double>        w(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const dealii::Tensor<1, 3> chord = mesh.vertex(loop[(i + 1) % n]) - mesh.vertex(loop[(i + n - 1) % n]);
+        w[i] = g.area / n + 0.5 * (dealii::cross_product_3d(chord, g.normal) * shift);
+      }
+    return w;
+  }
+
+
+
+  void
+  PolyhedralElement::compute(const PolyhedralMesh &mesh, const unsigned int c,
+                             const IsotropicMaterial3D *material, CellData &data) const
+  {
+    const auto &cell = mesh.cell(c);
+    data.vertices    = mesh.cell_vertex_indices(c);
+    const auto nv    = data.vertices.size();
+    const auto local = [&](const unsigned int v) {
+      return std::lower_bound(data.vertices.begin(), data.vertices.end(), v) - data.vertices.begin();
+    };
+
+    // volume and centroid from the signed tetrahedra (x0, x_F, v_i, v_i+1)
+    const dealii::Point<3> x0 = mesh.vertex(data.vertices[0]);
+    double                 volume = 0;
+    dealii::Tensor<1, 3>   moment;
+    // the boundary integrals of the basis functions times the outward
+    // normal: sum over faces of (int_F phi_i) n_F
+    std::vector<dealii::Tensor<1, 3>> normal_integral(nv);
+    for (const unsigned int f : cell.faces)
+      {
+        const auto   g    = mesh.face_geometry(f);
+        const double sign = mesh.face_points_out_of(f, c) ? 1. : -1.;
+        const auto  &loop = mesh.face(f).vertices;
+        const auto   w    = face_weights(mesh, f);
+        for (unsigned int i = 0; i < loop.size(); ++i)
+          {
+            normal_integral[local(loop[i])] += sign * w[i] * g.normal;
+            const dealii::Tensor<1, 3> a = g.centroid - x0, b = mesh.vertex(loop[i]) - x0,
+                                       d = mesh.vertex(loop[(i + 1) % loop.size()]) - x0;
+            const double t = sign * (a * dealii::cross_product_3d(b, d)) / 6.;
+            volume += t;
+            moment += t * (a + b + d) / 4.;
+          }
+      }
+    AssertThrow(volume > 0, dealii::ExcMessage("Polyhedral cell " + std::to_string(c) + " has the volume " +
+                                               std::to_string(volume) + " (finalize() validates the mesh)."));
+    data.volume   = volume;
+    data.centroid = x0 + moment / volume;
+    data.diameter = 0;
+    dealii::Point<3> average;
+    for (unsigned int i = 0; i < nv; ++i)
+      {
+        average += mesh.vertex(data.vertices[i]) / double(nv);
+        for (unsigned int j = i + 1; j < nv; ++j)
+          data.diameter = std::max(data.diameter, mesh.vertex(data.vertices[i]).distance(mesh.vertex(data.vertices[j])));
+      }
+
+    // Pi v = a + G (x - x_E): G_dk = (1/|E|) sum_i v_i,d (int phi_i n_k);
+    // a = mean of the vertex values - G (x_avg - x_E)
+    const unsigned int n_dofs = 3 * nv;
+    data.projector.reinit(12, n_dofs);
+    const dealii::Tensor<1, 3> offset = average - data.centroid;
+    for (unsigned int i = 0; i < nv; ++i)
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          const unsigned int j = 3 * i + d;
+          for (unsigned int k = 0; k < 3; ++k)
+            data.projector(3 + 3 * d + k, j) = normal_integral[i][k] / volume;
+          data.projector(d, j) = 1. / nv;
+          for (unsigned int k = 0; k < 3; ++k)
+            data.projector(d, j) -= data.projector(3 + 3 * d + k, j) * offset[k];
+        }
+    if (material == nullptr)
+      return;
+
+    // consistency: |E| B^T D B with the Voigt strain (xx, yy, zz, yz, xz, xy;
+    // engineering shears) of G
+    const double lambda = material->lambda(), mu = material->mu();
+    dealii::FullMatrix<double> B(6, n_dofs);
+    for (unsigned int j = 0; j < n_dofs; ++j)
+      {
+        const auto G = [&](const unsigned int d, const unsigned int k) { return data.projector(3 + 3 * d + k, j); };
+        B(0, j) = G(0, 0);
+        B(1, j) = G(1, 1);
+        B(2, j) = G(2, 2);
+        B(3, j) = G(1, 2) + G(2, 1);
+        B(4, j) = G(0, 2) + G(2, 0);
+        B(5, j) = G(0, 1) + G(1, 0);
+      }
+    dealii::FullMatrix<double> D(6, 6);
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        for (unsigned int b = 0; b < 3; ++b)
+          D(a, b) = lambda;
+        D(a, a) += 2 * mu;
+        D(3 + a, 3 + a) = mu;
+      }
+    dealii::FullMatrix<double> DB(6, n_dofs);
+    D.mmult(DB, B);
+    data.stiffness.reinit(n_dofs, n_dofs);
+    B.Tmmult(data.stiffness, DB);
+    data.stiffness *= volume;
+
+    // stabilization: (I - P)^T Sigma (I - P), P the vertex values of Pi
+    double trace = 0;
+    for (unsigned int j = 0; j < n_dofs; ++j)
+      trace += data.stiffness(j, j);
+    std::vector<double> sigma(n_dofs);
+    for (unsigned int j = 0; j < n_dofs; ++j)
+      sigma[j] = tau * std::max(data.stiffness(j, j), 1e-3 * trace / n_dofs);
+    dealii::FullMatrix<double> R(n_dofs, n_dofs); // I - P
+    for (unsigned int i = 0; i < nv; ++i)
+      {
+        const dealii::Tensor<1, 3> x = mesh.vertex(data.vertices[i]) - data.centroid;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const unsigned int row = 3 * i + d;
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              {
+                double value = data.projector(d, j);
+                for (unsigned int k = 0; k < 3; ++k)
+                  value += data.projector(3 + 3 * d + k, j) * x[k];
+                R(row, j) = (row == j ? 1. : 0.) - value;
+              }
+          }
+      }
+    for (unsigned int a = 0; a < n_dofs; ++a)
+      for (unsigned int b = 0; b < n_dofs; ++b)
+        {
+          double s = 0;
+          for (unsigned int r = 0; r < n_dofs; ++r)
+            s += R(r, a) * sigma[r] * R(r, b);
+          data.stiffness(a, b) += s;
+        }
+    // exact symmetry (the products above are symmetric up to round-off)
+    for (unsigned int a = 0; a < n_dofs; ++a)
+      for (unsigned int b = a + 1; b < n_dofs; ++b)
+        {
+          const double m        = 0.5 * (data.stiffness(a, b) + data.stiffness(b, a));
+          data.stiffness(a, b) = data.stiffness(b, a) = m;
+        }
+  }
+
+
+
+  void
+  PolyhedralElement::cell_quadrature(const PolyhedralMesh &mesh, const unsigned int c,
+                                     std::vector<dealii::Point<3>> &points, std::vector<double> &weights)
+  {
+    static const dealii::QGaussSimplex<3> reference(3);
+    points.clear();
+    weights.clear();
+    const auto &cell = mesh.cell(c);
+    // the apex: the vertex average (any point works with signed volumes)
+    const auto       vertices = mesh.cell_vertex_indices(c);
+    dealii::Point<3> apex;
+    for (const unsigned int v : vertices)
+      apex += mesh.vertex(v) / double(vertices.size());
+    for (const unsigned int f : cell.faces)
+      {
+        const auto   g    = mesh.face_geometry(f);
+        const double sign = mesh.face_points_out_of(f, c) ? 1. : -1.;
+        const auto  &loop = mesh.face(f).vertices;
+        for (unsigned int i = 0; i < loop.size(); ++i)
+          {
+            // tetrahedron (apex, x_F, v_i, v_i+1), its volume signed by the
+            // orientation of the triangle seen from the apex
+            const dealii::Tensor<1, 3> e0 = g.centroid - apex, e1 = mesh.vertex(loop[i]) - apex,
+                                       e2 = mesh.vertex(loop[(i + 1) % loop.size()]) - apex;
+            const double det = e0 * dealii::cross_product_3d(e1, e2);
+            for (unsigned int q = 0; q < reference.size(); ++q)
+              {
+                const auto &xi = reference.point(q);
+                points.push_back(apex + xi[0] * e0 + xi[1] * e1 + xi[2] * e2);
+                weights.push_back(sign * reference.weight(q) * det);
+              }
+          }
+      }
+  }
+} // namespace dealvem
