@@ -3,6 +3,7 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
@@ -644,11 +645,14 @@ namespace dealvem
 
 
   PolyhedralMesh
-  PolyhedralMesh::from_triangulation(const dealii::Triangulation<3, 3> &tria, const double planarity_tolerance)
+  PolyhedralMesh::from_triangulation(const dealii::Triangulation<3, 3> &tria,
+                                     const double                       planarity_tolerance,
+                                     const bool                         split_warped_faces,
+                                     const std::string                 &name)
   {
     using namespace polyhedral_mesh_internal;
     PolyhedralMesh mesh;
-    mesh.name                        = "the polyhedral mesh of a Triangulation<3>";
+    mesh.name                        = name;
     const std::vector<Point> &points = tria.get_vertices();
     // only the vertices the active cells use, in deal.II's order
     std::vector<unsigned int> index(points.size(), dealii::numbers::invalid_unsigned_int);
@@ -677,9 +681,35 @@ namespace dealvem
             active_descendants(face, pieces);
             for (const auto &piece : pieces)
               {
-                loops.push_back(face_loop(piece, out, points));
-                if (face->at_boundary())
-                  boundary_ids[sorted_key(loops.back())] = face->boundary_id();
+                std::vector<unsigned int> loop = face_loop(piece, out, points);
+                std::vector<std::vector<unsigned int>> split;
+                if (split_warped_faces && loop.size() == 4)
+                  {
+                    std::vector<Point> p;
+                    for (const unsigned int v : loop)
+                      p.push_back(points[v]);
+                    const auto g    = polygon_geometry(p);
+                    double     warp = 0;
+                    for (const Point &x : p)
+                      warp = std::max(warp, std::abs(g.normal * (x - g.centroid)));
+                    if (warp > planarity_tolerance * g.diameter)
+                      {
+                        // the diagonal through the face's smallest vertex
+                        // index: the cell on the other side splits the same way
+                        const unsigned int m =
+                          std::min_element(loop.begin(), loop.end()) - loop.begin();
+                        split.push_back({loop[m], loop[(m + 1) % 4], loop[(m + 2) % 4]});
+                        split.push_back({loop[m], loop[(m + 2) % 4], loop[(m + 3) % 4]});
+                      }
+                  }
+                if (split.empty())
+                  split.push_back(std::move(loop));
+                for (auto &piece_loop : split)
+                  {
+                    if (face->at_boundary())
+                      boundary_ids[sorted_key(piece_loop)] = face->boundary_id();
+                    loops.push_back(std::move(piece_loop));
+                  }
               }
           }
         for (const auto &loop : loops)
@@ -720,6 +750,32 @@ namespace dealvem
             mesh.faces[f].boundary_id = found->second;
         }
     return mesh;
+  }
+
+
+
+  PolyhedralMesh
+  PolyhedralMesh::read_gmsh(const std::string &file_name,
+                            const double       planarity_tolerance,
+                            const bool         split_warped_faces)
+  {
+    std::ifstream in(file_name);
+    AssertThrow(in, ExcInvalidPolyhedralMesh("cannot open the gmsh file " + file_name));
+    dealii::Triangulation<3> tria;
+    dealii::GridIn<3>        reader;
+    reader.attach_triangulation(tria);
+    try
+      {
+        reader.read_msh(in);
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false, ExcInvalidPolyhedralMesh("the gmsh file " + file_name +
+                                                    " could not be read as a 3D mesh of hexahedra or "
+                                                    "tetrahedra: " +
+                                                    e.what()));
+      }
+    return from_triangulation(tria, planarity_tolerance, split_warped_faces, "the gmsh file " + file_name);
   }
 
 

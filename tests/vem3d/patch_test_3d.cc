@@ -3,11 +3,13 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 // The 3D first-order virtual element (PolyhedralElement) and its problem
-// (PolyhedralElasticity) on five kinds of polyhedral meshes, each mapped by
+// (PolyhedralElasticity) on six kinds of polyhedral meshes, each mapped by
 // a random affine map (faces stay planar):
 // - hexahedra of a deal.II Triangulation<3>;
 // - tetrahedra of a deal.II Triangulation<3>, interior vertices moved at
 //   random;
+// - hexahedra with every vertex moved at random, their warped faces split
+//   into two triangles each (from_triangulation(..., split_warped_faces));
 // - a locally refined hexahedral mesh: the coarse cells next to refined
 //   ones become polyhedra with the finer faces and the edge midpoints as
 //   their own (no hanging-node constraints);
@@ -326,6 +328,20 @@ main(int argc, char **argv)
     mesh.transform(random_affine(2., P(-1, 0, 3)));
     mesh.validate();
     check_mesh("tetrahedra, interior vertices moved, affine", mesh);
+  }
+  {
+    // every vertex moved at random: warped faces, split into triangles
+    dealii::Triangulation<3> tria;
+    dealii::GridGenerator::subdivided_hyper_rectangle(tria, {3, 3, 2}, P(0, 0, 0), P(1, 1, 1));
+    dealii::GridTools::distort_random(0.25, tria, false, 11);
+    PolyhedralMesh mesh = PolyhedralMesh::from_triangulation(tria, 1e-8, true);
+    unsigned int   n_triangles = 0;
+    for (unsigned int f = 0; f < mesh.n_faces(); ++f)
+      n_triangles += mesh.face(f).vertices.size() == 3;
+    testing::check(n_triangles > mesh.n_faces() / 2, "distorted hexahedra: warped faces split into triangles (" +
+                                                       std::to_string(n_triangles) + " of " +
+                                                       std::to_string(mesh.n_faces()) + " faces)");
+    check_mesh("hexahedra with every vertex moved, warped faces split", mesh);
   }
   {
     dealii::Triangulation<3> tria;

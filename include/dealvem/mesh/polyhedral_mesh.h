@@ -257,12 +257,34 @@ namespace dealvem
      * are kept). Where a neighbour is refined further, the coarse cell takes
      * the neighbour's finer faces as its own faces, and a face whose edge was
      * split by a refined cell along that edge gets the edge's midpoint as a
-     * vertex: the result is conforming without constraints. Cells whose faces
-     * are not planar (a distorted hexahedron) are refused by the planarity
-     * check, naming the cell.
+     * vertex: the result is conforming without constraints.
+     *
+     * A quadrilateral face whose vertices are not coplanar (a distorted
+     * hexahedron, a hexahedron of a curved shell) is refused by the
+     * planarity check, naming the face and cell, unless
+     * @p split_warped_faces is true: then it is split into two triangles
+     * along the diagonal through its smallest vertex index, the same
+     * diagonal in both cells that share it, and the hexahedron becomes a
+     * polyhedron with up to twelve triangular faces. (A warped face with
+     * the midpoint of a refined edge is still refused.) @p name names the
+     * mesh in error messages.
      */
     static PolyhedralMesh
-    from_triangulation(const dealii::Triangulation<3, 3> &tria, const double planarity_tolerance = 1e-8);
+    from_triangulation(const dealii::Triangulation<3, 3> &tria,
+                       const double                       planarity_tolerance = 1e-8,
+                       const bool                         split_warped_faces  = false,
+                       const std::string                 &name = "the polyhedral mesh of a Triangulation<3>");
+
+    /**
+     * The polyhedral mesh of a gmsh file of hexahedra and/or tetrahedra
+     * (read by deal.II's GridIn<3>: physical tags become material and
+     * boundary ids), through from_triangulation(). Errors of the reader
+     * are reported with the file's name.
+     */
+    static PolyhedralMesh
+    read_gmsh(const std::string &file_name,
+              const double       planarity_tolerance = 1e-8,
+              const bool         split_warped_faces  = false);
 
     /**
      * Write the mesh to a VTU file of VTK_POLYHEDRON cells (ParaView) with
