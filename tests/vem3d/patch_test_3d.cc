@@ -3,11 +3,12 @@
 // SPDX-License-Identifier: LGPL-2.1-or-later
 // ---------------------------------------------------------------------
 // The 3D first-order virtual element (PolyhedralElement) and its problem
-// (PolyhedralElasticity) on six kinds of polyhedral meshes, each mapped by
+// (PolyhedralElasticity) on seven kinds of polyhedral meshes, each mapped by
 // a random affine map (faces stay planar):
 // - hexahedra of a deal.II Triangulation<3>;
 // - tetrahedra of a deal.II Triangulation<3>, interior vertices moved at
 //   random;
+// - flat hexahedra, 1 x 1 x 0.01;
 // - hexahedra with every vertex moved at random, their warped faces split
 //   into two triangles each (from_triangulation(..., split_warped_faces));
 // - a locally refined hexahedral mesh: the coarse cells next to refined
@@ -38,6 +39,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <dealvem/app/polyhedral_elasticity.h>
+#include <dealvem/mesh/polyhedral_generators.h>
 #include <dealvem/mesh/polyhedral_mesh.h>
 #include <dealvem/vem/polyhedral_element.h>
 
@@ -70,64 +72,11 @@ namespace
         A[i][j] = (i == j ? 1. : 0.) + uniform(-0.3, 0.3);
     return [A, scale, shift](const P &x) { return shift + scale * (A * x); };
   }
-
-  // cubes of an n x n x n grid grouped into L-shaped cells of three cubes
-  // and single cubes: each 2 x 2 column block of a layer gives one L and one
-  // cube, the cube at a corner that turns with the block
   PolyhedralMesh
   l_cells(const unsigned int n)
   {
     PolyhedralMesh mesh;
-    mesh.name    = "L-shaped cells of " + std::to_string(n) + "^3 cubes";
-    const auto id = [n](unsigned int i, unsigned int j, unsigned int k) { return (k * (n + 1) + j) * (n + 1) + i; };
-    for (unsigned int k = 0; k <= n; ++k)
-      for (unsigned int j = 0; j <= n; ++j)
-        for (unsigned int i = 0; i <= n; ++i)
-          mesh.add_vertex(P(i, j, k) / double(n));
-    std::vector<int> owner(n * n * n, -1);
-    const auto cube = [n](unsigned int i, unsigned int j, unsigned int k) { return (k * n + j) * n + i; };
-    int        next = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      for (unsigned int j = 0; j + 1 < n; j += 2)
-        for (unsigned int i = 0; i + 1 < n; i += 2)
-          {
-            const unsigned int corner = (i / 2 + j / 2 + k) % 4;
-            const unsigned int di[4] = {0, 1, 0, 1}, dj[4] = {0, 0, 1, 1};
-            for (unsigned int q = 0; q < 4; ++q)
-              owner[cube(i + di[q], j + dj[q], k)] = (q == corner ? next + 1 : next);
-            next += 2;
-          }
-    for (auto &o : owner)
-      if (o < 0)
-        o = next++;
-    // each cell: the faces of its cubes not shared with a cube of the same
-    // cell, oriented outward
-    std::vector<std::vector<std::vector<unsigned int>>> cells(next);
-    for (unsigned int k = 0; k < n; ++k)
-      for (unsigned int j = 0; j < n; ++j)
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const int o = owner[cube(i, j, k)];
-            const auto same = [&](int a, int b, int c) {
-              return a >= 0 && b >= 0 && c >= 0 && a < int(n) && b < int(n) && c < int(n) &&
-                     owner[cube(a, b, c)] == o;
-            };
-            if (!same(i - 1, j, k))
-              cells[o].push_back({id(i, j, k), id(i, j, k + 1), id(i, j + 1, k + 1), id(i, j + 1, k)});
-            if (!same(i + 1, j, k))
-              cells[o].push_back({id(i + 1, j, k), id(i + 1, j + 1, k), id(i + 1, j + 1, k + 1), id(i + 1, j, k + 1)});
-            if (!same(i, j - 1, k))
-              cells[o].push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j, k + 1), id(i, j, k + 1)});
-            if (!same(i, j + 1, k))
-              cells[o].push_back({id(i, j + 1, k), id(i, j + 1, k + 1), id(i + 1, j + 1, k + 1), id(i + 1, j + 1, k)});
-            if (!same(i, j, k - 1))
-              cells[o].push_back({id(i, j, k), id(i, j + 1, k), id(i + 1, j + 1, k), id(i + 1, j, k)});
-            if (!same(i, j, k + 1))
-              cells[o].push_back({id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
-          }
-    for (const auto &faces : cells)
-      mesh.add_cell(faces);
-    mesh.finalize();
+    PolyhedralMeshGenerators::l_shaped_cells(mesh, n);
     return mesh;
   }
 
@@ -328,6 +277,15 @@ main(int argc, char **argv)
     mesh.transform(random_affine(2., P(-1, 0, 3)));
     mesh.validate();
     check_mesh("tetrahedra, interior vertices moved, affine", mesh);
+  }
+  {
+    // flat cells: 1 x 1 x 0.01 plates, and thin Voronoi-like slivers are the
+    // case the D-recipe stabilization is chosen for
+    dealii::Triangulation<3> tria;
+    dealii::GridGenerator::subdivided_hyper_rectangle(tria, {2, 3, 2}, P(0, 0, 0), P(2, 3, 0.02));
+    dealii::GridTools::transform(random_affine(1., P(0, 0, 0)), tria);
+    PolyhedralMesh mesh = PolyhedralMesh::from_triangulation(tria);
+    check_mesh("flat hexahedra (1 : 1 : 0.01), affine", mesh);
   }
   {
     // every vertex moved at random: warped faces, split into triangles

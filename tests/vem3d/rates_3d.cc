@@ -20,6 +20,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <dealvem/app/polyhedral_elasticity.h>
+#include <dealvem/mesh/polyhedral_generators.h>
 #include <dealvem/mesh/polyhedral_mesh.h>
 
 #include <cmath>
@@ -90,57 +91,11 @@ namespace
     tria.refine_global(global);
     return PolyhedralMesh::from_triangulation(tria);
   }
-
-  // cubes of an n^3 grid joined into L-shaped cells of three cubes and
-  // single cubes (as in patch_test_3d)
   PolyhedralMesh
   l_cells(const unsigned int n)
   {
     PolyhedralMesh mesh;
-    const auto id = [n](unsigned int i, unsigned int j, unsigned int k) { return (k * (n + 1) + j) * (n + 1) + i; };
-    for (unsigned int k = 0; k <= n; ++k)
-      for (unsigned int j = 0; j <= n; ++j)
-        for (unsigned int i = 0; i <= n; ++i)
-          mesh.add_vertex(P(i, j, k) / double(n));
-    std::vector<int> owner(n * n * n, -1);
-    const auto cube = [n](unsigned int i, unsigned int j, unsigned int k) { return (k * n + j) * n + i; };
-    int        next = 0;
-    for (unsigned int k = 0; k < n; ++k)
-      for (unsigned int j = 0; j + 1 < n; j += 2)
-        for (unsigned int i = 0; i + 1 < n; i += 2)
-          {
-            const unsigned int corner = (i / 2 + j / 2 + k) % 4;
-            const unsigned int di[4] = {0, 1, 0, 1}, dj[4] = {0, 0, 1, 1};
-            for (unsigned int q = 0; q < 4; ++q)
-              owner[cube(i + di[q], j + dj[q], k)] = (q == corner ? next + 1 : next);
-            next += 2;
-          }
-    std::vector<std::vector<std::vector<unsigned int>>> cells(next);
-    for (unsigned int k = 0; k < n; ++k)
-      for (unsigned int j = 0; j < n; ++j)
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const int  o    = owner[cube(i, j, k)];
-            const auto same = [&](int a, int b, int c) {
-              return a >= 0 && b >= 0 && c >= 0 && a < int(n) && b < int(n) && c < int(n) &&
-                     owner[cube(a, b, c)] == o;
-            };
-            if (!same(i - 1, j, k))
-              cells[o].push_back({id(i, j, k), id(i, j, k + 1), id(i, j + 1, k + 1), id(i, j + 1, k)});
-            if (!same(i + 1, j, k))
-              cells[o].push_back({id(i + 1, j, k), id(i + 1, j + 1, k), id(i + 1, j + 1, k + 1), id(i + 1, j, k + 1)});
-            if (!same(i, j - 1, k))
-              cells[o].push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j, k + 1), id(i, j, k + 1)});
-            if (!same(i, j + 1, k))
-              cells[o].push_back({id(i, j + 1, k), id(i, j + 1, k + 1), id(i + 1, j + 1, k + 1), id(i + 1, j + 1, k)});
-            if (!same(i, j, k - 1))
-              cells[o].push_back({id(i, j, k), id(i, j + 1, k), id(i + 1, j + 1, k), id(i + 1, j, k)});
-            if (!same(i, j, k + 1))
-              cells[o].push_back({id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
-          }
-    for (const auto &faces : cells)
-      mesh.add_cell(faces);
-    mesh.finalize();
+    PolyhedralMeshGenerators::l_shaped_cells(mesh, n);
     return mesh;
   }
 

@@ -90,6 +90,20 @@ namespace dealvem
                 const unsigned int      n_cells,
                 const unsigned int      lloyd_iterations = 20,
                 const unsigned int      seed             = 0);
+
+    /**
+     * A mesh of non-convex polyhedra: the n x n x n cubes of the unit cube
+     * grouped, in each layer and each 2 x 2 block of columns, into an L of
+     * three cubes and one single cube (the single cube at a corner that turns
+     * from block to block and layer to layer; cubes of an odd n's last row
+     * and column stay single). An L cell has coplanar faces side by side and
+     * a reflex edge. Boundary ids as in hyper_rectangle(). The family the
+     * patch tests and the convergence tests of tests/vem3d use for
+     * non-convex cells; map it with PolyhedralMesh::transform() for other
+     * shapes (an affine map keeps the faces planar).
+     */
+    void
+    l_shaped_cells(PolyhedralMesh &mesh, const unsigned int n);
   } // namespace PolyhedralMeshGenerators
 } // namespace dealvem
 
