@@ -13,7 +13,7 @@
 // vem-hex: the hexahedra of a deal.II mesh as polyhedra; vem-voronoi:
 // centroidal Voronoi polyhedra (CGAL, 10 Lloyd iterations). Prints one line
 // "RESULT case cells dofs t_mesh t_assembly t_solve iterations peak_MB
-// nnz_per_row" (nnz_per_row for FE_Q only, 0 for VEM; wall seconds; t_assembly includes the sparsity pattern and
+// nnz_per_row" (wall seconds; t_assembly includes the sparsity pattern and
 // the constraints; t_solve the AMG set-up; peak memory of the process from
 // getrusage). benchmarks/polyhedral/run.sh runs every case and size in its own
 // process.
@@ -98,6 +98,7 @@ namespace
     r.iterations = problem.last_iterations();
     r.cells      = mesh.n_cells();
     r.dofs       = problem.n_dofs();
+    r.nnz_per_row = double(problem.n_matrix_entries()) / problem.n_dofs();
     return r;
   }
 

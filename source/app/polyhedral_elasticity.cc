@@ -167,6 +167,7 @@ namespace dealvem
     dealii::SparsityPattern pattern;
     pattern.copy_from(dsp);
     dealii::SparseMatrix<double> K(pattern);
+    matrix_entries = pattern.n_nonzero_elements();
     dealii::Vector<double>       F(n_dofs());
 
     const PolyhedralElement              element(settings.stabilization);

@@ -106,6 +106,13 @@ namespace dealvem
       return iterations;
     }
 
+    /// The number of stored entries of the last system matrix.
+    std::size_t
+    n_matrix_entries() const
+    {
+      return matrix_entries;
+    }
+
     /// The wall time in seconds of assembly and of the linear solve.
     std::pair<double, double>
     last_times() const
@@ -161,6 +168,7 @@ namespace dealvem
     std::vector<std::pair<dealii::types::boundary_id, TractionFunction>> tractions;
     dealii::Vector<double>                                              u;
     unsigned int                                                        iterations    = 0;
+    std::size_t                                                         matrix_entries = 0;
     double                                                              assembly_time = 0, solve_time = 0;
   };
 } // namespace dealvem
