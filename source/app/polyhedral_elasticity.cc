@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace dealvem
@@ -126,30 +127,83 @@ namespace dealvem
                                      std::to_string(t.first) + " of a traction."));
     constraints.close();
     {
-      // the supports must hold the six rigid motions: the modes restricted
-      // to the constrained DoFs must be linearly independent
-      const auto                       modes = rigid_body_modes();
-      dealii::LAPACKFullMatrix<double> gram(6, 6);
-      for (unsigned int a = 0; a < 6; ++a)
-        for (unsigned int b = 0; b < 6; ++b)
-          {
-            double s = 0;
-            for (unsigned int i = 0; i < n_dofs(); ++i)
-              if (constraints.is_constrained(i))
-                s += modes[a][i] * modes[b][i];
-            gram(a, b) = s;
-          }
-      gram.compute_eigenvalues();
-      double smallest = 1e300, largest = 0;
-      for (unsigned int a = 0; a < 6; ++a)
+      // The supports must hold every connected piece of the mesh against its
+      // six rigid motions: per piece, the rigid modes restricted to the
+      // constrained DoFs must be linearly independent. (Checked per piece: a
+      // second body that no support reaches would otherwise pass a check of
+      // the whole mesh and make the system singular.)
+      std::vector<unsigned int> parent(n_vertices);
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        parent[v] = v;
+      const auto root = [&parent](unsigned int v) {
+        while (parent[v] != v)
+          v = parent[v] = parent[parent[v]];
+        return v;
+      };
+      std::vector<unsigned int> first_cell(n_vertices, dealii::numbers::invalid_unsigned_int);
+      for (unsigned int c = 0; c < m.n_cells(); ++c)
         {
-          smallest = std::min(smallest, gram.eigenvalue(a).real());
-          largest  = std::max(largest, gram.eigenvalue(a).real());
+          const auto vertices = m.cell_vertex_indices(c);
+          for (const unsigned int v : vertices)
+            {
+              parent[root(v)] = root(vertices[0]);
+              if (first_cell[v] == dealii::numbers::invalid_unsigned_int)
+                first_cell[v] = c;
+            }
         }
-      AssertThrow(largest > 0 && smallest > 1e-10 * largest,
-                  dealii::ExcMessage("PolyhedralElasticity: the prescribed displacements on " + m.name +
-                                     " do not hold the body against all six rigid motions (translations and "
-                                     "rotations); prescribe displacements on more faces or components."));
+      std::map<unsigned int, std::vector<unsigned int>> pieces; // root -> vertices
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        pieces[root(v)].push_back(v);
+      for (const auto &[piece_root, vertices] : pieces)
+        {
+          dealii::Point<3> lo = m.vertex(vertices[0]), hi = lo;
+          for (const unsigned int v : vertices)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                lo[d] = std::min(lo[d], m.vertex(v)[d]);
+                hi[d] = std::max(hi[d], m.vertex(v)[d]);
+              }
+          const dealii::Point<3> centre = 0.5 * (lo + hi);
+          const double           size   = std::max(lo.distance(hi), 1e-300);
+          dealii::LAPACKFullMatrix<double> gram(6, 6);
+          for (const unsigned int v : vertices)
+            {
+              const dealii::Tensor<1, 3> x = (m.vertex(v) - centre) / size;
+              double                     mode[6][3] = {};
+              for (unsigned int d = 0; d < 3; ++d)
+                mode[d][d] = 1;
+              for (unsigned int a = 0; a < 3; ++a)
+                {
+                  dealii::Tensor<1, 3> axis;
+                  axis[a]                    = 1;
+                  const dealii::Tensor<1, 3> r = dealii::cross_product_3d(axis, x);
+                  for (unsigned int d = 0; d < 3; ++d)
+                    mode[3 + a][d] = r[d];
+                }
+              for (unsigned int d = 0; d < 3; ++d)
+                if (constraints.is_constrained(3 * v + d))
+                  for (unsigned int a = 0; a < 6; ++a)
+                    for (unsigned int b = 0; b < 6; ++b)
+                      gram(a, b) += mode[a][d] * mode[b][d];
+            }
+          gram.compute_eigenvalues();
+          double smallest = 1e300, largest = 0;
+          for (unsigned int a = 0; a < 6; ++a)
+            {
+              smallest = std::min(smallest, gram.eigenvalue(a).real());
+              largest  = std::max(largest, gram.eigenvalue(a).real());
+            }
+          AssertThrow(largest > 0 && smallest > 1e-10 * largest,
+                      dealii::ExcMessage(
+                        "PolyhedralElasticity: the prescribed displacements on " + m.name +
+                        " do not hold " +
+                        (pieces.size() == 1 ? std::string("the body") :
+                                              "the piece of cell " + std::to_string(first_cell[vertices[0]]) +
+                                                " (" + std::to_string(vertices.size()) + " vertices; the mesh has " +
+                                                std::to_string(pieces.size()) + " pieces)") +
+                        " against all six rigid motions (translations and rotations); prescribe displacements on "
+                        "more faces or components."));
+        }
     }
 
     // the pattern: all DoFs of a cell couple

@@ -9,11 +9,12 @@
 // shared face oriented the same way twice, two cells that touch without
 // sharing their faces, a vertex out of range, a face of two vertices, a
 // coordinate that is not a number, a distorted hexahedron from deal.II
-// (non-planar faces); a body held against translations only, a boundary id
-// no face has, Poisson's ratio 0.5. And the good cases around them pass:
-// the unit cube's volume, area and boundary ids; a cube beside two prisms
-// that share its face's diagonal, once the cube's face is split the same
-// way.
+// (non-planar faces); a body held against translations only, a second body
+// that no support reaches, a boundary id no face has, Poisson's ratio 0.5.
+// And the good cases around them pass: the unit cube's volume, area and
+// boundary ids; a cube beside two prisms that share its face's diagonal,
+// once the cube's face is split the same way; two cubes that meet along an
+// edge only.
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
@@ -265,6 +266,23 @@ main()
         problem.solve();
       },
       "has the boundary id 7", "a boundary id that no face has");
+    {
+      // a second cube beside the first, not touching it: supporting the
+      // first leaves the second free (UMFPACK had returned displacements of
+      // 1e16 for it)
+      PolyhedralMesh two;
+      two.add_cell(cube_faces(add_cube_vertices(two)));
+      two.add_cell(cube_faces(add_cube_vertices(two, 2)));
+      two.finalize();
+      two.set_boundary_ids([](const P &x, const dealii::Tensor<1, 3> &) { return x[2] < 0.1 && x[0] < 1.5; }, 1);
+      testing::check_throws(
+        [&] {
+          PolyhedralElasticity problem(two, settings);
+          problem.add_dirichlet(1, [](const P &) { return dealii::Tensor<1, 3>(); });
+          problem.solve();
+        },
+        "do not hold the piece of cell 1 (8 vertices; the mesh has 2 pieces)", "a second body without support");
+    }
     settings.material.poisson_ratio = 0.5;
     testing::check_throws([&] { PolyhedralElasticity problem(mesh, settings); }, "Poisson's ratio must lie in (-1, 0.5)",
                           "Poisson's ratio 0.5");
