@@ -52,23 +52,35 @@ namespace dealvem
 
 
 
+  namespace polyhedral_element_internal
+  {
+    // The face weights from a face geometry the caller already has
+    // (compute() needs the geometry itself too: computed once per face).
+    std::vector<double>
+    face_weights(const PolyhedralMesh &mesh, const unsigned int f, const PolyhedralMesh::FaceGeometry &g)
+    {
+      const auto      &loop = mesh.face(f).vertices;
+      const auto       n    = loop.size();
+      dealii::Point<3> average;
+      for (const unsigned int v : loop)
+        average += mesh.vertex(v) / double(n);
+      const dealii::Tensor<1, 3> shift = g.centroid - average;
+      std::vector<double>        w(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const dealii::Tensor<1, 3> chord = mesh.vertex(loop[(i + 1) % n]) - mesh.vertex(loop[(i + n - 1) % n]);
+          w[i] = g.area / n + 0.5 * (dealii::cross_product_3d(chord, g.normal) * shift);
+        }
+      return w;
+    }
+  } // namespace polyhedral_element_internal
+
+
+
   std::vector<double>
   PolyhedralElement::face_weights(const PolyhedralMesh &mesh, const unsigned int f)
   {
-    const auto &loop = mesh.face(f).vertices;
-    const auto  g    = mesh.face_geometry(f);
-    const auto  n    = loop.size();
-    dealii::Point<3> average;
-    for (const unsigned int v : loop)
-      average += mesh.vertex(v) / double(n);
-    const dealii::Tensor<1, 3> shift = g.centroid - average;
-    std::vector<double>        w(n);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const dealii::Tensor<1, 3> chord = mesh.vertex(loop[(i + 1) % n]) - mesh.vertex(loop[(i + n - 1) % n]);
-        w[i] = g.area / n + 0.5 * (dealii::cross_product_3d(chord, g.normal) * shift);
-      }
-    return w;
+    return polyhedral_element_internal::face_weights(mesh, f, mesh.face_geometry(f));
   }
 
 
@@ -96,7 +108,7 @@ namespace dealvem
         const auto   g    = mesh.face_geometry(f);
         const double sign = mesh.face_points_out_of(f, c) ? 1. : -1.;
         const auto  &loop = mesh.face(f).vertices;
-        const auto   w    = face_weights(mesh, f);
+        const auto   w    = polyhedral_element_internal::face_weights(mesh, f, g);
         for (unsigned int i = 0; i < loop.size(); ++i)
           {
             normal_integral[local(loop[i])] += sign * w[i] * g.normal;
