@@ -5,6 +5,7 @@
 #ifndef dealvem_app_polyhedral_elasticity_h
 #define dealvem_app_polyhedral_elasticity_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/smartpointer.h>
 #include <deal.II/base/tensor.h>
@@ -20,6 +21,12 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+namespace dealii
+{
+  template <typename number>
+  class AffineConstraints;
+}
 
 namespace dealvem
 {
@@ -56,15 +63,29 @@ namespace dealvem
     struct Settings
     {
       /// Young's modulus and Poisson's ratio.
-      IsotropicMaterial3D    material;
+      IsotropicMaterial3D material;
       /// Factor of the element's stabilization.
-      double                 stabilization = 1.;
+      double stabilization = 1.;
       /// UMFPACK (default) or CG-AMG.
       LinearSolver::Settings solver;
     };
 
-    /// A problem on @p mesh (kept by reference: it must outlive the problem).
-    PolyhedralElasticity(const PolyhedralMesh &mesh, const Settings &settings);
+    /**
+     * A problem on @p mesh (kept by reference: it must outlive the problem).
+     *
+     * With a communicator of more than one process, every process holds
+     * the whole mesh (as deal.II's parallel::shared::Triangulation does) and
+     * the problem is distributed: METIS partitions the cells over the
+     * processes (on the graph of shared faces, computed on process 0 and
+     * broadcast); a vertex belongs to the lowest process among those of its
+     * cells; each process assembles its cells into the rows of a
+     * dealii::TrilinosWrappers::SparseMatrix, and ParallelLinearSolver solves
+     * (CG with ML AMG on the six rigid modes, or Amesos KLU for the direct
+     * types). After solve() every process holds the whole solution, so that
+     * errors(), cell_stresses() and the other queries work as in serial;
+     * write_vtu() writes on process 0 only. All calls are collective.
+     */
+    PolyhedralElasticity(const PolyhedralMesh &mesh, const Settings &settings, MPI_Comm comm = MPI_COMM_SELF);
 
     /// The body force per volume.
     void
@@ -73,8 +94,9 @@ namespace dealvem
     /// Prescribe the displacement @p g on the boundary faces with id @p id,
     /// in the components where @p components is true.
     void
-    add_dirichlet(const dealii::types::boundary_id id, const VectorFunction &g,
-                  const std::array<bool, 3> &components = {{true, true, true}});
+    add_dirichlet(const dealii::types::boundary_id id,
+                  const VectorFunction            &g,
+                  const std::array<bool, 3>       &components = {{true, true, true}});
 
     /// A traction t(x, n) (force per area) on the boundary faces with id @p id.
     void
@@ -113,6 +135,19 @@ namespace dealvem
       return matrix_entries;
     }
 
+    /// The number of MPI processes of the communicator given to the
+    /// constructor.
+    unsigned int
+    n_processes() const;
+
+    /// The cells this process assembled in the last solve() (all cells on
+    /// one process), increasing.
+    const std::vector<unsigned int> &
+    locally_owned_cells() const
+    {
+      return owned_cells;
+    }
+
     /// The wall time in seconds of assembly and of the linear solve.
     std::pair<double, double>
     last_times() const
@@ -144,7 +179,8 @@ namespace dealvem
     cell_stresses() const;
 
     /// A VTU file: displacement at the vertices; stress components and von
-    /// Mises stress per cell.
+    /// Mises stress per cell (and, on more than one process, the process
+    /// that assembled each cell). Written by process 0 only.
     void
     write_vtu(const std::string &file_name) const;
 
@@ -154,8 +190,20 @@ namespace dealvem
     rigid_body_modes() const;
 
   private:
+    /// The supports as constraints, after checking that they hold every
+    /// connected piece of the mesh.
+    void
+    make_constraints(dealii::AffineConstraints<double> &constraints) const;
+
+    /// The METIS partition of the cells over the processes (all cells
+    /// owned by process 0 on one process).
+    void
+    partition_cells();
+
     dealii::SmartPointer<const PolyhedralMesh> mesh;
     Settings                                   settings;
+    MPI_Comm                                   comm;
+    std::vector<unsigned int>                  cell_owner, owned_cells;
     unsigned int                               n_vertices;
     VectorFunction                             body_force;
     struct Dirichlet
@@ -164,12 +212,12 @@ namespace dealvem
       VectorFunction             g;
       std::array<bool, 3>        components;
     };
-    std::vector<Dirichlet>                                              dirichlet;
+    std::vector<Dirichlet>                                               dirichlet;
     std::vector<std::pair<dealii::types::boundary_id, TractionFunction>> tractions;
-    dealii::Vector<double>                                              u;
-    unsigned int                                                        iterations    = 0;
-    std::size_t                                                         matrix_entries = 0;
-    double                                                              assembly_time = 0, solve_time = 0;
+    dealii::Vector<double>                                               u;
+    unsigned int                                                         iterations     = 0;
+    std::size_t                                                          matrix_entries = 0;
+    double                                                               assembly_time = 0, solve_time = 0;
   };
 } // namespace dealvem
 
