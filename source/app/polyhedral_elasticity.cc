@@ -39,7 +39,9 @@ namespace dealvem
   unsigned int
   PolyhedralElasticity::n_processes() const
   {
-    return dealii::Utilities::MPI::n_mpi_processes(comm);
+    // a program that never initialized MPI (no MPI_InitFinalize) runs on
+    // one process
+    return dealii::Utilities::MPI::job_supports_mpi() ? dealii::Utilities::MPI::n_mpi_processes(comm) : 1;
   }
 
 
@@ -222,8 +224,8 @@ namespace dealvem
   {
     const PolyhedralMesh &m       = *mesh;
     const unsigned int    n_cells = m.n_cells();
-    const unsigned int    n_parts = dealii::Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int    me      = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int    n_parts = n_processes();
+    const unsigned int    me      = n_parts > 1 ? dealii::Utilities::MPI::this_mpi_process(comm) : 0;
     AssertThrow(n_cells >= n_parts,
                 dealii::ExcMessage("PolyhedralElasticity: " + m.name + " has " + std::to_string(n_cells) +
                                    " cells, fewer than the " + std::to_string(n_parts) +
@@ -254,7 +256,8 @@ namespace dealvem
     for (unsigned int c = 0; c < n_cells; ++c)
       if (cell_owner[c] == me)
         owned_cells.push_back(c);
-    const unsigned int fewest = dealii::Utilities::MPI::min(static_cast<unsigned int>(owned_cells.size()), comm);
+    const unsigned int fewest =
+      n_parts > 1 ? dealii::Utilities::MPI::min(static_cast<unsigned int>(owned_cells.size()), comm) : n_cells;
     AssertThrow(fewest > 0, dealii::ExcMessage("PolyhedralElasticity: METIS left an MPI process without cells (" +
                                                std::to_string(n_cells) + " cells over " + std::to_string(n_parts) +
                                                " processes); run with fewer processes."));
@@ -273,7 +276,7 @@ namespace dealvem
     make_constraints(constraints);
     partition_cells();
     const bool         distributed = n_processes() > 1;
-    const unsigned int me          = dealii::Utilities::MPI::this_mpi_process(comm);
+    const unsigned int me          = distributed ? dealii::Utilities::MPI::this_mpi_process(comm) : 0;
 
     // a vertex belongs to the lowest process among those of its cells
     std::vector<std::vector<unsigned int>> cell_vertices(m.n_cells());
@@ -552,7 +555,7 @@ namespace dealvem
     cell_fields.emplace_back("von_mises", std::move(von_mises));
     if (n_processes() > 1)
       cell_fields.emplace_back("process", std::vector<double>(cell_owner.begin(), cell_owner.end()));
-    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    if (n_processes() == 1 || dealii::Utilities::MPI::this_mpi_process(comm) == 0)
       mesh->write_vtu(file_name, {{"displacement", std::vector<double>(u.begin(), u.end())}}, cell_fields);
   }
 } // namespace dealvem
