@@ -50,6 +50,7 @@
 #include <string>
 #include <vector>
 
+#include "../polyhedral_common.h"
 #include "../tests.h"
 
 using namespace dealvem;
@@ -58,6 +59,11 @@ using T3 = dealii::Tensor<1, 3>;
 
 namespace
 {
+  using testing::cell_moments;
+  using testing::CellMoments;
+  using testing::cvt_energy;
+  using testing::outward_loop;
+
   PolyhedralMesh
   voronoi(const P3          &lower,
           const P3          &upper,
@@ -70,75 +76,6 @@ namespace
     return mesh;
   }
 
-  // The loop of face f oriented out of cell c.
-  std::vector<unsigned int>
-  outward_loop(const PolyhedralMesh &mesh, const unsigned int f, const unsigned int c)
-  {
-    std::vector<unsigned int> loop = mesh.face(f).vertices;
-    if (!mesh.face_points_out_of(f, c))
-      std::reverse(loop.begin(), loop.end());
-    return loop;
-  }
-
-  // Volume, centroid and int_c |x - g|^2 dx (g the centroid) of cell c, and
-  // the sum of its outward area vectors: the tetrahedra from the cell's
-  // first vertex to the triangle fans of its faces (signed volumes: exact
-  // for any closed outward-oriented surface).
-  struct CellMoments
-  {
-    double volume = 0;
-    P3     centroid;
-    double second_moment = 0;
-    T3     area_vector;
-    double area = 0;
-  };
-
-  CellMoments
-  cell_moments(const PolyhedralMesh &mesh, const unsigned int c)
-  {
-    CellMoments                                       m;
-    const P3                                          o = mesh.vertex(mesh.cell_vertex_indices(c)[0]);
-    std::vector<std::pair<double, std::array<P3, 4>>> tets;
-    for (const unsigned int f : mesh.cell(c).faces)
-      {
-        const auto loop = outward_loop(mesh, f, c);
-        const P3  &a    = mesh.vertex(loop[0]);
-        for (unsigned int k = 1; k + 1 < loop.size(); ++k)
-          {
-            const P3    &b = mesh.vertex(loop[k]), &d = mesh.vertex(loop[k + 1]);
-            const double v = (a - o) * dealii::cross_product_3d(b - o, d - o) / 6;
-            const T3     n = dealii::cross_product_3d(b - a, d - a) / 2;
-            m.area_vector += n;
-            m.area += n.norm();
-            m.volume += v;
-            m.centroid += v * (T3(o) + T3(a) + T3(b) + T3(d)) / 4;
-            tets.push_back({v, {{o, a, b, d}}});
-          }
-      }
-    m.centroid /= m.volume;
-    // int_T |x - g|^2 = |T| / 20 (sum_i |w_i|^2 + |sum_i w_i|^2), w_i = p_i - g
-    for (const auto &t : tets)
-      {
-        double s2 = 0;
-        T3     s;
-        for (const P3 &p : t.second)
-          {
-            s2 += (p - m.centroid).norm_square();
-            s += p - m.centroid;
-          }
-        m.second_moment += t.first / 20 * (s2 + s.norm_square());
-      }
-    return m;
-  }
-
-  double
-  cvt_energy(const PolyhedralMesh &mesh)
-  {
-    double e = 0;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      e += cell_moments(mesh, c).second_moment;
-    return e;
-  }
 
   // The checks of a mesh of the box [lower, upper] with n_cells cells.
   void
