@@ -15,6 +15,7 @@
 #  include <CGAL/Delaunay_triangulation_2.h>
 #  include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #  include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#  include <CGAL/hilbert_sort.h>
 #endif
 
 #include <algorithm>
@@ -47,6 +48,17 @@ namespace dealvem
             const double x = ux(rng), y = uy(rng);
             s              = P(x, y);
           }
+        // along a Hilbert curve, so that neighbouring cells (and the
+        // vertices and edges numbered in order of appearance) get close
+        // numbers: locality of the matrix and of the vectors in a solve
+        using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+        std::vector<K::Point_2> points;
+        points.reserve(n_cells);
+        for (const auto &s : sites)
+          points.emplace_back(s[0], s[1]);
+        CGAL::hilbert_sort(points.begin(), points.end());
+        for (unsigned int i = 0; i < n_cells; ++i)
+          sites[i] = P(points[i].x(), points[i].y());
         return sites;
       }
 
