@@ -275,7 +275,9 @@ namespace dealvem
   FiniteStrainAssembler<dim>::set_body_force(const dealii::Function<dim> &f)
   {
     loads.set_body_force(f);
-    has_body_force = true;
+    body_force = &f;
+    if (cell_data_current() && !cell_data.has_body_force_data)
+      compute_body_force_data();
   }
 
 
@@ -462,6 +464,49 @@ namespace dealvem
         for (unsigned int i = 0; i < n; ++i)
           cell_data.initial_diagonal[start + i] = K(i, i);
       }
+    if (body_force != nullptr)
+      compute_body_force_data();
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainAssembler<dim>::compute_body_force_data()
+  {
+    // the quadrature of VirtualElement::body_force_vector() (degree k + 3)
+    // and its map from the moments of the load to the DoFs
+    const unsigned int n_cells = dof_handler.get_mesh().n_cells();
+    CellData          &data    = cell_data;
+    data.body_point_start.assign(1, 0);
+    data.body_points.clear();
+    data.body_monomials.clear();
+    data.body_maps.assign(12 * data.dof_indices.size(), 0.);
+    VEMValues<dim>                  vem_values(dof_handler);
+    std::vector<dealii::Point<dim>> points;
+    std::vector<double>             weights;
+    dealii::FullMatrix<double>      W;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        vem_values.reinit(c);
+        const VirtualElement<dim> &element = vem_values.get_element();
+        element.get_geometry().quadrature(dof_handler.get_degree() + 3, points, weights);
+        for (unsigned int q = 0; q < points.size(); ++q)
+          {
+            const dealii::Point<dim> x = element.get_geometry().scaled(points[q]);
+            const double             w = weights[q];
+            data.body_points.push_back(points[q]);
+            for (const double m : {1., x[0], x[1], x[0] * x[0], x[0] * x[1], x[1] * x[1]})
+              data.body_monomials.push_back(w * m);
+          }
+        data.body_point_start.push_back(data.body_points.size());
+        element.body_force_moment_map(W);
+        const unsigned int start = data.dof_start[c];
+        for (unsigned int i = 0; i < W.m(); ++i)
+          for (unsigned int j = 0; j < 12; ++j)
+            data.body_maps[12 * (std::size_t(start) + i) + j] = W(i, j);
+      }
+    data.has_body_force_data = true;
   }
 
 
@@ -481,10 +526,8 @@ namespace dealvem
 
   template <int dim>
   bool
-  FiniteStrainAssembler<dim>::cell_has_load(const unsigned int c) const
+  FiniteStrainAssembler<dim>::cell_has_boundary_load(const unsigned int c) const
   {
-    if (has_body_force)
-      return true;
     for (unsigned int b = cell_data.boundary_start[c]; b < cell_data.boundary_start[c + 1]; ++b)
       if (std::find(loaded_boundary_ids.begin(), loaded_boundary_ids.end(), cell_data.boundary_ids[b]) !=
           loaded_boundary_ids.end())
@@ -575,7 +618,7 @@ namespace dealvem
       }
     // the element only for the cells with a load
     VEMValues<dim>                               vem_values(dof_handler);
-    dealii::Vector<double>                       local_u, F, load;
+    dealii::Vector<double>                       local_u, F, load, f_value(2);
     std::vector<double>                          r_c, scratch;
     std::vector<dealii::types::global_dof_index> indices;
     dealii::FullMatrix<double>                   K;
@@ -613,14 +656,39 @@ namespace dealvem
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
               K(i, j) += factor * K_s(i, j);
-        if (cell_has_load(c))
+        if (cell_has_boundary_load(c))
           {
+            // the element for the edge loads (and the body force)
             vem_values.reinit(c);
             loads.local_load(vem_values, load);
             F.add(load_factor, load);
             // the follower pressures at the current edge positions, and
             // their derivative (K = K_c + K_s - load_factor dF_p/du)
             add_follower_loads(vem_values, local_u, load_factor, F, with_tangent ? &K : nullptr);
+          }
+        else if (body_force != nullptr)
+          {
+            // the moments of the body force against the monomials, then
+            // VirtualElement::body_force_moment_map()
+            double mu[12] = {};
+            for (unsigned int q = cell_data.body_point_start[c]; q < cell_data.body_point_start[c + 1]; ++q)
+              {
+                body_force->vector_value(cell_data.body_points[q], f_value);
+                const double *wm = &cell_data.body_monomials[6 * std::size_t(q)];
+                for (unsigned int m = 0; m < 6; ++m)
+                  {
+                    mu[m] += f_value[0] * wm[m];
+                    mu[6 + m] += f_value[1] * wm[m];
+                  }
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const double *W = &cell_data.body_maps[12 * (std::size_t(start) + i)];
+                double        v = 0;
+                for (unsigned int j = 0; j < 12; ++j)
+                  v += W[j] * mu[j];
+                F[i] += load_factor * v;
+              }
           }
         for (unsigned int i = 0; i < n; ++i)
           residual[indices[i]] += F[i];
@@ -699,6 +767,10 @@ namespace dealvem
                         dealii::MemoryConsumption::memory_consumption(cell_data.boundary_start) +
                         dealii::MemoryConsumption::memory_consumption(cell_data.boundary_ids) +
                         dealii::MemoryConsumption::memory_consumption(cell_data.initial_diagonal) +
+                        dealii::MemoryConsumption::memory_consumption(cell_data.body_point_start) +
+                        dealii::MemoryConsumption::memory_consumption(cell_data.body_points) +
+                        dealii::MemoryConsumption::memory_consumption(cell_data.body_monomials) +
+                        dealii::MemoryConsumption::memory_consumption(cell_data.body_maps) +
                         dealii::MemoryConsumption::memory_consumption(stabilization_factors);
     for (const auto &m : cell_data.stabilization_bases)
       bytes += m.memory_consumption();

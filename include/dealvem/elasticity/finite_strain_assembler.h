@@ -126,9 +126,12 @@ namespace dealvem
    * @f]
    * the law once per point (ConstitutiveLaw::first_piola_kirchhoff_stress_and_tangent()),
    * then work that does not grow with the number of points. The values
-   * are FiniteStrainOperator's to round-off. Only the cells with a load
-   * (a body force: all; a traction or pressure: the cells with an edge of
-   * its boundary id) compute their element again at every assembly.
+   * are FiniteStrainOperator's to round-off. With a body force the cell
+   * data also hold its quadrature (VirtualElement::body_force_vector()'s)
+   * with the weighted monomials and VirtualElement::body_force_moment_map(),
+   * so that an assembly evaluates only the load function; the cells with
+   * an edge of a loaded boundary id (tractions, pressures) compute their
+   * element again at every assembly.
    *
    * The data belong to the mesh's revision (PolygonalMesh::get_revision()),
    * the order and the number of DoFs, as VEMDoFHandler's numbering: after
@@ -272,8 +275,8 @@ namespace dealvem
     StabilizationScaling                    scaling;
     /// The follower pressures: boundary id and function.
     std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> follower_pressures;
-    /// Whether a body force was set (every cell then has a load).
-    bool has_body_force = false;
+    /// The body force (set_body_force()), or nullptr.
+    const dealii::Function<dim> *body_force = nullptr;
     /// The boundary ids with a traction or a pressure (dead or follower).
     std::vector<dealii::types::boundary_id> loaded_boundary_ids;
 
@@ -311,6 +314,16 @@ namespace dealvem
       std::vector<double> initial_diagonal;
       /// FiniteStrainOperator::stabilization_base() of each cell.
       std::vector<dealii::FullMatrix<double>> stabilization_bases;
+      /// With a body force: the points of its quadrature in cell c,
+      /// body_points[body_point_start[c] ... body_point_start[c + 1]), the
+      /// weights times the six scaled monomials of degree <= 2 at each
+      /// (body_monomials[6 q + m]), and VirtualElement::body_force_moment_map()
+      /// of the local DoF i at body_maps[12 (dof_start[c] + i) ...].
+      bool                            has_body_force_data = false;
+      std::vector<unsigned int>       body_point_start;
+      std::vector<dealii::Point<dim>> body_points;
+      std::vector<double>             body_monomials;
+      std::vector<double>             body_maps;
     };
     CellData cell_data;
 
@@ -333,10 +346,13 @@ namespace dealvem
     void
     check_frozen(const std::string &caller) const;
 
-    /// Whether cell @p c has a load (a body force, or an edge with a
-    /// loaded boundary id).
+    /// Compute the body-force part of cell_data.
+    void
+    compute_body_force_data();
+
+    /// Whether cell @p c has an edge with a loaded boundary id.
     bool
-    cell_has_load(const unsigned int c) const;
+    cell_has_boundary_load(const unsigned int c) const;
 
     /// Add the follower pressures of the cell of @p vem_values at its
     /// displacement @p local_u to @p F (times @p factor), and $-$@p factor
