@@ -99,13 +99,18 @@ namespace dealvem
       {
         const double J = dealii::determinant(F[q]);
         AssertThrow(J > 0 && std::isfinite(J), ExcInvertedCell(cell, q, J));
-        const dealii::Tensor<2, dim> P    = law.first_piola_kirchhoff_stress(F[q]);
-        const auto                  *G_q  = &G[q * n_dofs_cell];
+        // (the stress of the combined call is first_piola_kirchhoff_stress()'s)
+        dealii::Tensor<2, dim> P;
+        dealii::Tensor<4, dim> A;
+        if (with_tangent)
+          law.first_piola_kirchhoff_stress_and_tangent(F[q], P, A);
+        else
+          P = law.first_piola_kirchhoff_stress(F[q]);
+        const auto *G_q = &G[q * n_dofs_cell];
         for (unsigned int i = 0; i < n_dofs_cell; ++i)
           r_c[i] += dealii::scalar_product(P, G_q[i]) * JxW[q];
         if (!with_tangent)
           continue;
-        const dealii::Tensor<4, dim> A = law.first_piola_kirchhoff_tangent(F[q]);
         for (unsigned int j = 0; j < n_dofs_cell; ++j)
           AG[j] = dealii::double_contract<2, 0, 3, 1>(A, G_q[j]);
         for (unsigned int i = 0; i < n_dofs_cell; ++i)
