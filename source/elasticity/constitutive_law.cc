@@ -45,6 +45,18 @@ namespace dealvem
 
 
 
+  template <int dim>
+  void
+  ConstitutiveLaw<dim>::first_piola_kirchhoff_stress_and_tangent(const dealii::Tensor<2, dim> &F,
+                                                                 dealii::Tensor<2, dim>       &P,
+                                                                 dealii::Tensor<4, dim>       &A) const
+  {
+    P = first_piola_kirchhoff_stress(F);
+    A = first_piola_kirchhoff_tangent(F);
+  }
+
+
+
   double
   von_mises_stress(const dealii::SymmetricTensor<2, 2> &s, const double szz)
   {

@@ -99,13 +99,18 @@ namespace dealvem
       {
         const double J = dealii::determinant(F[q]);
         AssertThrow(J > 0 && std::isfinite(J), ExcInvertedCell(cell, q, J));
-        const dealii::Tensor<2, dim> P    = law.first_piola_kirchhoff_stress(F[q]);
-        const auto                  *G_q  = &G[q * n_dofs_cell];
+        // (the stress of the combined call is first_piola_kirchhoff_stress()'s)
+        dealii::Tensor<2, dim> P;
+        dealii::Tensor<4, dim> A;
+        if (with_tangent)
+          law.first_piola_kirchhoff_stress_and_tangent(F[q], P, A);
+        else
+          P = law.first_piola_kirchhoff_stress(F[q]);
+        const auto *G_q = &G[q * n_dofs_cell];
         for (unsigned int i = 0; i < n_dofs_cell; ++i)
           r_c[i] += dealii::scalar_product(P, G_q[i]) * JxW[q];
         if (!with_tangent)
           continue;
-        const dealii::Tensor<4, dim> A = law.first_piola_kirchhoff_tangent(F[q]);
         for (unsigned int j = 0; j < n_dofs_cell; ++j)
           AG[j] = dealii::double_contract<2, 0, 3, 1>(A, G_q[j]);
         for (unsigned int i = 0; i < n_dofs_cell; ++i)
@@ -120,7 +125,7 @@ namespace dealvem
 
 
 
-  namespace
+  namespace finite_strain_operator_projector
   {
     // I - D Pi^c, with Pi^c the componentwise H1 projector onto [P_k]^2:
     // int grad Pi^c v : grad p = int grad v : grad p for every p, and the
@@ -225,7 +230,124 @@ namespace dealvem
         for (unsigned int j = 0; j < n; ++j)
           I_Pi(i, j) = (i == j ? 1. : 0.) - DPi(i, j);
     }
-  } // namespace
+  } // namespace finite_strain_operator_projector
+
+
+
+  template <int dim>
+  void
+  FiniteStrainOperator<dim>::projector_complement(const VirtualElement<dim> &element, dealii::FullMatrix<double> &I_Pi)
+  {
+    finite_strain_operator_projector::componentwise_projector_complement(element, I_Pi);
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainOperator<dim>::stabilization_base(const VirtualElement<dim>  &element,
+                                                const Stabilization         rule,
+                                                dealii::FullMatrix<double> &base)
+  {
+    dealii::FullMatrix<double> I_Pi;
+    projector_complement(element, I_Pi);
+    if (rule == Stabilization::diagonal)
+      {
+        base = I_Pi;
+        return;
+      }
+    const unsigned int n = I_Pi.m();
+    base.reinit(n, n);
+    if (rule == Stabilization::boundary)
+      {
+        // the symmetric part of (I - Pi^c)^T S (I - Pi^c)
+        dealii::FullMatrix<double> S, SI(n, n);
+        ElasticityOperator<dim>::boundary_stabilization_form(element, S);
+        S.mmult(SI, I_Pi);
+        I_Pi.Tmmult(base, SI);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            base(i, j) = base(j, i) = 0.5 * (base(i, j) + base(j, i));
+        return;
+      }
+    // trace (and automatic): (I - Pi^c)^T (I - Pi^c)
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j <= i; ++j)
+        {
+          double v = 0;
+          for (unsigned int m = 0; m < n; ++m)
+            v += I_Pi(m, i) * I_Pi(m, j);
+          base(i, j) = base(j, i) = v;
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  FiniteStrainOperator<dim>::stabilization_scales(const dealii::Vector<double> &initial_diagonal,
+                                                  const dealii::Vector<double> &current_diagonal,
+                                                  const StabilizationScaling    scaling,
+                                                  dealii::Vector<double>       &d)
+  {
+    const unsigned int n = initial_diagonal.size();
+    d.reinit(n);
+    if (scaling == StabilizationScaling::initial_tangent)
+      {
+        d = initial_diagonal;
+        return;
+      }
+    AssertDimension(current_diagonal.size(), n);
+    for (unsigned int i = 0; i < n; ++i)
+      d[i] = std::max(current_diagonal[i], stabilization_floor * initial_diagonal[i]);
+  }
+
+
+
+  template <int dim>
+  double
+  FiniteStrainOperator<dim>::scaled_stabilization(const dealii::FullMatrix<double> &base,
+                                                  const dealii::Vector<double>     &d,
+                                                  const double                      gamma,
+                                                  const Stabilization               rule,
+                                                  const double                      c_k,
+                                                  dealii::FullMatrix<double>       *K_s)
+  {
+    AssertThrow(gamma > 0 && std::isfinite(gamma),
+                dealii::ExcMessage("The stabilization factor gamma must be positive, got " + std::to_string(gamma) +
+                                   "."));
+    const unsigned int n = d.size();
+    AssertDimension(base.m(), n);
+    AssertDimension(base.n(), n);
+    // gamma tau = gamma tr(diag(d)) / n, ElasticityOperator::stabilization_scaling()'s rule
+    double trace = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      trace += d[i];
+    const double gamma_tau = gamma * trace / n;
+    if (K_s == nullptr)
+      return gamma_tau;
+    K_s->reinit(n, n);
+    if (rule != Stabilization::diagonal)
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            (*K_s)(i, j) = gamma_tau * base(i, j);
+        return gamma_tau;
+      }
+    // (I - Pi^c)^T diag(gamma c_k max(d_i, 1e-3 tau)) (I - Pi^c)
+    dealii::Vector<double> s(n);
+    for (unsigned int i = 0; i < n; ++i)
+      s[i] = gamma * c_k * std::max(d[i], 1e-3 * gamma_tau / gamma);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j <= i; ++j)
+        {
+          double v = 0;
+          for (unsigned int m = 0; m < n; ++m)
+            v += base(m, i) * s[m] * base(m, j);
+          (*K_s)(i, j) = (*K_s)(j, i) = v;
+        }
+    return gamma_tau;
+  }
 
 
 
@@ -244,50 +366,26 @@ namespace dealvem
                 dealii::ExcMessage("The stabilization factor gamma must be positive, got " + std::to_string(gamma) +
                                    "."));
     const unsigned int         n = n_dofs_cell;
-    dealii::Vector<double>     zero(n), r;
-    dealii::FullMatrix<double> K_0, K_star;
-    compute_consistency(law, zero, true, r, K_0);
-    dealii::FullMatrix<double> D(n, n);
-    if (scaling == StabilizationScaling::initial_tangent)
-      for (unsigned int i = 0; i < n; ++i)
-        D(i, i) = K_0(i, i);
-    else
+    dealii::Vector<double>     zero(n), r, initial_diagonal(n), current_diagonal(n), d;
+    dealii::FullMatrix<double> K;
+    compute_consistency(law, zero, true, r, K);
+    for (unsigned int i = 0; i < n; ++i)
+      initial_diagonal[i] = K(i, i);
+    if (scaling == StabilizationScaling::current_tangent)
       {
-        compute_consistency(law, frozen_u, true, r, K_star);
+        compute_consistency(law, frozen_u, true, r, K);
         for (unsigned int i = 0; i < n; ++i)
-          D(i, i) = std::max(K_star(i, i), stabilization_floor * K_0(i, i));
+          current_diagonal[i] = K(i, i);
       }
+    stabilization_scales(initial_diagonal, current_diagonal, scaling, d);
     // the rules of ElasticityOperator on (I - Pi^c): trace,
-    // gamma tau (I - Pi^c)^T (I - Pi^c), or diagonal,
+    // gamma tau (I - Pi^c)^T (I - Pi^c), boundary, gamma tau times the
+    // symmetric part of (I - Pi^c)^T S (I - Pi^c), or diagonal,
     // (I - Pi^c)^T diag(gamma c_k max(d_i, 1e-3 tau)) (I - Pi^c)
-    const double gamma_tau = ElasticityOperator<dim>::stabilization_scaling(D, gamma);
-    dealii::Vector<double> s(n);
-    const bool             trace = rule == Stabilization::trace || rule == Stabilization::automatic;
-    const double           c_k   = element.get_stabilization_rules().diagonal_weight;
-    for (unsigned int i = 0; i < n; ++i)
-      s[i] = trace ? gamma_tau : gamma * c_k * std::max(D(i, i), 1e-3 * gamma_tau / gamma);
-    dealii::FullMatrix<double> I_Pi;
-    componentwise_projector_complement(element, I_Pi);
-    K_s.reinit(n, n);
-    if (rule == Stabilization::boundary)
-      {
-        dealii::FullMatrix<double> S, SI(n, n);
-        ElasticityOperator<dim>::boundary_stabilization_form(element, S);
-        S.mmult(SI, I_Pi);
-        I_Pi.Tmmult(K_s, SI);
-        for (unsigned int i = 0; i < n; ++i)
-          for (unsigned int j = 0; j <= i; ++j)
-            K_s(i, j) = K_s(j, i) = 0.5 * gamma_tau * (K_s(i, j) + K_s(j, i));
-        return;
-      }
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j <= i; ++j)
-        {
-          double v = 0;
-          for (unsigned int m = 0; m < n; ++m)
-            v += I_Pi(m, i) * s[m] * I_Pi(m, j);
-          K_s(i, j) = K_s(j, i) = v;
-        }
+    const Stabilization        the_rule = (rule == Stabilization::automatic ? Stabilization::trace : rule);
+    dealii::FullMatrix<double> base;
+    stabilization_base(element, the_rule, base);
+    scaled_stabilization(base, d, gamma, the_rule, element.get_stabilization_rules().diagonal_weight, &K_s);
   }
 
 

@@ -188,19 +188,33 @@ namespace dealvem
   dealii::Tensor<4, 2>
   HyperelasticMaterial::first_piola_kirchhoff_tangent(const dealii::Tensor<2, 2> &F) const
   {
+    dealii::Tensor<2, 2> P;
+    dealii::Tensor<4, 2> A;
+    first_piola_kirchhoff_stress_and_tangent(F, P, A);
+    return A;
+  }
+
+
+
+  void
+  HyperelasticMaterial::first_piola_kirchhoff_stress_and_tangent(const dealii::Tensor<2, 2> &F,
+                                                                 dealii::Tensor<2, 2>       &P,
+                                                                 dealii::Tensor<4, 2>       &A) const
+  {
     const double det_F = checked_determinant(F);
     Response3D   r;
     evaluate_3d(F, det_F, stretch(F, det_F), Level::tangent, r);
+    // evaluate_3d() computes P the same way at every level
+    P = r.P;
+    A = r.dP_dF;
     if (model_ == ElasticMaterial::Model::plane_strain)
-      return r.dP_dF;
+      return;
     // plane stress: f = f(F) with df/dF = -(dP_zz/dF) / (dP_zz/df)
-    dealii::Tensor<4, 2> A = r.dP_dF;
     for (unsigned int a = 0; a < 2; ++a)
       for (unsigned int b = 0; b < 2; ++b)
         for (unsigned int c = 0; c < 2; ++c)
           for (unsigned int d = 0; d < 2; ++d)
             A[a][b][c][d] -= r.dP_df[a][b] * r.dP_df[c][d] / r.dPzz_df;
-    return A;
   }
 
 

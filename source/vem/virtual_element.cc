@@ -893,5 +893,20 @@ namespace dealvem
 
 
 
+  template <int dim>
+  void
+  VirtualElement<dim>::body_force_moment_map(dealii::FullMatrix<double> &W) const
+  {
+    // F = Pi_*^T m, m_a = sum_c sum_m coef[a][c][m] mu_cm (body_force_vector())
+    W.reinit(n_dofs, 12);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      for (unsigned int a = 0; a < n_polynomials(); ++a)
+        for (unsigned int c = 0; c < 2; ++c)
+          for (unsigned int m = 0; m < 6; ++m)
+            W(i, 6 * c + m) += Pi_star(a, i) * coef[a][c][m];
+  }
+
+
+
   template class VirtualElement<2>;
 } // namespace dealvem

@@ -138,6 +138,17 @@ namespace dealvem
     /// for this law.
     virtual dealii::Tensor<4, dim>
     first_piola_kirchhoff_tangent(const dealii::Tensor<2, dim> &F) const;
+
+    /// The stress @p P and the tangent @p A at @p F in one call, with the
+    /// values of first_piola_kirchhoff_stress() and
+    /// first_piola_kirchhoff_tangent() (for the assembly of a tangent,
+    /// which needs both at every quadrature point). The default calls the
+    /// two; a law that shares work between them (HyperelasticMaterial)
+    /// evaluates itself once.
+    virtual void
+    first_piola_kirchhoff_stress_and_tangent(const dealii::Tensor<2, dim> &F,
+                                             dealii::Tensor<2, dim>       &P,
+                                             dealii::Tensor<4, dim>       &A) const;
   };
 
 

@@ -19,6 +19,7 @@
 #include <dealvem/vem/vem_dof_handler.h>
 #include <dealvem/vem/vem_values.h>
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -102,6 +103,42 @@ namespace dealvem
    * The stabilization matrices $K_s$ are computed per cell by
    * freeze_stabilization() from a given state and kept until the next call
    * (see FiniteStrainOperator for the scaling and why it is frozen).
+   *
+   * <h3>Cell data</h3>
+   * Everything but the displacement is a function of the reference mesh,
+   * so the element of each cell is computed once per mesh (by
+   * freeze_stabilization(), which the constructor calls) and what the
+   * assembly needs is kept: the DoF indices, the coefficients $g_{im}$ of
+   * $\Pi^0\nabla\varphi_i = \sum_m g_{im}\,q_m$ in the scaled monomials
+   * $q_m$ of degree $\le k-1$ ($2n_m$ numbers per DoF: the other
+   * component's row is zero), the quadrature weights $w_q$ and the values
+   * $q_m(x_q)$ (for $k = 1$ one point with the cell's area: $F$ is
+   * constant), the law, the boundary ids of the cell's edges, the diagonal of
+   * $K_c(0)$, and the state-independent part of the stabilization
+   * (FiniteStrainOperator::stabilization_base(); for the trace and
+   * boundary rules $K_s = \gamma\tau$ times it, so freeze_stabilization()
+   * only computes the diagonal of $K_c(u^*)$ and keeps one factor per
+   * cell). With $G_i(x) = \sum_m g_{im}q_m(x)$ the sums over the points
+   * fold into moments:
+   * @f[
+   *   (r_c)_i = \sum_m g_{im} : \sum_q w_q\,q_m(x_q)\,P(F_q),\qquad
+   *   (K_c)_{ik} = \sum_{m,l} g_{im} : \Bigl(\sum_q w_q\,q_m(x_q)\,q_l(x_q)\,A(F_q)\Bigr) : g_{kl},
+   * @f]
+   * the law once per point (ConstitutiveLaw::first_piola_kirchhoff_stress_and_tangent()),
+   * then work that does not grow with the number of points. The values
+   * are FiniteStrainOperator's to round-off. With a body force the cell
+   * data also hold its quadrature (VirtualElement::body_force_vector()'s)
+   * with the weighted monomials and VirtualElement::body_force_moment_map(),
+   * so that an assembly evaluates only the load function; the cells with
+   * an edge of a loaded boundary id (tractions, pressures) compute their
+   * element again at every assembly.
+   *
+   * The data belong to the mesh's revision (PolygonalMesh::get_revision()),
+   * the order and the number of DoFs, as VEMDoFHandler's numbering: after
+   * the mesh changes (and VEMDoFHandler::distribute_dofs() numbers it
+   * again), assemble() and strain_energy() throw until
+   * freeze_stabilization() has been called, which computes them for the
+   * new mesh.
    */
   template <int dim>
   class FiniteStrainAssembler
@@ -181,8 +218,9 @@ namespace dealvem
     /**
      * Compute and keep the stabilization matrix of every cell, scaled at the
      * state @p u (global displacement; ignored for
-     * StabilizationScaling::initial_tangent). Throws ExcInvertedCell if
-     * @p u inverts a cell.
+     * StabilizationScaling::initial_tangent). Computes the cell data (see
+     * the class documentation) first if the mesh is not the one they were
+     * computed for. Throws ExcInvertedCell if @p u inverts a cell.
      */
     void
     freeze_stabilization(const dealii::Vector<double> &u);
@@ -223,6 +261,10 @@ namespace dealvem
     double
     strain_energy(const dealii::Vector<double> &u) const;
 
+    /// The memory of the cell data and the stabilization (bytes).
+    std::size_t
+    memory_consumption() const;
+
   private:
     const VEMDoFHandler<dim>               &dof_handler;
     MaterialLibrary<dim>                    laws;
@@ -231,9 +273,86 @@ namespace dealvem
     double                                  gamma;
     Stabilization                           stabilization;
     StabilizationScaling                    scaling;
-    std::vector<dealii::FullMatrix<double>> stabilization_matrices;
     /// The follower pressures: boundary id and function.
     std::vector<std::pair<dealii::types::boundary_id, const dealii::Function<dim> *>> follower_pressures;
+    /// The body force (set_body_force()), or nullptr.
+    const dealii::Function<dim> *body_force = nullptr;
+    /// The boundary ids with a traction or a pressure (dead or follower).
+    std::vector<dealii::types::boundary_id> loaded_boundary_ids;
+
+    /// The cell data (see the class documentation), for the mesh of
+    /// revision @p revision, the order @p degree and @p n_dofs DoFs.
+    struct CellData
+    {
+      /// Whether the data were computed.
+      bool valid = false;
+      /// The key: the mesh's revision, the order and the number of DoFs.
+      std::uint64_t                   revision = 0;
+      unsigned int                    degree   = 0;
+      dealii::types::global_dof_index n_dofs   = 0;
+      /// $n_m$, the number of scaled monomials of degree $\le k-1$.
+      unsigned int n_monomials = 0;
+      /// The DoFs of cell c: dof_indices[dof_start[c] ... dof_start[c + 1]).
+      std::vector<unsigned int>                    dof_start;
+      std::vector<dealii::types::global_dof_index> dof_indices;
+      /// For the local DoF i of cell c (global position p = dof_start[c] + i)
+      /// the coefficients g_im of Pi^0 grad phi_i, row i % 2, at
+      /// gradient[(p * dim + j) * n_m + m] (column j).
+      std::vector<double> gradient;
+      /// The points of cell c: point_start[c] ... point_start[c + 1]; their
+      /// weights and monomial values (monomials[q * n_m + m]).
+      std::vector<unsigned int> point_start;
+      std::vector<double>       weights;
+      std::vector<double>       monomials;
+      /// The law of each cell.
+      std::vector<const ConstitutiveLaw<dim> *> cell_laws;
+      /// The boundary ids of the boundary edges of cell c:
+      /// boundary_ids[boundary_start[c] ... boundary_start[c + 1]).
+      std::vector<unsigned int>               boundary_start;
+      std::vector<dealii::types::boundary_id> boundary_ids;
+      /// The diagonal of K_c(0), at dof_start[c] + i.
+      std::vector<double> initial_diagonal;
+      /// FiniteStrainOperator::stabilization_base() of each cell.
+      std::vector<dealii::FullMatrix<double>> stabilization_bases;
+      /// With a body force: the points of its quadrature in cell c,
+      /// body_points[body_point_start[c] ... body_point_start[c + 1]), the
+      /// weights times the six scaled monomials of degree <= 2 at each
+      /// (body_monomials[6 q + m]), and VirtualElement::body_force_moment_map()
+      /// of the local DoF i at body_maps[12 (dof_start[c] + i) ...].
+      bool                            has_body_force_data = false;
+      std::vector<unsigned int>       body_point_start;
+      std::vector<dealii::Point<dim>> body_points;
+      std::vector<double>             body_monomials;
+      std::vector<double>             body_maps;
+    };
+    CellData cell_data;
+
+    /// The stabilization frozen by freeze_stabilization(): gamma tau per
+    /// cell (trace and boundary rules: K_s = factor times the base), or
+    /// the matrices (diagonal rule).
+    std::vector<double>                     stabilization_factors;
+    std::vector<dealii::FullMatrix<double>> stabilization_matrices;
+
+    /// Whether cell_data belong to the present mesh, order and numbering.
+    bool
+    cell_data_current() const;
+
+    /// Compute cell_data for the present mesh.
+    void
+    compute_cell_data();
+
+    /// Throw (naming @p caller) unless the stabilization was frozen on
+    /// the present mesh.
+    void
+    check_frozen(const std::string &caller) const;
+
+    /// Compute the body-force part of cell_data.
+    void
+    compute_body_force_data();
+
+    /// Whether cell @p c has an edge with a loaded boundary id.
+    bool
+    cell_has_boundary_load(const unsigned int c) const;
 
     /// Add the follower pressures of the cell of @p vem_values at its
     /// displacement @p local_u to @p F (times @p factor), and $-$@p factor

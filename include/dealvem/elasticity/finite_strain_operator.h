@@ -232,6 +232,63 @@ namespace dealvem
                           const StabilizationScaling    scaling,
                           dealii::FullMatrix<double>   &K_s) const;
 
+    /**
+     * $I - \Pi^c$ of @p element in its DoF basis ($n\times n$): the
+     * complement of the componentwise H1 projector onto $[P_k]^2$ that the
+     * stabilization acts on (see the class documentation). Throws naming
+     * the polygon if the projector's matrix is singular to round-off.
+     */
+    static void
+    projector_complement(const VirtualElement<dim> &element, dealii::FullMatrix<double> &I_Pi);
+
+    /**
+     * The part of the stabilization of @p element that does not depend on
+     * the state, for the rule @p rule (Stabilization::automatic means the
+     * trace rule): $(I-\Pi^c)^T(I-\Pi^c)$ for the trace rule, the symmetric
+     * part of $(I-\Pi^c)^T S_\partial(I-\Pi^c)$ for the boundary rule
+     * (ElasticityOperator::boundary_stabilization_form()), so that
+     * $K_s = \gamma\tau$ times it; for the diagonal rule $I-\Pi^c$ itself
+     * (projector_complement()), which scaled_stabilization() weighs row by
+     * row. A function of the polygon only: FiniteStrainAssembler computes
+     * it once per cell and mesh.
+     */
+    static void
+    stabilization_base(const VirtualElement<dim> &element,
+                       const Stabilization        rule,
+                       dealii::FullMatrix<double> &base);
+
+    /**
+     * The scales $d_i$ of the stabilization (see the class documentation)
+     * from the diagonal @p initial_diagonal of $K_c(0)$ and the diagonal
+     * @p current_diagonal of $K_c(u^*)$ (not read for
+     * StabilizationScaling::initial_tangent): $d_i = (K_c(0))_{ii}$, or
+     * $\max((K_c(u^*))_{ii}, \beta(K_c(0))_{ii})$.
+     */
+    static void
+    stabilization_scales(const dealii::Vector<double> &initial_diagonal,
+                         const dealii::Vector<double> &current_diagonal,
+                         const StabilizationScaling    scaling,
+                         dealii::Vector<double>       &d);
+
+    /**
+     * The stabilization from its state-independent part @p base
+     * (stabilization_base() for the rule @p rule) and the scales @p d:
+     * returns $\gamma\tau = \gamma\sum_i d_i/n$ (@p gamma the factor of
+     * ElasticityOperator). If @p K_s is not null it gets the matrix:
+     * $\gamma\tau$ times @p base for the trace and boundary rules,
+     * $B^T\mathrm{diag}(\gamma c_k\max(d_i, 10^{-3}\tau))B$ with
+     * $B = $ @p base $= I-\Pi^c$ for the diagonal rule (@p c_k: the
+     * diagonal weight of the element's StabilizationRules). Throws unless
+     * $\gamma > 0$.
+     */
+    static double
+    scaled_stabilization(const dealii::FullMatrix<double> &base,
+                         const dealii::Vector<double>     &d,
+                         const double                      gamma,
+                         const Stabilization               rule,
+                         const double                      c_k,
+                         dealii::FullMatrix<double>       *K_s);
+
   private:
     unsigned int                        cell        = 0;
     unsigned int                        n_dofs_cell = 0;

@@ -174,6 +174,14 @@ namespace dealvem
     dealii::Tensor<4, 2>
     first_piola_kirchhoff_tangent(const dealii::Tensor<2, 2> &F) const override;
 
+    /// first_piola_kirchhoff_stress() and first_piola_kirchhoff_tangent()
+    /// from one evaluation of the law (the same values). Throws like
+    /// strain_energy().
+    void
+    first_piola_kirchhoff_stress_and_tangent(const dealii::Tensor<2, 2> &F,
+                                             dealii::Tensor<2, 2>       &P,
+                                             dealii::Tensor<4, 2>       &A) const override;
+
     /// The out-of-plane stretch $f = F_{zz}$ at the in-plane deformation
     /// gradient @p F: 1 in plane strain, the root of $P_{zz}(F, f) = 0$ in
     /// plane stress (the ratio of current to reference thickness of the

@@ -479,6 +479,18 @@ namespace dealvem
                       const unsigned int           extra_degree = 3) const;
 
     /**
+     * What body_force_vector() does after the quadrature, as a matrix:
+     * with the moments $\mu_{cm} = \int_E f_c\,q_m$ of the load against
+     * the six scaled monomials $q_m$ of degree $\le 2$ ($1, \xi, \eta,
+     * \xi^2, \xi\eta, \eta^2$), $F_i = \sum_{c,m} W_{i,6c+m}\,\mu_{cm}$.
+     * @p W gets $n_{dofs}\times 12$ entries. For a loop that keeps $W$ and
+     * the quadrature of a cell and evaluates only the load again
+     * (FiniteStrainAssembler).
+     */
+    void
+    body_force_moment_map(dealii::FullMatrix<double> &W) const;
+
+    /**
      * Load vector of a traction $g$ (2 components) on local edge @p edge:
      * $F_i = \int_{e}g\cdot\varphi_i\,ds$, where the trace of $\varphi_i$ on
      * the edge is the 1D Lagrange polynomial of degree k on the edge's nodes.
