@@ -6,6 +6,9 @@
 // ContactProblem: the parameter file (declaration, body sections, parsing).
 #include "contact_problem_internal.h"
 
+#include <dealvem/solvers/p_multigrid.h>
+#include <dealvem/vem/vem_element_data.h>
+
 namespace dealvem
 {
   using namespace internal::ContactProblemImplementation;
@@ -937,6 +940,10 @@ namespace dealvem
     opt.solver_tolerance      = prm.get_double("Relative tolerance");
     opt.solver_max_iterations = prm.get_integer("Maximum iterations");
     opt.warm_start            = prm.get_bool("Warm start");
+    opt.solver_preconditioner = prm.get("Preconditioner");
+    AssertThrow(opt.solver_preconditioner != "p-multigrid" || PMultigrid::applies_to(VEMElementData(opt.degree)),
+                dealii::ExcMessage("Solver/Preconditioner = p-multigrid needs Discretization/Order = 2 (the "
+                                   "coarse level is the order-1 space on the same polygons)."));
     prm.leave_subsection();
 
     prm.enter_subsection("Output");

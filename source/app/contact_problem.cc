@@ -7,6 +7,9 @@
 // refinement cycle (meshes, node insertion, DoFs, assembly, solve).
 #include "contact_problem_internal.h"
 
+#include <dealvem/solvers/p_multigrid.h>
+#include <dealvem/vem/vem_element_data.h>
+
 namespace dealvem
 {
   using namespace internal::ContactProblemImplementation;
@@ -457,6 +460,7 @@ namespace dealvem
     settings.relative_tolerance = opt.solver_tolerance;
     settings.max_iterations     = opt.solver_max_iterations;
     settings.warm_start         = opt.warm_start;
+    settings.p_multigrid        = opt.solver_preconditioner != "AMG";
     if (distributed)
       {
         d.partition = std::make_unique<VEMPartition<2>>();
@@ -470,6 +474,14 @@ namespace dealvem
       d.solver = std::make_unique<SaddlePointSolver>(settings);
     if (SaddlePointSolver::is_iterative(settings.type))
       d.solver->set_near_null_space(d.dof_handler.rigid_body_modes());
+    // CG-AMG on the condensed stiffness: the p-multigrid for k = 2, as for
+    // one body (its coarse level ties the bodies as the contact does)
+    if (settings.type == SaddlePointSolver::Type::cg_amg_constraints && settings.p_multigrid &&
+        PMultigrid::applies_to(d.dof_handler.get_element_data()))
+      {
+        PMultigrid::make_prolongation(d.dof_handler, d.prolongation_sparsity, d.prolongation, d.coarse_modes);
+        d.solver->set_coarse_space(d.prolongation, d.coarse_modes);
+      }
     d.contact_solver = ContactSolver<2>::create(*d.contact, d.constraints, *d.solver, contact_settings,
                                                 d.complementarity);
     d.contact_solver->set_support(d.support.get());

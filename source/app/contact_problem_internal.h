@@ -98,6 +98,11 @@ namespace dealvem
     dealii::SparseMatrix<double>                          system_matrix, work_matrix;
     dealii::Vector<double>                                system_rhs, x;
     std::unique_ptr<SaddlePointSolver>                    solver;
+    /// CG-AMG with the p-multigrid: the prolongation from k = 1 to k = 2
+    /// on the polygons of all bodies, and the coarse rigid-body modes.
+    dealii::SparsityPattern                               prolongation_sparsity;
+    dealii::SparseMatrix<double>                          prolongation;
+    std::vector<std::vector<double>>                      coarse_modes;
     /// The contact solver the settings ask for (ContactSolver::create()).
     std::unique_ptr<ContactSolver<2>>                     contact_solver;
     /// What the last load step's contact solve reported.

@@ -372,7 +372,8 @@ namespace dealvem
                "reading the same mesh file?); the convergence rate of this cycle is not defined."
             << std::endl;
     cycle_dofs.push_back(dof_handler.n_dofs());
-    last_n_dofs = dof_handler.n_dofs();
+    last_n_dofs     = dof_handler.n_dofs();
+    last_iterations = solver_iterations;
     last_timings = timer->stages_since(cycle_start_stages);
     if (gather_solution)
       {

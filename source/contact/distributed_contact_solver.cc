@@ -702,7 +702,13 @@ namespace dealvem
       {
         ParallelLinearSolver solver(linear);
         if (linear.type == LinearSolver::Type::cg_amg)
-          solver.set_near_null_space(modes, owned);
+          {
+            solver.set_near_null_space(modes, owned);
+            // the p-multigrid, its coarse level tied by the contact
+            // constraints between vertices as the condensed matrix is
+            if (uses_p_multigrid())
+              solver.set_coarse_space(*coarse_prolongation, coarse_modes, &all);
+          }
         solver.solve(K, u, f);
         iterations = solver.last_iterations();
       }

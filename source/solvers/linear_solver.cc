@@ -4,6 +4,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
@@ -251,40 +252,99 @@ namespace dealvem
   namespace internal
   {
     void
-    restrict_prolongation(const dealii::SparseMatrix<double> &P,
-                          const std::vector<bool>            &decoupled,
-                          dealii::SparseMatrix<double>       &Pc)
+    restrict_prolongation(const dealii::SparseMatrix<double>      &P,
+                          const std::vector<bool>                 &decoupled,
+                          const dealii::AffineConstraints<double> *lines,
+                          dealii::SparsityPattern                 &sparsity,
+                          dealii::SparseMatrix<double>            &Pc)
     {
-      // Coarse functions vanish on decoupled DoFs (constrained and
-      // condensed), except at a coarse DoF that is a copy of one (a vertex
-      // value): it stays as its own decoupled coarse DoF, so that P keeps
-      // full column rank.
-      Pc.reinit(P.get_sparsity_pattern());
-      Pc.copy_from(P);
-      std::vector<bool> coarse_decoupled(P.n(), false);
-      for (unsigned int i = 0; i < P.m(); ++i)
+      const unsigned int m = P.m(), n_coarse = P.n();
+      const auto         none = dealii::numbers::invalid_unsigned_int;
+      // the coarse DoF each fine row copies (a vertex value), if any
+      std::vector<unsigned int> copy_of(m, none);
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          unsigned int n_nonzero = 0, column = 0;
+          double       value     = 0;
+          for (auto it = P.begin(i); it != P.end(i); ++it)
+            if (it->value() != 0.)
+              {
+                ++n_nonzero;
+                column = it->column();
+                value  = it->value();
+              }
+          if (n_nonzero == 1 && value == 1.)
+            copy_of[i] = column;
+        }
+      // coarse DoFs copied from decoupled fine DoFs: decoupled themselves,
+      // and where the fine DoF's constraint line has vertex values only,
+      // replaced by that line on the coarse level
+      enum : unsigned char
+      {
+        free_dof,
+        decoupled_dof,
+        replaced_dof
+      };
+      std::vector<unsigned char>                                 state(n_coarse, free_dof);
+      std::vector<std::vector<std::pair<unsigned int, double>>> coarse_line(n_coarse);
+      for (unsigned int i = 0; i < m; ++i)
+        if (decoupled[i] && copy_of[i] != none)
+          {
+            const unsigned int c = copy_of[i];
+            state[c]             = decoupled_dof;
+            if (lines == nullptr || !lines->is_constrained(i))
+              continue;
+            const auto *entries = lines->get_constraint_entries(i);
+            if (entries == nullptr)
+              continue;
+            bool                                         vertices_only = true;
+            std::vector<std::pair<unsigned int, double>> line;
+            for (const auto &e : *entries)
+              {
+                if (e.first >= m || e.second == 0.)
+                  continue;
+                if (decoupled[e.first])
+                  continue; // a fixed DoF: no motion to follow
+                if (copy_of[e.first] == none)
+                  {
+                    vertices_only = false;
+                    break;
+                  }
+                line.emplace_back(copy_of[e.first], e.second);
+              }
+            if (vertices_only && !line.empty())
+              {
+                state[c]       = replaced_dof;
+                coarse_line[c] = std::move(line);
+              }
+          }
+
+      const auto for_each_entry = [&](const unsigned int i, const auto &action) {
         if (decoupled[i])
           {
-            unsigned int n_nonzero = 0, column = 0;
-            double       value     = 0;
-            for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
-              if (it->value() != 0.)
-                {
-                  ++n_nonzero;
-                  column = it->column();
-                  value  = it->value();
-                }
-            if (n_nonzero == 1 && value == 1.)
-              coarse_decoupled[column] = true;
-            else
-              for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
-                it->value() = 0;
+            if (copy_of[i] != none)
+              action(copy_of[i], 1.);
+            return;
           }
-      for (unsigned int i = 0; i < P.m(); ++i)
-        if (!decoupled[i])
-          for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
-            if (coarse_decoupled[it->column()])
-              it->value() = 0;
+        for (auto it = P.begin(i); it != P.end(i); ++it)
+          {
+            const unsigned int c = it->column();
+            if (it->value() == 0. || state[c] == decoupled_dof)
+              continue;
+            if (state[c] == free_dof)
+              action(c, it->value());
+            else
+              for (const auto &e : coarse_line[c])
+                action(e.first, it->value() * e.second);
+          }
+      };
+      dealii::DynamicSparsityPattern dsp(m, n_coarse);
+      for (unsigned int i = 0; i < m; ++i)
+        for_each_entry(i, [&](const unsigned int c, const double) { dsp.add(i, c); });
+      sparsity.copy_from(dsp);
+      Pc.reinit(sparsity);
+      for (unsigned int i = 0; i < m; ++i)
+        for_each_entry(i, [&](const unsigned int c, const double v) { Pc.add(i, c, v); });
     }
   } // namespace internal
 
@@ -314,8 +374,9 @@ namespace dealvem
                 decoupled[i] = false;
                 break;
               }
+        dealii::SparsityPattern      sparsity;
         dealii::SparseMatrix<double> Pc;
-        internal::restrict_prolongation(P, decoupled, Pc);
+        internal::restrict_prolongation(P, decoupled, nullptr, sparsity, Pc);
         Pt.reinit(Pc, 0.);
         cycle = std::make_unique<internal::TwoLevelCycle<dealii::Vector<double>>>(At, Pt, coarse_modes, settings,
                                                                                   MPI_COMM_SELF);

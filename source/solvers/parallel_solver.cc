@@ -54,12 +54,14 @@ namespace dealvem
 
 
   void
-  ParallelLinearSolver::set_coarse_space(const dealii::SparseMatrix<double>     &P,
-                                         const std::vector<std::vector<double>> &m)
+  ParallelLinearSolver::set_coarse_space(const dealii::SparseMatrix<double>      &P,
+                                         const std::vector<std::vector<double>>  &m,
+                                         const dealii::AffineConstraints<double> *lines)
   {
     internal::check_coarse_space(P, m);
-    prolongation = &P;
-    coarse_modes = m;
+    prolongation     = &P;
+    coarse_modes     = m;
+    coarse_lines     = lines;
   }
 
 
@@ -75,6 +77,7 @@ namespace dealvem
       DistributedTwoLevel(const dealii::TrilinosWrappers::SparseMatrix &A,
                           const dealii::SparseMatrix<double>           &P,
                           const std::vector<std::vector<double>>       &coarse_modes,
+                          const dealii::AffineConstraints<double>      *lines,
                           const LinearSolver::Settings                 &settings,
                           const MPI_Comm                                comm)
       {
@@ -103,8 +106,9 @@ namespace dealvem
           }
         dealii::Utilities::MPI::max(flags, comm, flags);
         const std::vector<bool>      decoupled(flags.begin(), flags.end());
+        dealii::SparsityPattern      sparsity;
         dealii::SparseMatrix<double> Pc;
-        internal::restrict_prolongation(P, decoupled, Pc);
+        internal::restrict_prolongation(P, decoupled, lines, sparsity, Pc);
 
         // the coarse DoFs of this process: copies of its owned vertex DoFs
         dealii::IndexSet owned_coarse(P.n());
@@ -256,7 +260,7 @@ namespace dealvem
         dealii::TrilinosWrappers::PreconditionAMG amg;
         std::unique_ptr<DistributedTwoLevel>      two_level;
         if (used_p_multigrid)
-          two_level = std::make_unique<DistributedTwoLevel>(A, *prolongation, coarse_modes, settings,
+          two_level = std::make_unique<DistributedTwoLevel>(A, *prolongation, coarse_modes, coarse_lines, settings,
                                                             b.get_mpi_communicator());
         else
           {

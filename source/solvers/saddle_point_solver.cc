@@ -24,6 +24,7 @@
 #include <dealvem/solvers/saddle_point_solver.h>
 
 #include "sparse_cholesky.h"
+#include "two_level_cycle.h"
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
@@ -32,6 +33,9 @@
 #include <ml_MultiLevelPreconditioner.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <iostream>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -115,6 +119,17 @@ namespace dealvem
 
 
   void
+  SaddlePointSolver::set_coarse_space(const dealii::SparseMatrix<double>     &P,
+                                      const std::vector<std::vector<double>> &m)
+  {
+    internal::check_coarse_space(P, m);
+    coarse_prolongation = &P;
+    coarse_modes        = m;
+  }
+
+
+
+  void
   SaddlePointSolver::set_stick_directions(const std::vector<std::vector<std::pair<unsigned int, double>>> &rows)
   {
     stick_rows = rows;
@@ -135,7 +150,10 @@ namespace dealvem
       return "GMRES + block preconditioner (ML AMG on K + rho B^T B, exact approximate Schur complement)";
     if (settings.type == Type::cg_amg_constraints)
       return std::string(used_gmres ? "GMRES" : "CG") +
-             " + ML AMG on the stiffness condensed by the active contact constraints (one slave DoF per "
+             (uses_p_multigrid() ? std::string(" + p-multigrid (Chebyshev on k = 2, ML AMG on the k = 1 level with the "
+                                               "contact constraints of the vertices)") :
+                                   std::string(" + ML AMG")) +
+             " on the stiffness condensed by the active contact constraints (one slave DoF per "
              "constraint, multipliers from the residual" +
              std::string(used_gmres ? "; slipping pairs: Petrov-Galerkin condensation, not symmetric" : "") +
              std::string(used_stick_preconditioner ? "; stick springs preconditioned by tying them" : "") +
@@ -289,6 +307,64 @@ namespace dealvem
       std::vector<double>                       null_space;
     };
 
+  } // namespace
+
+
+
+  namespace internal
+  {
+    /**
+     * The coarse space of the p-multigrid on a condensed contact matrix
+     * (SaddlePointSolver::set_coarse_space()): the prolongation, the coarse
+     * rigid-body modes and the constraint lines the matrix was condensed
+     * with (carried to the coarse level). Null P: none.
+     */
+    struct CondensedCoarseSpace
+    {
+      const dealii::SparseMatrix<double>      *P     = nullptr;
+      const std::vector<std::vector<double>>  *modes = nullptr;
+      const dealii::AffineConstraints<double> *lines = nullptr;
+    };
+
+    /**
+     * The p-multigrid of LinearSolver on a condensed matrix @p A (its
+     * Trilinos copy @p At, which must outlive the result): the prolongation
+     * restricted to the decoupled rows of @p A with the constraints of
+     * @p coarse carried to the coarse level, its Trilinos copy in @p Pt,
+     * and the shared two-level cycle with LinearSolver's default settings
+     * (Chebyshev degree 3, one ML V-cycle on the coarse level).
+     */
+    std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>>
+    make_condensed_two_level(const dealii::SparseMatrix<double>           &A,
+                             const dealii::TrilinosWrappers::SparseMatrix &At,
+                             const CondensedCoarseSpace                   &coarse,
+                             dealii::TrilinosWrappers::SparseMatrix       &Pt)
+    {
+      const dealii::SparseMatrix<double> &P = *coarse.P;
+      AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid on the condensed contact system: the prolongation "
+                                                     "has " + std::to_string(P.m()) + " rows, the matrix " +
+                                                     std::to_string(A.m()) + "."));
+      std::vector<bool> decoupled(A.m(), true);
+      for (unsigned int i = 0; i < A.m(); ++i)
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          if (it->column() != i && it->value() != 0.)
+            {
+              decoupled[i] = false;
+              break;
+            }
+      dealii::SparsityPattern      sparsity;
+      dealii::SparseMatrix<double> Pc;
+      restrict_prolongation(P, decoupled, coarse.lines, sparsity, Pc);
+      Pt.reinit(Pc, 0.);
+      return std::make_unique<TwoLevelCycle<dealii::Vector<double>>>(At, Pt, *coarse.modes, LinearSolver::Settings(),
+                                                                     MPI_COMM_SELF);
+    }
+  } // namespace internal
+
+
+
+  namespace
+  {
     /**
      * The two-subspace preconditioner of the condensed stick-penalty system
      * (see SaddlePointSolver::set_stick_directions()):
@@ -301,7 +377,8 @@ namespace dealvem
                           const dealii::AffineConstraints<double>                           &normal_lines,
                           const std::vector<std::vector<std::pair<unsigned int, double>>> &stick_rows,
                           const std::vector<std::vector<double>>                            &modes,
-                          const double                                                      length)
+                          const double                                                      length,
+                          internal::CondensedCoarseSpace                                    coarse)
         : K(K)
       {
         const unsigned int n = K.m();
@@ -323,9 +400,29 @@ namespace dealvem
             tied.add(i, it->column(), it->value());
         Z.condense(tied);
         tied_trilinos.reinit(tied);
-        Teuchos::ParameterList list;
-        internal::set_ml_parameters(&list, modes, n, null_space);
-        amg.initialize(tied_trilinos.trilinos_matrix(), list);
+        if (coarse.P != nullptr)
+          {
+            // the p-multigrid on Z^T K Z, its coarse level tied as K's
+            // normal lines and Z's ties together tie the fine one (a normal
+            // line may refer to a DoF that a tie line constrains: close()
+            // resolves the chain)
+            for (const dealii::AffineConstraints<double> *c : {&normal_lines, static_cast<const dealii::AffineConstraints<double> *>(&Z)})
+              for (const auto &line : c->get_lines())
+                if (!all_lines.is_constrained(line.index))
+                  {
+                    all_lines.add_line(line.index);
+                    all_lines.add_entries(line.index, line.entries);
+                  }
+            all_lines.close();
+            coarse.lines = &all_lines;
+            cycle        = internal::make_condensed_two_level(tied, tied_trilinos, coarse, P_trilinos);
+          }
+        else
+          {
+            Teuchos::ParameterList list;
+            internal::set_ml_parameters(&list, modes, n, null_space);
+            amg.initialize(tied_trilinos.trilinos_matrix(), list);
+          }
         w.reinit(n);
         v.reinit(n);
       }
@@ -335,7 +432,10 @@ namespace dealvem
       {
         w = src;
         Z.condense(w);
-        amg.vmult(v, w);
+        if (cycle)
+          cycle->vmult(v, w);
+        else
+          amg.vmult(v, w);
         Z.distribute(v);
         dst = v;
         for (const auto s : slaves)
@@ -350,12 +450,13 @@ namespace dealvem
 
     private:
       const dealii::SparseMatrix<double>       &K;
-      dealii::AffineConstraints<double>         Z;
+      dealii::AffineConstraints<double>         Z, all_lines;
       std::vector<unsigned int>                 slaves;
       dealii::SparsityPattern                   tied_pattern;
-      dealii::TrilinosWrappers::SparseMatrix    tied_trilinos;
+      dealii::TrilinosWrappers::SparseMatrix    tied_trilinos, P_trilinos;
       std::vector<double>                       null_space;
       dealii::TrilinosWrappers::PreconditionAMG amg;
+      std::unique_ptr<internal::TwoLevelCycle<dealii::Vector<double>>> cycle;
       mutable dealii::Vector<double>            w, v;
     };
   } // namespace
@@ -366,9 +467,14 @@ namespace dealvem
   {
     /**
      * The ML AMG hierarchy of the condensed CG-AMG solves, kept from one
-     * solve to the next with a copy of the matrix $K_0$ it was built on.
+     * solve to the next with a fingerprint of each row of the matrix $K_0$
+     * it was built on (64 bits of its columns and value bits: 8 bytes a row
+     * where a copy of the matrix took 12 bytes an entry, 360 MB at 1e6 DoFs).
      * prepare() compares the matrix $K$ of a solve with $K_0$ row by row:
-     * - no row differs (pattern and values, bit for bit): the hierarchy is
+     * - no row differs (by its fingerprint; a changed row that kept its
+     *   fingerprint, with probability 2^-64, would only keep an older
+     *   preconditioner, which is still symmetric positive definite, so CG's
+     *   answer is the same): the hierarchy is
      *   used as it is, so the preconditioner, and every iterate, is the one
      *   a fresh set-up would give (load steps and Newton iterations that
      *   keep the closed pairs);
@@ -418,8 +524,10 @@ namespace dealvem
       Use
       prepare(const dealii::SparseMatrix<double>     &K,
               const std::vector<std::vector<double>> &modes,
-              const double                            max_changed_fraction)
+              const double                            max_changed_fraction,
+              const CondensedCoarseSpace             &coarse_space = CondensedCoarseSpace())
       {
+        coarse = coarse_space;
         // (the continuation of the last solve: the same matrix, prepared)
         if (continuing && matrix == &K)
           {
@@ -431,22 +539,16 @@ namespace dealvem
         changed.clear();
         const auto        &sp = K.get_sparsity_pattern();
         const unsigned int n  = sp.n_rows();
-        if (amg_matrix != nullptr && row_start.size() == n + 1)
+        if ((amg_matrix != nullptr || cycle != nullptr) && fingerprints.size() == n)
           {
             const std::size_t max_changed = static_cast<std::size_t>(max_changed_fraction * n);
             bool              too_many    = false;
             for (unsigned int i = 0; i < n && !too_many; ++i)
-              {
-                bool        differs = (row_start[i + 1] - row_start[i] != sp.row_length(i));
-                std::size_t k       = row_start[i];
-                for (auto it = K.begin(i); !differs && it != K.end(i); ++it, ++k)
-                  differs = (it->column() != columns[k] || it->value() != values[k]);
-                if (differs)
-                  {
-                    changed.push_back(i);
-                    too_many = (changed.size() > max_changed);
-                  }
-              }
+              if (fingerprint(K, i) != fingerprints[i])
+                {
+                  changed.push_back(i);
+                  too_many = (changed.size() > max_changed);
+                }
             if (changed.empty())
               return Use::reused;
             if (!too_many)
@@ -496,13 +598,22 @@ namespace dealvem
         const auto                         &sp = K.get_sparsity_pattern();
         const unsigned int                  n  = sp.n_rows();
         changed.clear();
-        row_start.assign(n + 1, 0);
+        // the fingerprints of the rows, for the comparison
+        fingerprints.resize(n);
         for (unsigned int i = 0; i < n; ++i)
-          row_start[i + 1] = row_start[i] + sp.row_length(i);
-        columns.resize(row_start[n]);
-        values.resize(row_start[n]);
+          fingerprints[i] = fingerprint(K, i);
+        if (coarse.P != nullptr)
+          {
+            // the p-multigrid: its cycle works on a Trilinos copy of K (as
+            // LinearSolver's for one body)
+            cycle.reset();
+            amg_matrix.reset();
+            cycle_matrix.reinit(K);
+            cycle = make_condensed_two_level(K, cycle_matrix, coarse, P_trilinos);
+            return;
+          }
 
-        // the copy for the comparison, and ML's Epetra matrix
+        // ML's Epetra matrix
         const Epetra_MpiComm comm(MPI_COMM_SELF);
         const Epetra_Map     map(static_cast<int>(n), 0, comm);
         std::vector<int>     lengths(n);
@@ -515,11 +626,8 @@ namespace dealvem
           {
             row_columns.clear();
             row_values.clear();
-            std::size_t k = row_start[i];
-            for (auto it = K.begin(i); it != K.end(i); ++it, ++k)
+            for (auto it = K.begin(i); it != K.end(i); ++it)
               {
-                columns[k] = it->column();
-                values[k]  = it->value();
                 row_columns.push_back(static_cast<int>(it->column()));
                 row_values.push_back(std::abs(it->value()) > 1e-13 ? it->value() : 0.);
               }
@@ -537,11 +645,19 @@ namespace dealvem
             AssertThrow(status == 0, dealii::ExcMessage("AMGCache: Epetra refused row " + std::to_string(i) + "."));
           }
         AssertThrow(fresh->FillComplete() == 0, dealii::ExcMessage("AMGCache: Epetra's FillComplete() failed."));
+        cycle.reset();
         list = Teuchos::ParameterList();
         set_ml_parameters(&list, modes, n, null_space);
         // (the old hierarchy refers to the old matrix until it is replaced)
         amg.initialize(*fresh, list);
         amg_matrix = std::move(fresh);
+      }
+
+      /// Whether the preconditioner is the p-multigrid.
+      bool
+      is_two_level() const
+      {
+        return cycle != nullptr;
       }
 
       /// The rows corrected by the exact solve (empty unless prepare()
@@ -558,7 +674,7 @@ namespace dealvem
       {
         if (changed.empty())
           {
-            amg.vmult(dst, src);
+            apply_cycle(dst, src);
             return;
           }
         const dealii::SparseMatrix<double> &K = *matrix;
@@ -574,7 +690,7 @@ namespace dealvem
           for (auto it = K.begin(changed[k]); it != K.end(changed[k]); ++it)
             residual[it->column()] -= it->value() * correction[k];
         // one AMG cycle on it
-        amg.vmult(dst, residual);
+        apply_cycle(dst, residual);
         for (std::size_t k = 0; k < m; ++k)
           dst[changed[k]] += correction[k];
         // the exact solve on S again, for the residual on S
@@ -591,6 +707,16 @@ namespace dealvem
       }
 
     private:
+      // one cycle of the hierarchy: ML's V-cycle or the p-multigrid
+      void
+      apply_cycle(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const
+      {
+        if (cycle)
+          cycle->vmult(dst, src);
+        else
+          amg.vmult(dst, src);
+      }
+
       // K restricted to the changed rows and columns, factorized; false if
       // it is not positive definite (then the hierarchy is built again)
       bool
@@ -621,15 +747,44 @@ namespace dealvem
 
       /// The matrix of the last prepare().
       const dealii::SparseMatrix<double> *matrix = nullptr;
-      /// The matrix the hierarchy was built on: rows, columns and values.
-      std::vector<std::size_t>  row_start;
-      std::vector<unsigned int> columns;
-      std::vector<double>       values;
+      /// A 64-bit fingerprint of each row (length, columns and the bits of
+      /// the values) of the matrix the hierarchy was built on.
+      std::vector<std::uint64_t> fingerprints;
+
+      /// The fingerprint of row @p i of @p K: columns and value bits mixed
+      /// in order (splitmix64's finalizer after each).
+      static std::uint64_t
+      fingerprint(const dealii::SparseMatrix<double> &K, const unsigned int i)
+      {
+        const auto mix = [](std::uint64_t x) {
+          x ^= x >> 30;
+          x *= 0xbf58476d1ce4e5b9ULL;
+          x ^= x >> 27;
+          x *= 0x94d049bb133111ebULL;
+          return x ^ (x >> 31);
+        };
+        std::uint64_t h = mix(0x9e3779b97f4a7c15ULL + K.get_sparsity_pattern().row_length(i));
+        for (auto it = K.begin(i); it != K.end(i); ++it)
+          {
+            const double  value = it->value();
+            std::uint64_t bits;
+            std::memcpy(&bits, &value, sizeof bits);
+            h = mix(h ^ it->column());
+            h = mix(h ^ bits);
+          }
+        return h;
+      }
       /// ML's copy of it.
       std::unique_ptr<Epetra_CrsMatrix>         amg_matrix;
       Teuchos::ParameterList                    list;
       std::vector<double>                       null_space;
       dealii::TrilinosWrappers::PreconditionAMG amg;
+      /// The coarse space of the p-multigrid (none: ML AMG), the Trilinos
+      /// copies of the matrix and the restricted prolongation it works on,
+      /// and its cycle.
+      CondensedCoarseSpace                                   coarse;
+      dealii::TrilinosWrappers::SparseMatrix                 cycle_matrix, P_trilinos;
+      std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>> cycle;
       /// The rows that differ, their index among them, and the factorized
       /// restriction of the matrix to them.
       std::vector<unsigned int>              changed;
@@ -680,17 +835,30 @@ namespace dealvem
 
 
   unsigned int
-  SaddlePointSolver::solve_with_amg(const dealii::SparseMatrix<double> &K,
-                                    const dealii::SparseMatrix<double> &K_amg,
-                                    dealii::Vector<double>             &u,
-                                    const dealii::Vector<double>       &f,
-                                    const double                        relative_tolerance,
-                                    const bool                          symmetric)
+  SaddlePointSolver::solve_with_amg(const dealii::SparseMatrix<double>      &K,
+                                    const dealii::SparseMatrix<double>      &K_amg,
+                                    dealii::Vector<double>                  &u,
+                                    const dealii::Vector<double>            &f,
+                                    const double                             relative_tolerance,
+                                    const bool                               symmetric,
+                                    const dealii::AffineConstraints<double> &lines)
   {
+    internal::CondensedCoarseSpace coarse;
+    if (uses_p_multigrid())
+      {
+        AssertThrow(coarse_prolongation->m() == K.m(),
+                    dealii::ExcMessage("SaddlePointSolver: the coarse space (set_coarse_space()) has " +
+                                       std::to_string(coarse_prolongation->m()) + " fine rows, the condensed "
+                                       "stiffness " + std::to_string(K.m()) + ": set it for the DoF handler of "
+                                       "this system."));
+        coarse.P     = coarse_prolongation;
+        coarse.modes = &coarse_modes;
+        coarse.lines = &lines;
+      }
     if (!amg_cache)
       amg_cache = std::make_shared<internal::AMGCache>();
     dealii::Timer setup;
-    const auto    use = amg_cache->prepare(K_amg, modes, settings.amg_reuse_fraction);
+    const auto    use = amg_cache->prepare(K_amg, modes, settings.amg_reuse_fraction, coarse);
     if (use == internal::AMGCache::Use::built)
       {
         ++n_amg_setups;
@@ -907,7 +1075,13 @@ namespace dealvem
         // CG (GMRES when slipping pairs make the condensed matrix
         // non-symmetric) with the two-subspace preconditioner of the
         // stick springs
-        const StickPreconditioner stick(K, contact.get_constraints(), stick_rows, modes, length);
+        internal::CondensedCoarseSpace coarse;
+        if (uses_p_multigrid())
+          {
+            coarse.P     = coarse_prolongation;
+            coarse.modes = &coarse_modes;
+          }
+        const StickPreconditioner stick(K, contact.get_constraints(), stick_rows, modes, length, coarse);
         used_stick_preconditioner = true;
         dealii::SolverControl control(settings.max_iterations, tolerance * f.l2_norm());
         try
@@ -946,10 +1120,10 @@ namespace dealvem
         dealii::SparseMatrix<double> K_sym;
         dealii::Vector<double>       f_sym;
         contact.condense(A, b, sp_sym, K_sym, f_sym, true);
-        iterations = solve_with_amg(K, K_sym, u, f, tolerance, false);
+        iterations = solve_with_amg(K, K_sym, u, f, tolerance, false, contact.get_constraints());
       }
     else
-      iterations = solve_with_amg(K, K, u, f, tolerance, true);
+      iterations = solve_with_amg(K, K, u, f, tolerance, true, contact.get_constraints());
     internal::check_residual(K, u, f, tolerance, description() + (context.empty() ? "" : ", " + context));
   }
 
@@ -1079,7 +1253,8 @@ namespace dealvem
     // (a continuation is not a reuse of the hierarchy for another matrix:
     // the report does not count it)
     const unsigned int reuses = n_amg_reuses;
-    iterations                = solve_with_amg(system.K, system.K, system.u, system.f, tolerance, true);
+    iterations                = solve_with_amg(system.K, system.K, system.u, system.f, tolerance, true,
+                                               system.contact.get_constraints());
     n_amg_reuses              = reuses;
     internal::check_residual(system.K, system.u, system.f, tolerance,
                              description() + (context.empty() ? "" : ", " + context) +

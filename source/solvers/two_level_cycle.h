@@ -9,6 +9,7 @@
 #define dealvem_source_solvers_two_level_cycle_h
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/diagonal_matrix.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -51,15 +52,34 @@ namespace dealvem
                                                              std::to_string(P.n()) + " columns."));
     }
 
-    /// A copy of the prolongation @p P (into @p Pc, on P's pattern) whose
-    /// coarse functions vanish at the fine DoFs flagged @p decoupled
-    /// (constrained: their rows carry no coupling), except where such a DoF
-    /// is the copy of one coarse DoF (a vertex value), which then stays a
-    /// decoupled coarse DoF of its own, so that P keeps full column rank.
+    /**
+     * The prolongation @p P (fine DoFs x coarse DoFs) made to fit a matrix
+     * whose rows flagged @p decoupled carry no coupling (constrained DoFs,
+     * condensed as AffineConstraints::condense() leaves them: the diagonal
+     * only), written into @p Pc on the new pattern @p sparsity.
+     *
+     * A decoupled fine DoF that is the copy of one coarse DoF (a vertex
+     * value) keeps that coarse DoF as a decoupled coarse DoF of its own (the
+     * unit vector at the fine DoF), so that the result has full column
+     * rank. Where such a fine DoF is constrained by a line of @p lines (may
+     * be null) whose other DoFs are vertex values too, the constraint is
+     * carried to the coarse level: every other fine row that P interpolates
+     * from that coarse DoF is interpolated from the coarse copies of the
+     * line's DoFs instead, with the line's weights. A contact constraint
+     * between two vertices of two bodies then ties the coarse functions of
+     * the two bodies as it ties the fine ones, and the coarse space spans
+     * the motions of the bodies together (without @p lines, or for other
+     * decoupled DoFs such as Dirichlet values, coarse functions vanish at
+     * the decoupled DoF, and the coarse space of a body in contact behaves
+     * as if clamped along the interface). Decoupled fine DoFs that are not
+     * vertex copies (edge nodes) get empty rows.
+     */
     void
-    restrict_prolongation(const dealii::SparseMatrix<double> &P,
-                          const std::vector<bool>            &decoupled,
-                          dealii::SparseMatrix<double>       &Pc);
+    restrict_prolongation(const dealii::SparseMatrix<double>      &P,
+                          const std::vector<bool>                 &decoupled,
+                          const dealii::AffineConstraints<double> *lines,
+                          dealii::SparsityPattern                 &sparsity,
+                          dealii::SparseMatrix<double>            &Pc);
 
     /// The inverse diagonal around which the Chebyshev smoother works:
     /// deal.II's DiagonalMatrix for serial vectors (PreconditionChebyshev

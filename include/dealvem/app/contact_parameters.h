@@ -65,6 +65,10 @@ namespace dealvem
     /// previous one (active-set or Newton iteration, load step) instead
     /// of from zero.
     bool warm_start = true;
+    /// Solver/Preconditioner: "automatic", "AMG" or "p-multigrid" (CG-AMG
+    /// on the condensed contact stiffness; the p-multigrid for k = 2 unless
+    /// "AMG").
+    std::string solver_preconditioner = "automatic";
     /// Number of quasi-static load steps (at least 1): step k = 1, ...,
     /// n_load_steps solves at t = final_time * k / n_load_steps.
     unsigned int n_load_steps = 1;

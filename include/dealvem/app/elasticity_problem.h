@@ -129,6 +129,10 @@ namespace dealvem
     /// Number of DoFs of the last cycle.
     unsigned int last_n_dofs = 0;
 
+    /// Iterations of the last cycle's linear solve (1 for a direct solver;
+    /// finite strain: the Newton updates).
+    unsigned int last_iterations = 0;
+
     /// If true, run() leaves the whole solution of the last cycle in
     /// last_solution on every process (in the distributed path this
     /// gathers all entries, which costs a vector of all DoFs per process).

@@ -6,6 +6,7 @@
 #define dealvem_solvers_parallel_solver_h
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 
 #include <dealvem/solvers/linear_solver.h>
@@ -63,9 +64,18 @@ namespace dealvem
      * the process owning the fine DoF it is a copy of (its vertex value).
      * With it, CG's preconditioner is the p-multigrid unless
      * Settings::preconditioner says AMG. @p P must outlive solve().
+     *
+     * For a matrix condensed by constraints (the contact constraints of
+     * DistributedContactSolver), @p lines (complete on every process; null
+     * for none) carries the constraints between vertex values to the coarse
+     * level (see the two-level cycle's restriction of P in the
+     * documentation of SaddlePointSolver::set_coarse_space()); it must
+     * outlive solve() too.
      */
     void
-    set_coarse_space(const dealii::SparseMatrix<double> &P, const std::vector<std::vector<double>> &coarse_modes);
+    set_coarse_space(const dealii::SparseMatrix<double>      &P,
+                     const std::vector<std::vector<double>>  &coarse_modes,
+                     const dealii::AffineConstraints<double> *lines = nullptr);
 
     /// Solve A x = b; x must have A's row map without ghosts. Collective.
     void
@@ -97,6 +107,7 @@ namespace dealvem
     LinearSolver::Settings             settings;
     std::vector<std::vector<double>>   local_modes;
     const dealii::SparseMatrix<double> *prolongation = nullptr;
+    const dealii::AffineConstraints<double> *coarse_lines = nullptr;
     std::vector<std::vector<double>>   coarse_modes;
     bool                               used_p_multigrid = false;
     unsigned int                     iterations = 0;

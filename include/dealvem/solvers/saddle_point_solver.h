@@ -12,6 +12,12 @@
 #include <string>
 #include <vector>
 
+namespace dealii
+{
+  template <typename number>
+  class AffineConstraints;
+}
+
 namespace dealvem
 {
   namespace internal
@@ -100,6 +106,10 @@ namespace dealvem
       /// inexact_tolerance); refine_last_solve() goes on by decades down to
       /// inexact_tolerance.
       double inexact_start_tolerance = 1e-3;
+      /// CG-AMG: precondition by the two-level p-multigrid when a coarse
+      /// space is set (set_coarse_space()); false: ML AMG on the whole
+      /// condensed matrix.
+      bool p_multigrid = true;
     };
 
     /// "UMFPACK", "KLU", "GMRES-AMG", "CG-AMG" (or its former name "CG-AMG
@@ -122,6 +132,38 @@ namespace dealvem
     /// Near-null space (rigid-body modes, size n_displacements each) for AMG.
     void
     set_near_null_space(const std::vector<std::vector<double>> &modes);
+
+    /**
+     * CG-AMG: the coarse space of the two-level p-multigrid that then
+     * preconditions CG on the condensed stiffness (unless
+     * Settings::p_multigrid is false), as LinearSolver::set_coarse_space()
+     * does for one body: the prolongation @p P from the k = 1 to the k = 2
+     * space of all bodies (PMultigrid::make_prolongation() on the DoF
+     * handler of the bodies) and the coarse rigid-body modes. @p P is
+     * referenced and must outlive the solves.
+     *
+     * The condensed matrix has the rows of the slave DoFs decoupled; the
+     * prolongation is fitted to it for each hierarchy: where a contact
+     * constraint ties a slave vertex value to vertex values of the other
+     * body, the coarse level gets the same constraint (the coarse functions
+     * of the master side extend across the interface as the fine ones do),
+     * so that the coarse space spans the motion of the bodies together. The
+     * stick-penalty preconditioner (set_stick_directions()) uses the
+     * p-multigrid on its tied matrix likewise. With it, CG on the condensed
+     * contact patch test takes the iterations of one body with the
+     * p-multigrid (doc/benchmarks.md).
+     */
+    void
+    set_coarse_space(const dealii::SparseMatrix<double>     &P,
+                     const std::vector<std::vector<double>> &coarse_modes);
+
+    /// Whether the CG-AMG solves use the p-multigrid: a coarse space is
+    /// set and Settings::p_multigrid is true.
+    bool
+    uses_p_multigrid() const
+    {
+      return coarse_prolongation != nullptr && settings.p_multigrid;
+    }
 
     /**
      * CG-AMG constraints with stick by penalty: the spring directions (rows
@@ -286,6 +328,10 @@ namespace dealvem
     Settings                         settings;
     /// The near-null space of set_near_null_space().
     std::vector<std::vector<double>> modes;
+    /// The prolongation of set_coarse_space() (null: none).
+    const dealii::SparseMatrix<double> *coarse_prolongation = nullptr;
+    /// The coarse rigid-body modes of set_coarse_space().
+    std::vector<std::vector<double>> coarse_modes;
     /// The spring directions of set_stick_directions().
     std::vector<std::vector<std::pair<unsigned int, double>>> stick_rows;
     /// The last solve preconditioned the stick springs by tying them.
@@ -380,16 +426,20 @@ namespace dealvem
                       const dealii::Vector<double>       &b);
 
     /// CG (GMRES if not @p symmetric) on K u = f from @p u to
-    /// @p relative_tolerance, preconditioned by the AMG hierarchy of
-    /// @p K_amg (K or its symmetric part) from amg_cache, built, reused or
-    /// corrected as solve() describes; returns the iterations.
+    /// @p relative_tolerance, preconditioned by the AMG hierarchy (or the
+    /// p-multigrid, see set_coarse_space()) of @p K_amg (K or its symmetric
+    /// part) from amg_cache, built, reused or corrected as solve()
+    /// describes; @p lines are the constraints K was condensed with.
+    /// Returns the iterations.
     unsigned int
-    solve_with_amg(const dealii::SparseMatrix<double> &K,
-                   const dealii::SparseMatrix<double> &K_amg,
-                   dealii::Vector<double>             &u,
-                   const dealii::Vector<double>       &f,
-                   const double                        relative_tolerance,
-                   const bool                          symmetric);
+    solve_with_amg(const dealii::SparseMatrix<double>      &K,
+                   const dealii::SparseMatrix<double>      &K_amg,
+                   dealii::Vector<double>                  &u,
+                   const dealii::Vector<double>            &f,
+                   const double                             relative_tolerance,
+                   const bool                               symmetric,
+                   const dealii::AffineConstraints<double> &lines);
+
   };
 } // namespace dealvem
 
