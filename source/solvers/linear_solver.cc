@@ -346,6 +346,35 @@ namespace dealvem
       for (unsigned int i = 0; i < m; ++i)
         for_each_entry(i, [&](const unsigned int c, const double v) { Pc.add(i, c, v); });
     }
+
+
+
+    std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>>
+    make_serial_two_level(const dealii::SparseMatrix<double>           &A,
+                          const dealii::TrilinosWrappers::SparseMatrix &At,
+                          const dealii::SparseMatrix<double>           &P,
+                          const std::vector<std::vector<double>>       &coarse_modes,
+                          const dealii::AffineConstraints<double>      *lines,
+                          const LinearSolver::Settings                 &settings,
+                          dealii::TrilinosWrappers::SparseMatrix       &Pt)
+    {
+      AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
+                                                     " rows but the matrix " + std::to_string(A.m()) + "."));
+      // DoFs whose rows carry no coupling: constrained and condensed.
+      std::vector<bool> decoupled(A.m(), true);
+      for (unsigned int i = 0; i < A.m(); ++i)
+        for (auto it = A.begin(i); it != A.end(i); ++it)
+          if (it->column() != i && it->value() != 0.)
+            {
+              decoupled[i] = false;
+              break;
+            }
+      dealii::SparsityPattern      sparsity;
+      dealii::SparseMatrix<double> Pc;
+      restrict_prolongation(P, decoupled, lines, sparsity, Pc);
+      Pt.reinit(Pc, 0.);
+      return std::make_unique<TwoLevelCycle<dealii::Vector<double>>>(At, Pt, coarse_modes, settings, MPI_COMM_SELF);
+    }
   } // namespace internal
 
 
@@ -363,23 +392,7 @@ namespace dealvem
                              const std::vector<std::vector<double>>       &coarse_modes,
                              const LinearSolver::Settings                 &settings)
       {
-        AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
-                                                       " rows but the matrix " + std::to_string(A.m()) + "."));
-        // DoFs whose rows carry no coupling: constrained and condensed.
-        std::vector<bool> decoupled(A.m(), true);
-        for (unsigned int i = 0; i < A.m(); ++i)
-          for (auto it = A.begin(i); it != A.end(i); ++it)
-            if (it->column() != i && it->value() != 0.)
-              {
-                decoupled[i] = false;
-                break;
-              }
-        dealii::SparsityPattern      sparsity;
-        dealii::SparseMatrix<double> Pc;
-        internal::restrict_prolongation(P, decoupled, nullptr, sparsity, Pc);
-        Pt.reinit(Pc, 0.);
-        cycle = std::make_unique<internal::TwoLevelCycle<dealii::Vector<double>>>(At, Pt, coarse_modes, settings,
-                                                                                  MPI_COMM_SELF);
+        cycle = internal::make_serial_two_level(A, At, P, coarse_modes, nullptr, settings, Pt);
       }
 
       void

@@ -340,24 +340,7 @@ namespace dealvem
                              const CondensedCoarseSpace                   &coarse,
                              dealii::TrilinosWrappers::SparseMatrix       &Pt)
     {
-      const dealii::SparseMatrix<double> &P = *coarse.P;
-      AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid on the condensed contact system: the prolongation "
-                                                     "has " + std::to_string(P.m()) + " rows, the matrix " +
-                                                     std::to_string(A.m()) + "."));
-      std::vector<bool> decoupled(A.m(), true);
-      for (unsigned int i = 0; i < A.m(); ++i)
-        for (auto it = A.begin(i); it != A.end(i); ++it)
-          if (it->column() != i && it->value() != 0.)
-            {
-              decoupled[i] = false;
-              break;
-            }
-      dealii::SparsityPattern      sparsity;
-      dealii::SparseMatrix<double> Pc;
-      restrict_prolongation(P, decoupled, coarse.lines, sparsity, Pc);
-      Pt.reinit(Pc, 0.);
-      return std::make_unique<TwoLevelCycle<dealii::Vector<double>>>(At, Pt, *coarse.modes, LinearSolver::Settings(),
-                                                                     MPI_COMM_SELF);
+      return make_serial_two_level(A, At, *coarse.P, *coarse.modes, coarse.lines, LinearSolver::Settings(), Pt);
     }
   } // namespace internal
 

@@ -81,6 +81,26 @@ namespace dealvem
                           dealii::SparsityPattern                 &sparsity,
                           dealii::SparseMatrix<double>            &Pc);
 
+    template <typename VectorType>
+    class TwoLevelCycle;
+
+    /**
+     * The serial two-level cycle on @p A (its Trilinos copy @p At, which
+     * must outlive the result): the prolongation @p P restricted to the
+     * decoupled rows of @p A with restrict_prolongation() (constraint lines
+     * @p lines, may be null), its Trilinos copy written into @p Pt, and the
+     * cycle with @p settings. Used by LinearSolver and by
+     * SaddlePointSolver's condensed contact solves.
+     */
+    std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>>
+    make_serial_two_level(const dealii::SparseMatrix<double>           &A,
+                          const dealii::TrilinosWrappers::SparseMatrix &At,
+                          const dealii::SparseMatrix<double>           &P,
+                          const std::vector<std::vector<double>>       &coarse_modes,
+                          const dealii::AffineConstraints<double>      *lines,
+                          const LinearSolver::Settings                 &settings,
+                          dealii::TrilinosWrappers::SparseMatrix       &Pt);
+
     /// The inverse diagonal around which the Chebyshev smoother works:
     /// deal.II's DiagonalMatrix for serial vectors (PreconditionChebyshev
     /// has a fused update for it), a plain scaling for Trilinos vectors
