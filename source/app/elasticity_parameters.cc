@@ -131,7 +131,7 @@ namespace dealvem
                       "(active-set or Newton iteration, load step) instead of from zero.");
     prm.declare_entry("Preconditioner", "automatic", Selection("automatic|AMG|p-multigrid"),
                       "Preconditioner of CG for one body and of CG-AMG on the condensed contact stiffness "
-                      "(serial and distributed; stick by penalty on several processes: AMG): automatic (the "
+                      "(serial and distributed, with the stick springs of a penalty tied): automatic (the "
                       "p-multigrid for k = 2, ML AMG for k = 1), AMG (one ML V-cycle on the whole "
                       "matrix) or p-multigrid (k = 2 only).");
     prm.declare_entry("Relative tolerance", "1e-12", Double(1e-16, 1),

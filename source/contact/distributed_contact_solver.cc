@@ -16,6 +16,8 @@
 #include <dealvem/solvers/parallel_solver.h>
 #include <dealvem/vem/partitioning.h>
 
+#include "../solvers/two_level_cycle.h"
+
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/solver_control.h>
@@ -61,8 +63,11 @@ namespace dealvem
   DistributedContactSolver::description() const
   {
     const unsigned int np = dealii::Utilities::MPI::n_mpi_processes(comm);
-    return std::string(settings.type == Type::cg_amg_constraints ? (used_gmres ? "GMRES + ML AMG" : "CG + ML AMG")
-                                                                 : "Amesos KLU (direct)") +
+    const std::string preconditioner = uses_p_multigrid() ? " + p-multigrid (Chebyshev on k = 2, ML AMG on the "
+                                                            "k = 1 level with the contact constraints of the vertices)" :
+                                                            " + ML AMG";
+    return std::string(settings.type == Type::cg_amg_constraints ? (used_gmres ? "GMRES" : "CG") + preconditioner :
+                                                                 "Amesos KLU (direct)") +
            " on the stiffness condensed by the active contact constraints, distributed over " +
            std::to_string(np) + " MPI process" + (np > 1 ? "es" : "") +
            " (one slave DoF per constraint, multipliers from the residual" +
@@ -82,6 +87,9 @@ namespace dealvem
      * Z^T and Z exchange the values of their slaves and masters by one
      * small reduction each. Z^T K Z is assembled from the cells with the
      * ties as further constraints (the springs vanish on tied functions).
+     * Its inverse is approximated by the p-multigrid when a coarse space
+     * @p P is given (the normal and tie lines carried to the coarse level,
+     * as in the serial StickPreconditioner), else by ML AMG.
      */
     class DistributedStickPreconditioner
     {
@@ -94,6 +102,8 @@ namespace dealvem
                                      const double                                                      length,
                                      const VEMPartition<2>                                             &partition,
                                      const ElasticityAssembler<2>                                      &assembler,
+                                     const dealii::SparseMatrix<double>                               *P,
+                                     const std::vector<std::vector<double>>                            &coarse_modes,
                                      const MPI_Comm                                                    comm)
         : K(K)
         , comm(comm)
@@ -130,13 +140,19 @@ namespace dealvem
         K_tied.reinit(owned, owned, dsp, comm);
         dealii::TrilinosWrappers::MPI::Vector unused(owned, comm);
         assembler.assemble(tied, partition.locally_owned_cells(), K_tied, unused);
-        std::vector<std::vector<double>> local(modes.size());
-        for (unsigned int k = 0; k < modes.size(); ++k)
-          for (const auto i : owned)
-            local[k].push_back(modes[k][i]);
-        Teuchos::ParameterList list;
-        internal::set_ml_parameters(&list, local, owned.n_elements(), null_space);
-        amg.initialize(K_tied.trilinos_matrix(), list);
+        if (P != nullptr)
+          cycle = internal::make_distributed_two_level(K_tied, *P, coarse_modes, &tied, LinearSolver::Settings(),
+                                                       comm, P_trilinos);
+        else
+          {
+            std::vector<std::vector<double>> local(modes.size());
+            for (unsigned int k = 0; k < modes.size(); ++k)
+              for (const auto i : owned)
+                local[k].push_back(modes[k][i]);
+            Teuchos::ParameterList list;
+            internal::set_ml_parameters(&list, local, owned.n_elements(), null_space);
+            amg.initialize(K_tied.trilinos_matrix(), list);
+          }
         w.reinit(owned, comm);
         v.reinit(owned, comm);
       }
@@ -165,7 +181,10 @@ namespace dealvem
             if (owned.is_element(lines[k].first))
               wp[local(lines[k].first)] = 0.;
           }
-        amg.vmult(v, w);
+        if (cycle)
+          cycle->vmult(v, w);
+        else
+          amg.vmult(v, w);
         // Z: the slaves from their masters, plus the diagonal correction
         const double       *vp = v.begin();
         std::vector<double> master_values(masters.size(), 0.);
@@ -194,6 +213,8 @@ namespace dealvem
       dealii::TrilinosWrappers::SparseMatrix                                         K_tied;
       std::vector<double>                                                            null_space;
       dealii::TrilinosWrappers::PreconditionAMG                                      amg;
+      dealii::TrilinosWrappers::SparseMatrix                                         P_trilinos;
+      std::unique_ptr<internal::TwoLevelCycle<dealii::TrilinosWrappers::MPI::Vector>> cycle;
       mutable dealii::TrilinosWrappers::MPI::Vector                                  w, v;
     };
 
@@ -693,7 +714,9 @@ namespace dealvem
       {
         // stick by penalty: CG with the two-subspace preconditioner
         const DistributedStickPreconditioner preconditioner(K, all, contact.get_constraints(), stick_rows, modes,
-                                                            length, partition, *assembler, comm);
+                                                            length, partition, *assembler,
+                                                            uses_p_multigrid() ? coarse_prolongation : nullptr,
+                                                            coarse_modes, comm);
         iterations                = solve_with_stick_preconditioner(
           K, preconditioner, settings.max_iterations, settings.relative_tolerance, used_gmres, u, f);
         used_stick_preconditioner = true;

@@ -66,11 +66,91 @@ namespace dealvem
 
 
 
+  namespace internal
+  {
+    std::unique_ptr<TwoLevelCycle<dealii::TrilinosWrappers::MPI::Vector>>
+    make_distributed_two_level(const dealii::TrilinosWrappers::SparseMatrix &A,
+                               const dealii::SparseMatrix<double>           &P,
+                               const std::vector<std::vector<double>>       &coarse_modes,
+                               const dealii::AffineConstraints<double>      *lines,
+                               const LinearSolver::Settings                 &settings,
+                               const MPI_Comm                                comm,
+                               dealii::TrilinosWrappers::SparseMatrix       &Pt)
+    {
+      AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
+                                                     " rows but the matrix " + std::to_string(A.m()) + "."));
+      const dealii::IndexSet owned = A.locally_owned_range_indices();
+      // decoupled rows (constrained DoFs), known to every process
+      std::vector<unsigned int> flags(A.m(), 0);
+      // (Epetra's row views: deal.II's row iterators step into the next
+      // row, which need not be owned with a non-contiguous partition)
+      const Epetra_CrsMatrix &M = A.trilinos_matrix();
+      for (int local = 0; local < M.NumMyRows(); ++local)
+        {
+          int     n_entries = 0;
+          double *values    = nullptr;
+          int    *columns   = nullptr;
+          M.ExtractMyRowView(local, n_entries, values, columns);
+          const auto i = static_cast<unsigned int>(M.GRID(local));
+          flags[i]     = 1;
+          for (int k = 0; k < n_entries; ++k)
+            if (static_cast<unsigned int>(M.GCID(columns[k])) != i && values[k] != 0.)
+              {
+                flags[i] = 0;
+                break;
+              }
+        }
+      dealii::Utilities::MPI::max(flags, comm, flags);
+      const std::vector<bool>      decoupled(flags.begin(), flags.end());
+      dealii::SparsityPattern      sparsity;
+      dealii::SparseMatrix<double> Pc;
+      restrict_prolongation(P, decoupled, lines, sparsity, Pc);
+
+      // the coarse DoFs of this process: copies of its owned vertex DoFs
+      dealii::IndexSet owned_coarse(P.n());
+      for (const auto i : owned)
+        {
+          unsigned int n_entries = 0, column = 0;
+          double       value     = 0;
+          for (auto it = P.begin(i); it != P.end(i); ++it)
+            if (it->value() != 0.)
+              {
+                ++n_entries;
+                column = it->column();
+                value  = it->value();
+              }
+          if (n_entries == 1 && value == 1.)
+            owned_coarse.add_index(column);
+        }
+      owned_coarse.compress();
+      AssertThrow(dealii::Utilities::MPI::sum(owned_coarse.n_elements(), comm) == P.n(),
+                  dealii::ExcMessage("p-multigrid: the coarse DoFs are not owned once each (is P a "
+                                     "prolongation from PMultigrid::make_prolongation()?)."));
+
+      dealii::DynamicSparsityPattern dsp(P.m(), P.n(), owned);
+      for (const auto i : owned)
+        for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+          dsp.add(i, it->column());
+      Pt.reinit(owned, owned_coarse, dsp, comm);
+      for (const auto i : owned)
+        for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+          Pt.set(i, it->column(), it->value());
+      Pt.compress(dealii::VectorOperation::insert);
+
+      std::vector<std::vector<double>> local(coarse_modes.size());
+      for (unsigned int k = 0; k < coarse_modes.size(); ++k)
+        for (const auto j : owned_coarse)
+          local[k].push_back(coarse_modes[k][j]);
+      return std::make_unique<TwoLevelCycle<dealii::TrilinosWrappers::MPI::Vector>>(A, Pt, local, settings, comm);
+    }
+  } // namespace internal
+
+
+
   namespace
   {
-    /// The p-multigrid of ParallelLinearSolver: the restricted prolongation
-    /// as a distributed Trilinos matrix (owned fine rows; coarse DoFs owned
-    /// with the fine vertex DoF they copy), then the shared two-level cycle.
+    /// The p-multigrid of ParallelLinearSolver: the shared distributed
+    /// two-level cycle (internal::make_distributed_two_level()).
     class DistributedTwoLevel
     {
     public:
@@ -81,72 +161,7 @@ namespace dealvem
                           const LinearSolver::Settings                 &settings,
                           const MPI_Comm                                comm)
       {
-        AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
-                                                       " rows but the matrix " + std::to_string(A.m()) + "."));
-        const dealii::IndexSet owned = A.locally_owned_range_indices();
-        // decoupled rows (constrained DoFs), known to every process
-        std::vector<unsigned int> flags(A.m(), 0);
-        // (Epetra's row views: deal.II's row iterators step into the next
-        // row, which need not be owned with a non-contiguous partition)
-        const Epetra_CrsMatrix &M = A.trilinos_matrix();
-        for (int local = 0; local < M.NumMyRows(); ++local)
-          {
-            int     n_entries = 0;
-            double *values    = nullptr;
-            int    *columns   = nullptr;
-            M.ExtractMyRowView(local, n_entries, values, columns);
-            const auto i = static_cast<unsigned int>(M.GRID(local));
-            flags[i]     = 1;
-            for (int k = 0; k < n_entries; ++k)
-              if (static_cast<unsigned int>(M.GCID(columns[k])) != i && values[k] != 0.)
-                {
-                  flags[i] = 0;
-                  break;
-                }
-          }
-        dealii::Utilities::MPI::max(flags, comm, flags);
-        const std::vector<bool>      decoupled(flags.begin(), flags.end());
-        dealii::SparsityPattern      sparsity;
-        dealii::SparseMatrix<double> Pc;
-        internal::restrict_prolongation(P, decoupled, lines, sparsity, Pc);
-
-        // the coarse DoFs of this process: copies of its owned vertex DoFs
-        dealii::IndexSet owned_coarse(P.n());
-        for (const auto i : owned)
-          {
-            unsigned int n_entries = 0, column = 0;
-            double       value     = 0;
-            for (auto it = P.begin(i); it != P.end(i); ++it)
-              if (it->value() != 0.)
-                {
-                  ++n_entries;
-                  column = it->column();
-                  value  = it->value();
-                }
-            if (n_entries == 1 && value == 1.)
-              owned_coarse.add_index(column);
-          }
-        owned_coarse.compress();
-        AssertThrow(dealii::Utilities::MPI::sum(owned_coarse.n_elements(), comm) == P.n(),
-                    dealii::ExcMessage("p-multigrid: the coarse DoFs are not owned once each (is P a "
-                                       "prolongation from PMultigrid::make_prolongation()?)."));
-
-        dealii::DynamicSparsityPattern dsp(P.m(), P.n(), owned);
-        for (const auto i : owned)
-          for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
-            dsp.add(i, it->column());
-        Pt.reinit(owned, owned_coarse, dsp, comm);
-        for (const auto i : owned)
-          for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
-            Pt.set(i, it->column(), it->value());
-        Pt.compress(dealii::VectorOperation::insert);
-
-        std::vector<std::vector<double>> local(coarse_modes.size());
-        for (unsigned int k = 0; k < coarse_modes.size(); ++k)
-          for (const auto j : owned_coarse)
-            local[k].push_back(coarse_modes[k][j]);
-        cycle = std::make_unique<internal::TwoLevelCycle<dealii::TrilinosWrappers::MPI::Vector>>(A, Pt, local,
-                                                                                                  settings, comm);
+        cycle = internal::make_distributed_two_level(A, P, coarse_modes, lines, settings, comm, Pt);
       }
 
       void

@@ -101,6 +101,25 @@ namespace dealvem
                           const LinearSolver::Settings                 &settings,
                           dealii::TrilinosWrappers::SparseMatrix       &Pt);
 
+    /**
+     * The distributed two-level cycle on @p A: the prolongation @p P (all
+     * rows, on every process) restricted to the decoupled rows of @p A with
+     * restrict_prolongation() (constraint lines @p lines, may be null), as
+     * a distributed Trilinos matrix in @p Pt (owned fine rows; each coarse
+     * DoF owned with the fine vertex DoF it copies; @p Pt must outlive the
+     * result), and the cycle with @p settings on @p comm. Used by
+     * ParallelLinearSolver and by the stick-penalty preconditioner of
+     * DistributedContactSolver.
+     */
+    std::unique_ptr<TwoLevelCycle<dealii::TrilinosWrappers::MPI::Vector>>
+    make_distributed_two_level(const dealii::TrilinosWrappers::SparseMatrix &A,
+                               const dealii::SparseMatrix<double>           &P,
+                               const std::vector<std::vector<double>>       &coarse_modes,
+                               const dealii::AffineConstraints<double>      *lines,
+                               const LinearSolver::Settings                 &settings,
+                               const MPI_Comm                                comm,
+                               dealii::TrilinosWrappers::SparseMatrix       &Pt);
+
     /// The inverse diagonal around which the Chebyshev smoother works:
     /// deal.II's DiagonalMatrix for serial vectors (PreconditionChebyshev
     /// has a fused update for it), a plain scaling for Trilinos vectors

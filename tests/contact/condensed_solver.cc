@@ -270,6 +270,11 @@ main(int argc, char **argv)
     const auto multipliers = testing::run_contact(with("multipliers") + solver_section("CG-AMG constraints"));
     std::cout << "      CG iterations: stick by penalty " << penalty.linear_iterations << ", by multipliers "
               << multipliers.linear_iterations << std::endl;
+    // the stick springs' preconditioner ties them and solves the tied
+    // matrix by the p-multigrid too, serially and distributed
+    testing::check(penalty.solver.find("p-multigrid") != std::string::npos &&
+                     penalty.solver.find("stick springs preconditioned by tying them") != std::string::npos,
+                   "f) stick by penalty: the p-multigrid on the tied matrix (solver: " + penalty.solver + ")");
     // the default preconditioner for k = 2 is the p-multigrid, its coarse
     // level tied by the contact constraints between vertices; ML AMG on
     // the whole condensed matrix needs more than twice the iterations
