@@ -348,6 +348,94 @@ namespace dealvem
 
   namespace
   {
+    // K (symmetric) copied into @p A on its own pattern plus the fill-in
+    // of condensing it by the closed lines @p Z: for a slave s and a DoF c
+    // coupled to it (c's masters if c is a slave too), the masters of s
+    // couple to c and c to them.
+    void
+    copy_with_fill_in(const dealii::SparseMatrix<double>      &K,
+                      const dealii::AffineConstraints<double> &Z,
+                      dealii::SparsityPattern                 &pattern,
+                      dealii::SparseMatrix<double>            &A)
+    {
+      const unsigned int                     n = K.m();
+      const dealii::SparsityPattern         &sp = K.get_sparsity_pattern();
+      std::vector<std::vector<unsigned int>> extra(n);
+      const auto masters = [&](const unsigned int i, std::vector<unsigned int> &out) {
+        out.clear();
+        if (const auto *entries = Z.get_constraint_entries(i))
+          for (const auto &e : *entries)
+            {
+              AssertThrow(!Z.is_constrained(e.first),
+                          dealii::ExcMessage("StickPreconditioner: the tie lines are not closed."));
+              out.push_back(e.first);
+            }
+        else
+          out.push_back(i);
+      };
+      std::vector<unsigned int> ms, cs;
+      for (const auto &line : Z.get_lines())
+        {
+          masters(line.index, ms);
+          for (auto it = sp.begin(line.index); it != sp.end(line.index); ++it)
+            {
+              masters(it->column(), cs);
+              for (const auto m : ms)
+                for (const auto c : cs)
+                  {
+                    extra[m].push_back(c);
+                    extra[c].push_back(m);
+                  }
+            }
+        }
+      std::vector<unsigned int> lengths(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          auto &x = extra[i];
+          if (!x.empty())
+            {
+              for (auto it = sp.begin(i); it != sp.end(i); ++it)
+                x.push_back(it->column());
+              std::sort(x.begin(), x.end());
+              x.erase(std::unique(x.begin(), x.end()), x.end());
+              lengths[i] = x.size();
+            }
+          else
+            lengths[i] = sp.row_length(i);
+        }
+      pattern.reinit(n, n, lengths);
+      std::vector<unsigned int> columns;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          if (!extra[i].empty())
+            pattern.add_entries(i, extra[i].begin(), extra[i].end(), true);
+          else
+            {
+              columns.clear();
+              for (auto it = sp.begin(i); it != sp.end(i); ++it)
+                columns.push_back(it->column());
+              std::sort(columns.begin(), columns.end());
+              pattern.add_entries(i, columns.begin(), columns.end(), true);
+            }
+        }
+      pattern.compress();
+      A.reinit(pattern);
+      // both rows list the diagonal first, then ascending columns, and
+      // the new row contains the old one
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          auto at = A.begin(i);
+          for (auto it = K.begin(i); it != K.end(i); ++it)
+            {
+              while (at->column() != it->column())
+                ++at;
+              at->value() = it->value();
+            }
+        }
+    }
+
+
+
     /**
      * The two-subspace preconditioner of the condensed stick-penalty system
      * (see SaddlePointSolver::set_stick_directions()):
@@ -370,17 +458,14 @@ namespace dealvem
         for (const auto &sl : ties.get_slaves())
           slaves.push_back(sl.second);
 
-        // Z^T K Z: the springs vanish on tied functions
-        dealii::DynamicSparsityPattern dsp(n, n);
-        for (unsigned int i = 0; i < n; ++i)
-          for (auto it = K.get_sparsity_pattern().begin(i); it != K.get_sparsity_pattern().end(i); ++it)
-            dsp.add(i, it->column());
-        Z.condense(dsp);
-        tied_pattern.copy_from(dsp);
-        dealii::SparseMatrix<double> tied(tied_pattern);
-        for (unsigned int i = 0; i < n; ++i)
-          for (auto it = K.begin(i); it != K.end(i); ++it)
-            tied.add(i, it->column(), it->value());
+        // Z^T K Z: the springs vanish on tied functions. Its pattern is
+        // K's with the fill-in of the few tie lines (a slave's couplings
+        // go to its masters), its values K's copied row by row before
+        // deal.II condenses them (at 1e6 DoFs a DynamicSparsityPattern of
+        // all rows, its condensation and an add() per entry took about
+        // as long as the p-multigrid's set-up)
+        dealii::SparseMatrix<double> tied;
+        copy_with_fill_in(K, Z, tied_pattern, tied);
         Z.condense(tied);
         tied_trilinos.reinit(tied);
         if (coarse.P != nullptr)
