@@ -41,9 +41,12 @@ namespace dealvem
           MeshParameters::declare_parameters(prm);
           prm.leave_subsection();
           prm.enter_subsection("Material");
-          prm.declare_entry("Young's modulus", "1000", Double(0), "Young's modulus E (> 0).");
-          prm.declare_entry("Poisson's ratio", "0.3", Double(-0.999, 0.499),
-                            "Poisson's ratio nu, -1 < nu < 0.5.");
+          prm.declare_entry("Young's modulus", "", Anything(),
+                            "Young's modulus E (> 0) of this body. Empty: the top-level 'Material/Young's "
+                            "modulus' (the material of body 0).");
+          prm.declare_entry("Poisson's ratio", "", Anything(),
+                            "Poisson's ratio nu, -1 < nu < 0.5, of this body. Empty: the top-level "
+                            "'Material/Poisson's ratio' (the material of body 0).");
           prm.declare_entry("Part materials", "", Anything(), part_materials_doc);
           prm.declare_entry("Name", "", Anything(), material_name_doc);
           prm.leave_subsection();
@@ -423,6 +426,9 @@ namespace dealvem
     MaterialLaws::Law         law   = "linear";
     /// The exact solution of body 0 (the default of the other bodies).
     std::string               exact0;
+    /// Young's modulus and Poisson's ratio of body 0 (the default of the
+    /// other bodies).
+    std::pair<double, double> material0{1000., 0.3};
     /// The physical names of the bodies' gmsh files: boundary ids by name
     /// (with each body's boundary id offset) for the conditions and pairs,
     /// and the file each name came from.
@@ -585,8 +591,28 @@ namespace dealvem
         name_file.emplace(key, body.mesh.file_name);
       }
     prm.enter_subsection("Material");
-    const double      E     = prm.get_double("Young's modulus");
-    const double      nu    = prm.get_double("Poisson's ratio");
+    // a body section without its own E or nu takes body 0's (the top-level
+    // section's): a file that sets only 'Material' means every body
+    double E  = material0.first;
+    double nu = material0.second;
+    if (b == 0)
+      {
+        E         = prm.get_double("Young's modulus");
+        nu        = prm.get_double("Poisson's ratio");
+        material0 = {E, nu};
+      }
+    else
+      {
+        const std::string e_text  = InputParsing::trim(prm.get("Young's modulus"));
+        const std::string nu_text = InputParsing::trim(prm.get("Poisson's ratio"));
+        if (!e_text.empty())
+          E = InputParsing::parse_double(e_text, prefix + "Material/Young's modulus");
+        if (!nu_text.empty())
+          {
+            nu = InputParsing::parse_double(nu_text, prefix + "Material/Poisson's ratio");
+            InputParsing::check_range(nu, -1, 0.5, prefix + "Material/Poisson's ratio", true, true, "");
+          }
+      }
     const std::string parts = prm.get("Part materials");
     const std::string material_name = InputParsing::trim(prm.get("Name"));
     prm.leave_subsection();

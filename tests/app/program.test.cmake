@@ -78,6 +78,39 @@ message(STATUS "PASS contact JSON: contact pressure in [${pmin}, ${pmax}] = 10 t
 check_timings("contact patch test timings" "${json}" mesh "node insertion" setup assembly solve postprocessing
               verification report "output csv" "output vtu" "output svg" "output json")
 
+# a file that gives only the top-level 'Material' means it for every body:
+# the patch test with body 1's section removed and another E and nu still
+# has p = 10 at every pair (body 1 on the old default E = 1000, nu = 0.3
+# gave 9.58 to 15.09); a bad nu of body 1 is refused by name
+file(READ ${SOURCE_DIR}/examples/step-2/patch-test.prm patch_prm)
+string(REGEX REPLACE "  subsection Material\n    set Young's modulus    = 7000\n    set Poisson's ratio    = 0.3\n  end\n"
+       "" patch_one_material "${patch_prm}")
+string(REPLACE "set Young's modulus     = 7000" "set Young's modulus     = 3000" patch_one_material "${patch_one_material}")
+string(REPLACE "set Poisson's ratio     = 0.3" "set Poisson's ratio     = 0.2" patch_one_material "${patch_one_material}")
+string(REPLACE "set Base name            = patch-test" "set Base name            = patch-one-material"
+       patch_one_material "${patch_one_material}")
+if(patch_one_material STREQUAL patch_prm OR NOT patch_one_material MATCHES "= 3000" OR
+   patch_one_material MATCHES "modulus +=? 7000")
+  message(FATAL_ERROR "FAIL one material: examples/step-2/patch-test.prm no longer has the expected Material sections")
+endif()
+file(WRITE ${WORK_DIR}/patch-one-material.prm "${patch_one_material}")
+run_dealvem("one material for all bodies" TRUE "summary: output/patch-one-material.json" ${WORK_DIR}/patch-one-material.prm)
+file(READ ${WORK_DIR}/output/patch-one-material.json json)
+string(JSON pmin GET "${json}" contact pressure_min)
+string(JSON pmax GET "${json}" contact pressure_max)
+foreach(v ${pmin} ${pmax})
+  if(v LESS 9.999999999 OR v GREATER 10.000000001)
+    message(FATAL_ERROR "FAIL one material: contact pressure ${v} is not 10 (range [${pmin}, ${pmax}]): "
+                        "body 1 did not take the top-level material")
+  endif()
+endforeach()
+message(STATUS "PASS one material for all bodies: contact pressure in [${pmin}, ${pmax}]")
+string(REPLACE "  set Boundary id offset = 10\n  end\n"
+       "  set Boundary id offset = 10\n  end\n  subsection Material\n    set Poisson's ratio = 0.7\n  end\n"
+       patch_bad_nu "${patch_one_material}")
+file(WRITE ${WORK_DIR}/patch-bad-nu.prm "${patch_bad_nu}")
+run_dealvem("bad nu of body 1" FALSE "Body 1/Material/Poisson's ratio" ${WORK_DIR}/patch-bad-nu.prm)
+
 # what a user of a pressed part reads (the patch test: p = 10 on the top
 # [0, 1] of the upper block, the slave side): the interface passes the load
 # p * 1 = 10 to the lower block, the bottom (boundary 2) carries it and the

@@ -49,7 +49,9 @@ namespace dealvem
    * Body 0 is described by the top-level sections "Mesh" and "Material"
    * (as for one body), bodies 1, 2, ... by the sections "Body 1", ... each
    * with its own "Mesh" and "Material" subsections (any number: the program
-   * declares as many sections as the file uses, see body_sections()). A
+   * declares as many sections as the file uses, see body_sections()); a
+   * body whose "Material" leaves Young's modulus or Poisson's ratio empty
+   * takes body 0's. A
    * mesh section with "Parts as bodies = true" reads an assembly from one
    * file: each material id (gmsh physical surface) is a body, with its
    * material from "Material/Part materials". Every body gets its index as
