@@ -17,7 +17,8 @@
 // t_solve", "TOTAL contact n t_total cg_iterations active_set_iterations"
 // (the whole contact run, mesh to output), "RESULT onebody n dofs -
 // t_mesh 0 t_assembly t_solve" and "TOTAL onebody n t_total cg_iterations"
-// (wall seconds; the one-body run maps GMRES-AMG and CG-AMG constraints to
+// and "STAGES contact|onebody | stage seconds | ..." (every stage of the
+// run's timings) (wall seconds; the one-body run maps GMRES-AMG and CG-AMG constraints to
 // CG-AMG). Both runs use 'Solver/Preconditioner' = the --preconditioner
 // given (AMG by default: ML AMG on the whole matrix; automatic: the
 // p-multigrid for k = 2 on one body and on the condensed contact system).
@@ -38,6 +39,20 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+
+namespace
+{
+  // "STAGES which name=seconds; ...": every stage of the run's timings
+  template <typename Map>
+  void
+  print_stages(const std::string &which, const Map &timings)
+  {
+    std::cout << "STAGES " << which;
+    for (const auto &t : timings)
+      std::cout << " | " << t.first << " " << t.second;
+    std::cout << std::endl;
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
@@ -109,6 +124,8 @@ main(int argc, char **argv)
         if (root)
           std::cout << "TOTAL contact " << n << " " << total << " " << r.linear_iterations << " "
                   << r.active_set_iterations << std::endl;
+        if (root)
+          print_stages("contact", t);
       }
       if (which != "contact")
       {
@@ -134,6 +151,7 @@ main(int argc, char **argv)
             std::cout << "RESULT onebody " << n << " " << problem.last_n_dofs << " 0 " << t["mesh"] << " 0 "
                       << t["setup"] + t["assembly"] << " " << t["solve"] << std::endl;
             std::cout << "TOTAL onebody " << n << " " << total << " " << problem.last_iterations << std::endl;
+            print_stages("onebody", t);
           }
       }
     }

@@ -4,6 +4,8 @@
 // ---------------------------------------------------------------------
 #include <dealvem/contact/active_set_solver.h>
 
+#include <cstdint>
+#include <cstring>
 #include <exception>
 
 namespace dealvem
@@ -53,6 +55,78 @@ namespace dealvem
 
   namespace
   {
+    // The values of the rows of a matrix that the contact assembly writes,
+    // taken before the first assembly: restore() puts them back, so the
+    // system matrix itself serves as the matrix of every iteration (no
+    // working copy: at 1e6 DoFs a copy is 250 MB of fresh pages). Debug
+    // builds check, by a hash of every value, that the matrix is restored
+    // exactly, i.e. that the assembly wrote no other row.
+    class RowSnapshot
+    {
+    public:
+      RowSnapshot(dealii::SparseMatrix<double> &matrix, std::vector<unsigned int> rows)
+        : matrix(matrix)
+        , rows(std::move(rows))
+      {
+        for (const unsigned int r : this->rows)
+          for (auto it = matrix.begin(r); it != matrix.end(r); ++it)
+            values.push_back(it->value());
+#ifdef DEBUG
+        hash = value_hash();
+#endif
+      }
+
+      void
+      restore()
+      {
+        std::size_t k = 0;
+        for (const unsigned int r : rows)
+          for (auto it = matrix.begin(r); it != matrix.end(r); ++it)
+            it->value() = values[k++];
+#ifdef DEBUG
+        Assert(value_hash() == hash,
+               dealii::ExcMessage("ActiveSetSolver: the system matrix differs after the contact blocks were "
+                                  "taken out: the contact assembly wrote a row that "
+                                  "ContactAssembler::rows_written() does not list."));
+#endif
+      }
+
+    private:
+#ifdef DEBUG
+      std::uint64_t
+      value_hash() const
+      {
+        std::uint64_t h = 1469598103934665603ull;
+        for (auto it = matrix.begin(); it != matrix.end(); ++it)
+          {
+            std::uint64_t bits;
+            const double  v = it->value();
+            std::memcpy(&bits, &v, sizeof bits);
+            h = (h ^ bits) * 1099511628211ull;
+          }
+        return h;
+      }
+      std::uint64_t hash = 0;
+#endif
+      dealii::SparseMatrix<double> &matrix;
+      const std::vector<unsigned int> rows;
+      std::vector<double>             values;
+    };
+
+    // Restores a snapshot (if any) when it goes out of scope, also when
+    // the solve throws.
+    struct RestoreOnExit
+    {
+      RowSnapshot *snapshot;
+      ~RestoreOnExit()
+      {
+        if (snapshot != nullptr)
+          snapshot->restore();
+      }
+    };
+
+
+
     // The loop over linear solves of an active-set iteration, with every
     // decision about the set taken by an ActiveSetUpdate (the rule). The
     // solves of a set that is not the last one only choose the next set:
@@ -71,6 +145,8 @@ namespace dealvem
       const unsigned int                       n;
       const bool                               inexact;
       typename ActiveSetSolver<dim>::Result   &result;
+      // set when @p matrix is the system matrix itself (solved in place)
+      RowSnapshot                             *snapshot = nullptr;
       dealii::Vector<double>                   rhs;
 
       // Solve and update the state @p st by @p rule until the rule stops;
@@ -81,7 +157,10 @@ namespace dealvem
         solver.set_inexact(inexact);
         while (true)
           {
-            matrix.copy_from(system_matrix);
+            if (snapshot != nullptr)
+              snapshot->restore();
+            else
+              matrix.copy_from(system_matrix);
             rhs = system_rhs;
             // (tangentially: the closed pairs and those tied after a cycle)
             const std::vector<bool> tangential = ActiveSetUpdate<dim>::tangential_set(st);
@@ -251,6 +330,13 @@ namespace dealvem
         solver.set_inexact(false);
       }
     } exact_on_exit{solver};
+    // in place: the system matrix is the matrix of every iteration, its
+    // rows the contact blocks write restored before each assembly and when
+    // the fast path ends (or throws); the globalized solve below works on a
+    // copy of its own
+    std::unique_ptr<RowSnapshot> snapshot;
+    if (&matrix == &system_matrix)
+      snapshot = std::make_unique<RowSnapshot>(matrix, contact.rows_written(constraints));
     UpdateLoop<dim> loop{contact,
                          constraints,
                          solver,
@@ -261,8 +347,12 @@ namespace dealvem
                          static_cast<unsigned int>(system_matrix.m() - contact.n_multipliers()),
                          inexact,
                          result,
+                         snapshot.get(),
                          {}};
-    loop.run(update, state, "active-set iteration");
+    {
+      const RestoreOnExit restore_on_exit{snapshot.get()};
+      loop.run(update, state, "active-set iteration");
+    }
     result.active               = state.active;
     result.n_iterations         = state.n_iterations;
     result.n_active_history     = state.n_active_history;
@@ -277,8 +367,12 @@ namespace dealvem
     // matrix at hand; a distributed solver assembles its own)
     result.fast_path_failure = state.failure;
     AssertThrow(system_matrix.frobenius_norm() > 0, dealii::ExcMessage(state.failure));
-    PrimalActiveSetSolver<dim> primal(contact, constraints, solver, settings);
-    const auto                 pr = primal.solve(system_matrix, system_rhs, matrix, x);
+    dealii::SparseMatrix<double> own_matrix;
+    if (snapshot)
+      own_matrix.reinit(system_matrix.get_sparsity_pattern());
+    dealii::SparseMatrix<double> &work = (snapshot ? own_matrix : matrix);
+    PrimalActiveSetSolver<dim>    primal(contact, constraints, solver, settings);
+    const auto                    pr = primal.solve(system_matrix, system_rhs, work, x);
     result.n_globalized_solves      = pr.n_solves;
     result.n_globalized_rigid_steps = pr.n_rigid_steps;
     result.linear_iterations += pr.linear_iterations;
@@ -295,7 +389,11 @@ namespace dealvem
       }
     result.active = pr.active;
     if (settings.tangential != ContactSettings::Tangential::frictionless)
-      polish_stick_solution(loop, primal, settings, support, c, pr.active);
+      {
+        UpdateLoop<dim> work_loop{contact, constraints, solver,   system_matrix, system_rhs, work, x,
+                                  loop.n,  inexact,     result,   nullptr,       {}};
+        polish_stick_solution(work_loop, primal, settings, support, c, pr.active);
+      }
     return result;
   }
 
@@ -310,6 +408,15 @@ namespace dealvem
     this->result = solve(system_matrix, system_rhs, matrix, x);
     this->complete_common_fields(this->result);
     return this->result;
+  }
+
+
+
+  template <int dim>
+  bool
+  ActiveSetSolver<dim>::solves_in_place() const
+  {
+    return true;
   }
 
 

@@ -128,6 +128,32 @@ namespace dealvem
 
 
   template <int dim>
+  std::vector<unsigned int>
+  ContactAssembler<dim>::rows_written(const dealii::AffineConstraints<double> &constraints) const
+  {
+    // distribute_local_to_global() writes the rows of unconstrained local
+    // DoFs, the rows of the DoFs a constrained one refers to, and the
+    // diagonal of a constrained one
+    std::vector<unsigned int> written;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      for (const auto dof : pair_dofs(i))
+        {
+          written.push_back(dof);
+          if (const auto *entries = constraints.get_constraint_entries(dof))
+            for (const auto &e : *entries)
+              written.push_back(e.first);
+        }
+    const unsigned int n = dof_handler.n_dofs();
+    for (unsigned int r = 0; r < n_multipliers(); ++r)
+      written.push_back(n + r);
+    std::sort(written.begin(), written.end());
+    written.erase(std::unique(written.begin(), written.end()), written.end());
+    return written;
+  }
+
+
+
+  template <int dim>
   void
   ContactAssembler<dim>::add_sparsity(dealii::DynamicSparsityPattern &dsp) const
   {

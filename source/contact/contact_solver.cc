@@ -24,6 +24,15 @@ namespace dealvem
   template <int dim>
   ContactSolver<dim>::~ContactSolver() = default;
 
+
+
+  template <int dim>
+  bool
+  ContactSolver<dim>::solves_in_place() const
+  {
+    return false;
+  }
+
   // The one place that maps the contact model to its solver.
   template <int dim>
   std::unique_ptr<ContactSolver<dim>>

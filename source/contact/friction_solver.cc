@@ -634,6 +634,9 @@ namespace dealvem
                                   dealii::SparseMatrix<double>       &matrix,
                                   dealii::Vector<double>             &x)
   {
+    AssertThrow(&matrix != &system_matrix,
+                dealii::ExcMessage("FrictionSolver::solve_step(): the work matrix must be a matrix of its own "
+                                   "(this solver does not solve in place, see solves_in_place())."));
     if (start_state.empty())
       {
         start_state = initial_state();

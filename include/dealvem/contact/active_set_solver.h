@@ -182,8 +182,12 @@ namespace dealvem
     /**
      * @p system_matrix and @p system_rhs hold the elasticity part (size
      * n_dofs + n_multipliers, assembled with the constraints). @p matrix
-     * (same sparsity) is used as work space. On return @p x holds the
-     * displacements followed by the multipliers.
+     * (same sparsity) is used as work space; it may be @p system_matrix
+     * itself (solves_in_place()): the contact blocks are then assembled
+     * into the system matrix, whose rows they write
+     * (ContactAssembler::rows_written()) are restored before each
+     * assembly and before solve() returns or throws. On return @p x holds
+     * the displacements followed by the multipliers.
      */
     Result
     solve(const dealii::SparseMatrix<double> &system_matrix,
@@ -198,6 +202,11 @@ namespace dealvem
                const dealii::Vector<double>       &system_rhs,
                dealii::SparseMatrix<double>       &matrix,
                dealii::Vector<double>             &x) override;
+
+    /// True: solve_step() may be given the system matrix as its work
+    /// matrix (see solve()).
+    bool
+    solves_in_place() const override;
 
     /// "active set" (or "tied" for tied normal contact).
     std::string

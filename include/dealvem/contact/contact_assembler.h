@@ -301,6 +301,17 @@ namespace dealvem
     std::array<dealii::types::global_dof_index, 4>
     pair_dofs(const unsigned int i) const;
 
+    /**
+     * The rows of the system matrix that assemble() and assemble_friction()
+     * may write with these @p constraints, ascending: the displacement rows
+     * of the pairs' DoFs, of the DoFs their constraints refer to, and every
+     * multiplier row. The other rows keep the values of the elasticity
+     * part, which lets a solver assemble the contact blocks into the system
+     * matrix itself and restore it afterwards (ActiveSetSolver).
+     */
+    std::vector<unsigned int>
+    rows_written(const dealii::AffineConstraints<double> &constraints) const;
+
     /// Add the couplings of the contact blocks to a pattern of size
     /// n_dofs + n_multipliers.
     void

@@ -192,7 +192,9 @@ namespace dealvem
      * Solve one load step. @p system_matrix and @p system_rhs hold the
      * elasticity part (size n_dofs + n_multipliers, assembled with the
      * constraints); @p matrix has the same sparsity and is overwritten with
-     * the system of each iteration; @p x receives the displacements and the
+     * the system of each iteration (it may be @p system_matrix itself if
+     * solves_in_place(): the solver then restores it before it returns or
+     * throws; a solver that cannot refuses that); @p x receives the displacements and the
      * multipliers. The step starts from the state the last call ended in
      * (the first from the initial gaps). Throws, with the iteration history
      * or the collapse mechanism (last_mechanism()), if the step has no
@@ -203,6 +205,12 @@ namespace dealvem
                const dealii::Vector<double>       &system_rhs,
                dealii::SparseMatrix<double>       &matrix,
                dealii::Vector<double>             &x) = 0;
+
+    /// Whether solve_step() may be given the system matrix itself as its
+    /// work matrix, saving a copy of the size of the system (false unless
+    /// a solver says otherwise).
+    virtual bool
+    solves_in_place() const;
 
     /// The result of the last solve_step() (empty before the first).
     const Result &
