@@ -277,6 +277,9 @@ namespace dealvem
     std::vector<std::string>     files{filename};
     std::set<std::string>        seen;
     std::map<unsigned long, std::vector<std::string>> sections; // body -> "file:line" of each section
+    // a body section read without a 'subsection Mesh' (nor an include
+    // that may hold one): "file:line" of the section, by body
+    std::map<unsigned long, std::string> without_mesh;
     long                         n_set = -1;                    // the last 'Number of bodies' given
     while (!files.empty() && seen.size() < 100)
       {
@@ -288,6 +291,11 @@ namespace dealvem
         std::string   line;
         std::size_t   line_number = 0;
         int           depth       = 0;
+        // the body section being read (its number, where it starts, and
+        // whether it has a mesh section), if any
+        long          body = -1;
+        std::string   body_at;
+        bool          body_has_mesh = false;
         while (std::getline(in, line))
           {
             ++line_number;
@@ -305,14 +313,27 @@ namespace dealvem
                       {
                         b = std::stoul(w2);
                         sections[b].push_back(file + ":" + std::to_string(line_number));
+                        body          = static_cast<long>(b);
+                        body_at       = file + ":" + std::to_string(line_number);
+                        body_has_mesh = false;
                       }
                     needed  = std::max<unsigned int>(needed, b + 1);
                     largest = std::max<unsigned int>(largest, b);
                   }
+                else if (depth == 1 && body >= 0 && w1 == "Mesh")
+                  body_has_mesh = true;
                 ++depth;
               }
             else if (w0 == "end")
-              depth = std::max(depth - 1, 0);
+              {
+                depth = std::max(depth - 1, 0);
+                if (depth == 0 && body >= 0)
+                  {
+                    if (!body_has_mesh)
+                      without_mesh.emplace(body, body_at);
+                    body = -1;
+                  }
+              }
             else if (w0 == "set" && w1 == "Number" && depth == 0)
               {
                 const auto eq = line.find('=');
@@ -328,6 +349,7 @@ namespace dealvem
               }
             else if (w0 == "include" && !w1.empty())
               {
+                body_has_mesh = true; // (it may be in the file)
                 const std::string dir = std::filesystem::path(file).parent_path().string();
                 files.push_back(w1[0] == '/' || dir.empty() ? w1 : dir + "/" + w1);
               }
@@ -346,6 +368,13 @@ namespace dealvem
                                      "' is given " + std::to_string(where.size()) + " times (" + where[0] +
                                      " and " + where[1] +
                                      "). Each body has one section; was one of them meant for another body?"));
+    for (const auto &[b, where] : without_mesh)
+      AssertThrow(false,
+                  dealii::ExcMessage("Parameter file '" + filename + "': section 'Body " + std::to_string(b) +
+                                     "' (" + where + ") has no 'subsection Mesh'. Without it body " +
+                                     std::to_string(b) + " would silently be the default mesh (a Voronoi mesh of "
+                                     "the unit square, overlapping body 0's default); give body " +
+                                     std::to_string(b) + " its mesh in the section."));
     if (n_set >= 2 && n_set <= static_cast<long>(max_body_sections))
       for (long b = 1; b < n_set; ++b)
         AssertThrow(sections.count(b) > 0,
