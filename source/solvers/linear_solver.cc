@@ -18,6 +18,9 @@
 
 #include "two_level_cycle.h"
 
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
+#include <Epetra_MpiComm.h>
 #include <Teuchos_ParameterList.hpp>
 #include <ml_MultiLevelPreconditioner.h>
 
@@ -151,7 +154,7 @@ namespace dealvem
       else
         {
           At = std::make_unique<dealii::TrilinosWrappers::SparseMatrix>();
-          At->reinit(A);
+          copy_to_trilinos(A, *At);
           klu = std::make_unique<dealii::TrilinosWrappers::SolverDirect>(control, data);
           klu->initialize(*At);
           kx.reinit(b.size());
@@ -349,6 +352,59 @@ namespace dealvem
 
 
 
+    std::unique_ptr<Epetra_CrsMatrix>
+    epetra_copy(const dealii::SparseMatrix<double> &A, const double drop_tolerance)
+    {
+      const auto        &sp = A.get_sparsity_pattern();
+      const unsigned int m = A.m(), n = A.n();
+      // one process; local indices are the global ones
+      const Epetra_MpiComm comm(MPI_COMM_SELF);
+      const Epetra_Map     rows(static_cast<int>(m), 0, comm), columns(static_cast<int>(n), 0, comm);
+      std::vector<int>     lengths(m);
+      for (unsigned int i = 0; i < m; ++i)
+        lengths[i] = static_cast<int>(sp.row_length(i));
+      auto                copy = std::make_unique<Epetra_CrsMatrix>(Copy, rows, columns, lengths.data(), true);
+      std::vector<int>    row_columns;
+      std::vector<double> row_values;
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          row_columns.clear();
+          row_values.clear();
+          for (auto it = A.begin(i); it != A.end(i); ++it)
+            {
+              row_columns.push_back(static_cast<int>(it->column()));
+              row_values.push_back(std::abs(it->value()) > drop_tolerance ? it->value() : 0.);
+            }
+          // deal.II lists a square matrix's diagonal first, then the other
+          // columns ascending: ascending throughout spares Epetra a sort
+          std::size_t d = 0;
+          while (d + 1 < row_columns.size() && row_columns[d + 1] < row_columns[d])
+            {
+              std::swap(row_columns[d], row_columns[d + 1]);
+              std::swap(row_values[d], row_values[d + 1]);
+              ++d;
+            }
+          const int status = copy->InsertMyValues(static_cast<int>(i), lengths[i], row_values.data(), row_columns.data());
+          AssertThrow(status == 0, dealii::ExcMessage("epetra_copy: Epetra refused row " + std::to_string(i) + "."));
+        }
+      AssertThrow(copy->FillComplete(columns, rows) == 0, dealii::ExcMessage("epetra_copy: FillComplete() failed."));
+      return copy;
+    }
+
+
+
+    void
+    copy_to_trilinos(const dealii::SparseMatrix<double>     &A,
+                     dealii::TrilinosWrappers::SparseMatrix &At,
+                     const double                            drop_tolerance)
+    {
+      // (reinit() from an Epetra matrix copies its graph and its values as
+      // one block each)
+      At.reinit(*epetra_copy(A, drop_tolerance));
+    }
+
+
+
     std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>>
     make_serial_two_level(const dealii::SparseMatrix<double>           &A,
                           const dealii::TrilinosWrappers::SparseMatrix &At,
@@ -372,7 +428,7 @@ namespace dealvem
       dealii::SparsityPattern      sparsity;
       dealii::SparseMatrix<double> Pc;
       restrict_prolongation(P, decoupled, lines, sparsity, Pc);
-      Pt.reinit(Pc, 0.);
+      copy_to_trilinos(Pc, Pt, 0.);
       return std::make_unique<TwoLevelCycle<dealii::Vector<double>>>(At, Pt, coarse_modes, settings, MPI_COMM_SELF);
     }
   } // namespace internal
@@ -536,7 +592,7 @@ namespace dealvem
         dealii::Timer timer;
         // everything the iteration needs, built before it (setup_time)
         dealii::TrilinosWrappers::SparseMatrix At;
-        At.reinit(A);
+        internal::copy_to_trilinos(A, At);
         // the near-null space in storage is read by ML: it must outlive amg
         Teuchos::ParameterList                    list;
         std::vector<double>                       storage;

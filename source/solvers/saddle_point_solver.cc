@@ -27,8 +27,6 @@
 #include "two_level_cycle.h"
 
 #include <Epetra_CrsMatrix.h>
-#include <Epetra_Map.h>
-#include <Epetra_MpiComm.h>
 #include <Teuchos_ParameterList.hpp>
 #include <ml_MultiLevelPreconditioner.h>
 
@@ -280,7 +278,7 @@ namespace dealvem
         S_inverse.initialize(S);
 
         // AMG on K_rho with the rigid-body modes
-        K_trilinos.reinit(K_rho);
+        internal::copy_to_trilinos(K_rho, K_trilinos);
         Teuchos::ParameterList list;
         internal::set_ml_parameters(&list, modes, K_rho.m(), null_space);
         amg.initialize(K_trilinos.trilinos_matrix(), list);
@@ -467,7 +465,7 @@ namespace dealvem
         dealii::SparseMatrix<double> tied;
         copy_with_fill_in(K, Z, tied_pattern, tied);
         Z.condense(tied);
-        tied_trilinos.reinit(tied);
+        internal::copy_to_trilinos(tied, tied_trilinos);
         if (coarse.P != nullptr)
           {
             // the p-multigrid on Z^T K Z, its coarse level tied as K's
@@ -565,12 +563,9 @@ namespace dealvem
      *   0.9 to 1.2 times where at most 2 % of the rows changed;
      * - more rows differ: the hierarchy is built again.
      *
-     * The Epetra copy of $K$ that ML works on holds every entry of the
-     * pattern of $K$ (values of magnitude up to 1e-13 as zeros, as
-     * dealii::TrilinosWrappers::SparseMatrix::reinit() copies a deal.II
-     * matrix, so the hierarchy is the same), written row by row with
-     * local indices in ascending order, without the global-index look-ups
-     * and the sorting of that reinit().
+     * The Trilinos copies of $K$ (ML's, or the p-multigrid's) are made by
+     * epetra_copy(): the matrix deal.II's reinit() makes, so the hierarchy
+     * is the same, without its global-index look-ups and sorting.
      */
     class AMGCache
     {
@@ -676,43 +671,13 @@ namespace dealvem
             // LinearSolver's for one body)
             cycle.reset();
             amg_matrix.reset();
-            cycle_matrix.reinit(K);
+            copy_to_trilinos(K, cycle_matrix);
             cycle = make_condensed_two_level(K, cycle_matrix, coarse, P_trilinos);
             return;
           }
 
         // ML's Epetra matrix
-        const Epetra_MpiComm comm(MPI_COMM_SELF);
-        const Epetra_Map     map(static_cast<int>(n), 0, comm);
-        std::vector<int>     lengths(n);
-        for (unsigned int i = 0; i < n; ++i)
-          lengths[i] = static_cast<int>(sp.row_length(i));
-        auto fresh = std::make_unique<Epetra_CrsMatrix>(Copy, map, map, lengths.data(), true);
-        std::vector<int>    row_columns;
-        std::vector<double> row_values;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            row_columns.clear();
-            row_values.clear();
-            for (auto it = K.begin(i); it != K.end(i); ++it)
-              {
-                row_columns.push_back(static_cast<int>(it->column()));
-                row_values.push_back(std::abs(it->value()) > 1e-13 ? it->value() : 0.);
-              }
-            // deal.II lists the diagonal first, then ascending columns:
-            // ascending throughout spares Epetra the sorting
-            std::size_t d = 0;
-            while (d + 1 < row_columns.size() && row_columns[d + 1] < row_columns[d])
-              {
-                std::swap(row_columns[d], row_columns[d + 1]);
-                std::swap(row_values[d], row_values[d + 1]);
-                ++d;
-              }
-            const int status =
-              fresh->InsertMyValues(static_cast<int>(i), lengths[i], row_values.data(), row_columns.data());
-            AssertThrow(status == 0, dealii::ExcMessage("AMGCache: Epetra refused row " + std::to_string(i) + "."));
-          }
-        AssertThrow(fresh->FillComplete() == 0, dealii::ExcMessage("AMGCache: Epetra's FillComplete() failed."));
+        auto fresh = epetra_copy(K, 1e-13);
         cycle.reset();
         list = Teuchos::ParameterList();
         set_ml_parameters(&list, modes, n, null_space);
