@@ -368,13 +368,14 @@ namespace dealvem
                                      "' is given " + std::to_string(where.size()) + " times (" + where[0] +
                                      " and " + where[1] +
                                      "). Each body has one section; was one of them meant for another body?"));
-    for (const auto &[b, where] : without_mesh)
-      AssertThrow(false,
-                  dealii::ExcMessage("Parameter file '" + filename + "': section 'Body " + std::to_string(b) +
-                                     "' (" + where + ") has no 'subsection Mesh'. Without it body " +
-                                     std::to_string(b) + " would silently be the default mesh (a Voronoi mesh of "
-                                     "the unit square, overlapping body 0's default); give body " +
-                                     std::to_string(b) + " its mesh in the section."));
+    // (the message, evaluated only when the check fails, names the first)
+    AssertThrow(without_mesh.empty(),
+                dealii::ExcMessage("Parameter file '" + filename + "': section 'Body " +
+                                   std::to_string(without_mesh.begin()->first) + "' (" +
+                                   without_mesh.begin()->second + ") has no 'subsection Mesh'. Without it body " +
+                                   std::to_string(without_mesh.begin()->first) +
+                                   " would silently be the default mesh (a Voronoi mesh of the unit square, "
+                                   "overlapping body 0's default); give the body its mesh in the section."));
     if (n_set >= 2 && n_set <= static_cast<long>(max_body_sections))
       for (long b = 1; b < n_set; ++b)
         AssertThrow(sections.count(b) > 0,

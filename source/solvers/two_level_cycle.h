@@ -38,10 +38,10 @@ namespace dealvem
      * pattern of @p A, those of magnitude at most @p drop_tolerance as
      * zeros, which is the matrix dealii::TrilinosWrappers::SparseMatrix::
      * reinit() makes of a deal.II matrix with that drop tolerance. Written
-     * row by row with local indices in ascending order: without the
-     * global-index look-ups and the sorting of that reinit(), which took
-     * most of the set-up of a p-multigrid on a condensed contact matrix of
-     * 24k DoFs.
+     * row by row with local indices in ascending order, without the
+     * global-index look-ups and the sorting of that reinit() (measured:
+     * a one-body set-up of 27k DoFs 0.069 -> 0.055 s; no difference above
+     * the noise at 2.3e5 DoFs).
      */
     std::unique_ptr<Epetra_CrsMatrix>
     epetra_copy(const dealii::SparseMatrix<double> &A, double drop_tolerance);
