@@ -796,12 +796,16 @@ namespace dealvem
           x *= 0x94d049bb133111ebULL;
           return x ^ (x >> 31);
         };
-        std::uint64_t h = mix(0x9e3779b97f4a7c15ULL + K.get_sparsity_pattern().row_length(i));
-        for (auto it = K.begin(i); it != K.end(i); ++it)
+        const auto   &sp = K.get_sparsity_pattern();
+        std::uint64_t h  = mix(0x9e3779b97f4a7c15ULL + sp.row_length(i));
+        // (columns by the pattern's iterator, which reads them inline; the
+        // matrix's iterator calls out of line for each)
+        auto value = K.begin(i);
+        for (auto it = sp.begin(i), end = sp.end(i); it != end; ++it, ++value)
           {
-            const double  value = it->value();
+            const double  v = value->value();
             std::uint64_t bits;
-            std::memcpy(&bits, &value, sizeof bits);
+            std::memcpy(&bits, &v, sizeof bits);
             h = mix(h ^ it->column());
             h = mix(h ^ bits);
           }

@@ -22,10 +22,13 @@
 //    constraints, i.e. UMFPACK LU) against UMFPACK on the saddle point to
 //    1e-10 in u and lambda; a constraint row with an off-diagonal D entry is
 //    refused, naming the row; an unknown solver name lists the types.
+// e) ContactConstraints::condense() against deal.II's own condensation of
+//    K by the same lines, entry by entry to 1e-14 (see below).
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
+#include <dealvem/solvers/contact_constraints.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
 #include <map>
@@ -237,5 +240,56 @@ main(int argc, char **argv)
   testing::check(SaddlePointSolver::parse_type("cg-amg CONSTRAINTS") ==
                    SaddlePointSolver::Type::cg_amg_constraints,
                  "d) 'CG-AMG constraints' parsed case-insensitively");
+
+  // e) ContactConstraints::condense() (row by row) against deal.II's
+  //    condensation of K by the same lines (pattern from the condensed
+  //    DynamicSparsityPattern, AffineConstraints::condense()), entry by
+  //    entry to 1e-14 of the largest: the system of a) (rows sharing u0,
+  //    an inactive row), b) (a dependent row) and of the tied row's
+  //    symmetric part (the lines of its constraint rows)
+  for (const auto *sys : {&s, &s2, &s6})
+    {
+      const std::string  what = (sys == &s ? "e) a)" : sys == &s2 ? "e) b)" : "e) tied row, symmetric part");
+      ContactConstraints cc;
+      cc.reinit(sys->A, n, sys->b, 1.);
+      dealii::SparsityPattern      sp;
+      dealii::SparseMatrix<double> K;
+      dealii::Vector<double>       f;
+      cc.condense(sys->A, sys->b, sp, K, f, true);
+
+      const auto                    &lines = cc.get_constraints();
+      dealii::DynamicSparsityPattern dsp(n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (auto it = sys->A.begin(i); it != sys->A.end(i); ++it)
+          if (it->column() < n)
+            dsp.add(i, it->column());
+      lines.condense(dsp);
+      dealii::SparsityPattern sp_ref;
+      sp_ref.copy_from(dsp);
+      dealii::SparseMatrix<double> K_ref(sp_ref);
+      dealii::Vector<double>       f_ref(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          f_ref[i] = sys->b[i];
+          for (auto it = sys->A.begin(i); it != sys->A.end(i); ++it)
+            if (it->column() < n)
+              K_ref.set(i, it->column(), it->value());
+        }
+      lines.condense(K_ref, f_ref);
+      double dk = 0, k = 0, df = 0, fm = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              dk = std::max(dk, std::abs(K.el(i, j) - K_ref.el(i, j)));
+              k  = std::max(k, std::abs(K_ref.el(i, j)));
+            }
+          df = std::max(df, std::abs(f[i] - f_ref[i]));
+          fm = std::max(fm, std::abs(f_ref[i]));
+        }
+      testing::check(lines.n_constraints() >= 2, what + ": at least two slave lines");
+      testing::check_small(dk / k, 1e-14, what + ": condensed K against deal.II's condensation");
+      testing::check_small(df / fm, 1e-14, what + ": condensed f against deal.II's condensation");
+    }
   return testing::finish();
 }
