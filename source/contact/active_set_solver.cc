@@ -69,7 +69,7 @@ namespace dealvem
         , rows(std::move(rows))
       {
         for (const unsigned int r : this->rows)
-          for (auto it = matrix.begin(r); it != matrix.end(r); ++it)
+          for (auto it = matrix.begin(r), it_end = matrix.end(r); it != it_end; ++it)
             values.push_back(it->value());
 #ifdef DEBUG
         hash = value_hash();
@@ -81,7 +81,7 @@ namespace dealvem
       {
         std::size_t k = 0;
         for (const unsigned int r : rows)
-          for (auto it = matrix.begin(r); it != matrix.end(r); ++it)
+          for (auto it = matrix.begin(r), it_end = matrix.end(r); it != it_end; ++it)
             it->value() = values[k++];
 #ifdef DEBUG
         Assert(value_hash() == hash,
@@ -97,7 +97,7 @@ namespace dealvem
       value_hash() const
       {
         std::uint64_t h = 1469598103934665603ull;
-        for (auto it = matrix.begin(); it != matrix.end(); ++it)
+        for (auto it = matrix.begin(), it_end = matrix.end(); it != it_end; ++it)
           {
             std::uint64_t bits;
             const double  v = it->value();

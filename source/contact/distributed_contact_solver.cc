@@ -255,7 +255,7 @@ namespace dealvem
         {
           unsigned int owner = dealii::numbers::invalid_unsigned_int;
           bool         cut   = false;
-          for (auto it = A.begin(n + r); it != A.end(n + r); ++it)
+          for (auto it = A.begin(n + r), it_end = A.end(n + r); it != it_end; ++it)
             if (it->column() < n && it->value() != 0.)
               {
                 const unsigned int o = partition.node_owner(it->column() / 2);
@@ -299,7 +299,7 @@ namespace dealvem
           std::vector<dealii::types::global_dof_index> dofs{i};
           std::vector<double>                          values{0.};
           double                                       rhs = b[i];
-          for (auto it = A.begin(i); it != A.end(i); ++it)
+          for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
             {
               const auto j = it->column();
               if (it->value() == 0.)
@@ -381,7 +381,7 @@ namespace dealvem
         {
           const auto s = differences[k].first;
           if (owned.is_element(s))
-            for (auto it = A.begin(s); it != A.end(s); ++it)
+            for (auto it = A.begin(s), it_end = A.end(s); it != it_end; ++it)
               if (it->column() < n)
                 columns[s].insert(it->column());
           for (const auto j : columns[s])
@@ -471,7 +471,7 @@ namespace dealvem
           if (owned.is_element(s))
             {
               rs += b[s];
-              for (auto it = A.begin(s); it != A.end(s); ++it)
+              for (auto it = A.begin(s), it_end = A.end(s); it != it_end; ++it)
                 {
                   const auto j = it->column();
                   if (j >= n)

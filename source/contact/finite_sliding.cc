@@ -84,7 +84,7 @@ namespace dealvem
         for (unsigned int e = 0; e < original.n_edges(); ++e)
           if (original.edge(e).at_boundary() && d.candidate_ids.count(original.edge(e).boundary_id) > 0)
             bodies.insert(original.cell(original.edge(e).cells[0]).material_id);
-        for (auto a = bodies.begin(); a != bodies.end(); ++a)
+        for (auto a = bodies.begin(), a_end = bodies.end(); a != a_end; ++a)
           for (auto b = std::next(a); b != bodies.end(); ++b)
             reported.push_back({true, 0, 0, *a, *b});
         AssertThrow(original.n_edges() == 0 || ContactDetection::first_free_id(original) < 65535,

@@ -260,7 +260,7 @@ namespace dealvem
         if (constraints.is_constrained(i))
           continue;
         double ku = 0;
-        for (auto it = system_matrix.begin(i); it != system_matrix.end(i); ++it)
+        for (auto it = system_matrix.begin(i), it_end = system_matrix.end(i); it != it_end; ++it)
           if (it->column() < n && !constraints.is_constrained(it->column()))
             ku += it->value() * y[it->column()];
         e += 0.5 * y[i] * ku - system_rhs[i] * y[i];

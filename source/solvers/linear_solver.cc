@@ -119,7 +119,7 @@ namespace dealvem
         for (unsigned int i = 0; i < A.m(); ++i)
           {
             double s = b[i], size = std::abs(b[i]);
-            for (auto it = A.begin(i); it != A.end(i); ++it)
+            for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
               {
                 const double t = it->value() * x[it->column()];
                 s -= t;
@@ -214,7 +214,7 @@ namespace dealvem
       for (unsigned int i = 0; i < A.m(); ++i)
         {
           double row = 0;
-          for (auto it = A.begin(i); it != A.end(i); ++it)
+          for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
             row += std::abs(it->value());
           a_norm = std::max(a_norm, row);
         }
@@ -269,7 +269,7 @@ namespace dealvem
         {
           unsigned int n_nonzero = 0, column = 0;
           double       value     = 0;
-          for (auto it = P.begin(i); it != P.end(i); ++it)
+          for (auto it = P.begin(i), it_end = P.end(i); it != it_end; ++it)
             if (it->value() != 0.)
               {
                 ++n_nonzero;
@@ -329,7 +329,7 @@ namespace dealvem
               action(copy_of[i], 1.);
             return;
           }
-        for (auto it = P.begin(i); it != P.end(i); ++it)
+        for (auto it = P.begin(i), it_end = P.end(i); it != it_end; ++it)
           {
             const unsigned int c = it->column();
             if (it->value() == 0. || state[c] == decoupled_dof)
@@ -370,7 +370,7 @@ namespace dealvem
         {
           row_columns.clear();
           row_values.clear();
-          for (auto it = A.begin(i); it != A.end(i); ++it)
+          for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
             {
               row_columns.push_back(static_cast<int>(it->column()));
               row_values.push_back(std::abs(it->value()) > drop_tolerance ? it->value() : 0.);
@@ -419,7 +419,7 @@ namespace dealvem
       // DoFs whose rows carry no coupling: constrained and condensed.
       std::vector<bool> decoupled(A.m(), true);
       for (unsigned int i = 0; i < A.m(); ++i)
-        for (auto it = A.begin(i); it != A.end(i); ++it)
+        for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
           if (it->column() != i && it->value() != 0.)
             {
               decoupled[i] = false;

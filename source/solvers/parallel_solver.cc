@@ -112,7 +112,7 @@ namespace dealvem
         {
           unsigned int n_entries = 0, column = 0;
           double       value     = 0;
-          for (auto it = P.begin(i); it != P.end(i); ++it)
+          for (auto it = P.begin(i), it_end = P.end(i); it != it_end; ++it)
             if (it->value() != 0.)
               {
                 ++n_entries;
@@ -129,11 +129,11 @@ namespace dealvem
 
       dealii::DynamicSparsityPattern dsp(P.m(), P.n(), owned);
       for (const auto i : owned)
-        for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+        for (auto it = Pc.begin(i), it_end = Pc.end(i); it != it_end; ++it)
           dsp.add(i, it->column());
       Pt.reinit(owned, owned_coarse, dsp, comm);
       for (const auto i : owned)
-        for (auto it = Pc.begin(i); it != Pc.end(i); ++it)
+        for (auto it = Pc.begin(i), it_end = Pc.end(i); it != it_end; ++it)
           Pt.set(i, it->column(), it->value());
       Pt.compress(dealii::VectorOperation::insert);
 

@@ -199,12 +199,12 @@ namespace dealvem
       dealii::BlockDynamicSparsityPattern dsp(std::vector<dealii::types::global_dof_index>{n, m},
                                               std::vector<dealii::types::global_dof_index>{n, m});
       for (unsigned int i = 0; i < A.m(); ++i)
-        for (auto it = A.begin(i); it != A.end(i); ++it)
+        for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
           dsp.add(i, it->column());
       pattern.copy_from(dsp);
       blocks.reinit(pattern);
       for (unsigned int i = 0; i < A.m(); ++i)
-        for (auto it = A.begin(i); it != A.end(i); ++it)
+        for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
           blocks.set(i, it->column(), it->value());
     }
 
@@ -221,7 +221,7 @@ namespace dealvem
       dealii::DynamicSparsityPattern dsp(first.m(), first.n());
       for (const auto *M : {&first, &second})
         for (unsigned int i = 0; i < M->m(); ++i)
-          for (auto it = M->begin(i); it != M->end(i); ++it)
+          for (auto it = M->begin(i), it_end = M->end(i); it != it_end; ++it)
             dsp.add(i, it->column());
       for (unsigned int i = 0; i < first.m(); ++i)
         dsp.add(i, i);
@@ -229,9 +229,9 @@ namespace dealvem
       C.reinit(pattern);
       for (unsigned int i = 0; i < first.m(); ++i)
         {
-          for (auto it = first.begin(i); it != first.end(i); ++it)
+          for (auto it = first.begin(i), it_end = first.end(i); it != it_end; ++it)
             C.add(i, it->column(), it->value());
-          for (auto it = second.begin(i); it != second.end(i); ++it)
+          for (auto it = second.begin(i), it_end = second.end(i); it != it_end; ++it)
             C.add(i, it->column(), factor * it->value());
         }
     }
@@ -375,7 +375,7 @@ namespace dealvem
       for (const auto &line : Z.get_lines())
         {
           masters(line.index, ms);
-          for (auto it = sp.begin(line.index); it != sp.end(line.index); ++it)
+          for (auto it = sp.begin(line.index), it_end = sp.end(line.index); it != it_end; ++it)
             {
               masters(it->column(), cs);
               for (const auto m : ms)
@@ -392,7 +392,7 @@ namespace dealvem
           auto &x = extra[i];
           if (!x.empty())
             {
-              for (auto it = sp.begin(i); it != sp.end(i); ++it)
+              for (auto it = sp.begin(i), it_end = sp.end(i); it != it_end; ++it)
                 x.push_back(it->column());
               std::sort(x.begin(), x.end());
               x.erase(std::unique(x.begin(), x.end()), x.end());
@@ -410,7 +410,7 @@ namespace dealvem
           else
             {
               columns.clear();
-              for (auto it = sp.begin(i); it != sp.end(i); ++it)
+              for (auto it = sp.begin(i), it_end = sp.end(i); it != it_end; ++it)
                 columns.push_back(it->column());
               std::sort(columns.begin(), columns.end());
               pattern.add_entries(i, columns.begin(), columns.end(), true);
@@ -423,7 +423,7 @@ namespace dealvem
       for (unsigned int i = 0; i < n; ++i)
         {
           auto at = A.begin(i);
-          for (auto it = K.begin(i); it != K.end(i); ++it)
+          for (auto it = K.begin(i), it_end = K.end(i); it != it_end; ++it)
             {
               while (at->column() != it->column())
                 ++at;
@@ -625,7 +625,7 @@ namespace dealvem
                   in[i] = true;
                 const std::size_t n_changed = changed.size();
                 for (std::size_t k = 0; k < n_changed; ++k)
-                  for (auto it = sp.begin(changed[k]); it != sp.end(changed[k]); ++it)
+                  for (auto it = sp.begin(changed[k]), it_end = sp.end(changed[k]); it != it_end; ++it)
                     if (!in[it->column()])
                       {
                         in[it->column()] = true;
@@ -720,7 +720,7 @@ namespace dealvem
         cholesky.solve(correction, restricted);
         residual = src;
         for (std::size_t k = 0; k < m; ++k)
-          for (auto it = K.begin(changed[k]); it != K.end(changed[k]); ++it)
+          for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
             residual[it->column()] -= it->value() * correction[k];
         // one AMG cycle on it
         apply_cycle(dst, residual);
@@ -730,7 +730,7 @@ namespace dealvem
         for (std::size_t k = 0; k < m; ++k)
           {
             double r = src[changed[k]];
-            for (auto it = K.begin(changed[k]); it != K.end(changed[k]); ++it)
+            for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
               r -= it->value() * dst[it->column()];
             restricted[k] = r;
           }
@@ -762,17 +762,17 @@ namespace dealvem
           local[changed[k]] = static_cast<int>(k);
         std::vector<unsigned int> lengths(m, 0);
         for (std::size_t k = 0; k < m; ++k)
-          for (auto it = K.begin(changed[k]); it != K.end(changed[k]); ++it)
+          for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
             lengths[k] += (local[it->column()] >= 0);
         changed_pattern.reinit(m, m, lengths);
         for (std::size_t k = 0; k < m; ++k)
-          for (auto it = K.begin(changed[k]); it != K.end(changed[k]); ++it)
+          for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
             if (local[it->column()] >= 0)
               changed_pattern.add(k, local[it->column()]);
         changed_pattern.compress();
         changed_matrix.reinit(changed_pattern);
         for (std::size_t k = 0; k < m; ++k)
-          for (auto it = K.begin(changed[k]); it != K.end(changed[k]); ++it)
+          for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
             if (local[it->column()] >= 0)
               changed_matrix.set(k, local[it->column()], it->value());
         return cholesky.factorize(changed_matrix);

@@ -57,7 +57,7 @@ namespace dealvem
       // entries j >= i of the row-major storage (sorted, as CHOLMOD wants)
       std::size_t nnz = 0;
       for (std::size_t i = 0; i < n; ++i)
-        for (auto it = A.begin(i); it != A.end(i); ++it)
+        for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
           nnz += (it->column() >= i);
       cholmod_sparse *M = cholmod_l_allocate_sparse(n, n, nnz, 1, 1, -1, CHOLMOD_REAL, &data->common);
       AssertThrow(M != nullptr, dealii::ExcMessage("SparseCholesky: CHOLMOD could not allocate the matrix."));
@@ -70,7 +70,7 @@ namespace dealvem
         {
           p[i] = k;
           column.clear();
-          for (auto it = A.begin(i); it != A.end(i); ++it)
+          for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
             if (it->column() >= i)
               column.emplace_back(it->column(), it->value());
           std::sort(column.begin(), column.end());
