@@ -597,8 +597,9 @@ namespace dealvem
             continuing = false;
             return Use::reused;
           }
-        continuing = false;
-        matrix     = &K;
+        continuing     = false;
+        matrix         = &K;
+        pending_matrix = nullptr;
         changed.clear();
         const auto        &sp = K.get_sparsity_pattern();
         const unsigned int n  = sp.n_rows();
@@ -606,12 +607,18 @@ namespace dealvem
           {
             const std::size_t max_changed = static_cast<std::size_t>(max_changed_fraction * n);
             bool              too_many    = false;
-            for (unsigned int i = 0; i < n && !too_many; ++i)
-              if (fingerprint(K, i) != fingerprints[i])
-                {
-                  changed.push_back(i);
-                  too_many = (changed.size() > max_changed);
-                }
+            // (all rows are fingerprinted, for build() if it follows)
+            pending.resize(n);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                pending[i] = fingerprint(K, i);
+                if (!too_many && pending[i] != fingerprints[i])
+                  {
+                    changed.push_back(i);
+                    too_many = (changed.size() > max_changed);
+                  }
+              }
+            pending_matrix = &K;
             if (changed.empty())
               return Use::reused;
             if (!too_many)
@@ -661,10 +668,17 @@ namespace dealvem
         const auto                         &sp = K.get_sparsity_pattern();
         const unsigned int                  n  = sp.n_rows();
         changed.clear();
-        // the fingerprints of the rows, for the comparison
-        fingerprints.resize(n);
-        for (unsigned int i = 0; i < n; ++i)
-          fingerprints[i] = fingerprint(K, i);
+        // the fingerprints of the rows, for the comparison (those prepare()
+        // computed for this matrix, if it did)
+        if (pending_matrix == &K && pending.size() == n)
+          fingerprints.swap(pending);
+        else
+          {
+            fingerprints.resize(n);
+            for (unsigned int i = 0; i < n; ++i)
+              fingerprints[i] = fingerprint(K, i);
+          }
+        pending_matrix = nullptr;
         if (coarse.P != nullptr)
           {
             // the p-multigrid: its cycle works on a Trilinos copy of K (as
@@ -783,6 +797,10 @@ namespace dealvem
       /// A 64-bit fingerprint of each row (length, columns and the bits of
       /// the values) of the matrix the hierarchy was built on.
       std::vector<std::uint64_t> fingerprints;
+      /// The fingerprints of the matrix of the last prepare() that
+      /// compared them (@p pending_matrix), kept for a build() on it.
+      std::vector<std::uint64_t>          pending;
+      const dealii::SparseMatrix<double> *pending_matrix = nullptr;
 
       /// The fingerprint of row @p i of @p K: columns and value bits mixed
       /// in order (splitmix64's finalizer after each).
@@ -991,7 +1009,7 @@ namespace dealvem
           if (pa.row_length(i) != pb.row_length(i))
             return false;
           auto a = A.begin(i), b = B.begin(i);
-          for (; a != A.end(i); ++a, ++b)
+          for (const auto a_end = A.end(i); a != a_end; ++a, ++b)
             if (a->column() != b->column() || a->value() != b->value())
               return false;
         }
