@@ -245,7 +245,8 @@ namespace dealvem
       if (as.n_accelerated > 0)
         out << " (" << as.n_accelerated << " step(s) corrected by the active-set acceleration)";
       if (const auto n_tied = std::count(as.tied_open.begin(), as.tied_open.end(), true); n_tied > 0)
-        out << "\n  stick held at " << n_tied << " pair(s) whose switching made the active set cycle, also "
+        out << "\n  stick held at " << n_tied
+            << " pair(s) whose switching made the active set cycle or alternate, also "
             << "where they end open (status open-tied; the convex stick model on those pairs)";
       if (!as.fast_path_failure.empty())
         {

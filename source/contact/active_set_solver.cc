@@ -149,6 +149,15 @@ namespace dealvem
       RowSnapshot                             *snapshot = nullptr;
       dealii::Vector<double>                   rhs;
 
+      // Whether the update that made @p next from @p st tied no pairs (a
+      // cycle's or an alternating pair's tie changes the model: decided on
+      // the completed solve only).
+      static bool
+      same_model(const typename ActiveSetUpdate<dim>::State &next, const typename ActiveSetUpdate<dim>::State &st)
+      {
+        return next.n_tie_rounds == st.n_tie_rounds && next.n_tied_alternating == st.n_tied_alternating;
+      }
+
       // Solve and update the state @p st by @p rule until the rule stops;
       // @p name and the iteration number are the solver's context.
       void
@@ -206,9 +215,8 @@ namespace dealvem
                     result.linear_iterations += solver.last_iterations();
                     auto       again       = st;
                     const bool stops_again = propose(again);
-                    const bool same        = !stops && !stops_again && trial.n_tie_rounds == st.n_tie_rounds &&
-                                      again.n_tie_rounds == st.n_tie_rounds && again.active == trial.active &&
-                                      again.tied_open == trial.tied_open;
+                    const bool same        = !stops && !stops_again && same_model(trial, st) && same_model(again, st) &&
+                                      again.active == trial.active;
                     trial = std::move(again);
                     stops = stops_again;
                     if (same)
@@ -216,7 +224,7 @@ namespace dealvem
                   }
                 // (tying pairs after a cycle changes the model: decided on
                 // the completed solve too)
-                if (!stops && trial.n_tie_rounds == st.n_tie_rounds)
+                if (!stops && same_model(trial, st))
                   {
                     st = std::move(trial);
                     continue;

@@ -354,6 +354,51 @@ namespace dealvem
                       "apart for the load to close the gap; hold the body by Dirichlet, roller or point "
                       "constraints, or check the sign of the loads.");
       }
+    // with stick, a pair that the plain updates switched max_alternations
+    // - 1 times in a row (at most switch_window updates apart) and that
+    // would switch again is tied (held tangentially from now on, open or
+    // closed) and keeps its state for the next solve, as the pairs of a
+    // cycle below; the other pairs take their step
+    if (ties_on_cycle)
+      {
+        if (state.alternations.size() != n_pairs)
+          state.alternations.assign(n_pairs, 0);
+        if (state.tied_open.size() != n_pairs)
+          state.tied_open.assign(n_pairs, false);
+        if (state.last_switch.size() != n_pairs)
+          state.last_switch.assign(n_pairs, 0);
+        bool tied_now = false;
+        for (unsigned int i = 0; i < n_pairs; ++i)
+          {
+            if (next[i] == state.active[i] || proposed[i] == state.active[i])
+              {
+                // (kept, or switched by the acceleration only)
+                if (it > state.last_switch[i] + switch_window)
+                  state.alternations[i] = 0;
+                continue;
+              }
+            if (state.alternations[i] + 1u >= max_alternations && !state.tied_open[i])
+              {
+                state.tied_open[i]    = true;
+                state.alternations[i] = 0;
+                next[i]               = state.active[i];
+                ++state.n_tied_alternating;
+                tied_now = true;
+                continue;
+              }
+            state.alternations[i] = (it <= state.last_switch[i] + switch_window)
+                                      ? std::min<unsigned int>(state.alternations[i] + 1u, 255u)
+                                      : 1;
+            state.last_switch[i]  = it;
+          }
+        if (tied_now)
+          {
+            // (the model changed: the sets seen before say nothing of it)
+            state.visited.clear();
+            if (next == state.active)
+              return go_on();
+          }
+      }
     if (plain && state.visited.count(next) > 0 && ties_on_cycle && state.n_tie_rounds < max_tie_rounds)
       {
         // the stick model cycles: tie the pairs this step switches (see

@@ -15,6 +15,9 @@
 // - A -> B -> A throws "cycles" naming both switching pairs (index and
 //   location); A -> B -> C with a limit of 2 iterations throws
 //   "did not settle within 2"; tied contact converges in one update;
+// - with stick, A -> B -> A ties the switching pairs; a pair that switches
+//   three times in a row and would switch again is tied on its own while
+//   the whole set never repeats (frictionless: it switches);
 // - the first correction of the acceleration: a step that would more than
 //   double the set adds only the pairs penetrating by more than half the
 //   deepest;
@@ -150,6 +153,57 @@ namespace
       }
   }
 
+  // With stick, a pair that the plain updates switch three times in a row
+  // and that would switch a fourth time is tied on its own (State::
+  // alternations), even though the whole set never repeats (other pairs
+  // close one per iteration); frictionless, the same solutions only switch.
+  void
+  test_stick_alternation_ties()
+  {
+    for (const auto t : {ContactSettings::Tangential::multipliers, ContactSettings::Tangential::penalty,
+                         ContactSettings::Tangential::frictionless})
+      {
+        ContactSettings settings;
+        settings.accelerate_active_set = false;
+        settings.tangential            = t;
+        const auto               pairs = make_pairs({0, 0.1, 0.1, 0.1, 0.1}, {1, 1, 1, 1, 1});
+        const ActiveSetUpdate<2> update(pairs, settings, 1.);
+        auto                     state = update.initial_state();
+        // pair 0 in tension when closed and penetrating when open; pair k
+        // penetrates in iteration k and is compressed after
+        for (unsigned int k = 1; k <= 4; ++k)
+          {
+            std::vector<double> gaps(5, 0.1), multipliers(5, 0.);
+            for (unsigned int j = 1; j < k; ++j)
+              {
+                gaps[j]        = 0;
+                multipliers[j] = -1;
+              }
+            gaps[k] = -0.1;
+            if (state.active[0])
+              {
+                gaps[0]        = 0;
+                multipliers[0] = 1;
+              }
+            else
+              gaps[0] = -0.1;
+            const bool stops = update.update(state, gaps, multipliers);
+            testing::check(!stops && !state.converged && state.failure.empty(),
+                           "iteration " + std::to_string(k) + " goes on");
+          }
+        if (t == ContactSettings::Tangential::frictionless)
+          testing::check(to_string(state.active) == "11111" &&
+                           std::count(state.tied_open.begin(), state.tied_open.end(), true) == 0,
+                         "frictionless: pair 0 switches a fourth time, nothing tied (got " + to_string(state.active) +
+                           ")");
+        else
+          testing::check(to_string(state.active) == "01111" && to_string(state.tied_open) == "10000" &&
+                           state.n_tied_alternating == 1 && state.n_tie_rounds == 0,
+                         "stick: the fourth switch of pair 0 ties it and keeps it open (got " +
+                           to_string(state.active) + ", tied " + to_string(state.tied_open) + ")");
+      }
+  }
+
   void
   test_active_set_failures()
   {
@@ -280,6 +334,7 @@ main()
 {
   test_active_set_rule();
   test_stick_cycle_ties();
+  test_stick_alternation_ties();
   test_active_set_failures();
   test_acceleration();
   test_friction_rule();

@@ -124,7 +124,33 @@ namespace dealvem
       std::vector<bool> tied_open;
       /// How many times pairs were tied after a cycle.
       unsigned int n_tie_rounds = 0;
+      /// Per pair (empty until the first update with stick), how many
+      /// plain updates in a row switched it (closed, opened, closed, ...),
+      /// counting switches at most switch_window updates apart; a switch
+      /// made by the acceleration alone does not count. With stick, a pair
+      /// that would switch for the max_alternations-th time in a row is
+      /// tied like the pairs of a cycle (State::tied_open), on its own,
+      /// and keeps its state for one solve: on a large wall the pairs near
+      /// the open ends of many joints flip with the same period but in
+      /// different phases, so that the whole set does not repeat for tens
+      /// of iterations (measured on the 201-body wall of
+      /// benchmark_assembly 200 5: 33 iterations before, 13 after).
+      std::vector<unsigned char> alternations;
+      /// Per pair, the update that last switched it (0: none yet).
+      std::vector<unsigned int> last_switch;
+      /// Pairs tied by the alternation rule (see alternations).
+      unsigned int n_tied_alternating = 0;
     };
+
+    /// With stick: the switch of a pair, in a row of switches, that ties
+    /// it instead (see State::alternations): the fourth (closed, open,
+    /// closed, open, and about to close again). On the walls of
+    /// benchmark_assembly, tying at the third switch tied pairs that a
+    /// converging iteration switches three times (100 blocks: 5
+    /// iterations and 3 pairs tied, against 4 and none).
+    static constexpr unsigned int max_alternations = 4;
+    /// Switches at most this many updates apart count as in a row.
+    static constexpr unsigned int switch_window = 2;
 
     /// The cycles of the plain update that tie pairs (State::tied_open)
     /// before a cycle is a failure.

@@ -79,7 +79,8 @@ namespace dealvem
     bool convex_stick_model = false;
     /// Per pair (empty: none), whether the fast path held the pair
     /// tangentially although it is open: with stick, the pairs whose
-    /// switching made the active set cycle (ActiveSetUpdate::State::tied_open).
+    /// switching made the active set cycle or alternate
+    /// (ActiveSetUpdate::State::tied_open).
     std::vector<bool> tied_open;
 
     /// Whether pair @p i transmits a tangential force: closed, or held
