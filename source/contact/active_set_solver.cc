@@ -149,13 +149,15 @@ namespace dealvem
       RowSnapshot                             *snapshot = nullptr;
       dealii::Vector<double>                   rhs;
 
-      // Whether the update that made @p next from @p st tied no pairs (a
-      // cycle's or an alternating pair's tie changes the model: decided on
-      // the completed solve only).
+      // Whether the update that made @p next from @p st tied no pairs after
+      // a cycle (that changes the model on a repeated set: decided on the
+      // completed solve only). Pairs tied because they alternate
+      // (ActiveSetUpdate::State::alternations) are decided like the set:
+      // on a proposal that a solve continued by a decade repeats.
       static bool
       same_model(const typename ActiveSetUpdate<dim>::State &next, const typename ActiveSetUpdate<dim>::State &st)
       {
-        return next.n_tie_rounds == st.n_tie_rounds && next.n_tied_alternating == st.n_tied_alternating;
+        return next.n_tie_rounds == st.n_tie_rounds;
       }
 
       // Solve and update the state @p st by @p rule until the rule stops;
@@ -216,7 +218,7 @@ namespace dealvem
                     auto       again       = st;
                     const bool stops_again = propose(again);
                     const bool same        = !stops && !stops_again && same_model(trial, st) && same_model(again, st) &&
-                                      again.active == trial.active;
+                                      again.active == trial.active && again.tied_open == trial.tied_open;
                     trial = std::move(again);
                     stops = stops_again;
                     if (same)
