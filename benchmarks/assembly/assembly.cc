@@ -10,7 +10,7 @@
 //             alternating between two values so no two neighbours match)
 //             on a base, contact pairs found by ContactDetection, tied
 //             interfaces (normal tied, or unilateral by the active set;
-//             stick by multipliers), self weight; every block floats (held by
+//             stick by multipliers, or by penalty), self weight; every block floats (held by
 //             contact only);
 //   one body  the base and the same wall as one body of about the same
 //             number of DoFs (structured quads), the same load and support;
@@ -21,6 +21,7 @@
 // the assembly to the one body, and the peak memory (VmHWM) per run; last,
 // the unilateral assembly against the tied one (issue 39: at most 2x).
 //   benchmark_assembly [blocks=100] [cells along a block=6] [solver=CG-AMG]
+//                      [stick by=multipliers|penalty]
 #include <deal.II/base/function.h>
 #include <deal.II/base/utilities.h>
 
@@ -49,7 +50,7 @@ namespace
   };
 
   Run
-  solve(ContactProblem &problem, const std::string &solver, const bool tied)
+  solve(ContactProblem &problem, const std::string &solver, const bool tied, const bool penalty)
   {
     problem.boundary_conditions().add_dirichlet(2, {{true, true}},
                                                 std::make_shared<dealii::Functions::ZeroFunction<2>>(2));
@@ -57,7 +58,7 @@ namespace
       std::make_shared<dealii::Functions::ConstantFunction<2>>(std::vector<double>{0., -1.}));
     auto &o              = problem.options();
     o.degree             = 2;
-    o.contact.tangential = ContactSettings::Tangential::multipliers;
+    o.contact.tangential = penalty ? ContactSettings::Tangential::penalty : ContactSettings::Tangential::multipliers;
     o.contact.normal     = tied ? ContactSettings::Normal::tied : ContactSettings::Normal::unilateral;
     o.solver             = solver;
     o.solver_tolerance   = 1e-10;
@@ -109,6 +110,12 @@ main(int argc, char **argv)
   const unsigned int blocks = (argc > 1 ? std::stoul(argv[1]) : 100);
   const unsigned int n      = (argc > 2 ? std::stoul(argv[2]) : 6);
   const std::string  solver = (argc > 3 ? argv[3] : "CG-AMG");
+  const std::string                        stick  = (argc > 4 ? argv[4] : "multipliers");
+  AssertThrow(stick == "multipliers" || stick == "penalty",
+              dealii::ExcMessage("benchmark_assembly: the fourth argument (stick by) is 'multipliers' or 'penalty', "
+                                 "not '" +
+                                 stick + "'."));
+  const bool         penalty    = (stick == "penalty");
   const unsigned int per_course = 10;
   double             height     = 0;
 
@@ -125,7 +132,7 @@ main(int argc, char **argv)
 
   std::cout << "Assembly of " << blocks << " blocks (" << n << " or " << n + 1
             << " quads along a block) on a base against one body of the same DoFs; k = 2, solver " << solver
-            << ", one process" << std::endl;
+            << ", stick by " << stick << ", one process" << std::endl;
   // a warm-up solve of the tied assembly, not reported: the first solve
   // of a process pays for the first touch of its memory and the set-up of
   // the libraries (measured: its assembly stage 0.10 s against 0.035 s
@@ -134,7 +141,7 @@ main(int argc, char **argv)
     ContactProblem problem(MPI_COMM_SELF);
     problem.add_parts(wall, ElasticMaterial(1000, 0.2));
     problem.detect_contact_pairs();
-    return solve(problem, solver, tied);
+    return solve(problem, solver, tied, penalty);
   };
   solve_wall(true);
   Run tied_assembly;
@@ -166,7 +173,7 @@ main(int argc, char **argv)
     ContactProblem problem(MPI_COMM_SELF);
     problem.add_parts(both, ElasticMaterial(1000, 0.2));
     problem.detect_contact_pairs();
-    b = solve(problem, solver, tied);
+    b = solve(problem, solver, tied, penalty);
   }
   print("one body", b);
   std::cout << "ratio assembly / one body: DoFs " << std::setprecision(3) << double(a.dofs) / b.dofs

@@ -1116,11 +1116,10 @@ namespace dealvem
         if (K.residual(r, u, f) >= f.l2_norm())
           u = 0.;
       }
-    // an inexact solve stops early (plain CG on the symmetric
-    // condensed stiffness only: complete_last_solve() goes on from
-    // there)
-    last_inexact = inexact_solves && stick_rows.empty() && !used_gmres &&
-                   settings.inexact_tolerance > settings.relative_tolerance;
+    // an inexact solve stops early (CG on the symmetric condensed
+    // stiffness, with or without stick springs: complete_last_solve()
+    // goes on from there, with the same preconditioner)
+    last_inexact = inexact_solves && !used_gmres && settings.inexact_tolerance > settings.relative_tolerance;
     const double tolerance =
       (last_inexact ? std::max(settings.inexact_tolerance, settings.inexact_start_tolerance) :
                       settings.relative_tolerance);
@@ -1136,7 +1135,11 @@ namespace dealvem
             coarse.P     = coarse_prolongation;
             coarse.modes = &coarse_modes;
           }
-        const StickPreconditioner stick(K, contact.get_constraints(), stick_rows, modes, length, coarse);
+        const auto stick_ptr =
+          std::make_shared<const StickPreconditioner>(K, contact.get_constraints(), stick_rows, modes, length, coarse);
+        const StickPreconditioner &stick = *stick_ptr;
+        if (last_inexact)
+          inexact_stick = stick_ptr;
         used_stick_preconditioner = true;
         dealii::SolverControl control(settings.max_iterations, tolerance * f.l2_norm());
         try
@@ -1234,6 +1237,7 @@ namespace dealvem
     used_stick_preconditioner = false;
     last_inexact              = false;
     inexact_system.reset();
+    inexact_stick.reset();
     if (is_condensed(settings.type))
       solve_condensed(A, n_displacements, x, b);
     else if (settings.type != Type::gmres_amg)
@@ -1264,6 +1268,7 @@ namespace dealvem
     continue_last_solve(A, x, b, settings.relative_tolerance, "complete_last_solve");
     last_inexact = false;
     inexact_system.reset();
+    inexact_stick.reset();
   }
 
 
@@ -1303,13 +1308,35 @@ namespace dealvem
     AssertThrow(A.m() == system.size && b.size() == system.size && x.size() == system.size,
                 dealii::ExcMessage("SaddlePointSolver::" + what +
                                    "(): the system is not the one of the last solve."));
-    if (amg_cache)
+    if (amg_cache && inexact_stick == nullptr)
       amg_cache->continuing = true;
     // (a continuation is not a reuse of the hierarchy for another matrix:
     // the report does not count it)
     const unsigned int reuses = n_amg_reuses;
-    iterations                = solve_with_amg(system.K, system.K, system.u, system.f, tolerance, true,
-                                               system.contact.get_constraints());
+    if (inexact_stick != nullptr)
+      {
+        // (CG on the matrix with the stick springs, preconditioned as the
+        // inexact solve was)
+        const auto           &stick = *std::static_pointer_cast<const StickPreconditioner>(inexact_stick);
+        dealii::SolverControl control(settings.max_iterations, tolerance * system.f.l2_norm());
+        try
+          {
+            dealii::SolverCG<dealii::Vector<double>> cg(control);
+            cg.solve(system.K, system.u, system.f, stick);
+          }
+        catch (const dealii::SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false, dealii::ExcMessage("CG-AMG on the condensed contact problem (stick penalty) did not "
+                                                  "converge in " +
+                                                  what + "(): residual " + std::to_string(e.last_residual) + " after " +
+                                                  std::to_string(e.last_step) + " iterations (target " +
+                                                  std::to_string(control.tolerance()) + ")."));
+          }
+        iterations = control.last_step();
+      }
+    else
+      iterations =
+        solve_with_amg(system.K, system.K, system.u, system.f, tolerance, true, system.contact.get_constraints());
     n_amg_reuses              = reuses;
     internal::check_residual(system.K, system.u, system.f, tolerance,
                              description() + (context.empty() ? "" : ", " + context) +

@@ -214,15 +214,16 @@ namespace dealvem
           const dealii::Vector<double>       &b);
 
     /**
-     * CG-AMG on a symmetric condensed matrix without stick springs: while
+     * CG-AMG on a symmetric condensed matrix (with or without stick
+     * springs; with them, CG with the stick preconditioner): while
      * @p inexact is true, solve() stops at Settings::inexact_tolerance (when
      * that is larger than Settings::relative_tolerance) and keeps the
      * condensed system, so that complete_last_solve() can go on to the full
      * tolerance. For the iterations of a nonlinear method whose solutions
      * only choose the next iterate (an active-set iteration whose set still
      * changes, ActiveSetSolver); the solution it accepts must be completed.
-     * The other solver types, the stick-penalty and the non-symmetric
-     * solves ignore it (last_solve_inexact() is false after them).
+     * The other solver types and the non-symmetric solves ignore it
+     * (last_solve_inexact() is false after them).
      */
     void
     set_inexact(const bool inexact);
@@ -392,6 +393,10 @@ namespace dealvem
                         const std::string                  &what);
     /// The condensed system of the last solve if it was inexact.
     std::shared_ptr<internal::CondensedSystem> inexact_system;
+    /// The preconditioner of the stick springs of the last solve if it was
+    /// inexact and had stick rows (the .cc's StickPreconditioner, kept
+    /// for the continuation; null otherwise).
+    std::shared_ptr<const void> inexact_stick;
     /// See set_context().
     std::string                      context;
 
