@@ -525,6 +525,48 @@ namespace dealvem
       std::unique_ptr<internal::TwoLevelCycle<dealii::Vector<double>>> cycle;
       mutable dealii::Vector<double>            w, v;
     };
+
+    // CG (GMRES with @p gmres, when slipping pairs make the condensed
+    // matrix non-symmetric) on K u = f with the preconditioner of the stick
+    // springs, from u, down to the residual @p target; returns the
+    // iterations. @p where completes the message of a solve that does not
+    // converge.
+    unsigned int
+    solve_with_stick(const dealii::SparseMatrix<double> &K,
+                     dealii::Vector<double>             &u,
+                     const dealii::Vector<double>       &f,
+                     const StickPreconditioner          &stick,
+                     const double                        target,
+                     const unsigned int                  max_iterations,
+                     const bool                          gmres,
+                     const std::string                  &where)
+    {
+      dealii::SolverControl control(max_iterations, target);
+      try
+        {
+          if (gmres)
+            {
+              dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(200, true);
+              dealii::SolverGMRES<dealii::Vector<double>>                 solver(control, data);
+              solver.solve(K, u, f, stick);
+            }
+          else
+            {
+              dealii::SolverCG<dealii::Vector<double>> solver(control);
+              solver.solve(K, u, f, stick);
+            }
+        }
+      catch (const dealii::SolverControl::NoConvergence &e)
+        {
+          AssertThrow(false,
+                      dealii::ExcMessage(std::string(gmres ? "GMRES" : "CG") +
+                                         "-AMG on the condensed contact problem (stick penalty) did not converge" +
+                                         where + ": residual " + std::to_string(e.last_residual) + " after " +
+                                         std::to_string(e.last_step) + " iterations (target " +
+                                         std::to_string(control.tolerance()) + ")."));
+        }
+      return control.last_step();
+    }
   } // namespace
 
 
@@ -1141,32 +1183,7 @@ namespace dealvem
         if (last_inexact)
           inexact_stick = stick_ptr;
         used_stick_preconditioner = true;
-        dealii::SolverControl control(settings.max_iterations, tolerance * f.l2_norm());
-        try
-          {
-            if (used_gmres)
-              {
-                dealii::SolverGMRES<dealii::Vector<double>>::AdditionalData data(200, true);
-                dealii::SolverGMRES<dealii::Vector<double>> gmres(control, data);
-                gmres.solve(K, u, f, stick);
-              }
-            else
-              {
-                dealii::SolverCG<dealii::Vector<double>> cg(control);
-                cg.solve(K, u, f, stick);
-              }
-          }
-        catch (const dealii::SolverControl::NoConvergence &e)
-          {
-            AssertThrow(false,
-                        dealii::ExcMessage(std::string(used_gmres ? "GMRES" : "CG") +
-                                           "-AMG on the condensed contact problem (stick penalty) did not "
-                                           "converge: residual " +
-                                           std::to_string(e.last_residual) + " after " +
-                                           std::to_string(e.last_step) + " iterations (target " +
-                                           std::to_string(control.tolerance()) + ")."));
-          }
-        iterations = control.last_step();
+        iterations = solve_with_stick(K, u, f, stick, tolerance * f.l2_norm(), settings.max_iterations, used_gmres, "");
       }
     else if (used_gmres)
       {
@@ -1317,22 +1334,9 @@ namespace dealvem
       {
         // (CG on the matrix with the stick springs, preconditioned as the
         // inexact solve was)
-        const auto           &stick = *std::static_pointer_cast<const StickPreconditioner>(inexact_stick);
-        dealii::SolverControl control(settings.max_iterations, tolerance * system.f.l2_norm());
-        try
-          {
-            dealii::SolverCG<dealii::Vector<double>> cg(control);
-            cg.solve(system.K, system.u, system.f, stick);
-          }
-        catch (const dealii::SolverControl::NoConvergence &e)
-          {
-            AssertThrow(false, dealii::ExcMessage("CG-AMG on the condensed contact problem (stick penalty) did not "
-                                                  "converge in " +
-                                                  what + "(): residual " + std::to_string(e.last_residual) + " after " +
-                                                  std::to_string(e.last_step) + " iterations (target " +
-                                                  std::to_string(control.tolerance()) + ")."));
-          }
-        iterations = control.last_step();
+        const auto &stick = *std::static_pointer_cast<const StickPreconditioner>(inexact_stick);
+        iterations        = solve_with_stick(system.K, system.u, system.f, stick, tolerance * system.f.l2_norm(),
+                                             settings.max_iterations, false, " in " + what + "()");
       }
     else
       iterations =
