@@ -414,8 +414,6 @@ namespace dealvem
                           const LinearSolver::Settings                 &settings,
                           dealii::TrilinosWrappers::SparseMatrix       &Pt)
     {
-      AssertThrow(P.m() == A.m(), dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
-                                                     " rows but the matrix " + std::to_string(A.m()) + "."));
       // DoFs whose rows carry no coupling: constrained and condensed.
       std::vector<bool> decoupled(A.m(), true);
       for (unsigned int i = 0; i < A.m(); ++i)
@@ -425,6 +423,23 @@ namespace dealvem
               decoupled[i] = false;
               break;
             }
+      return make_serial_two_level(decoupled, At, P, coarse_modes, lines, settings, Pt);
+    }
+
+
+
+    std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>>
+    make_serial_two_level(const std::vector<bool>                      &decoupled,
+                          const dealii::TrilinosWrappers::SparseMatrix &At,
+                          const dealii::SparseMatrix<double>           &P,
+                          const std::vector<std::vector<double>>       &coarse_modes,
+                          const dealii::AffineConstraints<double>      *lines,
+                          const LinearSolver::Settings                 &settings,
+                          dealii::TrilinosWrappers::SparseMatrix       &Pt)
+    {
+      AssertThrow(P.m() == decoupled.size(),
+                  dealii::ExcMessage("p-multigrid: the prolongation has " + std::to_string(P.m()) +
+                                     " rows but the matrix " + std::to_string(decoupled.size()) + "."));
       dealii::SparsityPattern      sparsity;
       dealii::SparseMatrix<double> Pc;
       restrict_prolongation(P, decoupled, lines, sparsity, Pc);

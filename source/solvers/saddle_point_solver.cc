@@ -27,6 +27,8 @@
 #include "two_level_cycle.h"
 
 #include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
+#include <Epetra_MpiComm.h>
 #include <Teuchos_ParameterList.hpp>
 #include <ml_MultiLevelPreconditioner.h>
 
@@ -346,90 +348,140 @@ namespace dealvem
 
   namespace
   {
-    // K (symmetric) copied into @p A on its own pattern plus the fill-in
-    // of condensing it by the closed lines @p Z: for a slave s and a DoF c
-    // coupled to it (c's masters if c is a slave too), the masters of s
-    // couple to c and c to them.
-    void
-    copy_with_fill_in(const dealii::SparseMatrix<double>      &K,
-                      const dealii::AffineConstraints<double> &Z,
-                      dealii::SparsityPattern                 &pattern,
-                      dealii::SparseMatrix<double>            &A)
+    /**
+     * Z^T K Z for the closed homogeneous lines @p Z, written straight into
+     * an Epetra matrix on one process (the fast path of epetra_copy(): rows
+     * in ascending column order, entries of magnitude at most
+     * @p drop_tolerance kept as zeros), as AffineConstraints::condense()
+     * would leave it: a slave's row and column are zero but for the
+     * diagonal, which gets the mean magnitude of K's diagonal; a slave's
+     * couplings go to its masters with the line's weights. Only the rows of
+     * slaves, of their masters and of the DoFs coupled to a slave differ
+     * from K's; the others are copied as they are, so that no condensed
+     * deal.II matrix of the full size is made on the way (at 1e6 DoFs its
+     * fresh memory alone cost about as much as the p-multigrid's set-up).
+     * @p decoupled flags the rows without an off-diagonal nonzero.
+     */
+    std::unique_ptr<Epetra_CrsMatrix>
+    epetra_tied_copy(const dealii::SparseMatrix<double>      &K,
+                     const dealii::AffineConstraints<double> &Z,
+                     const double                             drop_tolerance,
+                     std::vector<bool>                       &decoupled)
     {
-      const unsigned int                     n = K.m();
-      const dealii::SparsityPattern         &sp = K.get_sparsity_pattern();
-      std::vector<std::vector<unsigned int>> extra(n);
-      const auto masters = [&](const unsigned int i, std::vector<unsigned int> &out) {
-        out.clear();
-        if (const auto *entries = Z.get_constraint_entries(i))
-          for (const auto &e : *entries)
-            {
-              AssertThrow(!Z.is_constrained(e.first),
-                          dealii::ExcMessage("StickPreconditioner: the tie lines are not closed."));
-              out.push_back(e.first);
-            }
-        else
-          out.push_back(i);
-      };
-      std::vector<unsigned int> ms, cs;
-      for (const auto &line : Z.get_lines())
+      const unsigned int             n     = K.m();
+      const dealii::SparsityPattern &sp    = K.get_sparsity_pattern();
+      constexpr unsigned int         none  = dealii::numbers::invalid_unsigned_int;
+      const auto                    &lines = Z.get_lines();
+      std::vector<unsigned int>      line_of(n, none);
+      for (unsigned int l = 0; l < lines.size(); ++l)
+        line_of[lines[l].index] = l;
+      // the slaves of each master, with the weights
+      std::map<unsigned int, std::vector<std::pair<unsigned int, double>>> slaves_of;
+      for (const auto &line : lines)
+        for (const auto &e : line.entries)
+          {
+            AssertThrow(line_of[e.first] == none,
+                        dealii::ExcMessage("StickPreconditioner: the tie lines are not closed (DoF " +
+                                           std::to_string(e.first) + " is a master and a slave)."));
+            slaves_of[e.first].emplace_back(line.index, e.second);
+          }
+      double mean_diagonal = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        mean_diagonal += std::abs(K.diag_element(i));
+      mean_diagonal /= std::max(n, 1u);
+
+      // the rows that change: computed once, kept until they are inserted
+      std::map<unsigned int, std::vector<std::pair<int, double>>> changed;
+      std::vector<std::pair<int, double>>                         entries;
+      std::vector<int>                                            lengths(n);
+      for (unsigned int i = 0; i < n; ++i)
         {
-          masters(line.index, ms);
-          for (auto it = sp.begin(line.index), it_end = sp.end(line.index); it != it_end; ++it)
-            {
-              masters(it->column(), cs);
-              for (const auto m : ms)
-                for (const auto c : cs)
+          lengths[i] = static_cast<int>(sp.row_length(i));
+          if (line_of[i] != none)
+            continue;
+          const auto master    = slaves_of.find(i);
+          bool       has_slave = master != slaves_of.end();
+          for (auto it = sp.begin(i), end = sp.end(i); it != end && !has_slave; ++it)
+            has_slave = line_of[it->column()] != none;
+          if (!has_slave)
+            continue;
+          entries.clear();
+          const auto add_row = [&](const unsigned int r, const double weight) {
+            for (auto it = K.begin(r), end = K.end(r); it != end; ++it)
+              {
+                const unsigned int j = it->column();
+                if (line_of[j] == none)
+                  entries.emplace_back(static_cast<int>(j), weight * it->value());
+                else
                   {
-                    extra[m].push_back(c);
-                    extra[c].push_back(m);
+                    entries.emplace_back(static_cast<int>(j), 0.);
+                    for (const auto &e : lines[line_of[j]].entries)
+                      entries.emplace_back(static_cast<int>(e.first), weight * it->value() * e.second);
                   }
-            }
+              }
+          };
+          add_row(i, 1.);
+          if (master != slaves_of.end())
+            for (const auto &s : master->second)
+              add_row(s.first, s.second);
+          std::sort(entries.begin(), entries.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
+          auto &row = changed[i];
+          for (const auto &e : entries)
+            if (!row.empty() && row.back().first == e.first)
+              row.back().second += e.second;
+            else
+              row.push_back(e);
+          lengths[i] = static_cast<int>(row.size());
         }
-      std::vector<unsigned int> lengths(n);
+
+      const Epetra_MpiComm comm(MPI_COMM_SELF);
+      const Epetra_Map     map(static_cast<int>(n), 0, comm);
+      auto                 copy = std::make_unique<Epetra_CrsMatrix>(Copy, map, map, lengths.data(), true);
+      decoupled.assign(n, true);
+      std::vector<int>    columns;
+      std::vector<double> values;
+      auto                next_changed = changed.begin();
       for (unsigned int i = 0; i < n; ++i)
         {
-          auto &x = extra[i];
-          if (!x.empty())
+          columns.clear();
+          values.clear();
+          if (next_changed != changed.end() && next_changed->first == i)
             {
-              for (auto it = sp.begin(i), it_end = sp.end(i); it != it_end; ++it)
-                x.push_back(it->column());
-              std::sort(x.begin(), x.end());
-              x.erase(std::unique(x.begin(), x.end()), x.end());
-              lengths[i] = x.size();
+              for (const auto &e : next_changed->second)
+                {
+                  columns.push_back(e.first);
+                  values.push_back(e.second);
+                }
+              ++next_changed;
             }
           else
-            lengths[i] = sp.row_length(i);
-        }
-      pattern.reinit(n, n, lengths);
-      std::vector<unsigned int> columns;
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          if (!extra[i].empty())
-            pattern.add_entries(i, extra[i].begin(), extra[i].end(), true);
-          else
             {
-              columns.clear();
-              for (auto it = sp.begin(i), it_end = sp.end(i); it != it_end; ++it)
-                columns.push_back(it->column());
-              std::sort(columns.begin(), columns.end());
-              pattern.add_entries(i, columns.begin(), columns.end(), true);
+              const bool slave = line_of[i] != none;
+              for (auto it = K.begin(i), end = K.end(i); it != end; ++it)
+                {
+                  columns.push_back(static_cast<int>(it->column()));
+                  values.push_back(!slave ? it->value() : (it->column() == i ? mean_diagonal : 0.));
+                }
+              // deal.II lists the diagonal first, then ascending columns
+              for (std::size_t d = 0; d + 1 < columns.size() && columns[d + 1] < columns[d]; ++d)
+                {
+                  std::swap(columns[d], columns[d + 1]);
+                  std::swap(values[d], values[d + 1]);
+                }
             }
-        }
-      pattern.compress();
-      A.reinit(pattern);
-      // both rows list the diagonal first, then ascending columns, and
-      // the new row contains the old one
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          auto at = A.begin(i);
-          for (auto it = K.begin(i), it_end = K.end(i); it != it_end; ++it)
+          for (std::size_t k = 0; k < columns.size(); ++k)
             {
-              while (at->column() != it->column())
-                ++at;
-              at->value() = it->value();
+              if (values[k] != 0. && columns[k] != static_cast<int>(i))
+                decoupled[i] = false;
+              if (std::abs(values[k]) <= drop_tolerance)
+                values[k] = 0.;
             }
+          const int status = copy->InsertMyValues(static_cast<int>(i), lengths[i], values.data(), columns.data());
+          AssertThrow(status == 0,
+                      dealii::ExcMessage("StickPreconditioner: Epetra refused row " + std::to_string(i) + "."));
         }
+      AssertThrow(copy->FillComplete(map, map) == 0, dealii::ExcMessage("StickPreconditioner: FillComplete() failed."));
+      return copy;
     }
 
 
@@ -456,16 +508,9 @@ namespace dealvem
         for (const auto &sl : ties.get_slaves())
           slaves.push_back(sl.second);
 
-        // Z^T K Z: the springs vanish on tied functions. Its pattern is
-        // K's with the fill-in of the few tie lines (a slave's couplings
-        // go to its masters), its values K's copied row by row before
-        // deal.II condenses them (at 1e6 DoFs a DynamicSparsityPattern of
-        // all rows, its condensation and an add() per entry took about
-        // as long as the p-multigrid's set-up)
-        dealii::SparseMatrix<double> tied;
-        copy_with_fill_in(K, Z, tied_pattern, tied);
-        Z.condense(tied);
-        internal::copy_to_trilinos(tied, tied_trilinos);
+        // Z^T K Z: the springs vanish on tied functions
+        std::vector<bool> decoupled;
+        tied_trilinos.reinit(*epetra_tied_copy(K, Z, 1e-13, decoupled));
         if (coarse.P != nullptr)
           {
             // the p-multigrid on Z^T K Z, its coarse level tied as K's
@@ -481,7 +526,8 @@ namespace dealvem
                   }
             all_lines.close();
             coarse.lines = &all_lines;
-            cycle        = internal::make_condensed_two_level(tied, tied_trilinos, coarse, P_trilinos);
+            cycle = internal::make_serial_two_level(decoupled, tied_trilinos, *coarse.P, *coarse.modes, &all_lines,
+                                                    LinearSolver::Settings(), P_trilinos);
           }
         else
           {
@@ -517,8 +563,7 @@ namespace dealvem
     private:
       const dealii::SparseMatrix<double>       &K;
       dealii::AffineConstraints<double>         Z, all_lines;
-      std::vector<unsigned int>                 slaves;
-      dealii::SparsityPattern                   tied_pattern;
+      std::vector<unsigned int>                                        slaves;
       dealii::TrilinosWrappers::SparseMatrix    tied_trilinos, P_trilinos;
       std::vector<double>                       null_space;
       dealii::TrilinosWrappers::PreconditionAMG amg;

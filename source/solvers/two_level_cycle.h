@@ -124,6 +124,17 @@ namespace dealvem
                           const LinearSolver::Settings                 &settings,
                           dealii::TrilinosWrappers::SparseMatrix       &Pt);
 
+    /// make_serial_two_level() with the decoupled rows (those without an
+    /// off-diagonal nonzero) given instead of read from a deal.II matrix.
+    std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>>
+    make_serial_two_level(const std::vector<bool>                      &decoupled,
+                          const dealii::TrilinosWrappers::SparseMatrix &At,
+                          const dealii::SparseMatrix<double>           &P,
+                          const std::vector<std::vector<double>>       &coarse_modes,
+                          const dealii::AffineConstraints<double>      *lines,
+                          const LinearSolver::Settings                 &settings,
+                          dealii::TrilinosWrappers::SparseMatrix       &Pt);
+
     /**
      * The distributed two-level cycle on @p A: the prolongation @p P (all
      * rows, on every process) restricted to the decoupled rows of @p A with
