@@ -12,6 +12,7 @@
 //   benchmark_contact --n N --solver UMFPACK|KLU|GMRES-AMG|"CG-AMG constraints"
 //                     [--tangential penalty|multipliers] [--penalty-factor F]
 //                     [--preconditioner AMG|automatic] [--run both|contact|onebody]
+//                     [--distributed]
 //
 // prints "RESULT contact n dofs multipliers t_mesh t_insertion t_assembly
 // t_solve", "TOTAL contact n t_total cg_iterations active_set_iterations"
@@ -22,7 +23,9 @@
 // CG-AMG). Both runs use 'Solver/Preconditioner' = the --preconditioner
 // given (AMG by default: ML AMG on the whole matrix; automatic: the
 // p-multigrid for k = 2 on one body and on the condensed contact system).
-// Under mpirun both runs take the distributed path. --run contact or
+// Under mpirun both runs take the distributed path; --distributed makes
+// the contact run take it also in one process (to tell what the
+// distributed formulation costs from what the partition costs). --run contact or
 // onebody runs one of the two: a run that follows the other in the same
 // process finds the heap already faulted in (on a VM with expensive page
 // faults the second run was up to 2x faster than in a process of its own),
@@ -67,9 +70,18 @@ main(int argc, char **argv)
       std::string                              penalty_factor = "1000";
       std::string                              preconditioner = "AMG";
       std::string                              which          = "both";
-      for (int i = 1; i + 1 < argc; i += 2)
+      bool                                     distributed    = false;
+      for (int i = 1; i < argc; i += 2)
         {
           const std::string a = argv[i];
+          if (a == "--distributed")
+            {
+              distributed = true;
+              --i;
+              continue;
+            }
+          if (i + 1 == argc)
+            throw std::invalid_argument(a + ": a value is missing");
           if (a == "--n")
             n = std::stoul(argv[i + 1]);
           else if (a == "--solver")
@@ -82,6 +94,8 @@ main(int argc, char **argv)
             preconditioner = argv[i + 1];
           else if (a == "--run")
             which = argv[i + 1];
+          else
+            throw std::invalid_argument("unknown option " + a);
         }
       if (which != "both" && which != "contact" && which != "onebody")
         throw std::invalid_argument("--run " + which + ": expected both, contact or onebody");
@@ -112,7 +126,9 @@ main(int argc, char **argv)
         dealvem::ContactProblem::declare_parameters(ph);
         ph.parse_input_from_string(prm.str());
         const auto              start = std::chrono::steady_clock::now();
-        dealvem::ContactProblem problem;
+        dealvem::ContactProblem problem(MPI_COMM_WORLD, distributed
+                                                          ? dealvem::ElasticityProblem::Parallelism::distributed
+                                                          : dealvem::ElasticityProblem::Parallelism::automatic);
         problem.parse_parameters(ph);
         problem.run();
         const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -204,13 +204,42 @@ namespace dealvem
 
 
   template <int dim>
+  void
+  ElasticityAssembler<dim>::assemble(const dealii::AffineConstraints<double> &constraints,
+                                     const std::vector<unsigned int>         &cells,
+                                     dealii::TrilinosWrappers::SparseMatrix  &matrix,
+                                     dealii::TrilinosWrappers::MPI::Vector   &rhs,
+                                     const dealii::AffineConstraints<double> &second_constraints,
+                                     dealii::TrilinosWrappers::SparseMatrix  &second_matrix) const
+  {
+    const auto n = dof_handler.n_dofs();
+    AssertThrow(matrix.m() == n && rhs.size() == n && second_matrix.m() == n,
+                dealii::ExcMessage("ElasticityAssembler::assemble(): the distributed matrices have " +
+                                   std::to_string(matrix.m()) + " and " + std::to_string(second_matrix.m()) +
+                                   " rows and the vector " + std::to_string(rhs.size()) + " entries, but there are " +
+                                   std::to_string(n) + " DoFs."));
+    matrix                   = 0;
+    second_matrix            = 0;
+    rhs                      = 0;
+    const bool first_process = dealii::Utilities::MPI::this_mpi_process(rhs.get_mpi_communicator()) == 0;
+    assemble_cells(constraints, &cells, first_process, matrix, rhs, &second_constraints, &second_matrix);
+    matrix.compress(dealii::VectorOperation::add);
+    second_matrix.compress(dealii::VectorOperation::add);
+    rhs.compress(dealii::VectorOperation::add);
+  }
+
+
+
+  template <int dim>
   template <typename MatrixType, typename VectorType>
   void
   ElasticityAssembler<dim>::assemble_cells(const dealii::AffineConstraints<double> &constraints,
                                            const std::vector<unsigned int>         *cells,
                                            const bool                               with_nodal_loads,
                                            MatrixType                              &matrix,
-                                           VectorType                              &rhs) const
+                                           VectorType                              &rhs,
+                                           const dealii::AffineConstraints<double> *second_constraints,
+                                           MatrixType                              *second_matrix) const
   {
     VEMValues<dim> vem_values(dof_handler);
     vem_values.set_cell_similarity(cell_similarity);
@@ -225,6 +254,9 @@ namespace dealvem
         local_load(vem_values, F);
         constraints.distribute_local_to_global(elasticity.get_stiffness_matrix(), F,
                                                vem_values.get_dof_indices(), matrix, rhs);
+        if (second_matrix != nullptr)
+          second_constraints->distribute_local_to_global(elasticity.get_stiffness_matrix(),
+                                                         vem_values.get_dof_indices(), *second_matrix);
       }
     // nodal loads: a "cell" of their DoFs without matrix, so that loads on
     // constrained DoFs go to the DoFs they depend on

@@ -182,6 +182,24 @@ namespace dealvem
              dealii::TrilinosWrappers::MPI::Vector     &rhs) const;
 
     /**
+     * The same, and each cell's stiffness matrix also added to
+     * @p second_matrix under the constraints @p second_constraints (the
+     * matrix only, zeroed first, compressed at the end): two condensations
+     * of the same stiffness from one computation of the cell matrices. The
+     * distributed contact solve assembles its condensed stiffness and the
+     * stiffness tied by the stick springs (the preconditioner's) this way;
+     * @p second_matrix may have the sparsity pattern of @p matrix when that
+     * holds the entries of both sets of constraints.
+     */
+    void
+    assemble(const dealii::AffineConstraints<double> &constraints,
+             const std::vector<unsigned int>         &cells,
+             dealii::TrilinosWrappers::SparseMatrix  &matrix,
+             dealii::TrilinosWrappers::MPI::Vector   &rhs,
+             const dealii::AffineConstraints<double> &second_constraints,
+             dealii::TrilinosWrappers::SparseMatrix  &second_matrix) const;
+
+    /**
      * Add the unconstrained residual f_c - K_c u_c of the cells @p cells
      * (and the nodal loads if @p with_nodal_loads) to @p r (size n_dofs()).
      * Where no constraint line touches a DoF and @p u satisfies the
@@ -223,14 +241,17 @@ namespace dealvem
 
   private:
     /// The one assembly loop: the cells @p cells (all if nullptr), the
-    /// nodal loads if @p with_nodal_loads.
+    /// nodal loads if @p with_nodal_loads; each cell matrix also into
+    /// @p second_matrix under @p second_constraints when both are given.
     template <typename MatrixType, typename VectorType>
     void
     assemble_cells(const dealii::AffineConstraints<double> &constraints,
                    const std::vector<unsigned int>         *cells,
                    const bool                               with_nodal_loads,
                    MatrixType                              &matrix,
-                   VectorType                              &rhs) const;
+                   VectorType                              &rhs,
+                   const dealii::AffineConstraints<double> *second_constraints = nullptr,
+                   MatrixType                              *second_matrix      = nullptr) const;
 
     const VEMDoFHandler<dim>                               &dof_handler;
     MaterialLibrary<dim>                                    laws;
