@@ -10,7 +10,7 @@
 //                        [--precond amg|pmg] [--smoother NAME] [--sweeps n]
 //                        [--threshold t] [--uncoupled 0|1] [--elliptic 0|1]
 //                        [--rotation 0|1] [--degree d] [--range r]
-//                        [--renumber none|cm]
+//                        [--renumber none|cm] [--single-precision-smoother 0|1]
 //
 // "quads" reuses the element matrices of translated cells (the default, as
 // deal.II's FEValues does for FE_Q); "quads-full" computes every element.
@@ -18,7 +18,8 @@
 // matrix; pmg: LinearSolver's two-level p-multigrid with ML on the Galerkin
 // k = 1 level); --smoother, --sweeps, --threshold, --uncoupled, --elliptic,
 // --rotation set the ML parameters (of the whole matrix or of the coarse
-// level), --degree and --range the Chebyshev smoother of the p-multigrid;
+// level), --degree and --range the Chebyshev smoother of the p-multigrid,
+// --single-precision-smoother 0 its matrix in double precision (default 1);
 // --renumber cm renumbers the VEM system by Cuthill-McKee before the solve.
 // FE_Q(2) is always solved with the default ML settings.
 //
@@ -360,6 +361,8 @@ main(int argc, char **argv)
             options.solver.smoother_degree = std::stoul(v);
           else if (a == "--range")
             options.solver.smoothing_range = std::stod(v);
+          else if (a == "--single-precision-smoother")
+            options.solver.single_precision_smoother = (v == "1");
           else if (a == "--renumber")
             {
               AssertThrow(v == "none" || v == "cm", ExcMessage("--renumber must be none or cm"));

@@ -393,6 +393,35 @@ namespace dealvem
 
 
 
+    bool
+    single_precision_values(const dealii::TrilinosWrappers::SparseMatrix &A,
+                            const int                                   *&offsets,
+                            const int                                   *&indices,
+                            std::unique_ptr<float[]>                     &values)
+    {
+      values.reset();
+      const Epetra_CrsMatrix &E    = A.trilinos_matrix();
+      const Epetra_Map       &rows = E.RowMap(), &columns = E.ColMap();
+      const auto              identity = [](const Epetra_Map &map, const long long n) {
+        return map.LinearMap() && map.NumMyElements() == n && map.NumGlobalElements() == n && map.MinMyGID() == 0;
+      };
+      if (!identity(rows, A.m()) || !identity(columns, A.n()) || !E.StorageOptimized())
+        return false;
+      int    *offset_data = nullptr, *index_data = nullptr;
+      double *value_data = nullptr;
+      if (E.ExtractCrsDataPointers(offset_data, index_data, value_data) != 0)
+        return false;
+      offsets               = offset_data;
+      indices               = index_data;
+      const std::size_t nnz = offset_data[A.m()];
+      values.reset(new float[nnz]); // (not zeroed: every value is written)
+      for (std::size_t k = 0; k < nnz; ++k)
+        values[k] = static_cast<float>(value_data[k]);
+      return true;
+    }
+
+
+
     void
     copy_to_trilinos(const dealii::SparseMatrix<double>     &A,
                      dealii::TrilinosWrappers::SparseMatrix &At,

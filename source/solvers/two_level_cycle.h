@@ -24,6 +24,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 class Epetra_CrsMatrix;
@@ -103,6 +104,20 @@ namespace dealvem
                           const dealii::AffineConstraints<double> *lines,
                           dealii::SparsityPattern                 &sparsity,
                           dealii::SparseMatrix<double>            &Pc);
+
+    /**
+     * The values of the matrix @p A of one process in single precision, in
+     * the order of its Epetra storage, with pointers to that storage's row
+     * offsets and (local = global) column indices: a CSR matrix of 8 bytes
+     * per entry instead of 12 that shares A's indices. Returns false (and
+     * leaves @p values empty) where A's storage is not one contiguous block
+     * or its columns are not numbered as its rows (values null then).
+     */
+    bool
+    single_precision_values(const dealii::TrilinosWrappers::SparseMatrix &A,
+                            const int                                   *&offsets,
+                            const int                                   *&indices,
+                            std::unique_ptr<float[]>                     &values);
 
     template <typename VectorType>
     class TwoLevelCycle;
@@ -208,7 +223,67 @@ namespace dealvem
     {
     public:
       using Diagonal = typename SmootherDiagonal<VectorType>::type;
-      using Smoother = dealii::PreconditionChebyshev<dealii::TrilinosWrappers::SparseMatrix, VectorType, Diagonal>;
+      /// One process: the smoother reads a single-precision copy of A
+      /// (LinearSolver::Settings::single_precision_smoother) or the Trilinos
+      /// matrix, through SmoothingMatrix; several: the Trilinos matrix.
+      static constexpr bool serial = std::is_same_v<VectorType, dealii::Vector<double>>;
+
+      /// The fine-level matrix of the smoother and of the residual the
+      /// coarse level gets: A itself, or its single-precision copy.
+      class SmoothingMatrix : public dealii::Subscriptor
+      {
+      public:
+        const dealii::TrilinosWrappers::SparseMatrix *full = nullptr;
+        /// The single-precision CSR matrix (values null: not used).
+        const int               *offsets = nullptr, *indices = nullptr;
+        std::unique_ptr<float[]> values;
+
+        void
+        vmult(VectorType &dst, const VectorType &src) const
+        {
+          if constexpr (serial)
+            if (values)
+              {
+                const unsigned int m = dst.size();
+                const double      *x = src.begin();
+                double            *y = dst.begin();
+                for (unsigned int i = 0; i < m; ++i)
+                  {
+                    double sum = 0;
+                    for (int k = offsets[i], end = offsets[i + 1]; k < end; ++k)
+                      sum += values[k] * x[indices[k]];
+                    y[i] = sum;
+                  }
+                return;
+              }
+          full->vmult(dst, src);
+        }
+
+        void
+        Tvmult(VectorType &dst, const VectorType &src) const
+        {
+          vmult(dst, src); // symmetric
+        }
+
+        dealii::types::global_dof_index
+        m() const
+        {
+          return full->m();
+        }
+
+        dealii::types::global_dof_index
+        n() const
+        {
+          return full->n();
+        }
+
+        double
+        el(const dealii::types::global_dof_index i, const dealii::types::global_dof_index j) const
+        {
+          return full->el(i, j);
+        }
+      };
+      using Smoother = dealii::PreconditionChebyshev<SmoothingMatrix, VectorType, Diagonal>;
 
       TwoLevelCycle(const dealii::TrilinosWrappers::SparseMatrix &A,
                     const dealii::TrilinosWrappers::SparseMatrix &P,
@@ -247,7 +322,11 @@ namespace dealvem
             inverse_diagonal(i) = 1. / d;
           }
         inverse_diagonal.compress(dealii::VectorOperation::insert);
-        smoother.initialize(A, data);
+        smoothing_matrix.full = &A;
+        if constexpr (serial)
+          if (settings.single_precision_smoother)
+            single_precision_values(A, smoothing_matrix.offsets, smoothing_matrix.indices, smoothing_matrix.values);
+        smoother.initialize(smoothing_matrix, data);
         reinit_like(r, fine, comm);
         reinit_like(e, fine, comm);
         reinit_like(rc, coarse, comm);
@@ -258,7 +337,7 @@ namespace dealvem
       vmult(VectorType &x, const VectorType &b) const
       {
         smoother.vmult(x, b);
-        A.vmult(r, x);
+        smoothing_matrix.vmult(r, x);
         r.sadd(-1., 1., b);
         P.Tvmult(rc, r);
         coarse_amg.vmult(ec, rc);
@@ -279,6 +358,8 @@ namespace dealvem
       Teuchos::ParameterList                        list;
       std::vector<double>                           storage;
       dealii::TrilinosWrappers::PreconditionAMG     coarse_amg;
+      // (declared before the smoother, which refers to it)
+      SmoothingMatrix                               smoothing_matrix;
       Smoother                                      smoother;
       mutable VectorType                            r, e, rc, ec;
     };

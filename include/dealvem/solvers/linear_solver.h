@@ -112,6 +112,16 @@ namespace dealvem
       /// p-multigrid: the smoother damps the eigenvalues in
       /// [lambda_max / smoothing_range, lambda_max] of D^{-1} A.
       double         smoothing_range = 15.;
+      /// p-multigrid, one process: the fine level's smoother and the
+      /// residual it hands to the coarse level read a single-precision copy
+      /// of the matrix (half the bytes per value: the smoother is most of
+      /// the memory traffic of an iteration). CG itself, its residual and
+      /// the coarse level stay in double precision, so the solution reaches
+      /// the same tolerance; the preconditioner is a symmetric positive
+      /// definite operator either way. As deal.II's matrix-free multigrid
+      /// (step-37) runs its levels in float. false: double precision
+      /// throughout (the Trilinos copy).
+      bool single_precision_smoother = true;
       /// false: the matrix is not symmetric (the condensed contact problem
       /// with slipping pairs), the iterative solvers use GMRES (right
       /// preconditioned, restart 200) instead of CG. ParallelLinearSolver
