@@ -262,7 +262,19 @@ namespace dealvem
         void
         Tvmult(VectorType &dst, const VectorType &src) const
         {
-          vmult(dst, src); // symmetric
+          if constexpr (serial)
+            if (values)
+              {
+                const unsigned int m = src.size();
+                const double      *x = src.begin();
+                dst                  = 0.;
+                double *y            = dst.begin();
+                for (unsigned int i = 0; i < m; ++i)
+                  for (int k = offsets[i], end = offsets[i + 1]; k < end; ++k)
+                    y[indices[k]] += values[k] * x[i];
+                return;
+              }
+          full->Tvmult(dst, src);
         }
 
         dealii::types::global_dof_index

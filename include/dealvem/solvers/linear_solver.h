@@ -36,7 +36,8 @@ namespace dealvem
    *   V-cycle with the coarse modes as near-null space. On the fine level a
    *   Chebyshev smoother of degree Settings::smoother_degree with the
    *   diagonal (Jacobi) as inner preconditioner runs before and after the
-   *   coarse correction. Pre- and post-smoother are the same symmetric
+   *   coarse correction (on one process it reads the matrix in single
+   *   precision, Settings::single_precision_smoother). Pre- and post-smoother are the same symmetric
    *   polynomial, so the cycle is symmetric positive definite and CG
    *   applies. Rows of A without off-diagonal entries (DoFs constrained by
    *   AffineConstraints::distribute_local_to_global) are left to the
