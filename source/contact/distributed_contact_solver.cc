@@ -379,7 +379,10 @@ namespace dealvem
 
     // Step 2: the condensed stiffness and load of the owned cells, plus the
     // spring rows, in a matrix with the sparsity of both and of the
-    // Petrov-Galerkin correction (not compressed).
+    // Petrov-Galerkin correction (not compressed). With @p tied (stick by
+    // penalty), also the cells condensed by those constraints into
+    // @p K_tied, on the same pattern (which then holds the entries of both
+    // sets of constraints).
     void
     assemble_condensed(const SpringRows                        &rows,
                        const LineDifferences                   &differences,
