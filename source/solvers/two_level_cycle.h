@@ -109,9 +109,9 @@ namespace dealvem
      * The values of the matrix @p A of one process in single precision, in
      * the order of its Epetra storage, with pointers to that storage's row
      * offsets and (local = global) column indices: a CSR matrix of 8 bytes
-     * per entry instead of 12 that shares A's indices. Returns false (and
-     * leaves @p values empty) where A's storage is not one contiguous block
-     * or its columns are not numbered as its rows (values null then).
+     * per entry instead of 12 that shares A's indices. Returns false, with
+     * @p values null, where A's storage is not one contiguous block or its
+     * columns are not numbered as its rows.
      */
     bool
     single_precision_values(const dealii::TrilinosWrappers::SparseMatrix &A,
