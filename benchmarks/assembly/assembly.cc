@@ -21,8 +21,8 @@
 // the assembly to the one body, and the peak memory (VmHWM) per run; last,
 // the unilateral assembly against the tied one (issue 39: at most 2x).
 // Single runs of a fraction of a second scatter by up to 30 % on a VM, so
-// the unilateral/tied ratio is also given as the median of REPEATS more
-// alternating pairs (tied, unilateral) in the same process.
+// the unilateral/tied ratio is also given as the median of `repeats` more
+// alternating pairs (tied, unilateral) in the same process (0: none).
 //   benchmark_assembly [blocks=100] [cells along a block=6] [solver=CG-AMG]
 //                      [stick by=multipliers|penalty] [repeats=5]
 #include <deal.II/base/function.h>
@@ -92,6 +92,20 @@ namespace
     return m;
   }
 
+  // the command-line argument @p i (1-based) as a count, @p fallback if absent
+  unsigned int
+  count_argument(const int argc, char **argv, const int i, const char *name, const unsigned int fallback)
+  {
+    if (argc <= i)
+      return fallback;
+    const std::string text   = argv[i];
+    const bool        digits = !text.empty() && text.size() <= 9 &&
+                        std::all_of(text.begin(), text.end(), [](const char c) { return c >= '0' && c <= '9'; });
+    AssertThrow(digits, dealii::ExcMessage("benchmark_assembly: argument " + std::to_string(i) + " (" + name +
+                                           ") must be a non-negative whole number, not '" + text + "'."));
+    return static_cast<unsigned int>(std::stoul(text));
+  }
+
   void
   print(const std::string &name, const Run &r)
   {
@@ -108,119 +122,136 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  int
+  run_benchmark(int argc, char **argv)
+  {
+    const unsigned int blocks = count_argument(argc, argv, 1, "blocks", 100);
+    const unsigned int n      = count_argument(argc, argv, 2, "cells along a block", 6);
+    const std::string  solver = (argc > 3 ? argv[3] : "CG-AMG");
+    const std::string  stick  = (argc > 4 ? argv[4] : "multipliers");
+    AssertThrow(stick == "multipliers" || stick == "penalty",
+                dealii::ExcMessage("benchmark_assembly: the fourth argument (stick by) is 'multipliers' or 'penalty', "
+                                   "not '" +
+                                   stick + "'."));
+    const unsigned int repeats    = count_argument(argc, argv, 5, "repeats", 5);
+    const bool         penalty    = (stick == "penalty");
+    const unsigned int per_course = 10;
+    double             height     = 0;
+
+    // the assembly: the base and the blocks as a mesh of parts (material id
+    // = part), then add_parts(); courses of 10 blocks in running bond
+    PolygonalMeshGenerators::MasonryWall layout;
+    layout.blocks_per_course = per_course;
+    layout.n_blocks          = blocks;
+    layout.quads_along       = n;
+    PolygonalMesh<2> wall;
+    PolygonalMeshGenerators::masonry_wall(wall, layout);
+    for (unsigned int v = 0; v < wall.n_vertices(); ++v)
+      height = std::max(height, wall.vertex(v)[1]);
+
+    std::cout << "Assembly of " << blocks << " blocks (" << n << " or " << n + 1
+              << " quads along a block) on a base against one body of the same DoFs; k = 2, solver " << solver
+              << ", stick by " << stick << ", one process" << std::endl;
+    // a warm-up solve of the tied assembly, not reported: the first solve
+    // of a process pays for the first touch of its memory and the set-up of
+    // the libraries (measured: its assembly stage 0.10 s against 0.035 s
+    // after), which would otherwise count against the tied model only
+    const auto solve_wall = [&](const bool tied) {
+      ContactProblem problem(MPI_COMM_SELF);
+      problem.add_parts(wall, ElasticMaterial(1000, 0.2));
+      problem.detect_contact_pairs();
+      return solve(problem, solver, tied, penalty);
+    };
+    solve_wall(true);
+    Run tied_assembly;
+    for (const bool tied : {true, false})
+      {
+        std::cout << (tied ? "tied interfaces (one solve):"
+                           : "unilateral contact, stick (active set: the bodies settle, head joints open):")
+                  << std::endl;
+        std::cout << "model      bodies     DoFs    mult  itfs  its      mesh    detect    insert  assembly     solve"
+                     "    total  peak MB"
+                  << std::endl;
+        Run a = solve_wall(tied);
+        print("assembly", a);
+        // one body: the base and a wall-sized block on it (two bodies, one
+        // interface) with about the assembly's DoFs
+        Run b;
+        {
+          // k = 2 quads: about 8 DoFs per cell, so m x my cells with
+          // 8 m my = DoFs of the assembly and cells about square
+          const double       width = per_course;
+          const unsigned int m = std::max(2u, static_cast<unsigned int>(std::sqrt(a.dofs / 8. * width / height) + 0.5));
+          const unsigned int my   = std::max(1u, static_cast<unsigned int>(m * height / width + 0.5));
+          PolygonalMesh<2>   both = brick(P(-1, -1), P(per_course + 1, 0), 4 * (per_course + 2), 4);
+          PolygonalMesh<2>   body = brick(P(0, 0), P(width, height), m, my);
+          for (unsigned int cell = 0; cell < body.n_cells(); ++cell)
+            body.set_material_id(cell, 1);
+          MeshParameters::shift_boundary_ids(body, 10);
+          both.append(body);
+          ContactProblem problem(MPI_COMM_SELF);
+          problem.add_parts(both, ElasticMaterial(1000, 0.2));
+          problem.detect_contact_pairs();
+          b = solve(problem, solver, tied, penalty);
+        }
+        print("one body", b);
+        std::cout << "ratio assembly / one body: DoFs " << std::setprecision(3) << double(a.dofs) / b.dofs
+                  << ", assembly + solve "
+                  << (a.timings["assembly"] + a.timings["solve"]) / (b.timings["assembly"] + b.timings["solve"])
+                  << ", end to end " << a.seconds / b.seconds << ", peak memory " << a.memory_MB / b.memory_MB
+                  << std::endl;
+        if (tied)
+          tied_assembly = a;
+        else
+          std::cout << "ratio unilateral / tied assembly: end to end " << a.seconds / tied_assembly.seconds
+                    << ", solve " << a.timings["solve"] / tied_assembly.timings["solve"] << " (active-set iterations "
+                    << a.iterations << " / " << tied_assembly.iterations << ", linear iterations "
+                    << a.linear_iterations << " / " << tied_assembly.linear_iterations << ") [one pair]" << std::endl;
+      }
+    if (repeats > 0)
+      {
+        // alternating pairs; the medians of the end-to-end and solve times and
+        // of the pairs' ratios
+        std::vector<double> tied_total, unilateral_total, tied_solve, unilateral_solve, ratios;
+        for (unsigned int r = 0; r < repeats; ++r)
+          {
+            Run t = solve_wall(true);
+            Run u = solve_wall(false);
+            tied_total.push_back(t.seconds);
+            unilateral_total.push_back(u.seconds);
+            tied_solve.push_back(t.timings["solve"]);
+            unilateral_solve.push_back(u.timings["solve"]);
+            ratios.push_back(u.seconds / t.seconds);
+          }
+        const auto median = [](std::vector<double> v) {
+          std::sort(v.begin(), v.end());
+          return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+        };
+        std::cout << "ratio unilateral / tied assembly, medians of " << repeats << " alternating pairs: end to end "
+                  << std::setprecision(3) << median(unilateral_total) / median(tied_total) << " ("
+                  << median(unilateral_total) << " / " << median(tied_total) << " s; median of the pair ratios "
+                  << median(ratios) << ", pairs";
+        for (const double x : ratios)
+          std::cout << " " << x;
+        std::cout << "), solve " << median(unilateral_solve) / median(tied_solve) << std::endl;
+      }
+    return 0;
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int blocks = (argc > 1 ? std::stoul(argv[1]) : 100);
-  const unsigned int n      = (argc > 2 ? std::stoul(argv[2]) : 6);
-  const std::string  solver = (argc > 3 ? argv[3] : "CG-AMG");
-  const std::string                        stick  = (argc > 4 ? argv[4] : "multipliers");
-  AssertThrow(stick == "multipliers" || stick == "penalty",
-              dealii::ExcMessage("benchmark_assembly: the fourth argument (stick by) is 'multipliers' or 'penalty', "
-                                 "not '" +
-                                 stick + "'."));
-  const unsigned int repeats    = (argc > 5 ? std::stoul(argv[5]) : 5);
-  const bool         penalty    = (stick == "penalty");
-  const unsigned int per_course = 10;
-  double             height     = 0;
-
-  // the assembly: the base and the blocks as a mesh of parts (material id
-  // = part), then add_parts(); courses of 10 blocks in running bond
-  PolygonalMeshGenerators::MasonryWall layout;
-  layout.blocks_per_course = per_course;
-  layout.n_blocks          = blocks;
-  layout.quads_along       = n;
-  PolygonalMesh<2> wall;
-  PolygonalMeshGenerators::masonry_wall(wall, layout);
-  for (unsigned int v = 0; v < wall.n_vertices(); ++v)
-    height = std::max(height, wall.vertex(v)[1]);
-
-  std::cout << "Assembly of " << blocks << " blocks (" << n << " or " << n + 1
-            << " quads along a block) on a base against one body of the same DoFs; k = 2, solver " << solver
-            << ", stick by " << stick << ", one process" << std::endl;
-  // a warm-up solve of the tied assembly, not reported: the first solve
-  // of a process pays for the first touch of its memory and the set-up of
-  // the libraries (measured: its assembly stage 0.10 s against 0.035 s
-  // after), which would otherwise count against the tied model only
-  const auto solve_wall = [&](const bool tied) {
-    ContactProblem problem(MPI_COMM_SELF);
-    problem.add_parts(wall, ElasticMaterial(1000, 0.2));
-    problem.detect_contact_pairs();
-    return solve(problem, solver, tied, penalty);
-  };
-  solve_wall(true);
-  Run tied_assembly;
-  for (const bool tied : {true, false})
-  {
-  std::cout << (tied ? "tied interfaces (one solve):" :
-                       "unilateral contact, stick (active set: the bodies settle, head joints open):")
-            << std::endl;
-  std::cout << "model      bodies     DoFs    mult  itfs  its      mesh    detect    insert  assembly     solve"
-               "    total  peak MB"
-            << std::endl;
-  Run a = solve_wall(tied);
-  print("assembly", a);
-  // one body: the base and a wall-sized block on it (two bodies, one
-  // interface) with about the assembly's DoFs
-  Run b;
-  {
-    // k = 2 quads: about 8 DoFs per cell, so m x my cells with
-    // 8 m my = DoFs of the assembly and cells about square
-    const double       width = per_course;
-    const unsigned int m     = std::max(2u, static_cast<unsigned int>(std::sqrt(a.dofs / 8. * width / height) + 0.5));
-    const unsigned int my    = std::max(1u, static_cast<unsigned int>(m * height / width + 0.5));
-    PolygonalMesh<2>   both  = brick(P(-1, -1), P(per_course + 1, 0), 4 * (per_course + 2), 4);
-    PolygonalMesh<2>   body  = brick(P(0, 0), P(width, height), m, my);
-    for (unsigned int cell = 0; cell < body.n_cells(); ++cell)
-      body.set_material_id(cell, 1);
-    MeshParameters::shift_boundary_ids(body, 10);
-    both.append(body);
-    ContactProblem problem(MPI_COMM_SELF);
-    problem.add_parts(both, ElasticMaterial(1000, 0.2));
-    problem.detect_contact_pairs();
-    b = solve(problem, solver, tied, penalty);
-  }
-  print("one body", b);
-  std::cout << "ratio assembly / one body: DoFs " << std::setprecision(3) << double(a.dofs) / b.dofs
-            << ", assembly + solve " << (a.timings["assembly"] + a.timings["solve"]) /
-                                          (b.timings["assembly"] + b.timings["solve"])
-            << ", end to end " << a.seconds / b.seconds << ", peak memory " << a.memory_MB / b.memory_MB
-            << std::endl;
-  if (tied)
-    tied_assembly = a;
-  else
-    std::cout << "ratio unilateral / tied assembly: end to end " << a.seconds / tied_assembly.seconds << ", solve "
-              << a.timings["solve"] / tied_assembly.timings["solve"] << " (active-set iterations " << a.iterations
-              << " / " << tied_assembly.iterations << ", linear iterations " << a.linear_iterations << " / "
-              << tied_assembly.linear_iterations << ") [one pair]" << std::endl;
-  }
-  if (repeats > 0)
+  try
     {
-      // alternating pairs; the medians of the end-to-end and solve times and
-      // of the pairs' ratios
-      std::vector<double> tied_total, unilateral_total, tied_solve, unilateral_solve, ratios;
-      for (unsigned int r = 0; r < repeats; ++r)
-        {
-          Run t = solve_wall(true);
-          Run u = solve_wall(false);
-          tied_total.push_back(t.seconds);
-          unilateral_total.push_back(u.seconds);
-          tied_solve.push_back(t.timings["solve"]);
-          unilateral_solve.push_back(u.timings["solve"]);
-          ratios.push_back(u.seconds / t.seconds);
-        }
-      const auto median = [](std::vector<double> v) {
-        std::sort(v.begin(), v.end());
-        return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-      };
-      std::cout << "ratio unilateral / tied assembly, medians of " << repeats << " alternating pairs: end to end "
-                << std::setprecision(3) << median(unilateral_total) / median(tied_total) << " ("
-                << median(unilateral_total) << " / " << median(tied_total) << " s; median of the pair ratios "
-                << median(ratios) << ", pairs";
-      for (const double x : ratios)
-        std::cout << " " << x;
-      std::cout << "), solve " << median(unilateral_solve) / median(tied_solve) << std::endl;
+      return run_benchmark(argc, argv);
     }
-  return 0;
+  catch (const std::exception &e)
+    {
+      std::cerr << "benchmark_assembly: " << e.what() << std::endl;
+      return 1;
+    }
 }
