@@ -643,6 +643,17 @@ namespace dealvem
 
       std::vector<unsigned int> row_start(n + 1, 0), columns, diagonal_at(n, 0);
       std::vector<double>       values;
+      {
+        // (room for the gathered rows: their rows of K and a quarter more
+        // for the fill of the slave rows, so that they are seldom moved)
+        std::size_t estimate = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          if (kind[i] == gathered_row)
+            estimate += pattern.row_length(i);
+        estimate += estimate / 4;
+        columns.reserve(estimate);
+        values.reserve(estimate);
+      }
       std::vector<double>       sum(n, 0.);
       std::vector<bool>         touched(n, false);
       std::vector<unsigned int> row;
@@ -721,28 +732,59 @@ namespace dealvem
           row_start[i + 1] = columns.size();
         }
 
-      // the pattern: K's rows (diagonal first, then ascending: sorted once
-      // the diagonal is moved to its place) and the gathered rows
-      sparsity.reinit(n, n, row_length);
-      for (unsigned int i = 0; i < n; ++i)
-        if (kind[i] == gathered_row)
-          sparsity.add_entries(i, columns.begin() + row_start[i], columns.begin() + row_start[i + 1], true);
-        else
-          {
-            row.clear();
-            for (auto it = pattern.begin(i), end = pattern.end(i); it != end; ++it)
-              if (it->column() < n)
-                row.push_back(it->column());
-            std::size_t d = 0;
-            while (d + 1 < row.size() && row[d + 1] < row[d])
+      // the pattern: K's rows (diagonal first, then ascending, as A's rows
+      // list the columns below n) and the gathered rows (ascending: their
+      // diagonal goes first); written whole into a CompressedRowPattern
+      auto *const direct = (n > 0 ? dynamic_cast<CompressedRowPattern *>(&sparsity) : nullptr);
+      if (direct != nullptr)
+        {
+          std::unique_ptr<std::size_t[]> starts(new std::size_t[n + 1]);
+          starts[0] = 0;
+          for (unsigned int i = 0; i < n; ++i)
+            starts[i + 1] = starts[i] + row_length[i];
+          std::unique_ptr<dealii::SparsityPattern::size_type[]> entries(
+            new dealii::SparsityPattern::size_type[starts[n]]);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              auto *out = entries.get() + starts[i];
+              if (kind[i] == gathered_row)
+                {
+                  *out++ = i;
+                  for (unsigned int k = row_start[i]; k < row_start[i + 1]; ++k)
+                    if (k != diagonal_at[i])
+                      *out++ = columns[k];
+                }
+              else
+                for (auto it = pattern.begin(i), end = pattern.end(i); it != end; ++it)
+                  if (it->column() < n)
+                    *out++ = it->column();
+            }
+          columns = std::vector<unsigned int>();
+          direct->assign(n, std::move(starts), std::move(entries));
+        }
+      else
+        {
+          sparsity.reinit(n, n, row_length);
+          for (unsigned int i = 0; i < n; ++i)
+            if (kind[i] == gathered_row)
+              sparsity.add_entries(i, columns.begin() + row_start[i], columns.begin() + row_start[i + 1], true);
+            else
               {
-                std::swap(row[d], row[d + 1]);
-                ++d;
+                row.clear();
+                for (auto it = pattern.begin(i), end = pattern.end(i); it != end; ++it)
+                  if (it->column() < n)
+                    row.push_back(it->column());
+                std::size_t d = 0;
+                while (d + 1 < row.size() && row[d + 1] < row[d])
+                  {
+                    std::swap(row[d], row[d + 1]);
+                    ++d;
+                  }
+                sparsity.add_entries(i, row.begin(), row.end(), true);
               }
-            sparsity.add_entries(i, row.begin(), row.end(), true);
-          }
-      sparsity.compress();
-      columns = std::vector<unsigned int>();
+          sparsity.compress();
+          columns = std::vector<unsigned int>();
+        }
       K.reinit(sparsity);
       // the values; K's rows list the diagonal first, then the other
       // columns ascending, as A's rows (whose multiplier columns follow)
@@ -768,6 +810,38 @@ namespace dealvem
           }
     }
   } // namespace
+
+
+
+  void
+  CompressedRowPattern::assign(const size_type                n,
+                               std::unique_ptr<std::size_t[]> row_start,
+                               std::unique_ptr<size_type[]>   columns)
+  {
+    AssertThrow(n > 0 && row_start != nullptr && row_start[0] == 0 && (row_start[n] == 0 || columns != nullptr),
+                dealii::ExcMessage("CompressedRowPattern::assign(): empty or inconsistent rows."));
+    unsigned int longest = 0;
+    for (size_type i = 0; i < n; ++i)
+      {
+        const std::size_t begin = row_start[i], end = row_start[i + 1];
+        AssertThrow(end > begin && columns[begin] == i,
+                    dealii::ExcMessage("CompressedRowPattern::assign(): row " + std::to_string(i) +
+                                       " does not start with its diagonal."));
+        for (std::size_t k = begin + 1; k < end; ++k)
+          AssertThrow(columns[k] < n && columns[k] != i && (k == begin + 1 || columns[k] > columns[k - 1]),
+                      dealii::ExcMessage("CompressedRowPattern::assign(): the columns of row " + std::to_string(i) +
+                                         " are not ascending after the diagonal, or out of range."));
+        longest = std::max<unsigned int>(longest, end - begin);
+      }
+    // a square pattern of size n (diagonal first in every row: deal.II's
+    // flag for it is set by reinit()), its arrays then replaced
+    reinit(n, n, 1);
+    rowstart       = std::move(row_start);
+    colnums        = std::move(columns);
+    max_vec_len    = rowstart[n];
+    max_row_length = longest;
+    compressed     = true;
+  }
 
 
 

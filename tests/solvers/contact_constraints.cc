@@ -23,7 +23,10 @@
 //    1e-10 in u and lambda; a constraint row with an off-diagonal D entry is
 //    refused, naming the row; an unknown solver name lists the types.
 // e) ContactConstraints::condense() against deal.II's own condensation of
-//    K by the same lines, entry by entry to 1e-14 (see below).
+//    K by the same lines, entry by entry to 1e-14 (see below), and into a
+//    CompressedRowPattern: the same pattern and values, bit for bit;
+// f) CompressedRowPattern::assign() refuses a row whose diagonal is not
+//    first, or whose columns do not ascend, naming the row.
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_pattern.h>
@@ -287,9 +290,51 @@ main(int argc, char **argv)
           df = std::max(df, std::abs(f[i] - f_ref[i]));
           fm = std::max(fm, std::abs(f_ref[i]));
         }
+      // the same condensation into a CompressedRowPattern (filled in one
+      // pass): the same pattern, row by row in the same order, and the
+      // same values bit for bit
+      CompressedRowPattern         sp_direct;
+      dealii::SparseMatrix<double> K_direct;
+      dealii::Vector<double>       f_direct;
+      cc.condense(sys->A, sys->b, sp_direct, K_direct, f_direct, true);
+      bool same = sp_direct.n_nonzero_elements() == sp.n_nonzero_elements() && sp_direct.n_rows() == n &&
+                  sp_direct.is_compressed() && sp_direct.max_entries_per_row() == sp.max_entries_per_row();
+      for (unsigned int i = 0; same && i < n; ++i)
+        {
+          same   = sp_direct.row_length(i) == sp.row_length(i);
+          auto a = K_direct.begin(i);
+          for (auto b = K.begin(i); same && b != K.end(i); ++a, ++b)
+            same = a->column() == b->column() && a->value() == b->value();
+          same = same && f_direct[i] == f[i];
+        }
+      testing::check(same, what + ": the CompressedRowPattern path gives the same pattern and values");
       testing::check(lines.n_constraints() >= 2, what + ": at least two slave lines");
       testing::check_small(dk / k, 1e-14, what + ": condensed K against deal.II's condensation");
       testing::check_small(df / fm, 1e-14, what + ": condensed f against deal.II's condensation");
     }
+  // f) CompressedRowPattern::assign() refuses rows that are not in
+  //    deal.II's order (diagonal first, then ascending), naming the row
+  {
+    const auto attempt = [](const std::vector<std::size_t> &starts, const std::vector<unsigned int> &columns) {
+      std::unique_ptr<std::size_t[]> s(new std::size_t[starts.size()]);
+      std::copy(starts.begin(), starts.end(), s.get());
+      std::unique_ptr<dealii::SparsityPattern::size_type[]> c(new dealii::SparsityPattern::size_type[columns.size()]);
+      std::copy(columns.begin(), columns.end(), c.get());
+      CompressedRowPattern p;
+      p.assign(starts.size() - 1, std::move(s), std::move(c));
+      return p.n_nonzero_elements();
+    };
+    testing::check(attempt({0, 2, 3, 5}, {0, 2, 1, 2, 0}) == 5, "f) a valid 3x3 pattern is taken");
+    testing::check_throws(
+      [&] {
+        attempt({0, 2, 3, 5}, {2, 0, 1, 2, 0});
+      },
+      "row 0 does not start with its diagonal", "f) a row without its diagonal first");
+    testing::check_throws(
+      [&] {
+        attempt({0, 3, 4, 5}, {0, 2, 1, 1, 2});
+      },
+      "the columns of row 0 are not ascending", "f) columns out of order");
+  }
   return testing::finish();
 }

@@ -7,6 +7,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <memory>
@@ -15,6 +16,31 @@
 
 namespace dealvem
 {
+  /**
+   * A square sparsity pattern that is given its compressed rows whole,
+   * for ContactConstraints::condense(): deal.II's way to build a pattern
+   * (reinit() with the row lengths, the entries added, compress()) holds
+   * the column indices twice and copies them once more, which is 0.3 s
+   * and 195 MB of fresh memory for a condensed stiffness of 1e6 DoFs
+   * (48 entries a row). A plain dealii::SparsityPattern passed to
+   * condense() is built that way; this class is filled in one pass.
+   */
+  class CompressedRowPattern : public dealii::SparsityPattern
+  {
+  public:
+    /**
+     * Make this the pattern of an @p n x @p n matrix whose row i has the
+     * columns @p columns[@p row_start[i]] to
+     * @p columns[@p row_start[i + 1] - 1], the diagonal first and then
+     * the others in ascending order (deal.II's order for square
+     * patterns). Both arrays are taken over; the order is checked.
+     */
+    void
+    assign(size_type n, std::unique_ptr<std::size_t[]> row_start, std::unique_ptr<size_type[]> columns);
+  };
+
+
+
   /**
    * The active contact constraints of a saddle-point system
    * @f[ \begin{pmatrix} K & B^T \\ B & D \end{pmatrix}
@@ -125,7 +151,9 @@ namespace dealvem
      * Condense the displacement block $K$ of @p A and the displacement part
      * of @p b (with the forces of the inactive multipliers moved to the
      * right-hand side) into @p K_condensed (pattern in @p sparsity) and
-     * @p f_condensed. The slave rows become decoupled diagonal rows.
+     * @p f_condensed. The slave rows become decoupled diagonal rows. A
+     * CompressedRowPattern as @p sparsity is filled without deal.II's
+     * compress() (symmetric problems and @p symmetric_part).
      */
     void
     condense(const dealii::SparseMatrix<double> &A,
