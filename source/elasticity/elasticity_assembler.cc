@@ -349,8 +349,31 @@ namespace dealvem
     VEMValues<dim> vem_values(dof_handler);
     vem_values.set_cell_similarity(cell_similarity);
     dealii::Vector<double> F;
-    for (unsigned int c = 0; c < dof_handler.get_mesh().n_cells(); ++c)
+    const auto            &mesh = dof_handler.get_mesh();
+    // without a body force only cells with a loaded boundary edge have a
+    // load (the others' local_load() is zero): the projections of the
+    // others are not computed (at 1e6 DoFs, 0.15 s of 0.16 s)
+    const auto loaded = [&](const unsigned int c) {
+      if (body_force != nullptr)
+        return true;
+      for (const auto e : mesh.cell(c).edges)
+        {
+          const auto &edge = mesh.edge(e);
+          if (!edge.at_boundary())
+            continue;
+          for (const auto &t : tractions)
+            if (t.first == edge.boundary_id)
+              return true;
+          for (const auto &p : pressures)
+            if (p.first == edge.boundary_id)
+              return true;
+        }
+      return false;
+    };
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
+        if (!loaded(c))
+          continue;
         vem_values.reinit(c);
         local_load(vem_values, F);
         const auto &indices = vem_values.get_dof_indices();
