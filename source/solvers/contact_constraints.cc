@@ -836,6 +836,7 @@ namespace dealvem
     // a square pattern of size n (diagonal first in every row: deal.II's
     // flag for it is set by reinit()), its arrays then replaced
     reinit(n, n, 1);
+    max_dim        = n; // (the length of rowstart less one: a later reinit() reallocates above it)
     rowstart       = std::move(row_start);
     colnums        = std::move(columns);
     max_vec_len    = rowstart[n];

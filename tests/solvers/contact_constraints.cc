@@ -325,6 +325,28 @@ main(int argc, char **argv)
       return p.n_nonzero_elements();
     };
     testing::check(attempt({0, 2, 3, 5}, {0, 2, 1, 2, 0}) == 5, "f) a valid 3x3 pattern is taken");
+    {
+      // a pattern reused: larger by reinit(), then assigned smaller rows,
+      // then larger again (its arrays must be reallocated, not overrun:
+      // the sanitizer build checks), and used by a matrix each time
+      CompressedRowPattern p;
+      p.reinit(50, 50, 3);
+      p.compress();
+      std::unique_ptr<std::size_t[]>                        s(new std::size_t[3]{0, 1, 3});
+      std::unique_ptr<dealii::SparsityPattern::size_type[]> c(new dealii::SparsityPattern::size_type[3]{0, 1, 0});
+      p.assign(2, std::move(s), std::move(c));
+      dealii::SparseMatrix<double> M(p);
+      M.set(1, 0, 2.);
+      const bool small = p.n_rows() == 2 && p.n_nonzero_elements() == 3 && M.el(1, 0) == 2. && M.el(0, 1) == 0.;
+      M.clear();
+      p.reinit(40, 40, 4);
+      for (unsigned int i = 0; i + 1 < 40; ++i)
+        p.add(i, i + 1);
+      p.compress();
+      M.reinit(p);
+      testing::check(small && p.n_rows() == 40 && p.n_nonzero_elements() == 79 && M.m() == 40,
+                     "f) a CompressedRowPattern reused: reinit() larger, assign() smaller, reinit() larger");
+    }
     testing::check_throws(
       [&] {
         attempt({0, 2, 3, 5}, {2, 0, 1, 2, 0});
