@@ -237,18 +237,21 @@ namespace dealvem
                 couplings[r].emplace_back(j - n, it->value());
             }
           std::sort(rows[r].begin(), rows[r].end());
-          const std::string which = "multiplier row " + std::to_string(r) + " (unknown " + std::to_string(i) + ")";
+          // (the row's name is only made for a message)
+          const auto which = [&]() {
+            return "multiplier row " + std::to_string(r) + " (unknown " + std::to_string(i) + ")";
+          };
           if (rows[r].empty())
             {
               AssertThrow(diagonal[r] != 0.,
-                          dealii::ExcMessage("Condensed contact constraints: " + which +
+                          dealii::ExcMessage("Condensed contact constraints: " + which() +
                                              (couplings[r].empty() ? " is zero" : " has no diagonal entry") +
                                              ": the saddle-point matrix is singular."));
             }
           else
             {
               AssertThrow(diagonal[r] == 0. && couplings[r].empty(),
-                          dealii::ExcMessage("Condensed contact constraints: " + which +
+                          dealii::ExcMessage("Condensed contact constraints: " + which() +
                                              " has both displacement entries and entries of the multiplier block: "
                                              "not a constraint row."));
             }
@@ -644,13 +647,14 @@ namespace dealvem
       std::vector<unsigned int> row_start(n + 1, 0), columns, diagonal_at(n, 0);
       std::vector<double>       values;
       {
-        // (room for the gathered rows: their rows of K and a quarter more
-        // for the fill of the slave rows, so that they are seldom moved)
+        // (room for the gathered rows: their rows of K and half more for
+        // the fill of the slave rows, so that they are seldom moved: on the
+        // 100-block wall of benchmarks/assembly the fill is 41 %)
         std::size_t estimate = 0;
         for (unsigned int i = 0; i < n; ++i)
           if (kind[i] == gathered_row)
             estimate += pattern.row_length(i);
-        estimate += estimate / 4;
+        estimate += estimate / 2;
         columns.reserve(estimate);
         values.reserve(estimate);
       }
@@ -848,7 +852,11 @@ namespace dealvem
 
   struct ContactConstraints::Recovery
   {
-    std::vector<std::vector<std::pair<unsigned int, double>>> M;
+    /// B_{I,S}^T by rows: row k's entries are entries[start[k]] to
+    /// entries[start[k + 1]] (flat: no allocation per row, and compared
+    /// with the next call's as two arrays)
+    std::vector<unsigned int>                                 start;
+    std::vector<std::pair<unsigned int, double>>              entries;
     dealii::SparsityPattern                                   sparsity;
     dealii::SparseMatrix<double>                              G;
     dealii::SparseDirectUMFPACK                               direct;
@@ -1073,8 +1081,11 @@ namespace dealvem
     AssertThrow(independent.size() == n_s,
                 dealii::ExcMessage("ContactConstraints: " + std::to_string(independent.size()) +
                                    " independent constraint rows for " + std::to_string(n_s) + " slave DoFs."));
-    dealii::Vector<double>                                    r(n_s);
-    std::vector<std::vector<std::pair<unsigned int, double>>> M(n_s);
+    dealii::Vector<double>                       r(n_s);
+    std::vector<unsigned int>                    start(n_s + 1, 0);
+    std::vector<std::pair<unsigned int, double>> entries;
+    if (recovery != nullptr)
+      entries.reserve(recovery->entries.size());
     for (unsigned int k = 0; k < n_s; ++k)
       {
         const unsigned int s = slaves[k].second;
@@ -1093,33 +1104,35 @@ namespace dealvem
                 v -= it->value() * x[j];
                 for (const auto &e : tied[tied_of[j - n]].entries)
                   if (column[e.first] >= 0)
-                    M[k].emplace_back(column[e.first], e.second * it->value());
+                    entries.emplace_back(column[e.first], e.second * it->value());
               }
             else if (column[j - n] >= 0 && it->value() != 0.)
-              M[k].emplace_back(column[j - n], it->value());
+              entries.emplace_back(column[j - n], it->value());
           }
-        r[k] = v;
+        r[k]         = v;
+        start[k + 1] = entries.size();
       }
 
     // B_{I,S}^T lambda_I = r_S; its LU is kept while the matrix comes back
     // entry for entry (the continuations of an inexact solve: on the
     // 100-block wall of benchmarks/assembly, 8 of the 12 recoveries of the
     // unilateral run)
-    if (recovery == nullptr || recovery->M != M)
+    if (recovery == nullptr || recovery->start != start || recovery->entries != entries)
       {
         auto                           fresh = std::make_shared<Recovery>();
         dealii::DynamicSparsityPattern dsp(n_s, n_s);
         for (unsigned int k = 0; k < n_s; ++k)
-          for (const auto &e : M[k])
-            dsp.add(k, e.first);
+          for (unsigned int e = start[k]; e < start[k + 1]; ++e)
+            dsp.add(k, entries[e].first);
         fresh->sparsity.copy_from(dsp);
         fresh->G.reinit(fresh->sparsity);
         for (unsigned int k = 0; k < n_s; ++k)
-          for (const auto &e : M[k])
-            fresh->G.add(k, e.first, e.second);
+          for (unsigned int e = start[k]; e < start[k + 1]; ++e)
+            fresh->G.add(k, entries[e].first, entries[e].second);
         fresh->direct.initialize(fresh->G);
-        fresh->M = std::move(M);
-        recovery = std::move(fresh);
+        fresh->start   = std::move(start);
+        fresh->entries = std::move(entries);
+        recovery       = std::move(fresh);
       }
     dealii::Vector<double> y(n_s);
     recovery->direct.vmult(y, r);

@@ -189,6 +189,18 @@ namespace dealvem
 
   namespace
   {
+    // Throw if @p u holds a non-finite value (the check of an inexact
+    // solution, whose residual is not checked).
+    void
+    check_finite(const dealii::Vector<double> &u)
+    {
+      for (const double v : u)
+        AssertThrow(std::isfinite(v), dealii::ExcMessage("The saddle-point solver produced a non-finite value: the "
+                                                         "system is singular (is every body supported?)."));
+    }
+
+
+
     // The saddle-point matrix [K B^T; B D] as deal.II's 2 x 2 block matrix,
     // the first block the displacements, the second the multipliers.
     void
@@ -1261,7 +1273,12 @@ namespace dealvem
       }
     else
       iterations = solve_with_amg(K, K, u, f, tolerance, true, contact.get_constraints());
-    internal::check_residual(K, u, f, tolerance, description() + (context.empty() ? "" : ", " + context));
+    // (an inexact solution only proposes the next set: its residual is
+    // checked when the accepted set's solve is completed)
+    if (last_inexact)
+      check_finite(u);
+    else
+      internal::check_residual(K, u, f, tolerance, description() + (context.empty() ? "" : ", " + context));
   }
 
 
@@ -1404,9 +1421,11 @@ namespace dealvem
       iterations =
         solve_with_amg(system.K, system.K, system.u, system.f, tolerance, true, system.contact.get_constraints());
     n_amg_reuses              = reuses;
-    internal::check_residual(system.K, system.u, system.f, tolerance,
-                             description() + (context.empty() ? "" : ", " + context) +
-                               (tolerance <= settings.relative_tolerance ? ", completed" : ", refined"));
+    if (tolerance <= settings.relative_tolerance)
+      internal::check_residual(system.K, system.u, system.f, tolerance,
+                               description() + (context.empty() ? "" : ", " + context) + ", completed");
+    else
+      check_finite(system.u);
     for (unsigned int i = 0; i < n; ++i)
       x[i] = system.u[i];
     system.contact.distribute_and_recover_multipliers(A, b, x);
