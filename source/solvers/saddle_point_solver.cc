@@ -446,54 +446,43 @@ namespace dealvem
           lengths[i] = static_cast<int>(row.size());
         }
 
-      const Epetra_MpiComm comm(MPI_COMM_SELF);
-      const Epetra_Map     map(static_cast<int>(n), 0, comm);
-      auto                 copy = std::make_unique<Epetra_CrsMatrix>(Copy, map, map, lengths.data(), true);
       decoupled.assign(n, true);
-      std::vector<int>    columns;
-      std::vector<double> values;
-      auto                next_changed = changed.begin();
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          columns.clear();
-          values.clear();
-          if (next_changed != changed.end() && next_changed->first == i)
-            {
-              for (const auto &e : next_changed->second)
-                {
-                  columns.push_back(e.first);
-                  values.push_back(e.second);
-                }
-              ++next_changed;
-            }
-          else
-            {
-              const bool slave = line_of[i] != none;
-              for (auto it = K.begin(i), end = K.end(i); it != end; ++it)
-                {
-                  columns.push_back(static_cast<int>(it->column()));
-                  values.push_back(!slave ? it->value() : (it->column() == i ? mean_diagonal : 0.));
-                }
-              // deal.II lists the diagonal first, then ascending columns
-              for (std::size_t d = 0; d + 1 < columns.size() && columns[d + 1] < columns[d]; ++d)
-                {
-                  std::swap(columns[d], columns[d + 1]);
-                  std::swap(values[d], values[d + 1]);
-                }
-            }
-          for (std::size_t k = 0; k < columns.size(); ++k)
-            {
-              if (values[k] != 0. && columns[k] != static_cast<int>(i))
-                decoupled[i] = false;
-              if (std::abs(values[k]) <= drop_tolerance)
-                values[k] = 0.;
-            }
-          const int status = copy->InsertMyValues(static_cast<int>(i), lengths[i], values.data(), columns.data());
-          AssertThrow(status == 0,
-                      dealii::ExcMessage("StickPreconditioner: Epetra refused row " + std::to_string(i) + "."));
-        }
-      AssertThrow(copy->FillComplete(map, map) == 0, dealii::ExcMessage("StickPreconditioner: FillComplete() failed."));
-      return copy;
+      auto next_changed = changed.begin();
+      return internal::epetra_from_rows(n, n, lengths, [&](const unsigned int i, int *columns, double *values) {
+        int k = 0;
+        if (next_changed != changed.end() && next_changed->first == i)
+          {
+            for (const auto &e : next_changed->second)
+              {
+                columns[k] = e.first;
+                values[k]  = e.second;
+                ++k;
+              }
+            ++next_changed;
+          }
+        else
+          {
+            const bool slave = line_of[i] != none;
+            for (auto it = K.begin(i), end = K.end(i); it != end; ++it, ++k)
+              {
+                columns[k] = static_cast<int>(it->column());
+                values[k]  = (!slave ? it->value() : (it->column() == i ? mean_diagonal : 0.));
+              }
+            // deal.II lists the diagonal first, then ascending columns
+            for (int d = 0; d + 1 < k && columns[d + 1] < columns[d]; ++d)
+              {
+                std::swap(columns[d], columns[d + 1]);
+                std::swap(values[d], values[d + 1]);
+              }
+          }
+        for (int e = 0; e < k; ++e)
+          {
+            if (values[e] != 0. && columns[e] != static_cast<int>(i))
+              decoupled[i] = false;
+            if (std::abs(values[e]) <= drop_tolerance)
+              values[e] = 0.;
+          }
+      });
     }
 
 

@@ -22,6 +22,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -46,6 +47,20 @@ namespace dealvem
      */
     std::unique_ptr<Epetra_CrsMatrix>
     epetra_copy(const dealii::SparseMatrix<double> &A, double drop_tolerance);
+
+    /**
+     * An Epetra matrix on one process with @p m rows and @p n columns
+     * whose compressed rows are written in place: row i has
+     * @p lengths[i] entries, which @p fill(i, columns, values) writes in
+     * ascending column order (local indices are the global ones). No
+     * insertion per row and no sorting or storage optimization by
+     * FillComplete(): the arrays are Epetra's own (its expert interface).
+     */
+    std::unique_ptr<Epetra_CrsMatrix>
+    epetra_from_rows(unsigned int                                              m,
+                     unsigned int                                              n,
+                     const std::vector<int>                                   &lengths,
+                     const std::function<void(unsigned int, int *, double *)> &fill);
 
     /// @p At made the matrix of epetra_copy() (the fast equivalent of
     /// At.reinit(A, drop_tolerance)).
