@@ -189,8 +189,9 @@ namespace dealvem
 
   namespace
   {
-    // Throw if @p u holds a non-finite value (the check of an inexact
-    // solution, whose residual is not checked).
+    // Throw if @p u holds a non-finite value (after every solve and every
+    // continuation; the only check of an inexact solution, whose residual
+    // is not checked).
     void
     check_finite(const dealii::Vector<double> &u)
     {
@@ -1263,10 +1264,9 @@ namespace dealvem
     else
       iterations = solve_with_amg(K, K, u, f, tolerance, true, contact.get_constraints());
     // (an inexact solution only proposes the next set: its residual is
-    // checked when the accepted set's solve is completed)
-    if (last_inexact)
-      check_finite(u);
-    else
+    // checked when the accepted set's solve is completed; solve() checks
+    // every solution for finite values)
+    if (!last_inexact)
       internal::check_residual(K, u, f, tolerance, description() + (context.empty() ? "" : ", " + context));
   }
 
@@ -1332,10 +1332,7 @@ namespace dealvem
       }
     else
       solve_block_gmres(A, n_displacements, x, b);
-    for (unsigned int i = 0; i < x.size(); ++i)
-      AssertThrow(std::isfinite(x[i]),
-                  dealii::ExcMessage("The saddle-point solver produced a non-finite value: the "
-                                     "system is singular (is every body supported?)."));
+    check_finite(x);
     // the residual of the system that was solved (the condensed solve
     // checks its CG and recovers the multipliers from the residual)
     if (settings.type != Type::cg_amg_constraints)
@@ -1410,19 +1407,15 @@ namespace dealvem
       iterations =
         solve_with_amg(system.K, system.K, system.u, system.f, tolerance, true, system.contact.get_constraints());
     n_amg_reuses              = reuses;
+    // (a refined solution is only checked for finite values, below)
     if (tolerance <= settings.relative_tolerance)
       internal::check_residual(system.K, system.u, system.f, tolerance,
                                description() + (context.empty() ? "" : ", " + context) + ", completed");
-    else
-      check_finite(system.u);
     for (unsigned int i = 0; i < n; ++i)
       x[i] = system.u[i];
     system.contact.distribute_and_recover_multipliers(A, b, x);
     for (unsigned int i = 0; i < n; ++i)
       previous[i] = x[i];
-    for (unsigned int i = 0; i < x.size(); ++i)
-      AssertThrow(std::isfinite(x[i]),
-                  dealii::ExcMessage("The saddle-point solver produced a non-finite value: the "
-                                     "system is singular (is every body supported?)."));
+    check_finite(x);
   }
 } // namespace dealvem
