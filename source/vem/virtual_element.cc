@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 namespace dealvem
 {
@@ -291,8 +292,21 @@ namespace dealvem
     bool               same = use_similarity && ws.valid && ws.shape.size() == N;
     if (same)
       {
-        const double h    = geometry->diameter();
-        const double tol2 = 1e-28 * h * h;
+        // The shape vectors carry the rounding of the coordinates: two
+        // congruent cells at different places differ in them by a few
+        // units in the last place of |x| (on [1, 2] with 281 cells along
+        // a side, by up to 4.4e-16 against 1e-14 h = 5e-17), so that
+        // away from the origin a test at 1e-14 h alone recomputed one cell
+        // in seven of a structured mesh, and how often depended on where
+        // the model sits. Shapes within that rounding are the same cell to
+        // the precision of the data; the matrices of either differ by as
+        // much as a recomputation from the rounded coordinates does.
+        double x_max = 0;
+        for (const auto &v : vertices)
+          for (unsigned int d = 0; d < dim; ++d)
+            x_max = std::max(x_max, std::abs(v[d]));
+        const double tol  = 1e-14 * geometry->diameter() + 8 * std::numeric_limits<double>::epsilon() * x_max;
+        const double tol2 = tol * tol;
         for (unsigned int i = 1; i < N && same; ++i)
           same = ((vertices[i] - vertices[0]) - ws.shape[i]).norm_square() <= tol2;
       }

@@ -22,6 +22,7 @@
 #include <dealvem/vem/virtual_element.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "../tests.h"
@@ -245,6 +246,53 @@ check_cell_similarity()
     }
 }
 
+// Cell similarity on a structured grid away from the origin: its vertices
+// x0 + (x1 - x0) i / n are rounded to the last place of |x|, so congruent
+// cells differ in their shapes by that rounding (up to 4.4e-16 on [1, 2]
+// with n = 281, where 1e-14 h is 5e-17). Every cell after the first reuses
+// the matrices (the rounding is part of the test), wherever the grid sits
+// (at 1, at 1e3), and a reused K equals a fresh one to the rounding of
+// the coordinates (eps |x| / h, relative).
+void
+check_similarity_on_grids()
+{
+  const ElasticMaterial material(1.0, 0.3);
+  for (const unsigned int k : {1u, 2u})
+    for (const double offset : {0., 1., 1e3})
+      {
+        const unsigned int    n = 281;
+        VirtualElement<2>     element(k), fresh(k);
+        ElasticityOperator<2> op, fresh_op;
+        fresh.set_cell_similarity(false);
+        unsigned int computed = 0;
+        double       worst    = 0;
+        for (unsigned int j = 0; j < 3; ++j)
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const auto x = [&](const unsigned int a) { return offset + (offset + 1 - offset) * a / n; };
+              const auto y = [&](const unsigned int b) { return offset + 1 + (offset + 2 - (offset + 1)) * b / n; };
+              const std::vector<P> cell = {P(x(i), y(j)), P(x(i + 1), y(j)), P(x(i + 1), y(j + 1)), P(x(i), y(j + 1))};
+              element.reinit(cell);
+              op.reinit(element, material);
+              computed += element.last_reinit_reused() ? 0 : 1;
+              if (i % 40 == 7)
+                {
+                  fresh.reinit(cell);
+                  fresh_op.reinit(fresh, material);
+                  worst = std::max(worst, max_difference(op.get_stiffness_matrix(), fresh_op.get_stiffness_matrix()));
+                }
+            }
+        const std::string tag =
+          "grid of 3 x 281 cells at offset " + std::to_string(offset) + ", k=" + std::to_string(k) + ": ";
+        std::cout << "  " << tag << computed << " cells computed, reused K against fresh " << worst << std::endl;
+        testing::check(computed == 1, tag + "only the first cell is computed");
+        // a fresh K is itself computed from coordinates rounded to
+        // eps |x|, which is eps |x| / h relative to the cell
+        testing::check_small(worst, 50 * std::numeric_limits<double>::epsilon() * (1 + (offset + 2) * n),
+                             tag + "reused K equals a fresh K to the rounding of the coordinates");
+      }
+}
+
 // A short edge: the unit square with its bottom edge split at delta. The
 // motion of the split vertex alone, along the edge, stretches an edge of
 // length delta; the boundary rule stiffens it like 1/delta (the trace
@@ -283,6 +331,7 @@ int
 main()
 {
   check_cell_similarity();
+  check_similarity_on_grids();
   check_short_edge();
   std::mt19937 rng(42);
   check_polygon("triangle", {P(0, 0), P(1, 0), P(0.2, 0.9)});

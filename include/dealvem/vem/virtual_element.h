@@ -253,7 +253,8 @@ namespace dealvem
      *
      * All matrices depend only on the vertices relative to each other. When
      * the polygon is a translate of the one of the previous call (vertex
-     * differences equal to $10^{-14}h$), only the geometry is moved and the
+     * differences equal to $10^{-14}h + 8\epsilon\max|x_i|$, the rounding
+     * of the coordinates included), only the geometry is moved and the
      * matrices are kept, as deal.II's FEValues does for translated cells
      * (CellSimilarity). On structured meshes this makes assembly much
      * cheaper; see set_cell_similarity() to switch it off.
