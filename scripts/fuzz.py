@@ -44,6 +44,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -257,9 +258,15 @@ def run_case(case, dealvem, out, timeout):
     folder = os.path.join(out, "cases", "case-%03d" % case["index"])
     shutil.rmtree(folder, ignore_errors=True)
     prm = write_case(case, folder)
+    # an Open MPI session folder of its own: cases run concurrently, and a
+    # finalizing process removes the shared <tmp>/ompi.<host>.<uid> while
+    # another one creates its folder in it (MPI_Init fails, about one start
+    # in 450); the path stays short, Open MPI puts Unix sockets there
+    session = tempfile.mkdtemp(prefix="dealvem-fuzz-")
+    env = dict(os.environ, OMPI_MCA_orte_tmpdir_base=session)
     start = time.time()
     proc = subprocess.Popen([dealvem, prm], cwd=folder, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, start_new_session=True)
+                            stderr=subprocess.PIPE, start_new_session=True, env=env)
     verdict = None
     try:
         stdout, stderr = proc.communicate(timeout=timeout)
@@ -268,6 +275,7 @@ def run_case(case, dealvem, out, timeout):
         stdout, stderr = proc.communicate()
         verdict = "hang (no end within %g s)" % timeout
     seconds = time.time() - start
+    shutil.rmtree(session, ignore_errors=True)
     text = stdout.decode("utf-8", "replace") + stderr.decode("utf-8", "replace")
     rc = proc.returncode
     if verdict is None and rc < 0:
