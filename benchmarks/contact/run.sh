@@ -18,7 +18,7 @@
 # page the host has to back again costs 7-13 us per 4 KiB fault: which run
 # found its pages still backed depended on the order of the runs, and the
 # same 1e6-DoF pair measured 1.21-1.68 end to end; after the warm-up 1.275
-# and 1.281 (doc/benchmarks.md, "Page faults on this VM"). The CPU seconds
+# and 1.281 (doc/benchmarks.md, "page faults on this VM, a warm-up, huge pages"). The CPU seconds
 # (user + system, of all processes) are reported beside the wall time.
 # HUGEPAGES=1 runs both sides with glibc's transparent huge pages for the
 # heap (GLIBC_TUNABLES=glibc.malloc.hugetlb=1): 70x fewer faults.
