@@ -6,8 +6,14 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
 #include <dealvem/base/number_string.h>
 #include <dealvem/solvers/contact_constraints.h>
+
+#include "two_level_cycle.h"
+
+#include <Epetra_CrsMatrix.h>
 
 #include <algorithm>
 #include <cmath>
@@ -589,7 +595,8 @@ namespace dealvem
                      const dealii::AffineConstraints<double>                  &constraints,
                      dealii::SparsityPattern                                  &sparsity,
                      dealii::SparseMatrix<double>                             &K,
-                     dealii::Vector<double>                                   &f)
+                     dealii::Vector<double>                                   &f,
+                     dealii::TrilinosWrappers::SparseMatrix                   *trilinos = nullptr)
     {
       // the slaves of each master with their coefficients (compressed rows)
       std::vector<unsigned int> first(n + 1, 0);
@@ -734,6 +741,42 @@ namespace dealvem
               f[i] = fi;
             }
           row_start[i + 1] = columns.size();
+        }
+
+      if (trilinos != nullptr)
+        {
+          // the rows ascending, written once into Epetra's storage: a slave
+          // row and a plain one are A's row below n (whose diagonal comes
+          // first in deal.II's order), a gathered row is kept ascending
+          std::vector<int> lengths(row_length.begin(), row_length.end());
+          const auto       fill = [&](const unsigned int i, int *cols, double *vals) {
+            int k = 0;
+            if (kind[i] == gathered_row)
+              for (unsigned int e = row_start[i]; e < row_start[i + 1]; ++e, ++k)
+                {
+                  cols[k] = static_cast<int>(columns[e]);
+                  vals[k] = values[e];
+                }
+            else
+              {
+                const bool slave = (kind[i] == slave_row);
+                auto       value = A.begin(i);
+                for (auto it = pattern.begin(i), end = pattern.end(i); it != end; ++it, ++value)
+                  if (it->column() < n)
+                    {
+                      cols[k] = static_cast<int>(it->column());
+                      vals[k] = (!slave ? value->value() : (it->column() == i ? average_diagonal : 0.));
+                      ++k;
+                    }
+                for (int d = 0; d + 1 < k && cols[d + 1] < cols[d]; ++d)
+                  {
+                    std::swap(cols[d], cols[d + 1]);
+                    std::swap(vals[d], vals[d + 1]);
+                  }
+              }
+          };
+          trilinos->reinit(*internal::epetra_from_rows(n, n, lengths, fill));
+          return;
         }
 
       // the pattern: K's rows (diagonal first, then ascending, as A's rows
@@ -985,6 +1028,23 @@ namespace dealvem
 
 
   void
+  ContactConstraints::known_multipliers(std::vector<double> &lambda, std::vector<bool> &known) const
+  {
+    for (const auto &in : inactive)
+      {
+        lambda[in.first] = in.second;
+        known[in.first]  = true;
+      }
+    for (const auto &t : tied)
+      {
+        lambda[t.row] = t.value;
+        known[t.row]  = true;
+      }
+  }
+
+
+
+  void
   ContactConstraints::condense(const dealii::SparseMatrix<double> &A,
                                const dealii::Vector<double>       &b,
                                dealii::SparsityPattern            &sparsity,
@@ -997,16 +1057,7 @@ namespace dealvem
     // tied ones (their forces go to the rhs)
     std::vector<double> lambda(m, 0.);
     std::vector<bool>   known(m, false);
-    for (const auto &in : inactive)
-      {
-        lambda[in.first] = in.second;
-        known[in.first]  = true;
-      }
-    for (const auto &t : tied)
-      {
-        lambda[t.row] = t.value;
-        known[t.row]  = true;
-      }
+    known_multipliers(lambda, known);
 
     // the master DoFs of each slave
     std::vector<const std::vector<std::pair<dealii::types::global_dof_index, double>> *> line(n, nullptr);
@@ -1028,6 +1079,29 @@ namespace dealvem
     constraints.condense(K, f);
     // step 5: the Petrov-Galerkin difference of the test lines
     add_test_line_differences(A, b, n, known, lambda, line, constraints, test_lines, K, f);
+  }
+
+
+
+  void
+  ContactConstraints::condense(const dealii::SparseMatrix<double>     &A,
+                               const dealii::Vector<double>           &b,
+                               dealii::TrilinosWrappers::SparseMatrix &K,
+                               dealii::Vector<double>                 &f) const
+  {
+    AssertDimension(A.m(), n + m);
+    AssertThrow(symmetric, dealii::ExcMessage("ContactConstraints::condense() into a Trilinos matrix: the "
+                                              "constraints are not symmetric (slipping pairs); condense into a "
+                                              "deal.II matrix instead."));
+    std::vector<double> lambda(m, 0.);
+    std::vector<bool>   known(m, false);
+    known_multipliers(lambda, known);
+    std::vector<const std::vector<std::pair<dealii::types::global_dof_index, double>> *> line(n, nullptr);
+    for (const auto &s : slaves)
+      line[s.second] = constraints.get_constraint_entries(s.second);
+    dealii::SparsityPattern      unused_pattern;
+    dealii::SparseMatrix<double> unused_matrix;
+    condense_by_rows(A, b, n, known, lambda, slaves, line, constraints, unused_pattern, unused_matrix, f, &K);
   }
 
 

@@ -205,6 +205,29 @@ namespace dealvem
     {
       dealii::Vector<double> r(b.size());
       A.residual(r, x, b);
+      return check_residual(r, x, b, relative_tolerance, solver, [&A]() {
+        double a_norm = 0;
+        for (unsigned int i = 0; i < A.m(); ++i)
+          {
+            double row = 0;
+            for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
+              row += std::abs(it->value());
+            a_norm = std::max(a_norm, row);
+          }
+        return a_norm;
+      });
+    }
+
+
+
+    double
+    check_residual(const dealii::Vector<double>  &r,
+                   const dealii::Vector<double>  &x,
+                   const dealii::Vector<double>  &b,
+                   const double                   relative_tolerance,
+                   const std::string             &solver,
+                   const std::function<double()> &matrix_norm)
+    {
       const double r_norm = r.l2_norm(), b_norm = b.l2_norm();
       const double relative = (b_norm > 0 ? r_norm / b_norm : r_norm);
       // an iterative solve within its tolerance passes without the norm of
@@ -217,14 +240,7 @@ namespace dealvem
       // the normwise backward error: about eps for a stable direct solve,
       // and the floor of the true residual of an iterative one (whose
       // recursively updated residual may fall below it)
-      double a_norm = 0;
-      for (unsigned int i = 0; i < A.m(); ++i)
-        {
-          double row = 0;
-          for (auto it = A.begin(i), it_end = A.end(i); it != it_end; ++it)
-            row += std::abs(it->value());
-          a_norm = std::max(a_norm, row);
-        }
+      const double a_norm = matrix_norm();
       const double eta = r.linfty_norm() / (a_norm * x.linfty_norm() + b.linfty_norm());
       if (r.linfty_norm() == 0 || eta <= 1e-10)
         return relative;

@@ -327,6 +327,149 @@ namespace dealvem
   namespace internal
   {
     /**
+     * A condensed contact stiffness on one process as the iterative solvers
+     * read it: a deal.II matrix (condensed for the stick-spring, slip and
+     * direct paths) or a Trilinos one (ContactConstraints::condense() into
+     * Trilinos, for CG on a symmetric problem: the p-multigrid or ML then
+     * works on that matrix itself, and no deal.II copy exists). Rows are
+     * visited in ascending column order in both, so that the fingerprints
+     * of the AMG cache agree between them. A Trilinos matrix is shared:
+     * the cache keeps the one its hierarchy was built on alive.
+     */
+    class CondensedMatrix
+    {
+    public:
+      /// None (id() is null).
+      CondensedMatrix() = default;
+
+      explicit CondensedMatrix(const dealii::SparseMatrix<double> &K)
+        : deal_ii(&K)
+      {}
+
+      explicit CondensedMatrix(std::shared_ptr<const dealii::TrilinosWrappers::SparseMatrix> K)
+        : trilinos(std::move(K))
+        , epetra(&trilinos->trilinos_matrix())
+      {}
+
+      /// The matrix it refers to (for identity comparisons).
+      const void *
+      id() const
+      {
+        return (deal_ii != nullptr ? static_cast<const void *>(deal_ii) : static_cast<const void *>(trilinos.get()));
+      }
+
+      unsigned int
+      m() const
+      {
+        return (deal_ii != nullptr ? deal_ii->m() : trilinos->m());
+      }
+
+      unsigned int
+      row_length(const unsigned int i) const
+      {
+        return (deal_ii != nullptr ? deal_ii->get_sparsity_pattern().row_length(i)
+                                   : static_cast<unsigned int>(epetra->NumMyEntries(static_cast<int>(i))));
+      }
+
+      /// f(column, value) for the entries of row @p i, columns ascending.
+      template <typename F>
+      void
+      for_row(const unsigned int i, F &&f) const
+      {
+        if (deal_ii == nullptr)
+          {
+            int     n       = 0;
+            double *values  = nullptr;
+            int    *columns = nullptr;
+            epetra->ExtractMyRowView(static_cast<int>(i), n, values, columns);
+            for (int k = 0; k < n; ++k)
+              f(static_cast<unsigned int>(columns[k]), values[k]);
+            return;
+          }
+        // deal.II lists the diagonal of a square matrix first
+        const auto &sp    = deal_ii->get_sparsity_pattern();
+        auto        value = deal_ii->begin(i);
+        auto        it = sp.begin(i), end = sp.end(i);
+        if (it == end)
+          return;
+        const double diagonal     = value->value();
+        bool         diagonal_out = false;
+        for (++it, ++value; it != end; ++it, ++value)
+          {
+            const unsigned int j = it->column();
+            if (!diagonal_out && j > i)
+              {
+                f(i, diagonal);
+                diagonal_out = true;
+              }
+            f(j, value->value());
+          }
+        if (!diagonal_out)
+          f(i, diagonal);
+      }
+
+      double
+      diag_element(const unsigned int i) const
+      {
+        return (deal_ii != nullptr ? deal_ii->diag_element(i) : trilinos->diag_element(i));
+      }
+
+      void
+      vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const
+      {
+        if (deal_ii != nullptr)
+          deal_ii->vmult(dst, src);
+        else
+          trilinos->vmult(dst, src);
+      }
+
+      /// @p r = @p b - K @p x; returns its l2 norm.
+      double
+      residual(dealii::Vector<double> &r, const dealii::Vector<double> &x, const dealii::Vector<double> &b) const
+      {
+        if (deal_ii != nullptr)
+          return deal_ii->residual(r, x, b);
+        trilinos->vmult(r, x);
+        r.sadd(-1., 1., b);
+        return r.l2_norm();
+      }
+
+      /// The deal.II matrix (null: a Trilinos one).
+      const dealii::SparseMatrix<double> *deal_ii = nullptr;
+      /// The Trilinos matrix (null: a deal.II one), and its Epetra matrix.
+      std::shared_ptr<const dealii::TrilinosWrappers::SparseMatrix> trilinos;
+      const Epetra_CrsMatrix                                       *epetra = nullptr;
+    };
+
+
+
+    /// check_residual() of K u = f for either kind of condensed matrix.
+    double
+    check_condensed_residual(const CondensedMatrix        &K,
+                             const dealii::Vector<double> &u,
+                             const dealii::Vector<double> &f,
+                             const double                  relative_tolerance,
+                             const std::string            &solver)
+    {
+      if (K.deal_ii != nullptr)
+        return check_residual(*K.deal_ii, u, f, relative_tolerance, solver);
+      dealii::Vector<double> r(f.size());
+      K.residual(r, u, f);
+      return check_residual(r, u, f, relative_tolerance, solver, [&K]() {
+        double norm = 0;
+        for (unsigned int i = 0; i < K.m(); ++i)
+          {
+            double row = 0;
+            K.for_row(i, [&row](unsigned int, const double v) { row += std::abs(v); });
+            norm = std::max(norm, row);
+          }
+        return norm;
+      });
+    }
+
+
+
+    /**
      * The coarse space of the p-multigrid on a condensed contact matrix
      * (SaddlePointSolver::set_coarse_space()): the prolongation, the coarse
      * rigid-body modes and the constraint lines the matrix was condensed
@@ -674,25 +817,24 @@ namespace dealvem
        * the hierarchy for a correction; 0 allows only the exact reuse.
        */
       Use
-      prepare(const dealii::SparseMatrix<double>     &K,
+      prepare(const CondensedMatrix                  &K,
               const std::vector<std::vector<double>> &modes,
               const double                            max_changed_fraction,
               const CondensedCoarseSpace             &coarse_space = CondensedCoarseSpace())
       {
         coarse = coarse_space;
         // (the continuation of the last solve: the same matrix, prepared)
-        if (continuing && matrix == &K)
+        if (continuing && matrix.id() == K.id())
           {
             continuing = false;
             return Use::reused;
           }
         continuing     = false;
-        matrix         = &K;
+        matrix         = K;
         pending_matrix = nullptr;
         changed.clear();
-        const auto        &sp = K.get_sparsity_pattern();
-        const unsigned int n  = sp.n_rows();
-        if ((amg_matrix != nullptr || cycle != nullptr) && fingerprints.size() == n)
+        const unsigned int n = K.m();
+        if (has_hierarchy && fingerprints.size() == n)
           {
             const std::size_t max_changed = static_cast<std::size_t>(max_changed_fraction * n);
             bool              too_many    = false;
@@ -707,7 +849,7 @@ namespace dealvem
                     too_many = (changed.size() > max_changed);
                   }
               }
-            pending_matrix = &K;
+            pending_matrix = K.id();
             if (changed.empty())
               return Use::reused;
             if (!too_many)
@@ -721,12 +863,13 @@ namespace dealvem
                   in[i] = true;
                 const std::size_t n_changed = changed.size();
                 for (std::size_t k = 0; k < n_changed; ++k)
-                  for (auto it = sp.begin(changed[k]), it_end = sp.end(changed[k]); it != it_end; ++it)
-                    if (!in[it->column()])
+                  K.for_row(changed[k], [&](const unsigned int j, double) {
+                    if (!in[j])
                       {
-                        in[it->column()] = true;
-                        changed.push_back(it->column());
+                        in[j] = true;
+                        changed.push_back(j);
                       }
+                  });
                 std::sort(changed.begin(), changed.end());
                 if (factorize_changed_rows())
                   return Use::corrected;
@@ -752,14 +895,13 @@ namespace dealvem
       void
       build(const std::vector<std::vector<double>> &modes)
       {
-        Assert(matrix != nullptr, dealii::ExcMessage("AMGCache: prepare() first."));
-        const dealii::SparseMatrix<double> &K  = *matrix;
-        const auto                         &sp = K.get_sparsity_pattern();
-        const unsigned int                  n  = sp.n_rows();
+        Assert(matrix.id() != nullptr, dealii::ExcMessage("AMGCache: prepare() first."));
+        const CondensedMatrix &K = matrix;
+        const unsigned int     n = K.m();
         changed.clear();
         // the fingerprints of the rows, for the comparison (those prepare()
         // computed for this matrix, if it did)
-        if (pending_matrix == &K && pending.size() == n)
+        if (pending_matrix == K.id() && pending.size() == n)
           fingerprints.swap(pending);
         else
           {
@@ -768,25 +910,45 @@ namespace dealvem
               fingerprints[i] = fingerprint(K, i);
           }
         pending_matrix = nullptr;
+        has_hierarchy  = true;
         if (coarse.P != nullptr)
           {
-            // the p-multigrid: its cycle works on a Trilinos copy of K (as
-            // LinearSolver's for one body)
+            // the p-multigrid: its cycle works on a Trilinos matrix (as
+            // LinearSolver's for one body): K itself, or a copy of a deal.II K
             cycle.reset();
             amg_matrix.reset();
-            copy_to_trilinos(K, cycle_matrix);
-            cycle = make_condensed_two_level(K, cycle_matrix, coarse, P_trilinos);
+            if (K.trilinos != nullptr)
+              {
+                std::vector<bool> decoupled(n, true);
+                for (unsigned int i = 0; i < n; ++i)
+                  K.for_row(i, [&](const unsigned int j, const double v) {
+                    if (j != i && v != 0.)
+                      decoupled[i] = false;
+                  });
+                cycle_owner = K.trilinos;
+                cycle       = make_serial_two_level(decoupled, *K.trilinos, *coarse.P, *coarse.modes, coarse.lines,
+                                                    LinearSolver::Settings(), P_trilinos);
+              }
+            else
+              {
+                cycle_owner.reset();
+                auto copy = std::make_shared<dealii::TrilinosWrappers::SparseMatrix>();
+                copy_to_trilinos(*K.deal_ii, *copy);
+                cycle       = make_condensed_two_level(*K.deal_ii, *copy, coarse, P_trilinos);
+                cycle_owner = std::move(copy);
+              }
             return;
           }
 
-        // ML's Epetra matrix
-        auto fresh = epetra_copy(K, 1e-13);
+        // ML's Epetra matrix: K's own, or a copy of a deal.II K
+        std::unique_ptr<Epetra_CrsMatrix> fresh = (K.deal_ii != nullptr ? epetra_copy(*K.deal_ii, 1e-13) : nullptr);
         cycle.reset();
         list = Teuchos::ParameterList();
         set_ml_parameters(&list, modes, n, null_space);
         // (the old hierarchy refers to the old matrix until it is replaced)
-        amg.initialize(*fresh, list);
+        amg.initialize(fresh != nullptr ? *fresh : *K.epetra, list);
         amg_matrix = std::move(fresh);
+        amg_owner  = K.trilinos;
       }
 
       /// Whether the preconditioner is the p-multigrid.
@@ -813,8 +975,8 @@ namespace dealvem
             apply_cycle(dst, src);
             return;
           }
-        const dealii::SparseMatrix<double> &K = *matrix;
-        const std::size_t                   m = changed.size();
+        const CondensedMatrix &K = matrix;
+        const std::size_t      m = changed.size();
         // the exact solve on S; the residual src - K x1 of its result x1,
         // which lives on S (the column of a symmetric K is its row)
         restricted.reinit(m);
@@ -823,8 +985,10 @@ namespace dealvem
         cholesky.solve(correction, restricted);
         residual = src;
         for (std::size_t k = 0; k < m; ++k)
-          for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
-            residual[it->column()] -= it->value() * correction[k];
+          {
+            const double c = correction[k];
+            K.for_row(changed[k], [&](const unsigned int j, const double v) { residual[j] -= v * c; });
+          }
         // one AMG cycle on it
         apply_cycle(dst, residual);
         for (std::size_t k = 0; k < m; ++k)
@@ -833,8 +997,7 @@ namespace dealvem
         for (std::size_t k = 0; k < m; ++k)
           {
             double r = src[changed[k]];
-            for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
-              r -= it->value() * dst[it->column()];
+            K.for_row(changed[k], [&](const unsigned int j, const double v) { r -= v * dst[j]; });
             restricted[k] = r;
           }
         cholesky.solve(correction, restricted);
@@ -858,38 +1021,41 @@ namespace dealvem
       bool
       factorize_changed_rows()
       {
-        const dealii::SparseMatrix<double> &K = *matrix;
-        const std::size_t                   m = changed.size();
+        const CondensedMatrix &K = matrix;
+        const std::size_t      m = changed.size();
         local.assign(K.m(), -1);
         for (std::size_t k = 0; k < m; ++k)
           local[changed[k]] = static_cast<int>(k);
         std::vector<unsigned int> lengths(m, 0);
         for (std::size_t k = 0; k < m; ++k)
-          for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
-            lengths[k] += (local[it->column()] >= 0);
+          K.for_row(changed[k], [&](const unsigned int j, double) { lengths[k] += (local[j] >= 0); });
         changed_pattern.reinit(m, m, lengths);
         for (std::size_t k = 0; k < m; ++k)
-          for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
-            if (local[it->column()] >= 0)
-              changed_pattern.add(k, local[it->column()]);
+          K.for_row(changed[k], [&](const unsigned int j, double) {
+            if (local[j] >= 0)
+              changed_pattern.add(k, local[j]);
+          });
         changed_pattern.compress();
         changed_matrix.reinit(changed_pattern);
         for (std::size_t k = 0; k < m; ++k)
-          for (auto it = K.begin(changed[k]), it_end = K.end(changed[k]); it != it_end; ++it)
-            if (local[it->column()] >= 0)
-              changed_matrix.set(k, local[it->column()], it->value());
+          K.for_row(changed[k], [&](const unsigned int j, const double v) {
+            if (local[j] >= 0)
+              changed_matrix.set(k, local[j], v);
+          });
         return cholesky.factorize(changed_matrix);
       }
 
       /// The matrix of the last prepare().
-      const dealii::SparseMatrix<double> *matrix = nullptr;
+      CondensedMatrix matrix;
+      /// Whether a hierarchy was built.
+      bool has_hierarchy = false;
       /// A 64-bit fingerprint of each row (length, columns and the bits of
       /// the values) of the matrix the hierarchy was built on.
       std::vector<std::uint64_t> fingerprints;
       /// The fingerprints of the matrix of the last prepare() that
       /// compared them (@p pending_matrix), kept for a build() on it.
-      std::vector<std::uint64_t>          pending;
-      const dealii::SparseMatrix<double> *pending_matrix = nullptr;
+      std::vector<std::uint64_t> pending;
+      const void                *pending_matrix = nullptr;
 
       /// The fingerprint of row @p i of @p K: its length, columns and
       /// value bits. Each entry (its value's bits plus an odd multiple of
@@ -903,7 +1069,7 @@ namespace dealvem
       /// collision would only keep an older, still symmetric positive
       /// definite, preconditioner (see the class documentation).
       static std::uint64_t
-      fingerprint(const dealii::SparseMatrix<double> &K, const unsigned int i)
+      fingerprint(const CondensedMatrix &K, const unsigned int i)
       {
         const auto rotate   = [](const std::uint64_t x, const int r) { return (x << r) | (x >> (64 - r)); };
         const auto finalize = [](std::uint64_t x) {
@@ -915,37 +1081,33 @@ namespace dealvem
         };
         constexpr std::uint64_t prime_a = 0x9e3779b97f4a7c15ULL, prime_b = 0xc2b2ae3d27d4eb4fULL,
                                 column_factor = 0x165667b19e3779f9ULL;
-        const auto   &sp = K.get_sparsity_pattern();
-        std::uint64_t a = prime_a ^ sp.row_length(i), b = prime_b;
+        std::uint64_t a = prime_a ^ K.row_length(i), b = prime_b;
         bool          lane_a = true;
-        // (columns by the pattern's iterator, which reads them inline; the
-        // matrix's iterator calls out of line for each)
-        auto value = K.begin(i);
-        for (auto it = sp.begin(i), end = sp.end(i); it != end; ++it, ++value)
-          {
-            const double  v = value->value();
-            std::uint64_t bits;
-            std::memcpy(&bits, &v, sizeof bits);
-            const std::uint64_t entry = bits + column_factor * (std::uint64_t(it->column()) + 1);
-            if (lane_a)
-              a = rotate((a ^ entry) * prime_b, 29);
-            else
-              b = rotate((b ^ entry) * prime_a, 31);
-            lane_a = !lane_a;
-          }
+        K.for_row(i, [&](const unsigned int j, const double v) {
+          std::uint64_t bits;
+          std::memcpy(&bits, &v, sizeof bits);
+          const std::uint64_t entry = bits + column_factor * (std::uint64_t(j) + 1);
+          if (lane_a)
+            a = rotate((a ^ entry) * prime_b, 29);
+          else
+            b = rotate((b ^ entry) * prime_a, 31);
+          lane_a = !lane_a;
+        });
         return finalize(a ^ rotate(finalize(b), 17));
       }
-      /// ML's copy of it.
-      std::unique_ptr<Epetra_CrsMatrix>         amg_matrix;
+      /// ML's copy of a deal.II matrix, or the Trilinos matrix ML works on.
+      std::unique_ptr<Epetra_CrsMatrix>                             amg_matrix;
+      std::shared_ptr<const dealii::TrilinosWrappers::SparseMatrix> amg_owner;
       Teuchos::ParameterList                    list;
       std::vector<double>                       null_space;
       dealii::TrilinosWrappers::PreconditionAMG amg;
       /// The coarse space of the p-multigrid (none: ML AMG), the Trilinos
       /// copies of the matrix and the restricted prolongation it works on,
       /// and its cycle.
-      CondensedCoarseSpace                                   coarse;
-      dealii::TrilinosWrappers::SparseMatrix                 cycle_matrix, P_trilinos;
-      std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>> cycle;
+      CondensedCoarseSpace                                          coarse;
+      std::shared_ptr<const dealii::TrilinosWrappers::SparseMatrix> cycle_owner;
+      dealii::TrilinosWrappers::SparseMatrix                        P_trilinos;
+      std::unique_ptr<TwoLevelCycle<dealii::Vector<double>>>        cycle;
       /// The rows that differ, their index among them, and the factorized
       /// restriction of the matrix to them.
       std::vector<unsigned int>              changed;
@@ -967,11 +1129,21 @@ namespace dealvem
     {
       ContactConstraints           contact;
       CompressedRowPattern         sparsity;
-      dealii::SparseMatrix<double> K;
+      /// The condensed stiffness: K, or Kt when it was condensed into
+      /// Trilinos (CG on a symmetric problem without stick springs).
+      dealii::SparseMatrix<double>                            K;
+      std::shared_ptr<dealii::TrilinosWrappers::SparseMatrix> Kt;
       dealii::Vector<double>       f;
       dealii::Vector<double>       u;
       /// The size of the saddle-point system it was condensed from.
       unsigned int                 size = 0;
+
+      /// K or Kt, as the iterative solvers read it.
+      CondensedMatrix
+      matrix() const
+      {
+        return (Kt != nullptr ? CondensedMatrix(Kt) : CondensedMatrix(K));
+      }
     };
   } // namespace internal
 
@@ -996,8 +1168,8 @@ namespace dealvem
 
 
   unsigned int
-  SaddlePointSolver::solve_with_amg(const dealii::SparseMatrix<double>      &K,
-                                    const dealii::SparseMatrix<double>      &K_amg,
+  SaddlePointSolver::solve_with_amg(const internal::CondensedMatrix         &K,
+                                    const internal::CondensedMatrix         &K_amg,
                                     dealii::Vector<double>                  &u,
                                     const dealii::Vector<double>            &f,
                                     const double                             relative_tolerance,
@@ -1060,8 +1232,7 @@ namespace dealvem
     if (use == internal::AMGCache::Use::corrected && amg_iterations_per_decade > 0)
       {
         dealii::Vector<double> r(f.size());
-        K.residual(r, u, f);
-        const double start = r.l2_norm();
+        const double           start   = K.residual(r, u, f);
         const double decades = (start > target && target > 0 ? std::log10(start / target) : 0.);
         budget = static_cast<unsigned int>(
           std::min<double>(settings.max_iterations, 10 + std::ceil(2 * amg_iterations_per_decade * decades)));
@@ -1144,9 +1315,17 @@ namespace dealvem
     auto &u       = system->u;
     system->size  = A.m();
     contact.reinit(A, n_displacements, b, length);
-    n_dropped = contact.get_dependent_rows().size();
-    contact.condense(A, b, system->sparsity, K, f);
+    n_dropped  = contact.get_dependent_rows().size();
     used_gmres = !contact.is_symmetric();
+    // CG on a symmetric problem without stick springs works on a Trilinos
+    // matrix (the p-multigrid's or ML's own): condensed straight into it
+    if (settings.type == Type::cg_amg_constraints && !used_gmres && stick_rows.empty())
+      {
+        system->Kt = std::make_shared<dealii::TrilinosWrappers::SparseMatrix>();
+        contact.condense(A, b, *system->Kt, f);
+      }
+    else
+      contact.condense(A, b, system->sparsity, K, f);
     u.reinit(n_displacements);
     if (settings.type == Type::direct_constraints)
       {
@@ -1205,6 +1384,7 @@ namespace dealvem
     const unsigned int            n_displacements = system.u.size();
     auto                         &contact         = system.contact;
     const auto                   &K               = system.K;
+    const internal::CondensedMatrix matrix          = system.matrix();
     const dealii::Vector<double> &f               = system.f;
     dealii::Vector<double>       &u               = system.u;
     // the start: the displacements of the previous solve, with the
@@ -1217,9 +1397,12 @@ namespace dealvem
       {
         u = previous;
         for (const auto &sl : contact.get_slaves())
-          u[sl.second] = (K.diag_element(sl.second) != 0 ? f[sl.second] / K.diag_element(sl.second) : 0.);
+          {
+            const double d = matrix.diag_element(sl.second);
+            u[sl.second]   = (d != 0 ? f[sl.second] / d : 0.);
+          }
         dealii::Vector<double> r(n_displacements);
-        if (K.residual(r, u, f) >= f.l2_norm())
+        if (matrix.residual(r, u, f) >= f.l2_norm())
           u = 0.;
       }
     // an inexact solve stops early (CG on the symmetric condensed
@@ -1259,15 +1442,17 @@ namespace dealvem
         dealii::SparseMatrix<double> K_sym;
         dealii::Vector<double>       f_sym;
         contact.condense(A, b, sp_sym, K_sym, f_sym, true);
-        iterations = solve_with_amg(K, K_sym, u, f, tolerance, false, contact.get_constraints());
+        iterations =
+          solve_with_amg(matrix, internal::CondensedMatrix(K_sym), u, f, tolerance, false, contact.get_constraints());
       }
     else
-      iterations = solve_with_amg(K, K, u, f, tolerance, true, contact.get_constraints());
+      iterations = solve_with_amg(matrix, matrix, u, f, tolerance, true, contact.get_constraints());
     // (an inexact solution only proposes the next set: its residual is
     // checked when the accepted set's solve is completed; solve() checks
     // every solution for finite values)
     if (!last_inexact)
-      internal::check_residual(K, u, f, tolerance, description() + (context.empty() ? "" : ", " + context));
+      internal::check_condensed_residual(matrix, u, f, tolerance,
+                                         description() + (context.empty() ? "" : ", " + context));
   }
 
 
@@ -1404,13 +1589,13 @@ namespace dealvem
                                              settings.max_iterations, false, " in " + what + "()");
       }
     else
-      iterations =
-        solve_with_amg(system.K, system.K, system.u, system.f, tolerance, true, system.contact.get_constraints());
-    n_amg_reuses              = reuses;
+      iterations = solve_with_amg(system.matrix(), system.matrix(), system.u, system.f, tolerance, true,
+                                  system.contact.get_constraints());
+    n_amg_reuses = reuses;
     // (a refined solution is only checked for finite values, below)
     if (tolerance <= settings.relative_tolerance)
-      internal::check_residual(system.K, system.u, system.f, tolerance,
-                               description() + (context.empty() ? "" : ", " + context) + ", completed");
+      internal::check_condensed_residual(system.matrix(), system.u, system.f, tolerance,
+                                         description() + (context.empty() ? "" : ", " + context) + ", completed");
     for (unsigned int i = 0; i < n; ++i)
       x[i] = system.u[i];
     system.contact.distribute_and_recover_multipliers(A, b, x);

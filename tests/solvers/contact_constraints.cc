@@ -24,12 +24,14 @@
 //    refused, naming the row; an unknown solver name lists the types.
 // e) ContactConstraints::condense() against deal.II's own condensation of
 //    K by the same lines, entry by entry to 1e-14 (see below), and into a
-//    CompressedRowPattern: the same pattern and values, bit for bit;
+//    CompressedRowPattern and (symmetric problems) into a Trilinos matrix:
+//    the same pattern and values, bit for bit (refused when not symmetric);
 // f) CompressedRowPattern::assign() refuses a row whose diagonal is not
 //    first, or whose columns do not ascend, naming the row.
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <dealvem/solvers/contact_constraints.h>
 #include <dealvem/solvers/saddle_point_solver.h>
@@ -308,6 +310,30 @@ main(int argc, char **argv)
           same = same && f_direct[i] == f[i];
         }
       testing::check(same, what + ": the CompressedRowPattern path gives the same pattern and values");
+      // and into a Trilinos matrix (symmetric problems): the same rows,
+      // ascending, the same values bit for bit; refused otherwise
+      if (cc.is_symmetric())
+        {
+          dealii::TrilinosWrappers::SparseMatrix Kt;
+          dealii::Vector<double>                 f_trilinos;
+          cc.condense(sys->A, sys->b, Kt, f_trilinos);
+          bool same_t = Kt.m() == n && Kt.n() == n && Kt.n_nonzero_elements() == sp.n_nonzero_elements();
+          for (unsigned int i = 0; same_t && i < n; ++i)
+            {
+              same_t = Kt.row_length(i) == sp.row_length(i) && f_trilinos[i] == f[i];
+              for (auto b = K.begin(i); same_t && b != K.end(i); ++b)
+                same_t = Kt.el(i, b->column()) == b->value();
+            }
+          testing::check(same_t, what + ": the Trilinos path gives the same pattern and values");
+        }
+      else
+        testing::check_throws(
+          [&] {
+            dealii::TrilinosWrappers::SparseMatrix Kt;
+            dealii::Vector<double>                 f_trilinos;
+            cc.condense(sys->A, sys->b, Kt, f_trilinos);
+          },
+          "the constraints are not symmetric", what + ": condense() into Trilinos refused");
       testing::check(lines.n_constraints() >= 2, what + ": at least two slave lines");
       testing::check_small(dk / k, 1e-14, what + ": condensed K against deal.II's condensation");
       testing::check_small(df / fm, 1e-14, what + ": condensed f against deal.II's condensation");

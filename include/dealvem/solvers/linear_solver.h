@@ -9,6 +9,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -255,6 +256,17 @@ namespace dealvem
                    const dealii::Vector<double>       &b,
                    const double                        relative_tolerance,
                    const std::string                  &solver);
+
+    /// check_residual() with the residual @p r = b - A x already computed
+    /// and $\|A\|_\infty$ from @p matrix_norm (called only when the
+    /// backward error is needed).
+    double
+    check_residual(const dealii::Vector<double>  &r,
+                   const dealii::Vector<double>  &x,
+                   const dealii::Vector<double>  &b,
+                   const double                   relative_tolerance,
+                   const std::string             &solver,
+                   const std::function<double()> &matrix_norm);
 
     /// Upper-case copy of a solver name, for case-insensitive parsing.
     std::string

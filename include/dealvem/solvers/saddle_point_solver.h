@@ -24,6 +24,7 @@ namespace dealvem
   {
     class SparseCholesky;
     class AMGCache;
+    class CondensedMatrix;
     struct CondensedSystem;
   }
 
@@ -437,14 +438,13 @@ namespace dealvem
     /// describes; @p lines are the constraints K was condensed with.
     /// Returns the iterations.
     unsigned int
-    solve_with_amg(const dealii::SparseMatrix<double>      &K,
-                   const dealii::SparseMatrix<double>      &K_amg,
+    solve_with_amg(const internal::CondensedMatrix         &K,
+                   const internal::CondensedMatrix         &K_amg,
                    dealii::Vector<double>                  &u,
                    const dealii::Vector<double>            &f,
                    const double                             relative_tolerance,
                    const bool                               symmetric,
                    const dealii::AffineConstraints<double> &lines);
-
   };
 } // namespace dealvem
 
