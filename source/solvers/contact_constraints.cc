@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
+#include <deal.II/base/parallel.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <dealvem/base/number_string.h>
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -573,6 +575,18 @@ namespace dealvem
     }
 
 
+    // takes the rows of condense_by_rows() for a CondensedRows: the matrix,
+    // n, the average diagonal, the kind of each row (0 decoupled, 1 plain,
+    // 2 gathered), the row lengths, and the gathered rows compressed
+    using RowsSetter = std::function<void(const dealii::SparseMatrix<double> &,
+                                          unsigned int,
+                                          double,
+                                          std::vector<unsigned char> &&,
+                                          std::vector<unsigned int> &&,
+                                          std::vector<std::size_t> &&,
+                                          std::vector<unsigned int> &&,
+                                          std::vector<double> &&)>;
+
     // condense() without test lines (symmetric problems, and the symmetric
     // part C^T K C otherwise), row by row: row i of the condensed matrix
     // gathers, from its sources (row i itself with weight 1 and each slave
@@ -596,7 +610,8 @@ namespace dealvem
                      dealii::SparsityPattern                                  &sparsity,
                      dealii::SparseMatrix<double>                             &K,
                      dealii::Vector<double>                                   &f,
-                     dealii::TrilinosWrappers::SparseMatrix                   *trilinos = nullptr)
+                     dealii::TrilinosWrappers::SparseMatrix                   *trilinos = nullptr,
+                     const RowsSetter                                         &rows     = {})
     {
       // the slaves of each master with their coefficients (compressed rows)
       std::vector<unsigned int> first(n + 1, 0);
@@ -743,6 +758,19 @@ namespace dealvem
           row_start[i + 1] = columns.size();
         }
 
+      if (rows)
+        {
+          // the rows kept as they are: the gathered ones compressed
+          std::vector<std::size_t> starts(n + 1, 0);
+          for (unsigned int i = 0; i < n; ++i)
+            starts[i + 1] = row_start[i + 1];
+          std::vector<unsigned char> kinds(n);
+          for (unsigned int i = 0; i < n; ++i)
+            kinds[i] = static_cast<unsigned char>(kind[i] == slave_row ? 0 : kind[i] == plain_row ? 1 : 2);
+          rows(A, n, average_diagonal, std::move(kinds), std::move(row_length), std::move(starts), std::move(columns),
+               std::move(values));
+          return;
+        }
       if (trilinos != nullptr)
         {
           // the rows ascending, written once into Epetra's storage: a slave
@@ -1102,6 +1130,107 @@ namespace dealvem
     dealii::SparsityPattern      unused_pattern;
     dealii::SparseMatrix<double> unused_matrix;
     condense_by_rows(A, b, n, known, lambda, slaves, line, constraints, unused_pattern, unused_matrix, f, &K);
+  }
+
+
+
+  void
+  ContactConstraints::condense(const dealii::SparseMatrix<double> &A,
+                               const dealii::Vector<double>       &b,
+                               CondensedRows                      &K,
+                               dealii::Vector<double>             &f) const
+  {
+    AssertDimension(A.m(), n + m);
+    AssertThrow(symmetric, dealii::ExcMessage("ContactConstraints::condense() into rows: the constraints are not "
+                                              "symmetric (slipping pairs); condense into a deal.II matrix instead."));
+    std::vector<double> lambda(m, 0.);
+    std::vector<bool>   known(m, false);
+    known_multipliers(lambda, known);
+    std::vector<const std::vector<std::pair<dealii::types::global_dof_index, double>> *> line(n, nullptr);
+    for (const auto &s : slaves)
+      line[s.second] = constraints.get_constraint_entries(s.second);
+    dealii::SparsityPattern      unused_pattern;
+    dealii::SparseMatrix<double> unused_matrix;
+    condense_by_rows(A, b, n, known, lambda, slaves, line, constraints, unused_pattern, unused_matrix, f, nullptr,
+                     [&K](const dealii::SparseMatrix<double> &A_, const unsigned int n_, const double average,
+                          std::vector<unsigned char> &&kinds, std::vector<unsigned int> &&lengths,
+                          std::vector<std::size_t> &&starts, std::vector<unsigned int> &&columns,
+                          std::vector<double> &&values) {
+                       K.A                = &A_;
+                       K.n                = n_;
+                       K.average_diagonal = average;
+                       K.kind.resize(n_);
+                       for (unsigned int i = 0; i < n_; ++i)
+                         K.kind[i] = static_cast<CondensedRows::Kind>(kinds[i]);
+                       K.lengths   = std::move(lengths);
+                       K.row_start = std::move(starts);
+                       K.columns   = std::move(columns);
+                       K.values    = std::move(values);
+                     });
+  }
+
+
+
+  double
+  CondensedRows::diag_element(const unsigned int i) const
+  {
+    if (kind[i] == decoupled)
+      return average_diagonal;
+    if (kind[i] == plain)
+      return A->diag_element(i);
+    for (std::size_t k = row_start[i]; k < row_start[i + 1]; ++k)
+      if (columns[k] == i)
+        return values[k];
+    return 0.;
+  }
+
+
+
+  void
+  CondensedRows::vmult(dealii::Vector<double> &dst, const dealii::Vector<double> &src) const
+  {
+    AssertDimension(dst.size(), n);
+    AssertDimension(src.size(), n);
+    const double *x = src.begin();
+    double       *y = dst.begin();
+    dealii::parallel::apply_to_subranges(
+      0U, n,
+      [&](const unsigned int begin, const unsigned int end) {
+        const auto &sp = A->get_sparsity_pattern();
+        for (unsigned int i = begin; i < end; ++i)
+          {
+            double sum = 0;
+            if (kind[i] == decoupled)
+              sum = average_diagonal * x[i];
+            else if (kind[i] == gathered)
+              for (std::size_t k = row_start[i]; k < row_start[i + 1]; ++k)
+                sum += values[k] * x[columns[k]];
+            else
+              {
+                auto value = A->begin(i);
+                for (auto it = sp.begin(i), e = sp.end(i); it != e; ++it, ++value)
+                  {
+                    const unsigned int j = it->column();
+                    if (j >= n)
+                      break;
+                    sum += value->value() * x[j];
+                  }
+              }
+            y[i] = sum;
+          }
+      },
+      4096);
+  }
+
+
+
+  void
+  CondensedRows::rebind(const dealii::SparseMatrix<double> &A_again)
+  {
+    AssertThrow(A != nullptr && A_again.m() == A->m() && A_again.n_nonzero_elements() == A->n_nonzero_elements(),
+                dealii::ExcMessage("CondensedRows::rebind(): not the saddle-point matrix the rows were condensed "
+                                   "from."));
+    A = &A_again;
   }
 
 

@@ -351,22 +351,32 @@ namespace dealvem
         , epetra(&trilinos->trilinos_matrix())
       {}
 
+      explicit CondensedMatrix(std::shared_ptr<const CondensedRows> K)
+        : rows(std::move(K))
+      {}
+
       /// The matrix it refers to (for identity comparisons).
       const void *
       id() const
       {
+        if (rows != nullptr)
+          return rows.get();
         return (deal_ii != nullptr ? static_cast<const void *>(deal_ii) : static_cast<const void *>(trilinos.get()));
       }
 
       unsigned int
       m() const
       {
+        if (rows != nullptr)
+          return rows->m();
         return (deal_ii != nullptr ? deal_ii->m() : trilinos->m());
       }
 
       unsigned int
       row_length(const unsigned int i) const
       {
+        if (rows != nullptr)
+          return rows->row_length(i);
         return (deal_ii != nullptr ? deal_ii->get_sparsity_pattern().row_length(i)
                                    : static_cast<unsigned int>(epetra->NumMyEntries(static_cast<int>(i))));
       }
@@ -376,6 +386,11 @@ namespace dealvem
       void
       for_row(const unsigned int i, F &&f) const
       {
+        if (rows != nullptr)
+          {
+            rows->for_row(i, f);
+            return;
+          }
         if (deal_ii == nullptr)
           {
             int     n       = 0;
@@ -411,6 +426,8 @@ namespace dealvem
       double
       diag_element(const unsigned int i) const
       {
+        if (rows != nullptr)
+          return rows->diag_element(i);
         return (deal_ii != nullptr ? deal_ii->diag_element(i) : trilinos->diag_element(i));
       }
 
@@ -419,6 +436,8 @@ namespace dealvem
       {
         if (deal_ii != nullptr)
           deal_ii->vmult(dst, src);
+        else if (rows != nullptr)
+          rows->vmult(dst, src);
         else
           trilinos->vmult(dst, src);
       }
@@ -429,13 +448,15 @@ namespace dealvem
       {
         if (deal_ii != nullptr)
           return deal_ii->residual(r, x, b);
-        trilinos->vmult(r, x);
+        vmult(r, x);
         r.sadd(-1., 1., b);
         return r.l2_norm();
       }
 
-      /// The deal.II matrix (null: a Trilinos one).
+      /// The deal.II matrix (null: another kind).
       const dealii::SparseMatrix<double> *deal_ii = nullptr;
+      /// The rows that refer to the saddle-point matrix (null: another kind).
+      std::shared_ptr<const CondensedRows> rows;
       /// The Trilinos matrix (null: a deal.II one), and its Epetra matrix.
       std::shared_ptr<const dealii::TrilinosWrappers::SparseMatrix> trilinos;
       const Epetra_CrsMatrix                                       *epetra = nullptr;
@@ -519,13 +540,12 @@ namespace dealvem
      * @p decoupled flags the rows without an off-diagonal nonzero.
      */
     std::unique_ptr<Epetra_CrsMatrix>
-    epetra_tied_copy(const dealii::SparseMatrix<double>      &K,
+    epetra_tied_copy(const internal::CondensedMatrix         &K,
                      const dealii::AffineConstraints<double> &Z,
                      const double                             drop_tolerance,
                      std::vector<bool>                       &decoupled)
     {
       const unsigned int             n     = K.m();
-      const dealii::SparsityPattern &sp    = K.get_sparsity_pattern();
       constexpr unsigned int         none  = dealii::numbers::invalid_unsigned_int;
       const auto                    &lines = Z.get_lines();
       std::vector<unsigned int>      line_of(n, none);
@@ -552,29 +572,27 @@ namespace dealvem
       std::vector<int>                                            lengths(n);
       for (unsigned int i = 0; i < n; ++i)
         {
-          lengths[i] = static_cast<int>(sp.row_length(i));
+          lengths[i] = static_cast<int>(K.row_length(i));
           if (line_of[i] != none)
             continue;
           const auto master    = slaves_of.find(i);
           bool       has_slave = master != slaves_of.end();
-          for (auto it = sp.begin(i), end = sp.end(i); it != end && !has_slave; ++it)
-            has_slave = line_of[it->column()] != none;
+          if (!has_slave)
+            K.for_row(i, [&](const unsigned int j, double) { has_slave = has_slave || line_of[j] != none; });
           if (!has_slave)
             continue;
           entries.clear();
           const auto add_row = [&](const unsigned int r, const double weight) {
-            for (auto it = K.begin(r), end = K.end(r); it != end; ++it)
-              {
-                const unsigned int j = it->column();
-                if (line_of[j] == none)
-                  entries.emplace_back(static_cast<int>(j), weight * it->value());
-                else
-                  {
-                    entries.emplace_back(static_cast<int>(j), 0.);
-                    for (const auto &e : lines[line_of[j]].entries)
-                      entries.emplace_back(static_cast<int>(e.first), weight * it->value() * e.second);
-                  }
-              }
+            K.for_row(r, [&](const unsigned int j, const double value) {
+              if (line_of[j] == none)
+                entries.emplace_back(static_cast<int>(j), weight * value);
+              else
+                {
+                  entries.emplace_back(static_cast<int>(j), 0.);
+                  for (const auto &e : lines[line_of[j]].entries)
+                    entries.emplace_back(static_cast<int>(e.first), weight * value * e.second);
+                }
+            });
           };
           add_row(i, 1.);
           if (master != slaves_of.end())
@@ -607,17 +625,11 @@ namespace dealvem
         else
           {
             const bool slave = line_of[i] != none;
-            for (auto it = K.begin(i), end = K.end(i); it != end; ++it, ++k)
-              {
-                columns[k] = static_cast<int>(it->column());
-                values[k]  = (!slave ? it->value() : (it->column() == i ? mean_diagonal : 0.));
-              }
-            // deal.II lists the diagonal first, then ascending columns
-            for (int d = 0; d + 1 < k && columns[d + 1] < columns[d]; ++d)
-              {
-                std::swap(columns[d], columns[d + 1]);
-                std::swap(values[d], values[d + 1]);
-              }
+            K.for_row(i, [&](const unsigned int j, const double value) {
+              columns[k] = static_cast<int>(j);
+              values[k]  = (!slave ? value : (j == i ? mean_diagonal : 0.));
+              ++k;
+            });
           }
         for (int e = 0; e < k; ++e)
           {
@@ -639,19 +651,21 @@ namespace dealvem
     class StickPreconditioner
     {
     public:
-      StickPreconditioner(const dealii::SparseMatrix<double>                                  &K,
-                          const dealii::AffineConstraints<double>                           &normal_lines,
+      StickPreconditioner(const internal::CondensedMatrix                                 &K,
+                          const dealii::AffineConstraints<double>                         &normal_lines,
                           const std::vector<std::vector<std::pair<unsigned int, double>>> &stick_rows,
-                          const std::vector<std::vector<double>>                            &modes,
-                          const double                                                      length,
-                          internal::CondensedCoarseSpace                                    coarse)
-        : K(K)
+                          const std::vector<std::vector<double>>                          &modes,
+                          const double                                                     length,
+                          internal::CondensedCoarseSpace                                   coarse)
       {
         const unsigned int n = K.m();
         const ContactConstraints ties = ContactConstraints::tie_lines(stick_rows, normal_lines, normal_lines, n, length);
         Z.copy_from(ties.get_constraints());
         for (const auto &sl : ties.get_slaves())
-          slaves.push_back(sl.second);
+          {
+            slaves.push_back(sl.second);
+            inverse_diagonal.push_back(1. / K.diag_element(sl.second));
+          }
 
         // Z^T K Z: the springs vanish on tied functions
         std::vector<bool> decoupled;
@@ -695,8 +709,8 @@ namespace dealvem
           amg.vmult(v, w);
         Z.distribute(v);
         dst = v;
-        for (const auto s : slaves)
-          dst[s] += src[s] / K.diag_element(s);
+        for (std::size_t k = 0; k < slaves.size(); ++k)
+          dst[slaves[k]] += src[slaves[k]] * inverse_diagonal[k];
       }
 
       unsigned int
@@ -706,9 +720,10 @@ namespace dealvem
       }
 
     private:
-      const dealii::SparseMatrix<double>       &K;
       dealii::AffineConstraints<double>         Z, all_lines;
+      /// The tied DoFs and the inverses of their diagonal entries in K.
       std::vector<unsigned int>                                        slaves;
+      std::vector<double>                                              inverse_diagonal;
       dealii::TrilinosWrappers::SparseMatrix    tied_trilinos, P_trilinos;
       std::vector<double>                       null_space;
       dealii::TrilinosWrappers::PreconditionAMG amg;
@@ -722,14 +737,14 @@ namespace dealvem
     // iterations. @p where completes the message of a solve that does not
     // converge.
     unsigned int
-    solve_with_stick(const dealii::SparseMatrix<double> &K,
-                     dealii::Vector<double>             &u,
-                     const dealii::Vector<double>       &f,
-                     const StickPreconditioner          &stick,
-                     const double                        target,
-                     const unsigned int                  max_iterations,
-                     const bool                          gmres,
-                     const std::string                  &where)
+    solve_with_stick(const internal::CondensedMatrix &K,
+                     dealii::Vector<double>          &u,
+                     const dealii::Vector<double>    &f,
+                     const StickPreconditioner       &stick,
+                     const double                     target,
+                     const unsigned int               max_iterations,
+                     const bool                       gmres,
+                     const std::string               &where)
     {
       dealii::SolverControl control(max_iterations, target);
       try
@@ -795,9 +810,11 @@ namespace dealvem
      *   0.9 to 1.2 times where at most 2 % of the rows changed;
      * - more rows differ: the hierarchy is built again.
      *
-     * The Trilinos copies of $K$ (ML's, or the p-multigrid's) are made by
-     * epetra_copy(): the matrix deal.II's reinit() makes, so the hierarchy
-     * is the same, without its global-index look-ups and sorting.
+     * A $K$ condensed into Trilinos (CondensedMatrix) is the matrix ML or
+     * the p-multigrid works on, shared: the cache keeps the one its
+     * hierarchy was built on. A deal.II $K$ is copied by epetra_copy():
+     * the matrix deal.II's reinit() makes, without its global-index
+     * look-ups and sorting.
      */
     class AMGCache
     {
@@ -1133,6 +1150,9 @@ namespace dealvem
       /// Trilinos (CG on a symmetric problem without stick springs).
       dealii::SparseMatrix<double>                            K;
       std::shared_ptr<dealii::TrilinosWrappers::SparseMatrix> Kt;
+      /// Or kept as rows of the saddle-point matrix (CG with the stick
+      /// springs, whose preconditioner makes its own matrix).
+      std::shared_ptr<CondensedRows> rows;
       dealii::Vector<double>       f;
       dealii::Vector<double>       u;
       /// The size of the saddle-point system it was condensed from.
@@ -1142,6 +1162,8 @@ namespace dealvem
       CondensedMatrix
       matrix() const
       {
+        if (rows != nullptr)
+          return CondensedMatrix(std::shared_ptr<const CondensedRows>(rows));
         return (Kt != nullptr ? CondensedMatrix(Kt) : CondensedMatrix(K));
       }
     };
@@ -1319,10 +1341,17 @@ namespace dealvem
     used_gmres = !contact.is_symmetric();
     // CG on a symmetric problem without stick springs works on a Trilinos
     // matrix (the p-multigrid's or ML's own): condensed straight into it
+    // (with stick springs, whose preconditioner makes a matrix of its own,
+    // CG reads the condensed rows from A)
     if (settings.type == Type::cg_amg_constraints && !used_gmres && stick_rows.empty())
       {
         system->Kt = std::make_shared<dealii::TrilinosWrappers::SparseMatrix>();
         contact.condense(A, b, *system->Kt, f);
+      }
+    else if (settings.type == Type::cg_amg_constraints && !used_gmres)
+      {
+        system->rows = std::make_shared<CondensedRows>();
+        contact.condense(A, b, *system->rows, f);
       }
     else
       contact.condense(A, b, system->sparsity, K, f);
@@ -1382,8 +1411,7 @@ namespace dealvem
                                                  const double                        length)
   {
     const unsigned int            n_displacements = system.u.size();
-    auto                         &contact         = system.contact;
-    const auto                   &K               = system.K;
+    auto                           &contact         = system.contact;
     const internal::CondensedMatrix matrix          = system.matrix();
     const dealii::Vector<double> &f               = system.f;
     dealii::Vector<double>       &u               = system.u;
@@ -1424,13 +1452,14 @@ namespace dealvem
             coarse.P     = coarse_prolongation;
             coarse.modes = &coarse_modes;
           }
-        const auto stick_ptr =
-          std::make_shared<const StickPreconditioner>(K, contact.get_constraints(), stick_rows, modes, length, coarse);
+        const auto stick_ptr = std::make_shared<const StickPreconditioner>(matrix, contact.get_constraints(),
+                                                                           stick_rows, modes, length, coarse);
         const StickPreconditioner &stick = *stick_ptr;
         if (last_inexact)
           inexact_stick = stick_ptr;
         used_stick_preconditioner = true;
-        iterations = solve_with_stick(K, u, f, stick, tolerance * f.l2_norm(), settings.max_iterations, used_gmres, "");
+        iterations =
+          solve_with_stick(matrix, u, f, stick, tolerance * f.l2_norm(), settings.max_iterations, used_gmres, "");
       }
     else if (used_gmres)
       {
@@ -1575,6 +1604,9 @@ namespace dealvem
     AssertThrow(A.m() == system.size && b.size() == system.size && x.size() == system.size,
                 dealii::ExcMessage("SaddlePointSolver::" + what +
                                    "(): the system is not the one of the last solve."));
+    // (condensed rows read the saddle-point matrix: the one given now)
+    if (system.rows != nullptr)
+      system.rows->rebind(A);
     if (amg_cache && inexact_stick == nullptr)
       amg_cache->continuing = true;
     // (a continuation is not a reuse of the hierarchy for another matrix:
@@ -1585,7 +1617,7 @@ namespace dealvem
         // (CG on the matrix with the stick springs, preconditioned as the
         // inexact solve was)
         const auto &stick = *std::static_pointer_cast<const StickPreconditioner>(inexact_stick);
-        iterations        = solve_with_stick(system.K, system.u, system.f, stick, tolerance * system.f.l2_norm(),
+        iterations        = solve_with_stick(system.matrix(), system.u, system.f, stick, tolerance * system.f.l2_norm(),
                                              settings.max_iterations, false, " in " + what + "()");
       }
     else

@@ -24,8 +24,9 @@
 //    refused, naming the row; an unknown solver name lists the types.
 // e) ContactConstraints::condense() against deal.II's own condensation of
 //    K by the same lines, entry by entry to 1e-14 (see below), and into a
-//    CompressedRowPattern and (symmetric problems) into a Trilinos matrix:
-//    the same pattern and values, bit for bit (refused when not symmetric);
+//    CompressedRowPattern and (symmetric problems) into a Trilinos matrix
+//    and into CondensedRows: the same pattern and values, bit for bit
+//    (refused when not symmetric), the rows' product to 1e-15;
 // f) CompressedRowPattern::assign() refuses a row whose diagonal is not
 //    first, or whose columns do not ascend, naming the row.
 #include <deal.II/base/mpi.h>
@@ -36,6 +37,7 @@
 #include <dealvem/solvers/contact_constraints.h>
 #include <dealvem/solvers/saddle_point_solver.h>
 
+#include <cmath>
 #include <map>
 
 #include "../tests.h"
@@ -325,6 +327,35 @@ main(int argc, char **argv)
                 same_t = Kt.el(i, b->column()) == b->value();
             }
           testing::check(same_t, what + ": the Trilinos path gives the same pattern and values");
+
+          // and into rows that refer to A: the same entries, ascending; the
+          // product of K to round-off; rebind() refuses another matrix
+          CondensedRows          rows;
+          dealii::Vector<double> f_rows;
+          cc.condense(sys->A, sys->b, rows, f_rows);
+          bool same_r = rows.m() == n;
+          for (unsigned int i = 0; same_r && i < n; ++i)
+            {
+              std::vector<std::pair<unsigned int, double>> entries;
+              rows.for_row(i, [&](const unsigned int j, const double v) { entries.emplace_back(j, v); });
+              same_r = entries.size() == sp.row_length(i) && rows.row_length(i) == sp.row_length(i) &&
+                       f_rows[i] == f[i] && rows.diag_element(i) == K.diag_element(i);
+              for (std::size_t e = 0; same_r && e < entries.size(); ++e)
+                same_r =
+                  (e == 0 || entries[e].first > entries[e - 1].first) && K.el(i, entries[e].first) == entries[e].second;
+            }
+          testing::check(same_r, what + ": the rows give the same pattern and values, ascending");
+          dealii::Vector<double> x(n), y(n), y_ref(n);
+          for (unsigned int i = 0; i < n; ++i)
+            x[i] = std::sin(1. + 3. * i);
+          rows.vmult(y, x);
+          K.vmult(y_ref, x);
+          y -= y_ref;
+          testing::check_small(y.linfty_norm() / y_ref.linfty_norm(), 1e-15,
+                               what + ": the rows' product against K's (max norm, relative)");
+          dealii::SparseMatrix<double> other(sp);
+          testing::check_throws([&] { rows.rebind(other); }, "not the saddle-point matrix",
+                                what + ": rebind() to another matrix refused");
         }
       else
         testing::check_throws(
