@@ -1117,19 +1117,7 @@ namespace dealvem
                                dealii::TrilinosWrappers::SparseMatrix &K,
                                dealii::Vector<double>                 &f) const
   {
-    AssertDimension(A.m(), n + m);
-    AssertThrow(symmetric, dealii::ExcMessage("ContactConstraints::condense() into a Trilinos matrix: the "
-                                              "constraints are not symmetric (slipping pairs); condense into a "
-                                              "deal.II matrix instead."));
-    std::vector<double> lambda(m, 0.);
-    std::vector<bool>   known(m, false);
-    known_multipliers(lambda, known);
-    std::vector<const std::vector<std::pair<dealii::types::global_dof_index, double>> *> line(n, nullptr);
-    for (const auto &s : slaves)
-      line[s.second] = constraints.get_constraint_entries(s.second);
-    dealii::SparsityPattern      unused_pattern;
-    dealii::SparseMatrix<double> unused_matrix;
-    condense_by_rows(A, b, n, known, lambda, slaves, line, constraints, unused_pattern, unused_matrix, f, &K);
+    condense_symmetric(A, b, f, &K, nullptr);
   }
 
 
@@ -1140,9 +1128,23 @@ namespace dealvem
                                CondensedRows                      &K,
                                dealii::Vector<double>             &f) const
   {
+    condense_symmetric(A, b, f, nullptr, &K);
+  }
+
+
+
+  void
+  ContactConstraints::condense_symmetric(const dealii::SparseMatrix<double>     &A,
+                                         const dealii::Vector<double>           &b,
+                                         dealii::Vector<double>                 &f,
+                                         dealii::TrilinosWrappers::SparseMatrix *trilinos,
+                                         CondensedRows                          *rows) const
+  {
     AssertDimension(A.m(), n + m);
-    AssertThrow(symmetric, dealii::ExcMessage("ContactConstraints::condense() into rows: the constraints are not "
-                                              "symmetric (slipping pairs); condense into a deal.II matrix instead."));
+    AssertThrow(symmetric, dealii::ExcMessage(std::string("ContactConstraints::condense() into ") +
+                                              (rows != nullptr ? "rows" : "a Trilinos matrix") +
+                                              ": the constraints are not symmetric (slipping pairs); condense "
+                                              "into a deal.II matrix instead."));
     std::vector<double> lambda(m, 0.);
     std::vector<bool>   known(m, false);
     known_multipliers(lambda, known);
@@ -1151,22 +1153,25 @@ namespace dealvem
       line[s.second] = constraints.get_constraint_entries(s.second);
     dealii::SparsityPattern      unused_pattern;
     dealii::SparseMatrix<double> unused_matrix;
-    condense_by_rows(A, b, n, known, lambda, slaves, line, constraints, unused_pattern, unused_matrix, f, nullptr,
-                     [&K](const dealii::SparseMatrix<double> &A_, const unsigned int n_, const double average,
-                          std::vector<unsigned char> &&kinds, std::vector<unsigned int> &&lengths,
-                          std::vector<std::size_t> &&starts, std::vector<unsigned int> &&columns,
-                          std::vector<double> &&values) {
-                       K.A                = &A_;
-                       K.n                = n_;
-                       K.average_diagonal = average;
-                       K.kind.resize(n_);
-                       for (unsigned int i = 0; i < n_; ++i)
-                         K.kind[i] = static_cast<CondensedRows::Kind>(kinds[i]);
-                       K.lengths   = std::move(lengths);
-                       K.row_start = std::move(starts);
-                       K.columns   = std::move(columns);
-                       K.values    = std::move(values);
-                     });
+    RowsSetter                   take_rows;
+    if (rows != nullptr)
+      take_rows = [rows](const dealii::SparseMatrix<double> &A_, const unsigned int n_, const double average,
+                         std::vector<unsigned char> &&kinds, std::vector<unsigned int> &&lengths,
+                         std::vector<std::size_t> &&starts, std::vector<unsigned int> &&columns,
+                         std::vector<double> &&values) {
+        rows->A                = &A_;
+        rows->n                = n_;
+        rows->average_diagonal = average;
+        rows->kind.resize(n_);
+        for (unsigned int i = 0; i < n_; ++i)
+          rows->kind[i] = static_cast<CondensedRows::Kind>(kinds[i]);
+        rows->lengths   = std::move(lengths);
+        rows->row_start = std::move(starts);
+        rows->columns   = std::move(columns);
+        rows->values    = std::move(values);
+      };
+    condense_by_rows(A, b, n, known, lambda, slaves, line, constraints, unused_pattern, unused_matrix, f, trilinos,
+                     take_rows);
   }
 
 

@@ -420,6 +420,15 @@ namespace dealvem
     void
     known_multipliers(std::vector<double> &lambda, std::vector<bool> &known) const;
 
+    /// condense() of a symmetric problem into @p trilinos or @p rows (one
+    /// of them non-null).
+    void
+    condense_symmetric(const dealii::SparseMatrix<double>     &A,
+                       const dealii::Vector<double>           &b,
+                       dealii::Vector<double>                 &f,
+                       dealii::TrilinosWrappers::SparseMatrix *trilinos,
+                       CondensedRows                          *rows) const;
+
     unsigned int                                     n = 0;
     unsigned int                                     m = 0;
     dealii::AffineConstraints<double>                constraints;
